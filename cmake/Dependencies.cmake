@@ -1,0 +1,29 @@
+# Third-party packages, all from Debian. Their headers stay inside .cpp files.
+find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+find_package(OpenMesh REQUIRED)
+find_package(CGAL REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(nlohmann_json 3 REQUIRED)
+find_package(OpenImageIO REQUIRED)
+
+# Debian's OpenImageIO package lists /usr/include/opencv4 as an include directory even when
+# OpenCV is not installed, and CMake's generate step then fails. Keep only directories that exist.
+foreach(prop INTERFACE_INCLUDE_DIRECTORIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES)
+  get_target_property(dirs OpenImageIO::OpenImageIO ${prop})
+  if(dirs)
+    set(existing "")
+    foreach(dir IN LISTS dirs)
+      if(EXISTS "${dir}")
+        list(APPEND existing "${dir}")
+      endif()
+    endforeach()
+    set_target_properties(OpenImageIO::OpenImageIO PROPERTIES ${prop} "${existing}")
+  endif()
+endforeach()
+
+if(UVTK_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(UVTK_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()

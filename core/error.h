@@ -1,0 +1,29 @@
+// Error vocabulary. The library throws and never exits; the CLI's main is the only catcher.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace uvtk {
+
+// A wrong command-line option or API argument (exit status 2).
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Malformed or impossible input data; the message reads "FILE:LINE: error: ..." (exit status 3).
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// An output that cannot be written (exit status 4).
+struct OutputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Always-on check of a programmer's invariant; failing means a bug in uvtk, not bad input.
+[[noreturn]] void checkFailed(const char* expression, const char* file, int line);
+
+}  // namespace uvtk
+
+#define UVTK_CHECK(expr) ((expr) ? (void)0 : ::uvtk::checkFailed(#expr, __FILE__, __LINE__))

@@ -1,0 +1,53 @@
+// The triangle mesh as flat arrays: what every hot loop of the toolkit reads.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "core/math.h"
+
+namespace uvtk {
+
+using Triangle = std::array<int, 3>;  // three indices, counter-clockwise seen from the front
+
+struct Mesh {
+  std::vector<Vec3> positions;      // object space
+  std::vector<Triangle> triangles;  // indices into positions; polygons arrive fan-triangulated
+
+  // Attributes a file may carry per corner (OBJ `vt`, `vn`). A corner table is either empty or
+  // has one entry per triangle; an index of -1 means that corner has no attribute.
+  std::vector<Vec3> texcoords;  // (u, v, w); w = 0 when the file gave two components
+  std::vector<Triangle> cornerTexcoords;
+  std::vector<Vec3> normals;
+  std::vector<Triangle> cornerNormals;
+
+  std::size_t vertexCount() const { return positions.size(); }
+  std::size_t faceCount() const { return triangles.size(); }
+  bool hasTexcoords() const { return !cornerTexcoords.empty(); }
+  bool hasNormals() const { return !cornerNormals.empty(); }
+};
+
+// Counts of what a reader accepted with a warning rather than an error.
+struct MeshWarnings {
+  std::size_t degenerateFaces = 0;        // two equal corner indices or zero area
+  std::size_t unreferencedVertices = 0;   // vertices no face uses
+};
+
+// Twice the area-weighted normal of a triangle: the cross product of two edges.
+inline Vec3 triangleAreaNormal(const Vec3& a, const Vec3& b, const Vec3& c) {
+  return (b - a).cross(c - a);
+}
+
+// Per-vertex unit normals, the area-weighted mean of the adjacent faces' normals.
+// A vertex with no adjacent face of non-zero area gets (0, 0, 0).
+std::vector<Vec3> areaWeightedVertexNormals(const Mesh& mesh);
+
+// One normal per corner (3 per triangle): the file's normal where the corner has one,
+// else the area-weighted vertex normal. Every returned vector has unit length or is zero.
+std::vector<Vec3> cornerNormals(const Mesh& mesh);
+
+// Counts degenerate faces (repeated index or zero area) and vertices no face references.
+MeshWarnings checkMesh(const Mesh& mesh);
+
+}  // namespace uvtk
