@@ -10,14 +10,16 @@
 namespace uvtk::io {
 
 struct ObjWriteOptions {
-  int significantDigits = 17;  // 17 round-trips a double, 9 a float
-  bool writeW = false;         // write `vt u v w` with the UvMap's third component
-  bool writeNormals = true;    // keep the mesh's `vn` (when it has them) as `f v/vt/vn`
-  std::string header;          // comment lines written first, each prefixed with "# "
+  bool floatPrecision = false;  // UVs as the shortest text that round-trips a float (<= 9 digits), not a double (<= 17)
+  bool writeW = false;          // write `vt u v w` with the UvMap's third component (0 where it has none)
+  bool writeNormals = true;     // keep the mesh's `vn` (when it has them) as `f v/vt/vn`
+  std::string header;           // comment lines written first, each prefixed with "# "
 };
 
-// Writes positions in order, then the distinct per-corner UVs as `vt`, then normals, then faces.
-// `uvs` may be null (faces written as `f v` or `f v//vn`).
+// Writes, in this order: the header, `v` in mesh order (shortest text that round-trips the
+// double), one `vt` per distinct (vertex, u, v[, w]), the mesh's `vn`, then the faces in mesh
+// order. `uvs` may be null (faces written as `f v` or `f v//vn`). A face with an invalid corner
+// is listed in a comment before the faces; its invalid corners carry `vt 0 0`.
 void writeObj(std::ostream& out, const Mesh& mesh, const UvMap* uvs, const ObjWriteOptions& options = {});
 
 // The same, atomically into `path` (temporary file + rename); throws OutputError.

@@ -1,0 +1,200 @@
+#include "meshes/generators.h"
+
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include "core/error.h"
+
+namespace uvtk::meshes {
+
+namespace {
+
+// (cos, sin) of the angle 2 pi k / n, exact at multiples of a quarter turn, so that generated
+// points on the coordinate half-planes lie on them exactly.
+Vec2 unitCircle(long k, long n) {
+  k %= n;
+  if ((4 * k) % n == 0) {
+    static constexpr double kQuarter[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    const long quarter = 4 * k / n;
+    return {kQuarter[quarter][0], kQuarter[quarter][1]};
+  }
+  const double angle = kTwoPi * static_cast<double>(k) / static_cast<double>(n);
+  return {std::cos(angle), std::sin(angle)};
+}
+
+// Two triangles of the quad a, b, c, d (counter-clockwise seen from outside).
+void addQuad(Mesh& mesh, int a, int b, int c, int d) {
+  mesh.triangles.push_back({a, b, c});
+  mesh.triangles.push_back({a, c, d});
+}
+
+// A grid of (columns + 1) x (rows + 1) vertices starting at index `first`, row by row; the
+// columns wrap around when `wrapColumns` (then a row has `columns` vertices).
+void addGridFaces(Mesh& mesh, int first, int columns, int rows, bool wrapColumns) {
+  const int rowLength = wrapColumns ? columns : columns + 1;
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < columns; ++c) {
+      const int c1 = wrapColumns ? (c + 1) % columns : c + 1;
+      addQuad(mesh, first + r * rowLength + c, first + r * rowLength + c1, first + (r + 1) * rowLength + c1,
+              first + (r + 1) * rowLength + c);
+    }
+}
+
+void require(bool condition, const char* what) {
+  if (!condition) throw UsageError(what);
+}
+
+}  // namespace
+
+Mesh latLongSphere(int longitudes, int latitudes, double radius) {
+  require(longitudes >= 3 && latitudes >= 2, "latLongSphere: expected longitudes >= 3 and latitudes >= 2");
+  Mesh mesh;
+  mesh.positions.push_back({0.0, 0.0, radius});
+  for (int i = 1; i < latitudes; ++i) {
+    // The polar angle pi i / latitudes as a half of the circle 2 pi i / (2 latitudes).
+    const Vec2 polar = unitCircle(i, 2L * latitudes);
+    for (int j = 0; j < longitudes; ++j) {
+      const Vec2 azimuth = unitCircle(j, longitudes);
+      mesh.positions.push_back(radius * Vec3(polar.y() * azimuth.x(), polar.y() * azimuth.y(), polar.x()));
+    }
+  }
+  const int south = static_cast<int>(mesh.positions.size());
+  mesh.positions.push_back({0.0, 0.0, -radius});
+  auto ring = [&](int i, int j) { return 1 + (i - 1) * longitudes + j % longitudes; };
+  for (int j = 0; j < longitudes; ++j) mesh.triangles.push_back({0, ring(1, j), ring(1, j + 1)});
+  for (int i = 1; i + 1 < latitudes; ++i)
+    for (int j = 0; j < longitudes; ++j) addQuad(mesh, ring(i, j), ring(i + 1, j), ring(i + 1, j + 1), ring(i, j + 1));
+  for (int j = 0; j < longitudes; ++j) mesh.triangles.push_back({south, ring(latitudes - 1, j + 1), ring(latitudes - 1, j)});
+  return mesh;
+}
+
+Mesh icosphere(int level, double radius) {
+  require(level >= 0 && level <= 10, "icosphere: expected a level in 0..10");
+  const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
+  Mesh mesh;
+  mesh.positions = {{-1, phi, 0}, {1, phi, 0}, {-1, -phi, 0}, {1, -phi, 0}, {0, -1, phi}, {0, 1, phi},
+                    {0, -1, -phi}, {0, 1, -phi}, {phi, 0, -1}, {phi, 0, 1}, {-phi, 0, -1}, {-phi, 0, 1}};
+  mesh.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                    {11, 10, 2}, {10, 7, 6}, {7, 1, 8},   {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                    {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  for (Vec3& p : mesh.positions) p.normalize();
+  for (int l = 0; l < level; ++l) {
+    std::map<std::pair<int, int>, int> midpoints;
+    auto midpoint = [&](int a, int b) {
+      const std::pair<int, int> key(std::min(a, b), std::max(a, b));
+      const auto found = midpoints.find(key);
+      if (found != midpoints.end()) return found->second;
+      const int index = static_cast<int>(mesh.positions.size());
+      mesh.positions.push_back((mesh.positions[a] + mesh.positions[b]).normalized());
+      midpoints.emplace(key, index);
+      return index;
+    };
+    std::vector<Triangle> finer;
+    finer.reserve(4 * mesh.triangles.size());
+    for (const Triangle& t : mesh.triangles) {
+      const int ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
+      finer.insert(finer.end(), {{t[0], ab, ca}, {t[1], bc, ab}, {t[2], ca, bc}, {ab, bc, ca}});
+    }
+    mesh.triangles = std::move(finer);
+  }
+  for (Vec3& p : mesh.positions) p *= radius;
+  return mesh;
+}
+
+Mesh cylinder(int segments, int stacks, double radius, double height, bool capped) {
+  require(segments >= 3 && stacks >= 1, "cylinder: expected segments >= 3 and stacks >= 1");
+  Mesh mesh;
+  for (int k = 0; k <= stacks; ++k)
+    for (int j = 0; j < segments; ++j) {
+      const Vec2 c = unitCircle(j, segments);
+      mesh.positions.push_back({radius * c.x(), radius * c.y(), height * k / stacks});
+    }
+  addGridFaces(mesh, 0, segments, stacks, true);
+  if (capped) {
+    const int bottom = static_cast<int>(mesh.positions.size()), top = bottom + 1, topRing = stacks * segments;
+    mesh.positions.push_back({0.0, 0.0, 0.0});
+    mesh.positions.push_back({0.0, 0.0, height});
+    for (int j = 0; j < segments; ++j) mesh.triangles.push_back({bottom, (j + 1) % segments, j});
+    for (int j = 0; j < segments; ++j) mesh.triangles.push_back({top, topRing + j, topRing + (j + 1) % segments});
+  }
+  return mesh;
+}
+
+Mesh cube(int subdivisions) {
+  require(subdivisions >= 1, "cube: expected subdivisions >= 1");
+  const int n = subdivisions;
+  Mesh mesh;
+  std::map<std::tuple<int, int, int>, int> welded;  // by lattice point, so shared edges merge exactly
+  auto vertex = [&](const std::array<int, 3>& lattice) {
+    const auto key = std::make_tuple(lattice[0], lattice[1], lattice[2]);
+    const auto found = welded.find(key);
+    if (found != welded.end()) return found->second;
+    const int index = static_cast<int>(mesh.positions.size());
+    Vec3 p;
+    for (int a = 0; a < 3; ++a) p[a] = 2.0 * lattice[a] / n - 1.0;
+    mesh.positions.push_back(p);
+    welded.emplace(key, index);
+    return index;
+  };
+  // Per face (+X -X +Y -Y +Z -Z): the normal axis and the in-face axes (u, v) with u x v = normal.
+  static constexpr int kFaces[6][4] = {{0, 1, 1, 2}, {0, 0, 2, 1}, {1, 1, 2, 0}, {1, 0, 0, 2}, {2, 1, 0, 1}, {2, 0, 1, 0}};
+  for (const auto& face : kFaces) {
+    const int axis = face[0], side = face[1] ? n : 0, uAxis = face[2], vAxis = face[3];
+    auto at = [&](int i, int j) {
+      std::array<int, 3> lattice{};
+      lattice[axis] = side, lattice[uAxis] = i, lattice[vAxis] = j;
+      return vertex(lattice);
+    };
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) addQuad(mesh, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+  }
+  return mesh;
+}
+
+Mesh torus(int majorSegments, int minorSegments, double majorRadius, double minorRadius) {
+  require(majorSegments >= 3 && minorSegments >= 3, "torus: expected at least 3 segments each way");
+  Mesh mesh;
+  for (int j = 0; j < minorSegments; ++j) {
+    const Vec2 tube = unitCircle(j, minorSegments);
+    for (int i = 0; i < majorSegments; ++i) {
+      const Vec2 around = unitCircle(i, majorSegments);
+      const double rho = majorRadius + minorRadius * tube.x();
+      mesh.positions.push_back({rho * around.x(), rho * around.y(), minorRadius * tube.y()});
+    }
+  }
+  for (int j = 0; j < minorSegments; ++j)
+    for (int i = 0; i < majorSegments; ++i) {
+      const int i1 = (i + 1) % majorSegments, j1 = (j + 1) % minorSegments;
+      addQuad(mesh, j * majorSegments + i, j * majorSegments + i1, j1 * majorSegments + i1, j1 * majorSegments + i);
+    }
+  return mesh;
+}
+
+Mesh planeGrid(int nx, int ny, double width, double height) {
+  require(nx >= 1 && ny >= 1, "planeGrid: expected nx >= 1 and ny >= 1");
+  Mesh mesh;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i)
+      mesh.positions.push_back({width * (static_cast<double>(i) / nx - 0.5), height * (static_cast<double>(j) / ny - 0.5), 0.0});
+  addGridFaces(mesh, 0, nx, ny, false);
+  return mesh;
+}
+
+}  // namespace uvtk::meshes
+
+namespace uvtk::meshes {
+
+std::vector<BundledMesh> bundledMeshes() {
+  return {
+      {"sphere_latlong.obj", "latLongSphere(32, 16)", latLongSphere(32, 16)},
+      {"icosphere.obj", "icosphere(3)", icosphere(3)},
+      {"cylinder_open.obj", "cylinder(32, 8, 0.5, 2, false)", cylinder(32, 8, 0.5, 2.0, false)},
+      {"cylinder_capped.obj", "cylinder(32, 8, 0.5, 2, true)", cylinder(32, 8, 0.5, 2.0, true)},
+      {"cube.obj", "cube(4)", cube(4)},
+      {"torus.obj", "torus(48, 24, 1, 0.35)", torus(48, 24, 1.0, 0.35)},
+      {"plane_grid.obj", "planeGrid(16, 16, 2, 2)", planeGrid(16, 16, 2.0, 2.0)},
+  };
+}
+
+}  // namespace uvtk::meshes

@@ -1,1 +1,32 @@
-int main() { return 0; }
+// uvtk: the command line. main only dispatches and maps errors to exit codes:
+// 2 usage, 3 bad input, 4 cannot write output.
+#include <cstdio>
+#include <exception>
+
+#include "commands.h"
+#include "core/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"uvtk: texture coordinates for triangle meshes, and proof that they are right"};
+  app.require_subcommand(1);
+  uvtk::cli::addMapCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int status = app.exit(e);
+    return status == 0 ? 0 : 2;
+  } catch (const uvtk::UsageError& e) {
+    std::fprintf(stderr, "uvtk: error: %s\n", e.what());
+    return 2;
+  } catch (const uvtk::InputError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 3;
+  } catch (const uvtk::OutputError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 4;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "uvtk: internal error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

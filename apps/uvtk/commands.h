@@ -1,0 +1,10 @@
+// The subcommand table of the `uvtk` program: each adds itself to the root app.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace uvtk::cli {
+
+void addMapCommand(CLI::App& root);
+
+}  // namespace uvtk::cli

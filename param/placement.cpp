@@ -1,0 +1,107 @@
+#include "param/placement.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "param/formulas.h"
+
+namespace uvtk::param {
+
+namespace {
+
+// Rows x, y, z of a right-handed frame with z along `axis` and x along `reference`.
+Mat3 frameRows(const Vec3& axis, const Vec3& reference) {
+  const Vec3 z = axis.normalized();
+  const Vec3 x = (reference - reference.dot(z) * z).normalized();
+  Mat3 rows;
+  rows.row(0) = x;
+  rows.row(1) = z.cross(x);
+  rows.row(2) = z;
+  return rows;
+}
+
+// The frame rows of a fit, before scaling: which direction becomes local x, y and z.
+Mat3 fittedRotation(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options) {
+  if (options.fit == Fit::BBox) {
+    // A cyclic permutation keeps the frame right-handed: axis x gives local (y, z, x), etc.
+    Mat3 rows = Mat3::Zero();
+    for (int k = 0; k < 3; ++k) rows(k, (options.axis + 1 + k) % 3) = 1.0;
+    return rows;
+  }
+  // Spread-ordered axes e0 (largest), e1, e2 (smallest). A plane looks along the smallest spread
+  // with x along the largest; the other surfaces put their axis along the largest spread.
+  const Mat3 e = options.fit == Fit::Pca ? principalAxes(positions) : orientedBoxAxes(positions);
+  if (surface == SurfaceKind::Plane) return frameRows(e.row(2), e.row(0));
+  return frameRows(e.row(0), e.row(1));
+}
+
+double positiveOr(double value, double fallback) { return value > 0.0 && std::isfinite(value) ? value : fallback; }
+
+}  // namespace
+
+Affine3 fitPlacement(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options) {
+  Affine3 localFromObject = Affine3::Identity();
+  if (surface == SurfaceKind::TwoPlane) return localFromObject;
+  if (options.frame) {
+    const ExplicitFrame& f = *options.frame;
+    if (!(f.axisDir.norm() > 0.0) || !f.axisDir.allFinite())
+      throw UsageError("--axis-dir: expected a non-zero direction");
+    if (!((f.refDir - f.refDir.dot(f.axisDir.normalized()) * f.axisDir.normalized()).norm() > 1e-12 * f.refDir.norm()))
+      throw UsageError("--ref-dir: expected a direction not parallel to --axis-dir");
+    if (!(f.scale > 0.0) || !std::isfinite(f.scale)) throw UsageError("--scale: expected a positive number");
+    localFromObject.linear() = frameRows(f.axisDir, f.refDir) / f.scale;
+    localFromObject.translation() = -(localFromObject.linear() * f.center);
+    return localFromObject;
+  }
+  if (options.fit == Fit::None || positions.empty()) return localFromObject;
+
+  const Mat3 rotation = fittedRotation(positions, surface, options);
+  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  for (const Vec3& p : positions) {
+    const Vec3 r = rotation * p;
+    lo = lo.cwiseMin(r);
+    hi = hi.cwiseMax(r);
+  }
+  const Vec3 extent = hi - lo;
+  const Vec3 center = 0.5 * (lo + hi);
+
+  // local = scale (rotation p - origin), per axis
+  Vec3 origin = center, scale = Vec3::Ones();
+  switch (surface) {
+    case SurfaceKind::Plane: {
+      const double xy = positiveOr(std::max(extent.x(), extent.y()), 1.0);
+      origin = Vec3(lo.x(), lo.y(), center.z());
+      scale = Vec3(1.0 / positiveOr(extent.x(), xy), 1.0 / positiveOr(extent.y(), xy), 1.0 / xy);
+      break;
+    }
+    case SurfaceKind::Cylinder: {
+      double radius = 0.0;
+      for (const Vec3& p : positions) {
+        const Vec3 r = rotation * p;
+        radius = std::max(radius, radialDistance(r.x() - center.x(), r.y() - center.y()));
+      }
+      radius = positiveOr(radius, 1.0);
+      origin.z() = lo.z();  // the base of the box: v runs from 0 at the bottom to 1 at the top
+      scale = Vec3(1.0 / radius, 1.0 / radius, 1.0 / positiveOr(extent.z(), radius));
+      break;
+    }
+    case SurfaceKind::Sphere: {
+      double radius = 0.0;
+      for (const Vec3& p : positions) radius = std::max(radius, (rotation * p - center).norm());
+      scale = Vec3::Constant(1.0 / positiveOr(radius, 1.0));
+      break;
+    }
+    case SurfaceKind::Cube: {
+      const double largest = positiveOr(0.5 * extent.maxCoeff(), 1.0);
+      for (int a = 0; a < 3; ++a) scale[a] = 1.0 / positiveOr(0.5 * extent[a], largest);
+      break;
+    }
+    case SurfaceKind::TwoPlane: break;
+  }
+  localFromObject.linear() = scale.asDiagonal() * rotation;
+  localFromObject.translation() = -(scale.asDiagonal() * origin);
+  return localFromObject;
+}
+
+}  // namespace uvtk::param

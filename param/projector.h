@@ -1,0 +1,109 @@
+// Projector mappings of Bier & Sloan (1986): a mesh and options in, per-corner UVs, per-face
+// status and a summary out. The library entry point behind `uvtk map`.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "core/mesh.h"
+#include "core/uv_map.h"
+#include "param/formulas.h"
+#include "param/placement.h"
+
+namespace uvtk::param {
+
+enum class RayKind { SurfaceNormal, Centroid, ObjectNormal, Reflection };
+
+enum class SeamMode {
+  None,   // raw per-vertex u: the artifact, for inspection
+  Shift,  // add 1 to the low corners of straddling faces: u in [0, 1.5), render with REPEAT
+  Cut,    // also cut straddling triangles along the seam: u in [0, 1], CLAMP works
+};
+
+enum class PoleMode {
+  None,  // pole vertices get u = 0
+  Fan,   // each face's pole corner gets the mean u of its other corners
+};
+
+// The UV transform after mapping: flip, then scale, then rotate about (0.5, 0.5), then offset.
+struct UvTransform {
+  Vec2 scale = Vec2::Ones();
+  Vec2 offset = Vec2::Zero();
+  double rotateDegrees = 0.0;
+  bool flipU = false;  // u -> 1 - u
+  bool flipV = false;  // v -> 1 - v
+  bool isIdentity() const;
+  Vec2 apply(const Vec2& uv) const;
+};
+
+struct ProjectorOptions {
+  SurfaceKind surface = SurfaceKind::Sphere;
+  RayKind ray = RayKind::SurfaceNormal;
+  PlacementOptions placement;
+  // two-plane: u and v are signed distances to these object-space planes (a, b, c, d)
+  Vec4 planeU = Vec4(1, 0, 0, 0);
+  Vec4 planeV = Vec4(0, 1, 0, 0);
+  // cylinder: planar caps on faces whose normal is within capAngleDegrees of the axis
+  bool cylinderCaps = false;
+  double capAngleDegrees = 45.0;
+  SpherePreset spherePreset = SpherePreset::Default;
+  CubeConvention cubeConvention = CubeConvention::Gl;
+  CubeLayout cubeLayout = CubeLayout::Faces;
+  // reflection: the eye in object space (required), and lookup by direction only
+  std::optional<Vec3> eye;
+  bool atInfinity = false;
+  SeamMode seam = SeamMode::Shift;
+  PoleMode pole = PoleMode::Fan;
+  double poleEpsilon = 1e-6;  // a pole: hypot(x, y) <= eps |q|
+  UvTransform uvTransform;
+};
+
+// The state of one evaluated vertex or corner.
+enum class CornerState : std::uint8_t {
+  Ok,
+  Pole,     // on the axis of a wrapping surface: v is defined, u is not (§5)
+  Invalid,  // the probe missed the surface, or a value was not finite
+};
+
+// One vertex through both stages, before seam and pole repair.
+struct VertexUv {
+  Vec2 uv = Vec2::Zero();     // u = 0 for poles; (0, 0) when invalid
+  Vec2 axial = Vec2::Zero();  // the hit point projected along the surface's axis
+  CornerState state = CornerState::Invalid;
+};
+
+struct MappingSummary {
+  std::size_t vertices = 0, faces = 0;  // of the output mesh
+  std::size_t straddlingFaces = 0;      // faces whose u spanned more than 0.5 before repair
+  std::size_t seamEdges = 0;            // edges whose two faces give an endpoint u differing by an integer
+  double seamLength = 0.0;              // their total length in object space
+  std::size_t poleVertices = 0, poleFaces = 0;
+  std::size_t invalidVertices = 0, invalidFaces = 0;
+  std::size_t cubeSeamFaces = 0, capFaces = 0;
+  std::size_t addedVertices = 0, addedFaces = 0;  // by --seam cut
+  std::vector<int> invalidVertexList;             // vertex indices (input numbering, 0-based)
+  std::vector<int> poleVertexList;
+  std::vector<int> poleFaceList;                  // face indices of the output mesh
+};
+
+struct Projection {
+  Mesh mesh;  // the input, or with straddling triangles cut (SeamMode::Cut); no file texcoords
+  UvMap uv;
+  MappingSummary summary;
+  Affine3 localFromObject = Affine3::Identity();
+};
+
+// The two-stage mapping of single vertices in object space: placement, O-mapping, surface,
+// S-mapping, no seam or pole repair and no UV transform. `normals` is read only by the normal
+// and reflection O-mappings (then it has one unit normal per position). `out` is resized, so a
+// caller that maps repeatedly reuses its memory. The cube chooses faces per triangle and is a
+// UsageError here.
+void mapVertices(const ProjectorOptions& options, const Affine3& localFromObject, const std::vector<Vec3>& positions,
+                 const std::vector<Vec3>& normals, std::vector<VertexUv>& out);
+
+// Maps `mesh` (taken by value: with SeamMode::Cut its triangles change). Throws UsageError for
+// inconsistent options (reflection without an eye, parallel two-plane planes, ...).
+Projection project(Mesh mesh, const ProjectorOptions& options);
+
+}  // namespace uvtk::param

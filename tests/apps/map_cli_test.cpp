@@ -1,0 +1,154 @@
+// `uvtk map` as a user runs it: exit codes, messages, outputs, and nothing written on failure.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "io/mesh_reader.h"
+#include "io/obj_writer.h"
+#include "meshes/generators.h"
+#include "param/projector.h"
+
+namespace uvtk {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int status;
+  std::string err;
+};
+
+class MapCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("uvtk_cli_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  void writeText(const std::string& name, const std::string& text) const { std::ofstream(path(name)) << text; }
+
+  static std::string readText(const std::string& file) {
+    std::ifstream in(file);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+
+  CliRun uvtk(const std::string& arguments) const {
+    const std::string errFile = path("stderr.txt");
+    const std::string command = std::string(UVTK_BINARY) + " " + arguments + " 2> " + errFile + " > /dev/null";
+    const int raw = std::system(command.c_str());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, readText(errFile)};
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(MapCli, MapsASphereAndPrintsTheSummaryLine) {
+  io::writeObj(path("sphere.obj"), meshes::latLongSphere(16, 8), nullptr);
+  const CliRun r = uvtk("map " + path("sphere.obj") + " --projector sphere -o " + path("out.obj"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("uvtk map: 114 vertices, 224 faces, 8 seam edges, 2 pole vertices, 32 pole faces, "
+                       "0 invalid vertices"),
+            std::string::npos)
+      << r.err;
+  const std::string obj = readText(path("out.obj"));
+  EXPECT_NE(obj.find("\nvt "), std::string::npos);
+  EXPECT_NE(obj.find("\nf 1/"), std::string::npos);
+}
+
+TEST_F(MapCli, WritesUvsThatRoundTripExactly) {
+  const Mesh mesh = meshes::icosphere(2);
+  io::writeObj(path("ico.obj"), mesh, nullptr);
+  ASSERT_EQ(uvtk("map " + path("ico.obj") + " --projector cylinder --seam cut -o " + path("out.obj")).status, 0);
+  param::ProjectorOptions options;
+  options.surface = param::SurfaceKind::Cylinder;
+  options.seam = param::SeamMode::Cut;
+  const param::Projection expected = param::project(io::readMesh(path("ico.obj")).mesh, options);
+  const Mesh back = io::readMesh(path("out.obj")).mesh;
+  ASSERT_EQ(back.faceCount(), expected.mesh.faceCount());
+  ASSERT_EQ(back.vertexCount(), expected.mesh.vertexCount());
+  for (std::size_t f = 0; f < back.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& uvw = back.texcoords[back.cornerTexcoords[f][k]];
+      EXPECT_EQ(uvw.head<2>(), expected.uv.uv[3 * f + k]) << f << " " << k;
+      EXPECT_EQ(back.triangles[f][k], expected.mesh.triangles[f][k]);
+    }
+}
+
+TEST_F(MapCli, WritesTheSummaryAsJson) {
+  io::writeObj(path("sphere.obj"), meshes::latLongSphere(16, 8), nullptr);
+  ASSERT_EQ(uvtk("map " + path("sphere.obj") + " -o " + path("out.obj") + " --json " + path("s.json")).status, 0);
+  const std::string json = readText(path("s.json"));
+  for (const char* key : {"\"vertices\": 114", "\"faces\": 224", "\"seam_edges\": 8", "\"pole_vertices\": 2",
+                          "\"pole_faces\": 32", "\"invalid_vertices\": 0", "\"milliseconds\""})
+    EXPECT_NE(json.find(key), std::string::npos) << key << "\n" << json;
+}
+
+TEST_F(MapCli, HelpListsEveryOptionWithItsDefault) {
+  const std::string help = path("help.txt");
+  ASSERT_EQ(std::system((std::string(UVTK_BINARY) + " map --help > " + help).c_str()), 0);
+  const std::string text = readText(help);
+  for (const char* option : {"--projector", "--omap", "--fit", "--axis", "--center", "--axis-dir", "--ref-dir",
+                             "--scale", "--plane-u", "--plane-v", "--caps", "--cap-angle", "--sphere-preset",
+                             "--cube-convention", "--cube-layout", "--eye", "--at-infinity", "--seam", "--pole",
+                             "--pole-eps", "--uv-scale", "--uv-offset", "--uv-rotate", "--flip-u", "--flip-v",
+                             "--json", "--write-w"})
+    EXPECT_NE(text.find(option), std::string::npos) << option;
+  for (const char* defaults : {"=sphere", "=isn", "=bbox", "=shift", "=fan", "=1e-06", "=45", "=gl",
+                              "plane|two-plane|cylinder|sphere|cube", "isn|centroid|normal|reflection"})
+    EXPECT_NE(text.find(defaults), std::string::npos) << defaults;
+}
+
+TEST_F(MapCli, UnknownOptionsAreUsageErrorsAndWriteNothing) {
+  io::writeObj(path("sphere.obj"), meshes::latLongSphere(8, 4), nullptr);
+  const CliRun r = uvtk("map " + path("sphere.obj") + " --projektor sphere -o " + path("out.obj"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--projektor"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("out.obj")));
+}
+
+TEST_F(MapCli, ReflectionWithoutAnEyeIsAUsageError) {
+  io::writeObj(path("sphere.obj"), meshes::latLongSphere(8, 4), nullptr);
+  const CliRun r = uvtk("map " + path("sphere.obj") + " --omap reflection -o " + path("out.obj"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--eye"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("out.obj")));
+}
+
+TEST_F(MapCli, BadInputNamesFileAndLineAndLeavesAnExistingOutputUntouched) {
+  writeText("bad.obj", "v 0 0 0\nv 1 0 0\nf 1 2 7\n");
+  writeText("out.obj", "precious");
+  const CliRun r = uvtk("map " + path("bad.obj") + " -o " + path("out.obj"));
+  EXPECT_EQ(r.status, 3);
+  EXPECT_NE(r.err.find("bad.obj:3: error: expected"), std::string::npos) << r.err;
+  EXPECT_EQ(readText(path("out.obj")), "precious");
+  for (const auto& entry : fs::directory_iterator(dir_))  // no temporary left behind
+    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+}
+
+TEST_F(MapCli, AnUnwritableOutputIsExitStatusFour) {
+  io::writeObj(path("sphere.obj"), meshes::latLongSphere(8, 4), nullptr);
+  const CliRun r = uvtk("map " + path("sphere.obj") + " -o " + path("no/such/dir/out.obj"));
+  EXPECT_EQ(r.status, 4);
+  EXPECT_NE(r.err.find("out.obj"), std::string::npos) << r.err;
+}
+
+TEST_F(MapCli, ExplicitPlacementGoesWithFitNoneOnly) {
+  io::writeObj(path("sphere.obj"), meshes::latLongSphere(8, 4), nullptr);
+  EXPECT_EQ(uvtk("map " + path("sphere.obj") + " --fit bbox --center 0,0,0 -o " + path("o.obj")).status, 2);
+  EXPECT_EQ(uvtk("map " + path("sphere.obj") + " --center 0,0,x -o " + path("o.obj")).status, 2);
+  EXPECT_EQ(uvtk("map " + path("sphere.obj") + " --center 0,0,1 --scale 2 -o " + path("o.obj")).status, 0);
+}
+
+}  // namespace
+}  // namespace uvtk

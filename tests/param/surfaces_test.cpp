@@ -1,0 +1,131 @@
+// Each intermediate surface resolving each kind of probe, against hand-computed hit points.
+#include "param/surfaces.h"
+
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+
+namespace uvtk::param {
+namespace {
+
+Probe foot(const Vec3& p) { return {Probe::Kind::Foot, p, Vec3::Zero()}; }
+Probe central(const Vec3& p) { return {Probe::Kind::Central, p, Vec3::Zero()}; }
+Probe ray(const Vec3& p, const Vec3& d) { return {Probe::Kind::Ray, p, d}; }
+
+TEST(FirstNonNegativeRoot, ReturnsTheNearestHitInFront) {
+  // t^2 - 3t + 2 = (t - 1)(t - 2)
+  EXPECT_DOUBLE_EQ(*firstNonNegativeRoot(1, -3, 2, 1), 1.0);
+  // (t + 1)(t - 2): the root behind is skipped
+  EXPECT_DOUBLE_EQ(*firstNonNegativeRoot(1, -1, -2, 1), 2.0);
+  // (t + 1)(t + 2): both behind
+  EXPECT_FALSE(firstNonNegativeRoot(1, 3, 2, 1));
+  // no real root
+  EXPECT_FALSE(firstNonNegativeRoot(1, 0, 1, 1));
+  // a = 0: linear, or parallel
+  EXPECT_DOUBLE_EQ(*firstNonNegativeRoot(0, 2, -4, 1), 2.0);
+  EXPECT_FALSE(firstNonNegativeRoot(0, 0, 1, 1));
+}
+
+TEST(FirstNonNegativeRoot, TreatsAnOriginOnTheSurfaceAsTheHit) {
+  // c = -1e-17: just inside by rounding, the ray heading inwards; the hit is the origin itself.
+  EXPECT_EQ(*firstNonNegativeRoot(1, -2, -1e-17, 1), 0.0);
+}
+
+TEST(PlaneSurface, ResolvesEveryProbeKind) {
+  const PlaneSurface plane;
+  EXPECT_EQ(*plane.resolve(foot({2, 3, 4})), Vec3(2, 3, 0));
+  EXPECT_EQ(*plane.resolve(central({2, 4, 2})), Vec3(1, 2, 1));  // (x/z, y/z)
+  EXPECT_FALSE(plane.resolve(central({2, 4, 0})));
+  EXPECT_FALSE(plane.resolve(central({2, 4, -1})));
+  // t = -pz/nz = -4/-2 = 2: (1 + 2, 1 + 0, 0)
+  EXPECT_EQ(*plane.resolve(ray({1, 1, 4}, {1, 0, -2})), Vec3(3, 1, 0));
+  EXPECT_FALSE(plane.resolve(ray({1, 1, 4}, {1, 0, 0})));
+  EXPECT_EQ(plane.uvAt({0.25, 0.5, 0}), Vec2(0.25, 0.5));
+}
+
+TEST(TwoPlaneSurface, GivesTrueSignedDistances) {
+  const TwoPlaneSurface s(Vec4(0, 0, 2, -2), Vec4(3, 4, 0, 0));  // z = 1 and 3x + 4y = 0
+  EXPECT_DOUBLE_EQ(s.uvAt({0, 0, 3}).x(), 2.0);
+  EXPECT_DOUBLE_EQ(s.uvAt({1, 2, 0}).y(), (3.0 + 8.0) / 5.0);
+}
+
+TEST(TwoPlaneSurface, WithThePlanesXAndYEqualsThePlaneProjector) {
+  const TwoPlaneSurface two(Vec4(1, 0, 0, 0), Vec4(0, 1, 0, 0));
+  const PlaneSurface plane;
+  EXPECT_EQ(two.axis, Vec3(0, 0, 1));
+  for (const Probe& p : {foot({0.3, -2, 5}), central({0.3, -2, 5}), ray({0.3, -2, 5}, {0.1, 0.2, -0.7})}) {
+    const Vec2 a = two.uvAt(*two.resolve(p)), b = plane.uvAt(*plane.resolve(p));
+    EXPECT_DOUBLE_EQ(a.x(), b.x());
+    EXPECT_DOUBLE_EQ(a.y(), b.y());
+  }
+}
+
+TEST(TwoPlaneSurface, RejectsZeroNormalsAndParallelPlanes) {
+  EXPECT_THROW(TwoPlaneSurface(Vec4(0, 0, 0, 1), Vec4(0, 1, 0, 0)), UsageError);
+  EXPECT_THROW(TwoPlaneSurface(Vec4(1, 0, 0, 0), Vec4(-2, 0, 0, 5)), UsageError);
+}
+
+TEST(CylinderSurface, ResolvesEveryProbeKind) {
+  const CylinderSurface c;
+  EXPECT_EQ(c.uvAt(*c.resolve(foot({0, 2, 0.5}))), Vec2(0.25, 0.5));
+  // centroid: the ray from the origin meets rho = 1 at v = z/rho
+  EXPECT_EQ(c.uvAt(*c.resolve(central({0, 2, 3}))), Vec2(0.25, 1.5));
+  EXPECT_FALSE(c.resolve(central({0, 0, 3})));
+  // from inside along +x: exits at x = 1
+  EXPECT_TRUE(c.resolve(ray({0.5, 0, 0.2}, {1, 0, 0}))->isApprox(Vec3(1, 0, 0.2)));
+  // from outside heading in: enters at x = 1 (t = 1)
+  EXPECT_TRUE(c.resolve(ray({2, 0, 0}, {-1, 0, 0.5}))->isApprox(Vec3(1, 0, 0.5)));
+  // from outside heading away, or parallel to the axis: misses
+  EXPECT_FALSE(c.resolve(ray({2, 0, 0}, {1, 0, 0})));
+  EXPECT_FALSE(c.resolve(ray({2, 0, 0}, {0, 0, 1})));
+}
+
+TEST(SphereSurface, ResolvesEveryProbeKind) {
+  const SphereSurface s;
+  EXPECT_EQ(s.uvAt(*s.resolve(foot({0, 0, -5}))).y(), 0.0);
+  EXPECT_FALSE(s.resolve(foot({0, 0, 0})));
+  EXPECT_FALSE(s.resolve(central({0, 0, 0})));
+  EXPECT_TRUE(s.resolve(ray({0, 0, 0}, {0, 2, 0}))->isApprox(Vec3(0, 1, 0)));
+  EXPECT_TRUE(s.resolve(ray({0, -3, 0}, {0, 1, 0}))->isApprox(Vec3(0, -1, 0)));
+  EXPECT_FALSE(s.resolve(ray({0, -3, 0}, {1, 0, 0})));
+  // a ray tangent to the sphere touches it once
+  EXPECT_TRUE(s.resolve(ray({-2, 1, 0}, {1, 0, 0}))->isApprox(Vec3(0, 1, 0), 1e-8));
+}
+
+TEST(CubeSurface, ChoosesFacesPerProbeKind) {
+  const CubeSurface cube;
+  EXPECT_EQ(*cube.chooseFace(foot({0.9, 0, 0}), Vec3(0, 0, -1)), CubeFace::NegZ);  // box mapping: the normal
+  EXPECT_EQ(*cube.chooseFace(central({0.1, -0.5, 0.2}), Vec3::Zero()), CubeFace::NegY);
+  EXPECT_FALSE(cube.chooseFace(central({0, 0, 0}), Vec3::Zero()));
+  EXPECT_EQ(*cube.chooseFace(ray({0, 0, 0}, {0.2, 0.1, 1}), Vec3::Zero()), CubeFace::PosZ);    // exit from inside
+  EXPECT_EQ(*cube.chooseFace(ray({5, 0.5, 0}, {-1, 0, 0}), Vec3::Zero()), CubeFace::PosX);    // entry from outside
+  EXPECT_FALSE(cube.chooseFace(ray({5, 5, 0}, {-1, 0, 0}), Vec3::Zero()));                   // passes by
+}
+
+TEST(CubeSurface, ProjectsCornersOntoTheChosenFacePlane) {
+  const CubeSurface cube;
+  // Foot: orthographic, (sc + 1)/2 of the point itself; +Z: sc = x, tc = -y
+  EXPECT_TRUE(cube.projectOnFace(foot({0.5, 0.5, 0.2}), CubeFace::PosZ)->isApprox(Vec2(0.75, 0.25)));
+  // Central: divided by the face axis component
+  EXPECT_TRUE(cube.projectOnFace(central({0.25, 0.25, 0.5}), CubeFace::PosZ)->isApprox(Vec2(0.75, 0.25)));
+  EXPECT_FALSE(cube.projectOnFace(central({0.25, 0.25, -0.5}), CubeFace::PosZ));
+  // Ray from the origin along (0.5, 0.5, 1) meets z = 1 at (0.5, 0.5)
+  EXPECT_TRUE(cube.projectOnFace(ray({0, 0, 0}, {0.5, 0.5, 1}), CubeFace::PosZ)->isApprox(Vec2(0.75, 0.25)));
+  EXPECT_FALSE(cube.projectOnFace(ray({0, 0, 0}, {1, 0, 0}), CubeFace::PosZ));
+}
+
+TEST(ReflectionRay, MirrorsTheViewAboutTheNormal) {
+  const ReflectionRay r{Vec3(0, 0, 5), false};
+  // V = (0,0,-1) at the point (0,0,1) with N = (0,0,1): R = V - 2 (N.V) N = (0,0,1)
+  const Probe p = r.probe({Vec3(0, 0, 1), Vec3(0, 0, 1)});
+  EXPECT_EQ(p.kind, Probe::Kind::Ray);
+  EXPECT_TRUE(p.direction.isApprox(Vec3(0, 0, 1)));
+  // 45 degrees: V = (1,0,-1)/sqrt2 at N = (0,0,1) gives R = (1,0,1)/sqrt2
+  const ReflectionRay far{Vec3(-1, 0, 1), true};
+  const Probe q = far.probe({Vec3(0, 0, 0), Vec3(0, 0, 1)});
+  EXPECT_EQ(q.kind, Probe::Kind::Central);
+  EXPECT_TRUE(q.point.isApprox(Vec3(1, 0, 1) / std::sqrt(2.0)));
+}
+
+}  // namespace
+}  // namespace uvtk::param
