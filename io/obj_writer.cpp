@@ -4,7 +4,7 @@
 #include <cstring>
 #include <ostream>
 #include <sstream>
-#include <unordered_map>
+#include <vector>
 
 #include "core/error.h"
 #include "io/atomic_file.h"
@@ -45,27 +45,8 @@ class TextBuffer {
 
 constexpr std::size_t kFlushBytes = 1 << 20;
 
-// A `vt` entry is shared by the corners of one vertex that have the same UV; bitwise equality,
-// so that -0 and +0 or two NaN payloads never merge silently.
-struct TexcoordKey {
-  int vertex;
-  std::uint64_t u, v, w;
-  bool operator==(const TexcoordKey& o) const { return vertex == o.vertex && u == o.u && v == o.v && w == o.w; }
-};
-
-struct TexcoordKeyHash {
-  std::size_t operator()(const TexcoordKey& k) const {
-    std::uint64_t h = static_cast<std::uint64_t>(k.vertex) * 0x9E3779B97F4A7C15ull;
-    for (std::uint64_t x : {k.u, k.v, k.w}) h = (h ^ x) * 0xBF58476D1CE4E5B9ull + (h >> 29);
-    return static_cast<std::size_t>(h);
-  }
-};
-
-std::uint64_t bitsOf(double value) {
-  std::uint64_t bits;
-  std::memcpy(&bits, &value, sizeof bits);
-  return bits;
-}
+// Bitwise equality of UVs, so that -0 and +0 never merge silently.
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 void writeHeader(TextBuffer& out, const std::string& header) {
   std::istringstream lines(header);
@@ -98,30 +79,48 @@ void writeObj(std::ostream& stream, const Mesh& mesh, const UvMap* uvs, const Ob
     flushIfFull();
   }
 
-  // One vt per distinct (vertex, uv); cornerTexcoord[c] is its 1-based index.
+  // One vt per distinct (vertex, uv), numbered vertex by vertex: the corners are bucketed by
+  // vertex (a counting sort, no hashing), and each vertex's few distinct UVs found by a scan.
+  // cornerTexcoord[c] is the 1-based vt index of corner c.
   std::vector<std::size_t> cornerTexcoord;
   if (uvs) {
-    const bool hasW = !uvs->w.empty();
-    cornerTexcoord.resize(3 * faceCount);
-    std::unordered_map<TexcoordKey, std::size_t, TexcoordKeyHash> index;
-    index.reserve(mesh.positions.size() + mesh.positions.size() / 8);
-    for (std::size_t c = 0; c < 3 * faceCount; ++c) {
-      const Vec2& uv = uvs->uv[c];
-      const double w = options.writeW && hasW ? uvs->w[c] : 0.0;
-      const TexcoordKey key{mesh.triangles[c / 3][c % 3], bitsOf(uv.x()), bitsOf(uv.y()), bitsOf(w)};
-      const auto [it, inserted] = index.emplace(key, index.size() + 1);
-      cornerTexcoord[c] = it->second;
-      if (!inserted) continue;
-      out.text("vt ");
-      out.number(uv.x(), options.floatPrecision);
-      out.character(' ');
-      out.number(uv.y(), options.floatPrecision);
-      if (options.writeW) {
+    const std::size_t corners = 3 * faceCount;
+    const bool hasW = options.writeW && !uvs->w.empty();
+    auto w = [&](std::size_t c) { return hasW ? uvs->w[c] : 0.0; };
+    std::vector<std::size_t> firstOfVertex(mesh.positions.size() + 1, 0), byVertex(corners);
+    for (std::size_t c = 0; c < corners; ++c) ++firstOfVertex[mesh.triangles[c / 3][c % 3] + 1];
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) firstOfVertex[v + 1] += firstOfVertex[v];
+    {
+      std::vector<std::size_t> next(firstOfVertex.begin(), firstOfVertex.end() - 1);
+      for (std::size_t c = 0; c < corners; ++c) byVertex[next[mesh.triangles[c / 3][c % 3]]++] = c;
+    }
+    cornerTexcoord.resize(corners);
+    std::size_t written = 0;
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+      const std::size_t begin = firstOfVertex[v], end = firstOfVertex[v + 1];
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::size_t c = byVertex[i];
+        std::size_t same = begin;  // an earlier corner of this vertex with the same UV, if any
+        while (same < i && !(sameBits(uvs->uv[byVertex[same]].x(), uvs->uv[c].x()) &&
+                             sameBits(uvs->uv[byVertex[same]].y(), uvs->uv[c].y()) &&
+                             sameBits(w(byVertex[same]), w(c))))
+          ++same;
+        if (same < i) {
+          cornerTexcoord[c] = cornerTexcoord[byVertex[same]];
+          continue;
+        }
+        cornerTexcoord[c] = ++written;
+        out.text("vt ");
+        out.number(uvs->uv[c].x(), options.floatPrecision);
         out.character(' ');
-        out.number(w, options.floatPrecision);
+        out.number(uvs->uv[c].y(), options.floatPrecision);
+        if (options.writeW) {
+          out.character(' ');
+          out.number(w(c), options.floatPrecision);
+        }
+        out.character('\n');
+        flushIfFull();
       }
-      out.character('\n');
-      flushIfFull();
     }
   }
 

@@ -17,8 +17,8 @@ struct ObjWriteOptions {
 };
 
 // Writes, in this order: the header, `v` in mesh order (shortest text that round-trips the
-// double), one `vt` per distinct (vertex, u, v[, w]), the mesh's `vn`, then the faces in mesh
-// order. `uvs` may be null (faces written as `f v` or `f v//vn`). A face with an invalid corner
+// double), one `vt` per distinct (vertex, u, v[, w]) in vertex order (so a mesh without seams
+// has vt i for v i), the mesh's `vn`, then the faces in mesh order. `uvs` may be null (faces written as `f v` or `f v//vn`). A face with an invalid corner
 // is listed in a comment before the faces; its invalid corners carry `vt 0 0`.
 void writeObj(std::ostream& out, const Mesh& mesh, const UvMap* uvs, const ObjWriteOptions& options = {});
 

@@ -75,7 +75,7 @@ bool isFinite(const Vec3& v) { return std::isfinite(v.x()) && std::isfinite(v.y(
 
 // The whole two-stage mapping of one sample: O-mapping, resolve, pole test, S-mapping.
 template <class S, class M>
-VertexUv evaluateSample(const S& surface, const M& mapping, const Sample& sample, PoleTest isPole) {
+inline VertexUv evaluateSample(const S& surface, const M& mapping, const Sample& sample, PoleTest isPole) {
   VertexUv out;
   const std::optional<Vec3> q = surface.resolve(mapping.probe(sample));
   if (!q || !isFinite(*q)) return out;
@@ -293,9 +293,23 @@ Projection project(Mesh mesh, const ProjectorOptions& o) {
     if (o.pole == PoleMode::Fan) fanPoleCorners(corners);
   }
   out.summary = summarize(mesh, corners, seams);
-  if (!o.uvTransform.isIdentity())
-    for (std::size_t i = 0; i < corners.uv.size(); ++i)
-      if (corners.state[i] != CornerState::Invalid) corners.uv[i] = o.uvTransform.apply(corners.uv[i]);
+  if (!o.uvTransform.isIdentity()) {
+    bool overflowed = false;
+    for (std::size_t i = 0; i < corners.uv.size(); ++i) {
+      if (corners.state[i] == CornerState::Invalid) continue;
+      corners.uv[i] = o.uvTransform.apply(corners.uv[i]);
+      if (corners.uv[i].allFinite()) continue;
+      corners.state[i] = CornerState::Invalid;  // a scale or offset that overflows
+      corners.faceFlags[i / 3] |= kFaceInvalid;
+      overflowed = true;
+    }
+    if (overflowed) {  // recount the invalid corners; the seam counts needed the untransformed u
+      const MappingSummary recount = summarize(mesh, corners, seams);
+      out.summary.invalidVertices = recount.invalidVertices;
+      out.summary.invalidFaces = recount.invalidFaces;
+      out.summary.invalidVertexList = recount.invalidVertexList;
+    }
+  }
   out.uv = std::move(corners).toUvMap();
   out.mesh = std::move(mesh);
   return out;

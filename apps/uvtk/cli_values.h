@@ -1,7 +1,10 @@
-// Parsing of option values shared by the subcommands: vectors written as "x,y,z".
+// Option values shared by the subcommands: named choices, vectors written as "x,y,z", matrices.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/math.h"
 
@@ -13,6 +16,17 @@ Eigen::VectorXd parseNumbers(const std::string& text, int n, const std::string& 
 inline Vec2 parseVec2(const std::string& text, const std::string& option) { return parseNumbers(text, 2, option); }
 inline Vec3 parseVec3(const std::string& text, const std::string& option) { return parseNumbers(text, 3, option); }
 inline Vec4 parseVec4(const std::string& text, const std::string& option) { return parseNumbers(text, 4, option); }
+
+// A named choice: the help shows the names (a|b|c), not the enumerators they map to.
+template <class Enum>
+inline CLI::Option* addChoice(CLI::App& app, const std::string& name, Enum& target,
+                       const std::vector<std::pair<std::string, Enum>>& table, const std::string& help) {
+  std::string names;
+  for (const auto& [text, value] : table) names += (names.empty() ? "" : "|") + text;
+  return app.add_option(name, target, help)
+      ->transform(CLI::CheckedTransformer(table, CLI::ignore_case).description(""))
+      ->type_name(names);
+}
 
 // A 4x4 matrix from 16 numbers separated by spaces or commas, column-major like glLoadMatrix.
 Mat4 parseMatrix(const std::string& text, const std::string& option);

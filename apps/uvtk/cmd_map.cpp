@@ -1,9 +1,12 @@
 // `uvtk map`: assign UVs to a mesh with a projector and write an OBJ with per-corner UVs.
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "cli_values.h"
 #include "commands.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
@@ -19,6 +22,7 @@ namespace {
 struct MapArguments {
   std::string input, output, json;
   bool writeW = false;
+  bool floatDigits = false;
   ProjectorArguments projector;
 };
 
@@ -26,21 +30,42 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The stage under way, on one line that the next stage overwrites; only on a terminal, where a
+// person waits for a large mesh, never in logs.
+class Progress {
+ public:
+  Progress() : enabled_(::isatty(STDERR_FILENO) != 0) {}
+  void stage(const char* what, const std::string& subject) const {
+    if (enabled_) std::fprintf(stderr, "\r\033[Kuvtk map: %s %s ...", what, subject.c_str());
+  }
+  void done() const {
+    if (enabled_) std::fprintf(stderr, "\r\033[K");
+  }
+
+ private:
+  bool enabled_;
+};
+
 void runMap(const MapArguments& a) {
   const param::ProjectorOptions options = a.projector.resolve();
+  const Progress progress;
+  progress.stage("reading", a.input);
   auto start = std::chrono::steady_clock::now();
   io::ReadMeshResult input = io::readMesh(a.input);
   const double readMs = millisecondsSince(start);
   const std::size_t inputVertices = input.mesh.vertexCount(), inputFaces = input.mesh.faceCount();
 
+  progress.stage("mapping", std::to_string(inputFaces) + " faces");
   start = std::chrono::steady_clock::now();
   const param::Projection projection = param::project(std::move(input.mesh), options);
   const double mapMs = millisecondsSince(start);
   const param::MappingSummary& s = projection.summary;
 
+  progress.stage("writing", a.output);
   start = std::chrono::steady_clock::now();
   io::ObjWriteOptions write;
   write.writeW = a.writeW;
+  write.floatPrecision = a.floatDigits;
   write.header = "uvtk map " + a.input;
   io::writeObj(a.output, projection.mesh, &projection.uv, write);
   const double writeMs = millisecondsSince(start);
@@ -54,6 +79,7 @@ void runMap(const MapArguments& a) {
     j["milliseconds"] = {{"read", readMs}, {"map", mapMs}, {"write", writeMs}};
     io::writeFileAtomically(a.json, j.dump(2) + "\n");
   }
+  progress.done();
   if (input.warnings.degenerateFaces || input.warnings.unreferencedVertices)
     std::fprintf(stderr, "%s: warning: %zu degenerate faces, %zu unreferenced vertices\n", a.input.c_str(),
                  input.warnings.degenerateFaces, input.warnings.unreferencedVertices);
@@ -72,6 +98,9 @@ void addMapCommand(CLI::App& root) {
   map->add_option("-o,--output", arguments->output, "Output OBJ with per-corner UVs")->required();
   map->add_option("--json", arguments->json, "Also write the summary as JSON");
   map->add_flag("--write-w", arguments->writeW, "Write the third UV component (the cube face id)");
+  addChoice<bool>(*map, "--uv-digits", arguments->floatDigits, {{"double", false}, {"float", true}},
+                  "UV text that round-trips a double (up to 17 digits) or a float (up to 9)")
+      ->default_str("double");
   addProjectorOptions(*map, arguments->projector);
   map->callback([arguments] { runMap(*arguments); });
 }

@@ -1,8 +1,5 @@
 #include "projector_cli.h"
 
-#include <string>
-#include <utility>
-#include <vector>
 
 #include "cli_values.h"
 #include "core/error.h"
@@ -12,17 +9,6 @@ namespace uvtk::cli {
 using namespace uvtk::param;
 
 namespace {
-
-// A named choice: the help shows the names (a|b|c), not the enumerators they map to.
-template <class Enum>
-CLI::Option* addChoice(CLI::App& app, const std::string& name, Enum& target,
-                       const std::vector<std::pair<std::string, Enum>>& table, const std::string& help) {
-  std::string names;
-  for (const auto& [text, value] : table) names += (names.empty() ? "" : "|") + text;
-  return app.add_option(name, target, help)
-      ->transform(CLI::CheckedTransformer(table, CLI::ignore_case).description(""))
-      ->type_name(names);
-}
 
 bool given(const CLI::App* app, const char* name) { return app->get_option(name)->count() > 0; }
 

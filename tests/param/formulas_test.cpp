@@ -4,9 +4,55 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 namespace uvtk::param {
 namespace {
+
+// The error of `value` in units in the last place of the exact result `reference`.
+double ulpsOff(double value, long double reference) {
+  const double rounded = static_cast<double>(reference);
+  const double ulp = std::nextafter(std::fabs(rounded), INFINITY) - std::fabs(rounded);
+  return static_cast<double>(std::fabs(static_cast<long double>(value) - reference) / ulp);
+}
+
+TEST(ArcTangent2, IsWithinTwoUlpOfTheExactAngleEverywhere) {
+  std::mt19937_64 random(2026);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-600, 600);
+  double worst = 0.0;
+  for (int i = 0; i < 2000000; ++i) {
+    double y = unit(random), x = unit(random);
+    if (i % 3 == 1) y = std::ldexp(y, exponent(random)), x = std::ldexp(x, exponent(random));
+    if (i % 3 == 2) x = y * (1.0 + 1e-9 * unit(random));  // near the diagonals, where the ranges meet
+    worst = std::max(worst, ulpsOff(arcTangent2(y, x), std::atan2(static_cast<long double>(y), static_cast<long double>(x))));
+  }
+  EXPECT_LE(worst, 2.0);
+  EXPECT_GT(worst, 0.5);  // it is not libm: this pins the test to the fast path
+}
+
+TEST(ArcTangent2, FollowsStdAtan2OnZerosAxesAndExtremes) {
+  for (double y : {0.0, -0.0, 1.0, -1.0, 1e-310, -1e308, 1.7e308})
+    for (double x : {0.0, -0.0, 1.0, -1.0, 1e-310, 1.5e308, -1.7e308}) {
+      const double expected = std::atan2(y, x);
+      EXPECT_NEAR(arcTangent2(y, x), expected, 2.5e-16 * std::fabs(expected)) << y << " " << x;
+      EXPECT_EQ(std::signbit(arcTangent2(y, x)), std::signbit(expected)) << y << " " << x;
+    }
+  EXPECT_EQ(arcTangent2(0.0, 1.0), 0.0);
+  EXPECT_EQ(arcTangent2(1.0, 0.0), std::atan2(1.0, 0.0));  // pi/2 rounded: exact on the axes
+  EXPECT_EQ(arcTangent2(0.0, -1.0), std::atan2(0.0, -1.0));
+}
+
+TEST(PoleTest, MatchesTheHypotFormOfTheDefinition) {
+  const PoleTest isPole(1e-6);
+  EXPECT_TRUE(isPole(0.0, 0.0));
+  EXPECT_TRUE(isPole(0.999999e-6, 1.0));
+  EXPECT_FALSE(isPole(1.000001e-6, 1.0));
+  EXPECT_TRUE(isPole(1e-306, 1e-300));   // no underflow
+  EXPECT_FALSE(isPole(1e300, 1e300));    // no overflow
+  EXPECT_TRUE(PoleTest(0.0)(0.0, 1.0));
+  EXPECT_FALSE(PoleTest(0.0)(1e-300, 1.0));
+}
 
 TEST(TurnFraction, IsZeroOnPlusXAndGrowsCounterClockwise) {
   EXPECT_EQ(turnFraction(0.0, 1.0), 0.0);

@@ -355,6 +355,21 @@ TEST(Project, AppliesTheUvTransformAfterTheSeamRepair) {
   for (std::size_t i = 0; i < plain.uv.uv.size(); ++i) EXPECT_EQ(moved.uv.uv[i], plain.uv.uv[i] + Vec2(3, 0));
 }
 
+TEST(Project, AUvTransformThatOverflowsFlagsTheCornersInvalidInsteadOfWritingInfinity) {
+  ProjectorOptions o = optionsFor(SurfaceKind::Plane);
+  o.placement.fit = Fit::None;
+  o.uvTransform.scale = Vec2(1e308, 1);
+  Mesh mesh;
+  mesh.positions = {{0, 0, 0}, {100, 0, 0}, {0, 1, 0}};
+  mesh.triangles = {{0, 1, 2}};
+  const Projection p = project(mesh, o);
+  EXPECT_EQ(p.uv.uv[1], Vec2::Zero());
+  EXPECT_EQ(p.uv.cornerInvalid[1], 1);
+  EXPECT_TRUE(p.uv.faceHas(0, kFaceInvalid));
+  EXPECT_EQ(p.summary.invalidVertexList, std::vector<int>{1});
+  EXPECT_EQ(p.uv.uv[2], Vec2(0, 1));
+}
+
 TEST(Project, GluPresetPutsTheSeamOnPlusY) {
   ProjectorOptions o = optionsFor(SurfaceKind::Sphere);
   o.spherePreset = SpherePreset::Glu;
