@@ -3,10 +3,15 @@
 //   with other per-vertex UV generators);
 // - project: the whole job of `uvtk map` short of file I/O: placement fit, per-corner UVs,
 //   pole and seam repair, summary.
+// - atan2: the arctangent alone over the sphere's (y, x), ours (param::arcTangent2) against
+//   glibc's std::atan2, the cost that dominates the sphere and cylinder.
 // `per_vertex` is seconds per vertex, printed with an SI prefix: "12.3n" is 12.3 ns.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+
 #include "meshes/generators.h"
+#include "param/formulas.h"
 #include "param/projector.h"
 
 namespace {
@@ -58,6 +63,22 @@ void project(benchmark::State& state, SurfaceKind surface, RayKind ray) {
   }
   setPerVertex(state, mesh.vertexCount());
 }
+
+template <double (*Atan2)(double, double)>
+void atan2OverTheSphere(benchmark::State& state) {
+  const Mesh& mesh = sphere();
+  std::vector<double> angles(mesh.vertexCount());
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < angles.size(); ++i) angles[i] = Atan2(mesh.positions[i].y(), mesh.positions[i].x());
+    benchmark::DoNotOptimize(angles.data());
+  }
+  setPerVertex(state, mesh.vertexCount());
+}
+
+double libmAtan2(double y, double x) { return std::atan2(y, x); }
+
+BENCHMARK_TEMPLATE(atan2OverTheSphere, param::arcTangent2)->Name("atan2/uvtk")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(atan2OverTheSphere, libmAtan2)->Name("atan2/glibc")->Unit(benchmark::kMillisecond);
 
 #define UVTK_MAP_BENCHMARKS(name, surface, ray)                                                      \
   BENCHMARK_CAPTURE(mapVertices, name, surface, ray)->Unit(benchmark::kMillisecond)->MinTime(1.0); \

@@ -28,6 +28,15 @@ class TextBuffer {
     UVTK_CHECK(r.ec == std::errc());
     buffer_.append(digits, r.ptr);
   }
+  // "KEYWORD x y z\n" in double digits.
+  void vectorLine(const char* keyword, const Vec3& p) {
+    text(keyword);
+    for (int a = 0; a < 3; ++a) {
+      if (a > 0) character(' ');
+      number(p[a], false);
+    }
+    character('\n');
+  }
   void integer(std::size_t value) {
     char digits[24];
     const std::to_chars_result r = std::to_chars(digits, digits + sizeof digits, value);
@@ -69,13 +78,7 @@ void writeObj(std::ostream& stream, const Mesh& mesh, const UvMap* uvs, const Ob
   writeHeader(out, options.header);
 
   for (const Vec3& p : mesh.positions) {
-    out.text("v ");
-    out.number(p.x(), false);
-    out.character(' ');
-    out.number(p.y(), false);
-    out.character(' ');
-    out.number(p.z(), false);
-    out.character('\n');
+    out.vectorLine("v ", p);
     flushIfFull();
   }
 
@@ -127,13 +130,7 @@ void writeObj(std::ostream& stream, const Mesh& mesh, const UvMap* uvs, const Ob
   const bool normals = options.writeNormals && mesh.hasNormals();
   if (normals)
     for (const Vec3& n : mesh.normals) {
-      out.text("vn ");
-      out.number(n.x(), false);
-      out.character(' ');
-      out.number(n.y(), false);
-      out.character(' ');
-      out.number(n.z(), false);
-      out.character('\n');
+      out.vectorLine("vn ", n);
       flushIfFull();
     }
 

@@ -11,6 +11,7 @@
 #include "io/obj_writer.h"
 #include "meshes/generators.h"
 #include "param/projector.h"
+#include "scratch_dir.h"
 
 namespace uvtk {
 namespace {
@@ -22,27 +23,8 @@ struct CliRun {
   std::string err;
 };
 
-class MapCli : public ::testing::Test {
+class MapCli : public ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("uvtk_cli_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  void writeText(const std::string& name, const std::string& text) const { std::ofstream(path(name)) << text; }
-
-  static std::string readText(const std::string& file) {
-    std::ifstream in(file);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-
   CliRun uvtk(const std::string& arguments) const {
     const std::string errFile = path("stderr.txt");
     const std::string command = std::string(UVTK_BINARY) + " " + arguments + " 2> " + errFile + " > /dev/null";
@@ -50,7 +32,6 @@ class MapCli : public ::testing::Test {
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, readText(errFile)};
   }
 
-  fs::path dir_;
 };
 
 TEST_F(MapCli, MapsASphereAndPrintsTheSummaryLine) {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "scratch_dir.h"
 
 namespace uvtk::io {
 namespace {
@@ -625,24 +626,8 @@ TEST(ReadMeshWarnings, CountOffDegenerateFacesAndUnreferencedVertices) {
 // ---------------------------------------------------------------------------------------------
 // readMesh on files
 
-class ReadMesh : public ::testing::Test {
+class ReadMesh : public ScratchDirTest {
  protected:
-  void SetUp() override {
-    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("uvtk_mesh_reader_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::permissions(dir_ / "locked.obj", fs::perms::owner_all, ignored);
-    fs::remove_all(dir_, ignored);
-  }
-  std::string write(const std::string& name, const std::string& text) const {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path.string();
-  }
   static std::string errorOfPath(const std::string& path) {
     try {
       readMesh(path);
@@ -652,39 +637,38 @@ class ReadMesh : public ::testing::Test {
     ADD_FAILURE() << "no InputError for " << path;
     return "";
   }
-  fs::path dir_;
 };
 
 TEST_F(ReadMesh, ReadsAnObjFileByItsExtension) {
-  const ReadMeshResult r = readMesh(write("m.obj", kTriangle + "vt 0 0\nf 1/1 2/1 3/1\n"));
+  const ReadMeshResult r = readMesh(writeText("m.obj", kTriangle + "vt 0 0\nf 1/1 2/1 3/1\n"));
   EXPECT_EQ(r.mesh.triangles, std::vector<Triangle>({{0, 1, 2}}));
   EXPECT_EQ(r.mesh.cornerTexcoords, std::vector<Triangle>({{0, 0, 0}}));
 }
 
 TEST_F(ReadMesh, ReadsAnOffFileByItsExtension) {
-  const ReadMeshResult r = readMesh(write("m.off", kOffTriangleHeader + "3 2 1 0\n"));
+  const ReadMeshResult r = readMesh(writeText("m.off", kOffTriangleHeader + "3 2 1 0\n"));
   EXPECT_EQ(r.mesh.triangles, std::vector<Triangle>({{2, 1, 0}}));
 }
 
 TEST_F(ReadMesh, ExtensionsAreCaseInsensitive) {
-  EXPECT_EQ(readMesh(write("UPPER.OBJ", kTriangle + "f 1 2 3\n")).mesh.faceCount(), 1u);
-  EXPECT_EQ(readMesh(write("Mixed.Off", kOffTriangleHeader + "3 0 1 2\n")).mesh.faceCount(), 1u);
+  EXPECT_EQ(readMesh(writeText("UPPER.OBJ", kTriangle + "f 1 2 3\n")).mesh.faceCount(), 1u);
+  EXPECT_EQ(readMesh(writeText("Mixed.Off", kOffTriangleHeader + "3 0 1 2\n")).mesh.faceCount(), 1u);
 }
 
 TEST_F(ReadMesh, ChoosesTheReaderByExtensionNotContent) {
-  const std::string path = write("actually_off.obj", kOffTriangleHeader + "3 0 1 2\n");
+  const std::string path = writeText("actually_off.obj", kOffTriangleHeader + "3 0 1 2\n");
   EXPECT_EQ(errorOfPath(path), path + ":1: error: expected a keyword (v, vt, vn, f, ...), found 'OFF'");
 }
 
 TEST_F(ReadMesh, ErrorsNameThePathAndLine) {
-  const std::string path = write("bad.obj", "v 0 0 0\nv 1 0 0\nf 1 2 7\n");
+  const std::string path = writeText("bad.obj", "v 0 0 0\nv 1 0 0\nf 1 2 7\n");
   EXPECT_EQ(errorOfPath(path), path + ":3: error: expected a vertex index in 1..2, found '7'");
 }
 
 TEST_F(ReadMesh, RejectsOtherExtensions) {
-  const std::string ply = write("m.ply", kTriangle + "f 1 2 3\n");
+  const std::string ply = writeText("m.ply", kTriangle + "f 1 2 3\n");
   EXPECT_EQ(errorOfPath(ply), ply + ": error: expected a .obj or .off extension, found '.ply'");
-  const std::string none = write("mesh", kTriangle + "f 1 2 3\n");
+  const std::string none = writeText("mesh", kTriangle + "f 1 2 3\n");
   EXPECT_EQ(errorOfPath(none), none + ": error: expected a .obj or .off extension, found none");
   EXPECT_EQ(errorOfPath("model.obj.gz"), "model.obj.gz: error: expected a .obj or .off extension, found '.gz'");
 }
@@ -701,19 +685,19 @@ TEST_F(ReadMesh, RejectsADirectory) {
 }
 
 TEST_F(ReadMesh, RejectsAPathThroughAFile) {
-  const std::string path = write("plain.txt", "text") + "/m.obj";
+  const std::string path = writeText("plain.txt", "text") + "/m.obj";
   EXPECT_EQ(errorOfPath(path), path + ": error: cannot open: Not a directory");
 }
 
 TEST_F(ReadMesh, RejectsAnUnreadableFile) {
-  const std::string path = write("locked.obj", kTriangle + "f 1 2 3\n");
+  const std::string path = writeText("locked.obj", kTriangle + "f 1 2 3\n");
   fs::permissions(path, fs::perms::none);
   if (std::ifstream(path).good()) GTEST_SKIP() << "running with privileges that read any file";
   EXPECT_EQ(errorOfPath(path), path + ": error: cannot open: Permission denied");
 }
 
 TEST_F(ReadMesh, ReportsWarnings) {
-  const ReadMeshResult r = readMesh(write("w.obj", kTriangle + "v 4 4 4\nf 1 2 2\nf 1 2 3\n"));
+  const ReadMeshResult r = readMesh(writeText("w.obj", kTriangle + "v 4 4 4\nf 1 2 2\nf 1 2 3\n"));
   EXPECT_EQ(r.warnings.degenerateFaces, 1u);
   EXPECT_EQ(r.warnings.unreferencedVertices, 1u);
 }

@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "scratch_dir.h"
 
 namespace uvtk::io {
 namespace {
@@ -106,17 +107,9 @@ TEST(WriteObj, ListsFacesWithInvalidCornersInAComment) {
       << text;
 }
 
-class AtomicOutput : public ::testing::Test {
+class AtomicOutput : public ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("uvtk_io_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::size_t entries() const { return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir_), {})); }
-  fs::path dir_;
 };
 
 TEST_F(AtomicOutput, AFileNotCommittedLeavesNothingBehind) {
