@@ -17,6 +17,7 @@ enum FaceFlag : std::uint8_t {
   kFaceSeamStraddle = 1 << 2,  // the corners' u spanned more than 0.5 before seam repair
   kFaceCubeSeam = 1 << 3,      // the corners alone would have chosen different cube faces
   kFaceCap = 1 << 4,           // mapped by a cylinder's planar cap
+  kFaceSphereMapSingular = 1 << 5,  // a texgen SPHERE_MAP corner had m = 0 (written as s = t = 1/2)
 };
 
 struct UvMap {

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <unordered_map>
 
 #include "core/error.h"
 #include "param/seams.h"
@@ -71,14 +70,11 @@ RayMapping makeRayMapping(const ProjectorOptions& o, const LocalFrame& frame) {
 }
 
 // The whole two-stage mapping of one sample: O-mapping, resolve, pole test, S-mapping.
-bool isFinite(const Vec3& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
-
-// The whole two-stage mapping of one sample: O-mapping, resolve, pole test, S-mapping.
 template <class S, class M>
 inline VertexUv evaluateSample(const S& surface, const M& mapping, const Sample& sample, PoleTest isPole) {
   VertexUv out;
   const std::optional<Vec3> q = surface.resolve(mapping.probe(sample));
-  if (!q || !isFinite(*q)) return out;
+  if (!q || !q->allFinite()) return out;
   out.axial = Vec2(q->x(), q->y());
   if constexpr (S::kWraps) {
     if (isPole(radialDistance(q->x(), q->y()), q->z())) {
@@ -88,7 +84,7 @@ inline VertexUv evaluateSample(const S& surface, const M& mapping, const Sample&
     }
   }
   const Vec2 uv = surface.uvAt(*q);
-  if (std::isfinite(uv.x()) && std::isfinite(uv.y())) {
+  if (uv.allFinite()) {
     out.uv = uv;
     out.state = CornerState::Ok;
   }

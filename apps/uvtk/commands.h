@@ -6,5 +6,6 @@
 namespace uvtk::cli {
 
 void addMapCommand(CLI::App& root);
+void addTexgenCommand(CLI::App& root);
 
 }  // namespace uvtk::cli

@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   CLI::App app{"uvtk: texture coordinates for triangle meshes, and proof that they are right"};
   app.require_subcommand(1);
   uvtk::cli::addMapCommand(app);
+  uvtk::cli::addTexgenCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

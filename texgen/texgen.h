@@ -1,0 +1,65 @@
+// OpenGL fixed-function texture-coordinate generation (glTexGen), exactly as the OpenGL 4.6
+// compatibility profile specifies it (§12.1.3, "Generating Texture Coordinates"), followed by the
+// texture matrix. docs/conventions.md §6 states the decisions where GL leaves a choice.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "core/math.h"
+#include "core/mesh.h"
+#include "core/uv_map.h"
+
+namespace uvtk::texgen {
+
+enum class TexgenMode {
+  Off,            // the coordinate keeps GL's current texture coordinate (0, 0, 0, 1)
+  ObjectLinear,   // plane . object coordinates
+  EyeLinear,      // (plane * M_plane^-1) . eye coordinates
+  SphereMap,      // s, t only
+  NormalMap,      // s, t, r only
+  ReflectionMap,  // s, t, r only
+};
+
+struct TexgenCoordinate {
+  TexgenMode mode = TexgenMode::Off;
+  Vec4 plane = Vec4::Zero();  // (p1, p2, p3, p4), not normalised; read by the linear modes
+};
+
+// GL's initial state: every coordinate off, planes s (1,0,0,0), t (0,1,0,0), r and q zero.
+std::array<TexgenCoordinate, 4> defaultCoordinates();
+
+struct TexgenOptions {
+  std::array<TexgenCoordinate, 4> coordinates = defaultCoordinates();  // s, t, r, q
+  Mat4 modelviewAtPlanes = Mat4::Identity();  // the modelview when the EYE_LINEAR planes were given
+  Mat4 modelviewAtDraw = Mat4::Identity();    // the modelview the vertices are drawn under
+  Mat4 textureMatrix = Mat4::Identity();      // applied to (s, t, r, q) after generation
+  bool normalize = true;  // renormalise the eye normal after the inverse transpose (GL_NORMALIZE)
+};
+
+struct TexgenResult {
+  UvMap uv;                        // uv = (s, t) and w = r per corner (3 per triangle)
+  std::vector<double> q;           // per corner; never divided out (projective lookup divides)
+  std::size_t sphereMapSingular = 0;  // corners with m = 0 (reflection (0, 0, -1)): s = t = 1/2
+  std::size_t invalidCorners = 0;     // corners with a non-finite result: written as 0
+};
+
+// (s, t, r, q) of one vertex after the texture matrix. `singular`, if not null, is set to true
+// when a SPHERE_MAP coordinate met m = 0, else false. Throws UsageError for a mode a coordinate
+// cannot take (sphere map on r or q, normal or reflection map on q), or a singular matrix whose
+// inverse a mode needs.
+Vec4 texgenAt(const Vec3& objectPosition, const Vec3& objectNormal, const TexgenOptions& options,
+              bool* singular = nullptr);
+
+// Per corner (3 per triangle) with the mesh's corner normals (core cornerNormals). Faces with a
+// sphere-map singular corner carry kFaceSphereMapSingular, faces with a non-finite corner
+// kFaceInvalid (that corner is written as (0, 0, 0, 0) and marked in cornerInvalid).
+TexgenResult generateTexcoords(const Mesh& mesh, const TexgenOptions& options);
+
+// gluLookAt: f = normalize(center - eye), s = normalize(f x normalize(up)), u = s x f, rows
+// s, u, -f, then a translation by -eye. Throws UsageError for eye == center, a zero up or an
+// up parallel to f (the sine of their angle below 1e-12).
+Mat4 lookAt(const Vec3& eye, const Vec3& center, const Vec3& up);
+
+}  // namespace uvtk::texgen
