@@ -11,28 +11,14 @@
 #include "io/obj_writer.h"
 #include "meshes/generators.h"
 #include "param/projector.h"
-#include "scratch_dir.h"
+#include "apps/cli_test.h"
 
 namespace uvtk {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int status;
-  std::string err;
-};
-
-class MapCli : public ScratchDirTest {
- protected:
-  CliRun uvtk(const std::string& arguments) const {
-    const std::string errFile = path("stderr.txt");
-    const std::string command = std::string(UVTK_BINARY) + " " + arguments + " 2> " + errFile + " > /dev/null";
-    const int raw = std::system(command.c_str());
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, readText(errFile)};
-  }
-
-};
+using MapCli = CliTest;
 
 TEST_F(MapCli, MapsASphereAndPrintsTheSummaryLine) {
   io::writeObj(path("sphere.obj"), meshes::latLongSphere(16, 8), nullptr);

@@ -9,26 +9,15 @@
 #include <string>
 
 #include "io/mesh_reader.h"
-#include "scratch_dir.h"
+#include "apps/cli_test.h"
 
 namespace uvtk {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int status;
-  std::string err;
-};
-
-class TexgenCli : public ScratchDirTest {
+class TexgenCli : public CliTest {
  protected:
-  CliRun uvtk(const std::string& arguments) const {
-    const std::string errFile = path("stderr.txt");
-    const std::string command = std::string(UVTK_BINARY) + " " + arguments + " 2> " + errFile + " > /dev/null";
-    const int raw = std::system(command.c_str());
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, readText(errFile)};
-  }
   std::string triangle() const { return writeText("tri.obj", "v 1 2 3\nv 4 5 6\nv -1 0 2\nf 1 2 3\n"); }
   // The texture coordinate of corner k of face 0 as read back.
   static Vec3 corner(const Mesh& mesh, int k) { return mesh.texcoords[mesh.cornerTexcoords[0][k]]; }
