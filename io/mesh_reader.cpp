@@ -378,19 +378,19 @@ std::string countOf(int n, const char* singular, const char* plural) {
   return std::to_string(n) + " " + (n == 1 ? singular : plural);
 }
 
+// Three numbers named in messages: a position ("an x coordinate", ...) or a normal.
+constexpr const char* kPositionNames[3] = {"an x coordinate", "a y coordinate", "a z coordinate"};
+constexpr const char* kNormalNames[3] = {"a normal's x component", "a normal's y component", "a normal's z component"};
+
+Vec3 readVector(LineReader& reader, const char* const (&names)[3]) {
+  Vec3 v;
+  for (int a = 0; a < 3; ++a) v[a] = reader.number(names[a]);
+  return v;
+}
+
 void readOffVertex(LineReader& reader, const OffLayout& layout, Mesh& mesh) {
-  Vec3 p;
-  p.x() = reader.number("an x coordinate");
-  p.y() = reader.number("a y coordinate");
-  p.z() = reader.number("a z coordinate");
-  mesh.positions.push_back(p);
-  if (layout.normals) {
-    Vec3 n;
-    n.x() = reader.number("a normal's x component");
-    n.y() = reader.number("a normal's y component");
-    n.z() = reader.number("a normal's z component");
-    mesh.normals.push_back(n);
-  }
+  mesh.positions.push_back(readVector(reader, kPositionNames));
+  if (layout.normals) mesh.normals.push_back(readVector(reader, kNormalNames));
   if (layout.colours) {
     reader.number("a red component");
     reader.number("a green component");
@@ -436,10 +436,7 @@ ReadMeshResult readObj(std::istream& in, const std::string& name) {
     const std::string_view keyword = reader.token();
     if (keyword.empty()) continue;
     if (keyword == "v") {
-      Vec3 p;
-      p.x() = reader.number("an x coordinate");
-      p.y() = reader.number("a y coordinate");
-      p.z() = reader.number("a z coordinate");
+      const Vec3 p = readVector(reader, kPositionNames);
       double w = 0.0;
       reader.optionalNumber(w);
       reader.expectEndOfLine();
@@ -453,10 +450,7 @@ ReadMeshResult readObj(std::istream& in, const std::string& name) {
       reader.expectEndOfLine();
       pushBounded(reader, mesh.texcoords, t, "texture coordinates");
     } else if (keyword == "vn") {
-      Vec3 n;
-      n.x() = reader.number("a normal's x component");
-      n.y() = reader.number("a normal's y component");
-      n.z() = reader.number("a normal's z component");
+      const Vec3 n = readVector(reader, kNormalNames);
       reader.expectEndOfLine();
       pushBounded(reader, mesh.normals, n, "normals");
     } else if (!isIgnoredObjKeyword(keyword)) {

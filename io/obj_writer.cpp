@@ -127,7 +127,7 @@ void writeObj(std::ostream& stream, const Mesh& mesh, const UvMap* uvs, const Ob
     }
   }
 
-  const bool normals = options.writeNormals && mesh.hasNormals();
+  const bool normals = mesh.hasNormals();
   if (normals)
     for (const Vec3& n : mesh.normals) {
       out.vectorLine("vn ", n);

@@ -12,14 +12,14 @@ namespace uvtk::io {
 struct ObjWriteOptions {
   bool floatPrecision = false;  // UVs as the shortest text that round-trips a float (<= 9 digits), not a double (<= 17)
   bool writeW = false;          // write `vt u v w` with the UvMap's third component (0 where it has none)
-  bool writeNormals = true;     // keep the mesh's `vn` (when it has them) as `f v/vt/vn`
   std::string header;           // comment lines written first, each prefixed with "# "
 };
 
 // Writes, in this order: the header, `v` in mesh order (shortest text that round-trips the
-// double), one `vt` per distinct (vertex, u, v[, w]) in vertex order (so a mesh without seams
-// has vt i for v i), the mesh's `vn`, then the faces in mesh order. `uvs` may be null (faces written as `f v` or `f v//vn`). A face with an invalid corner
-// is listed in a comment before the faces; its invalid corners carry `vt 0 0`.
+// double), one `vt` per distinct (vertex, u, v[, w]) in vertex order (so a mesh without seams has
+// vt i for v i), the mesh's `vn` when it has them, then the faces in mesh order as `f v/vt/vn`
+// (or `f v/vt`, `f v//vn`, `f v`: `uvs` may be null). A face with an invalid corner is listed in
+// a comment before the faces; its invalid corners carry `vt 0 0`.
 void writeObj(std::ostream& out, const Mesh& mesh, const UvMap* uvs, const ObjWriteOptions& options = {});
 
 // The same, atomically into `path` (temporary file + rename); throws OutputError.

@@ -224,8 +224,16 @@ void applyCaps(const Mesh& mesh, const LocalFrame& frame, double capAngleDegrees
   }
 }
 
-template <class S>
-constexpr bool kWrapsV = S::kWraps;
+// Where the u period of a wrapping surface starts (u lies in [start, start + 1)); nothing for
+// the surfaces that do not wrap.
+std::optional<double> uPeriodStartOf(const Surface& surface) {
+  return std::visit(
+      [](const auto& s) -> std::optional<double> {
+        if constexpr (std::decay_t<decltype(s)>::kWraps) return s.uStart();
+        return std::nullopt;
+      },
+      surface);
+}
 
 // The checks of values that no type expresses; throws UsageError.
 void checkOptions(const ProjectorOptions& o) {
@@ -275,12 +283,10 @@ Projection project(Mesh mesh, const ProjectorOptions& o) {
       [&](const auto& s, const auto& m) { return evaluateCorners(s, m, mesh, frame, o); }, surface, mapping);
   CornerField& corners = evaluated.corners;
 
-  const bool wraps = std::visit([](const auto& s) { return kWrapsV<std::decay_t<decltype(s)>>; }, surface);
   SeamReport seams;
-  if (wraps) {
+  if (const std::optional<double> uStart = uPeriodStartOf(surface)) {
     if (o.surface == SurfaceKind::Cylinder && o.cylinderCaps) applyCaps(mesh, frame, o.capAngleDegrees, corners);
-    const double uStart = o.surface == SurfaceKind::Sphere ? uPeriodStart(o.spherePreset) : 0.0;
-    seams = repairSeams(mesh, corners, uStart, o.seam,
+    seams = repairSeams(mesh, corners, *uStart, o.seam,
                         [&](const Vec3& p, const Vec3& n, Vec2& uv) {
                           const VertexUv s = evaluated.evaluateAt(p, n);
                           uv = s.uv;

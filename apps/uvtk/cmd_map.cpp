@@ -1,7 +1,4 @@
 // `uvtk map`: assign UVs to a mesh with a projector and write an OBJ with per-corner UVs.
-#include <unistd.h>
-
-#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -13,6 +10,7 @@
 #include "io/obj_writer.h"
 #include "param/projector.h"
 #include "projector_cli.h"
+#include "run_report.h"
 #include "summary_json.h"
 
 namespace uvtk::cli {
@@ -26,63 +24,35 @@ struct MapArguments {
   ProjectorArguments projector;
 };
 
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-// The stage under way, on one line that the next stage overwrites; only on a terminal, where a
-// person waits for a large mesh, never in logs.
-class Progress {
- public:
-  Progress() : enabled_(::isatty(STDERR_FILENO) != 0) {}
-  void stage(const char* what, const std::string& subject) const {
-    if (enabled_) std::fprintf(stderr, "\r\033[Kuvtk map: %s %s ...", what, subject.c_str());
-  }
-  void done() const {
-    if (enabled_) std::fprintf(stderr, "\r\033[K");
-  }
-
- private:
-  bool enabled_;
-};
-
 void runMap(const MapArguments& a) {
   const param::ProjectorOptions options = a.projector.resolve();
-  const Progress progress;
-  progress.stage("reading", a.input);
-  auto start = std::chrono::steady_clock::now();
+  StageClock clock("uvtk map");
+  clock.start("reading", a.input);
   io::ReadMeshResult input = io::readMesh(a.input);
-  const double readMs = millisecondsSince(start);
-  const std::size_t inputVertices = input.mesh.vertexCount(), inputFaces = input.mesh.faceCount();
+  const double readMs = clock.stop();
+  const nlohmann::json inputSummary = inputJson(a.input, input);
 
-  progress.stage("mapping", std::to_string(inputFaces) + " faces");
-  start = std::chrono::steady_clock::now();
+  clock.start("mapping", std::to_string(input.mesh.faceCount()) + " faces");
   const param::Projection projection = param::project(std::move(input.mesh), options);
-  const double mapMs = millisecondsSince(start);
+  const double mapMs = clock.stop();
   const param::MappingSummary& s = projection.summary;
 
-  progress.stage("writing", a.output);
-  start = std::chrono::steady_clock::now();
+  clock.start("writing", a.output);
   io::ObjWriteOptions write;
   write.writeW = a.writeW;
   write.floatPrecision = a.floatDigits;
   write.header = "uvtk map " + a.input;
   io::writeObj(a.output, projection.mesh, &projection.uv, write);
-  const double writeMs = millisecondsSince(start);
+  const double writeMs = clock.stop();
 
   if (!a.json.empty()) {
     nlohmann::json j = summaryJson(s);
-    j["input"] = {{"path", a.input}, {"vertices", inputVertices}, {"faces", inputFaces},
-                  {"degenerate_faces", input.warnings.degenerateFaces},
-                  {"unreferenced_vertices", input.warnings.unreferencedVertices}};
+    j["input"] = inputSummary;
     j["output"] = a.output;
     j["milliseconds"] = {{"read", readMs}, {"map", mapMs}, {"write", writeMs}};
     io::writeFileAtomically(a.json, j.dump(2) + "\n");
   }
-  progress.done();
-  if (input.warnings.degenerateFaces || input.warnings.unreferencedVertices)
-    std::fprintf(stderr, "%s: warning: %zu degenerate faces, %zu unreferenced vertices\n", a.input.c_str(),
-                 input.warnings.degenerateFaces, input.warnings.unreferencedVertices);
+  printInputWarnings(a.input, input.warnings);
   std::fprintf(stderr,
                "uvtk map: %zu vertices, %zu faces, %zu seam edges, %zu pole vertices, %zu pole faces, "
                "%zu invalid vertices, %.1f ms\n",

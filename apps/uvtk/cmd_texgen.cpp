@@ -1,6 +1,5 @@
 // `uvtk texgen`: OpenGL fixed-function texture-coordinate generation on a mesh, written as an
 // OBJ with per-corner `vt s t` (or `vt s t r`), and optionally every (s, t, r, q) as JSON.
-#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -9,6 +8,7 @@
 #include <utility>
 
 #include "cli_values.h"
+#include "run_report.h"
 #include "commands.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
@@ -97,28 +97,25 @@ texgen::TexgenOptions resolve(const TexgenArguments& a) {
   return o;
 }
 
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
 void runTexgen(const TexgenArguments& a) {
   const texgen::TexgenOptions options = resolve(a);
-  auto start = std::chrono::steady_clock::now();
-  io::ReadMeshResult input = io::readMesh(a.input);
-  const double readMs = millisecondsSince(start);
+  StageClock clock("uvtk texgen");
+  clock.start("reading", a.input);
+  const io::ReadMeshResult input = io::readMesh(a.input);
+  const double readMs = clock.stop();
 
-  start = std::chrono::steady_clock::now();
+  clock.start("generating", std::to_string(input.mesh.faceCount()) + " faces");
   const texgen::TexgenResult result = texgen::generateTexcoords(input.mesh, options);
-  const double texgenMs = millisecondsSince(start);
+  const double texgenMs = clock.stop();
 
-  start = std::chrono::steady_clock::now();
+  clock.start("writing", a.output);
   io::ObjWriteOptions write;
   // r is written when generated, or when the texture matrix feeds something else into it.
   write.writeW = options.coordinates[2].mode != TexgenMode::Off ||
                  options.textureMatrix.row(2) != Eigen::RowVector4d(0, 0, 1, 0);
   write.header = "uvtk texgen " + a.input;
   io::writeObj(a.output, input.mesh, &result.uv, write);
-  const double writeMs = millisecondsSince(start);
+  const double writeMs = clock.stop();
 
   const std::size_t vertices = input.mesh.vertexCount(), faces = input.mesh.faceCount();
   if (!a.json.empty()) {
@@ -137,17 +134,13 @@ void runTexgen(const TexgenArguments& a) {
                         {"invalid_corners", result.invalidCorners},
                         {"normalize", options.normalize},
                         {"coordinates", modes},
-                        {"input", {{"path", a.input},
-                                   {"degenerate_faces", input.warnings.degenerateFaces},
-                                   {"unreferenced_vertices", input.warnings.unreferencedVertices}}},
+                        {"input", inputJson(a.input, input)},
                         {"output", a.output},
                         {"milliseconds", {{"read", readMs}, {"texgen", texgenMs}, {"write", writeMs}}},
                         {"texcoords", coordinates}};
     io::writeFileAtomically(a.json, j.dump(2) + "\n");
   }
-  if (input.warnings.degenerateFaces || input.warnings.unreferencedVertices)
-    std::fprintf(stderr, "%s: warning: %zu degenerate faces, %zu unreferenced vertices\n", a.input.c_str(),
-                 input.warnings.degenerateFaces, input.warnings.unreferencedVertices);
+  printInputWarnings(a.input, input.warnings);
   std::fprintf(stderr, "uvtk texgen: %zu vertices, %zu faces, %zu sphere-map singular corners, %zu invalid corners, %.1f ms\n",
                vertices, faces, result.sphereMapSingular, result.invalidCorners, texgenMs);
 }

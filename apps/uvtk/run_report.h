@@ -1,0 +1,53 @@
+// What every subcommand tells about its run: the stage under way on a terminal, the time of each
+// stage, and the input's warnings (on stderr and in the JSON summary).
+#pragma once
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "io/mesh_reader.h"
+
+namespace uvtk::cli {
+
+// Times stages one after another. On a terminal, where a person waits for a large mesh, the stage
+// under way is shown on one line that the next one overwrites; never in logs.
+class StageClock {
+ public:
+  explicit StageClock(std::string command) : command_(std::move(command)), terminal_(::isatty(STDERR_FILENO) != 0) {}
+  void start(const char* what, const std::string& subject) {
+    if (terminal_) std::fprintf(stderr, "\r\033[K%s: %s %s ...", command_.c_str(), what, subject.c_str());
+    start_ = std::chrono::steady_clock::now();
+  }
+  // Milliseconds since the last start(); clears the progress line.
+  double stop() const {
+    if (terminal_) std::fprintf(stderr, "\r\033[K");
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  std::string command_;
+  bool terminal_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+// The "input" object of a JSON summary.
+inline nlohmann::json inputJson(const std::string& path, const io::ReadMeshResult& input) {
+  return {{"path", path},
+          {"vertices", input.mesh.vertexCount()},
+          {"faces", input.mesh.faceCount()},
+          {"degenerate_faces", input.warnings.degenerateFaces},
+          {"unreferenced_vertices", input.warnings.unreferencedVertices}};
+}
+
+// One warning line on stderr when the reader counted anything.
+inline void printInputWarnings(const std::string& path, const MeshWarnings& w) {
+  if (w.degenerateFaces || w.unreferencedVertices)
+    std::fprintf(stderr, "%s: warning: %zu degenerate faces, %zu unreferenced vertices\n", path.c_str(),
+                 w.degenerateFaces, w.unreferencedVertices);
+}
+
+}  // namespace uvtk::cli
