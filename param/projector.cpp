@@ -200,9 +200,11 @@ Evaluated evaluateCorners(const S& surface, const M& mapping, const Mesh& mesh, 
   return result;
 }
 
-// Cylinder caps: faces whose normal lies within the cap angle of the axis are mapped by
-// orthographic projection along it, (x+1)/2 and (y+1)/2, mirrored on the bottom cap so that
-// both read unmirrored seen from outside.
+// The cylinder cap projection of a local point: orthographic along the axis, (x+1)/2 and (y+1)/2,
+// mirrored on the bottom cap (`top` false) so that both read unmirrored seen from outside.
+Vec2 capUv(const Vec3& local, bool top) { return Vec2(((top ? 1.0 : -1.0) * local.x() + 1.0) * 0.5, (local.y() + 1.0) * 0.5); }
+
+// Cylinder caps: faces whose normal lies within the cap angle of the axis are mapped by capUv.
 void applyCaps(const Mesh& mesh, const LocalFrame& frame, double capAngleDegrees, CornerField& c) {
   const double cosLimit = std::cos(capAngleDegrees * (kPi / 180.0));
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
@@ -212,10 +214,9 @@ void applyCaps(const Mesh& mesh, const LocalFrame& frame, double capAngleDegrees
     const Vec3 n = triangleAreaNormal(p[0], p[1], p[2]);
     const double length = n.norm();
     if (!(length > 0.0) || std::fabs(n.z()) < cosLimit * length) continue;
-    const double mirror = n.z() > 0.0 ? 1.0 : -1.0;
     c.faceFlags[f] = static_cast<std::uint8_t>((c.faceFlags[f] & ~(kFacePole | kFaceInvalid)) | kFaceCap);
     for (int k = 0; k < 3; ++k) {
-      const Vec2 uv((mirror * p[k].x() + 1.0) * 0.5, (p[k].y() + 1.0) * 0.5);
+      const Vec2 uv = capUv(p[k], n.z() > 0.0);
       const bool finite = uv.allFinite();
       c.uv[3 * f + k] = finite ? uv : Vec2::Zero();
       c.state[3 * f + k] = finite ? CornerState::Ok : CornerState::Invalid;
@@ -266,6 +267,55 @@ void mapVertices(const ProjectorOptions& o, const Affine3& localFromObject, cons
         }
       },
       surface, mapping);
+}
+
+PointMapping::PointMapping(const ProjectorOptions& o, const Affine3& localFromObject) : uvTransform_(o.uvTransform) {
+  checkOptions(o);
+  const LocalFrame frame(localFromObject);
+  const Surface surface = makeSurface(o);
+  const RayMapping mapping = makeRayMapping(o, frame);
+  std::visit(
+      [&](const auto& s, const auto& m) {
+        using S = std::decay_t<decltype(s)>;
+        using M = std::decay_t<decltype(m)>;
+        needsNormal_ = M::kNeedsNormal;
+        if constexpr (std::is_same_v<S, CubeSurface>) {
+          evaluate_ = [s, m, frame](const Vec3& position, const Vec3& normal) {
+            VertexUv out;
+            const Probe probe = m.probe(Sample{frame.point(position), frame.normal(normal)});
+            const std::optional<CubeFace> face = s.cornerFace(probe);
+            const std::optional<Vec2> st = face ? s.projectOnFace(probe, *face) : std::nullopt;
+            if (!st || !st->allFinite()) return out;
+            out.uv = s.uvAt(*st, *face);
+            out.state = CornerState::Ok;
+            return out;
+          };
+        } else {
+          wrapsU_ = S::kWraps;
+          evaluate_ = [s, m, frame, isPole = PoleTest(o.poleEpsilon)](const Vec3& position, const Vec3& normal) {
+            return evaluateSample(s, m, Sample{frame.point(position), frame.normal(normal)}, isPole);
+          };
+        }
+      },
+      surface, mapping);
+  if (o.surface == SurfaceKind::Cylinder && o.cylinderCaps)
+    cap_ = [frame](const Vec3& position, const Vec3& normal) {
+      return capUv(frame.point(position), frame.normal(normal).z() > 0.0);
+    };
+}
+
+VertexUv PointMapping::at(const Vec3& position, const Vec3& normal, bool capFace) const {
+  VertexUv out;
+  if (capFace && cap_) {
+    out.uv = cap_(position, normal);
+    out.state = out.uv.allFinite() ? CornerState::Ok : CornerState::Invalid;
+  } else {
+    out = evaluate_(position, normal);
+  }
+  if (out.state == CornerState::Invalid) return out;
+  if (!uvTransform_.isIdentity()) out.uv = uvTransform_.apply(out.uv);
+  if (!out.uv.allFinite()) out = VertexUv{};
+  return out;
 }
 
 Projection project(Mesh mesh, const ProjectorOptions& o) {

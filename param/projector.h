@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -101,6 +102,26 @@ struct Projection {
 // UsageError here.
 void mapVertices(const ProjectorOptions& options, const Affine3& localFromObject, const std::vector<Vec3>& positions,
                  const std::vector<Vec3>& normals, std::vector<VertexUv>& out);
+
+// The exact mapping at single object-space points, for evaluation at every pixel: placement,
+// O-mapping, surface, S-mapping and the UV transform, without seam or pole repair (u stays in its
+// period; a pole gets u = 0). The cube takes the face of each point's own probe (exact, where
+// project() chooses one face per triangle); a face project() mapped by a cylinder cap maps by the
+// cap projection, mirrored by the sign of the given normal along the axis (pass the face normal).
+class PointMapping {
+ public:
+  // Throws UsageError like project() for inconsistent options.
+  PointMapping(const ProjectorOptions& options, const Affine3& localFromObject);
+  VertexUv at(const Vec3& position, const Vec3& normal, bool capFace = false) const;
+  bool wrapsU() const { return wrapsU_; }            // u has period 1 (cylinder, sphere)
+  bool needsNormal() const { return needsNormal_; }  // the O-mapping reads the normal
+
+ private:
+  std::function<VertexUv(const Vec3&, const Vec3&)> evaluate_;
+  std::function<Vec2(const Vec3&, const Vec3&)> cap_;
+  UvTransform uvTransform_;
+  bool wrapsU_ = false, needsNormal_ = false;
+};
 
 // Maps `mesh` (taken by value: with SeamMode::Cut its triangles change). Throws UsageError for
 // inconsistent options (reflection without an eye, parallel two-plane planes, ...).

@@ -186,24 +186,4 @@ TexgenResult generateTexcoords(const Mesh& mesh, const TexgenOptions& options) {
   return out;
 }
 
-Mat4 lookAt(const Vec3& eye, const Vec3& center, const Vec3& up) {
-  if (!eye.allFinite() || !center.allFinite() || !up.allFinite())
-    throw UsageError("lookAt: eye, center and up must be finite");
-  const Vec3 forward = center - eye;
-  if (!(forward.norm() > 0.0)) throw UsageError("lookAt: the eye and the center coincide");
-  if (!(up.norm() > 0.0)) throw UsageError("lookAt: the up vector is zero");
-  const Vec3 f = normalised(forward);
-  const Vec3 side = f.cross(normalised(up));
-  const double sine = side.norm();
-  if (!(sine > 1e-12)) throw UsageError("lookAt: the up vector is parallel to the viewing direction");
-  const Vec3 s = side / sine;
-  const Vec3 u = s.cross(f);
-  Mat4 m = Mat4::Identity();  // gluLookAt: rows s, u, -f, times a translation by -eye
-  m.block<1, 3>(0, 0) = s.transpose();
-  m.block<1, 3>(1, 0) = u.transpose();
-  m.block<1, 3>(2, 0) = -f.transpose();
-  m.block<3, 1>(0, 3) = -(m.topLeftCorner<3, 3>() * eye);
-  return m;
-}
-
 }  // namespace uvtk::texgen

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/gl_matrices.h"
 #include "core/math.h"
 #include "core/mesh.h"
 #include "core/uv_map.h"
@@ -56,10 +57,5 @@ Vec4 texgenAt(const Vec3& objectPosition, const Vec3& objectNormal, const Texgen
 // sphere-map singular corner carry kFaceSphereMapSingular, faces with a non-finite corner
 // kFaceInvalid (that corner is written as (0, 0, 0, 0) and marked in cornerInvalid).
 TexgenResult generateTexcoords(const Mesh& mesh, const TexgenOptions& options);
-
-// gluLookAt: f = normalize(center - eye), s = normalize(f x normalize(up)), u = s x f, rows
-// s, u, -f, then a translation by -eye. Throws UsageError for eye == center, a zero up or an
-// up parallel to f (the sine of their angle below 1e-12).
-Mat4 lookAt(const Vec3& eye, const Vec3& center, const Vec3& up);
 
 }  // namespace uvtk::texgen

@@ -7,5 +7,6 @@ namespace uvtk::cli {
 
 void addMapCommand(CLI::App& root);
 void addTexgenCommand(CLI::App& root);
+void addRenderCommand(CLI::App& root);
 
 }  // namespace uvtk::cli

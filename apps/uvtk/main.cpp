@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   uvtk::cli::addMapCommand(app);
   uvtk::cli::addTexgenCommand(app);
+  uvtk::cli::addRenderCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -14,8 +14,9 @@ bool given(const CLI::App* app, const char* name) { return app->get_option(name)
 
 }  // namespace
 
-void addProjectorOptions(CLI::App& app, ProjectorArguments& a) {
+void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEye) {
   a.app = &app;
+  a.cameraOwnsEye = cameraOwnsEye;
   ProjectorOptions& o = a.options;
   addChoice<SurfaceKind>(app, "--projector", o.surface,
                          {{"plane", SurfaceKind::Plane},
@@ -39,7 +40,8 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a) {
   addChoice<int>(app, "--axis", o.placement.axis, {{"x", 0}, {"y", 1}, {"z", 2}},
                  "Object axis that becomes the local z of a bbox fit")
       ->default_str("z");
-  app.add_option("--center", a.center, "Explicit placement: origin x,y,z (replaces the fit)")->type_name("X,Y,Z");
+  app.add_option(cameraOwnsEye ? "--frame-center" : "--center", a.center, "Explicit placement: origin x,y,z (replaces the fit)")
+      ->type_name("X,Y,Z");
   app.add_option("--axis-dir", a.axisDir, "Explicit placement: local z direction")
       ->type_name("X,Y,Z")
       ->default_str("0,0,1");
@@ -71,7 +73,8 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a) {
                          {"3x2", CubeLayout::ThreeByTwo}},
                         "cube: faces (face id as w), cross, strip, 3x2")
       ->default_str("faces");
-  app.add_option("--eye", a.eye, "reflection: eye position in object space (required)")->type_name("X,Y,Z");
+  if (!cameraOwnsEye)
+    app.add_option("--eye", a.eye, "reflection: eye position in object space (required)")->type_name("X,Y,Z");
   app.add_flag("--at-infinity", o.atInfinity, "reflection: look up by the reflected direction only");
   addChoice<SeamMode>(app, "--seam", o.seam,
                       {{"none", SeamMode::None}, {"shift", SeamMode::Shift}, {"cut", SeamMode::Cut}},
@@ -91,13 +94,15 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a) {
 
 ProjectorOptions ProjectorArguments::resolve() const {
   ProjectorOptions o = options;
-  const bool explicitFrame = given(app, "--center") || given(app, "--axis-dir") || given(app, "--ref-dir") ||
+  const char* centerOption = cameraOwnsEye ? "--frame-center" : "--center";
+  const bool explicitFrame = given(app, centerOption) || given(app, "--axis-dir") || given(app, "--ref-dir") ||
                              given(app, "--scale");
   if (explicitFrame) {
     if (given(app, "--fit") && o.placement.fit != Fit::None)
-      throw UsageError("--center, --axis-dir, --ref-dir and --scale give the placement; they go with --fit none only");
+      throw UsageError(std::string(centerOption) +
+                       ", --axis-dir, --ref-dir and --scale give the placement; they go with --fit none only");
     ExplicitFrame frame;
-    if (!center.empty()) frame.center = parseVec3(center, "--center");
+    if (!center.empty()) frame.center = parseVec3(center, centerOption);
     if (!axisDir.empty()) frame.axisDir = parseVec3(axisDir, "--axis-dir");
     if (!refDir.empty()) frame.refDir = parseVec3(refDir, "--ref-dir");
     frame.scale = scale;
@@ -107,7 +112,7 @@ ProjectorOptions ProjectorArguments::resolve() const {
   o.planeV = parseVec4(planeV, "--plane-v");
   if (!eye.empty()) o.eye = parseVec3(eye, "--eye");
   if (o.ray == RayKind::Reflection && !o.eye) throw UsageError("--omap reflection: expected --eye x,y,z");
-  if (o.ray != RayKind::Reflection && (o.eye || o.atInfinity))
+  if (o.ray != RayKind::Reflection && (o.atInfinity || (!cameraOwnsEye && o.eye)))
     throw UsageError("--eye and --at-infinity go with --omap reflection only");
   o.uvTransform.scale = parseVec2(uvScale, "--uv-scale");
   o.uvTransform.offset = parseVec2(uvOffset, "--uv-offset");

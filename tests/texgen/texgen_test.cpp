@@ -343,29 +343,5 @@ TEST(Modes, SphereMapOnROrQAndNormalOrReflectionOnQAreUsageErrors) {
                            withModes(TexgenMode::NormalMap, TexgenMode::ReflectionMap, TexgenMode::ReflectionMap)));
 }
 
-TEST(LookAt, EqualsTheGluLookAtMatrixOfAWorkedExample) {
-  // eye (3,0,0) looking at the origin, up +y: f = (-1,0,0), s = f x up = (0,0,-1), u = (0,1,0);
-  // rows s, u, -f and the translation -(s.eye, u.eye, -f.eye) = (0, 0, -3).
-  Mat4 expected;
-  expected << 0, 0, -1, 0,  //
-      0, 1, 0, 0,           //
-      1, 0, 0, -3,          //
-      0, 0, 0, 1;
-  EXPECT_EQ(lookAt(Vec3(3, 0, 0), Vec3::Zero(), Vec3(0, 2, 0)), expected);
-  // GL's initial modelview: eye at the origin looking down -z.
-  EXPECT_EQ(lookAt(Vec3::Zero(), Vec3(0, 0, -1), Vec3::UnitY()), Mat4::Identity());
-  // A general one: the eye goes to the origin and the center onto -z.
-  const Mat4 m = lookAt(Vec3(1, 2, 3), Vec3(-2, 0.5, 1), Vec3(0.3, 1, 0));
-  EXPECT_TRUE(isNear(m * Vec4(1, 2, 3, 1), Vec4(0, 0, 0, 1), 1e-15));
-  EXPECT_TRUE(isNear(m * Vec4(-2, 0.5, 1, 1), Vec4(0, 0, -Vec3(3, 1.5, 2).norm(), 1), 1e-14));
-  EXPECT_NEAR((m.topLeftCorner<3, 3>() * m.topLeftCorner<3, 3>().transpose() - Mat3::Identity()).norm(), 0.0, 1e-15);
-}
-
-TEST(LookAt, CoincidentEyeAndCenterOrAParallelUpAreUsageErrors) {
-  EXPECT_THROW(lookAt(Vec3(1, 2, 3), Vec3(1, 2, 3), Vec3::UnitY()), UsageError);
-  EXPECT_THROW(lookAt(Vec3::Zero(), Vec3(0, 5, 0), Vec3(0, -2, 0)), UsageError);
-  EXPECT_THROW(lookAt(Vec3::Zero(), Vec3(0, 0, -1), Vec3::Zero()), UsageError);
-}
-
 }  // namespace
 }  // namespace uvtk::texgen

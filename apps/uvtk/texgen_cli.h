@@ -1,0 +1,32 @@
+// The texgen options of `uvtk texgen`, shared with `uvtk render`: the generation of each
+// coordinate, a mode shortcut, the texture matrix and GL_NORMALIZE. The view and model matrices
+// come from the subcommand (texgen's own --eye/--center/--up, render's camera).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <array>
+#include <string>
+
+#include "texgen/texgen.h"
+
+namespace uvtk::cli {
+
+struct TexgenArguments {
+  std::array<std::string, 4> coordinates;  // --s --t --r --q as given, empty when absent
+  std::string mode;                        // the shortcut option's value, empty when absent
+  std::string textureMatrix;
+  bool noNormalize = false;
+
+  bool given() const;  // any coordinate option or the shortcut
+  // Throws UsageError for a malformed or disallowed coordinate. Without any coordinate option
+  // s and t are OBJECT_LINEAR with GL's default planes.
+  texgen::TexgenOptions resolve(const Mat4& view, const Mat4& model) const;
+};
+
+// `shortcut` names the mode shortcut option: "--mode" in `uvtk texgen`, "--texgen" in `uvtk
+// render`, where it also takes object_linear and eye_linear (s and t with GL's default planes).
+void addTexgenOptions(CLI::App& app, TexgenArguments& arguments, const std::string& shortcut);
+
+const char* texgenModeName(texgen::TexgenMode mode);
+
+}  // namespace uvtk::cli

@@ -1,0 +1,192 @@
+#include "io/image_io.h"
+
+#include <OpenImageIO/imageio.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+#include <vector>
+
+#include "core/error.h"
+
+namespace uvtk::io {
+
+namespace {
+
+constexpr int kMaxSide = 16384;
+constexpr int kMaxChannels = 64;
+
+// OpenImageIO's messages may span several lines; ours are one line each.
+std::string oneLine(const std::string& message) {
+  std::istringstream lines(message);
+  std::string line, joined;
+  while (std::getline(lines, line)) {
+    const auto begin = line.find_first_not_of(" \t\r");
+    if (begin == std::string::npos) continue;
+    const auto end = line.find_last_not_of(" \t\r");
+    if (!joined.empty()) joined += "; ";
+    joined += line.substr(begin, end - begin + 1);
+  }
+  return joined.empty() ? "unknown OpenImageIO error" : joined;
+}
+
+InputError readFailure(const std::string& path, const std::string& what) {
+  return InputError(path + ": error: " + what);
+}
+
+OutputError writeFailure(const std::string& path, const std::string& what) {
+  return OutputError(path + ": error: cannot write: " + what);
+}
+
+// OpenImageIO reports a missing file or a folder vaguely; the system says it plainly.
+void checkReadable(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY);
+  if (fd < 0) throw readFailure(path, std::string("cannot open: ") + std::strerror(errno));
+  struct stat info {};
+  const bool isDirectory = ::fstat(fd, &info) == 0 && S_ISDIR(info.st_mode);
+  ::close(fd);
+  if (isDirectory) throw readFailure(path, "cannot open: Is a directory");
+}
+
+// Integer pixels divided by their maximum here rather than by OpenImageIO, whose conversion
+// multiplies by the reciprocal and so may differ from v / 255 in the last bit.
+template <typename T>
+bool readScaled(OIIO::ImageInput& in, int channels, float maximum, std::vector<float>& pixels) {
+  std::vector<T> stored(pixels.size());
+  if (!in.read_image(0, 0, 0, channels, OIIO::BaseTypeFromC<T>::value, stored.data())) return false;
+  std::transform(stored.begin(), stored.end(), pixels.begin(), [&](T v) { return float(v) / maximum; });
+  return true;
+}
+
+// The mode a newly created file gets (0666 less the umask); mkstemps itself creates 0600.
+mode_t newFileMode() {
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  return 0666 & ~mask;
+}
+
+std::uint8_t toUInt8(float c) {
+  if (!(c > 0.0f)) return 0;  // also NaN
+  if (c >= 1.0f) return 255;
+  return static_cast<std::uint8_t>(std::lround(static_cast<double>(c) * 255.0));
+}
+
+// A temporary beside the target, ".NAME.tmp.XXXXXX.EXT": the extension stays last for any
+// writer that looks at it, and the leading dot hides it from globs such as *.png.
+std::string createTemporary(const std::string& path) {
+  const std::filesystem::path target(path);
+  const std::string extension = target.extension().string();
+  const std::string name =
+      (target.parent_path() / ("." + target.filename().string() + ".tmp.XXXXXX" + extension)).string();
+  std::vector<char> buffer(name.begin(), name.end());
+  buffer.push_back('\0');
+  const int fd = ::mkstemps(buffer.data(), static_cast<int>(extension.size()));
+  if (fd < 0)
+    throw writeFailure(path, std::string("cannot create a temporary file beside it: ") + std::strerror(errno));
+  ::fchmod(fd, newFileMode());
+  ::close(fd);
+  return buffer.data();
+}
+
+}  // namespace
+
+ImageFile readImage(const std::string& path) {
+  checkReadable(path);
+  // Keep alpha as stored: by default PNG and TIFF readers premultiply colour by it.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(path, &config);
+  if (!in) throw readFailure(path, "cannot read: " + oneLine(OIIO::geterror()));
+
+  const OIIO::ImageSpec spec = in->spec();  // the first subimage, level 0
+  if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1 || spec.nchannels <= 0)
+    throw readFailure(path, "image is empty or not two-dimensional (" + std::to_string(spec.width) + " x " +
+                                std::to_string(spec.height) + " x " + std::to_string(spec.depth) + ", " +
+                                std::to_string(spec.nchannels) + " channels)");
+  if (spec.width > kMaxSide || spec.height > kMaxSide)
+    throw readFailure(path, "image is " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
+                                ", larger than the " + std::to_string(kMaxSide) + " x " +
+                                std::to_string(kMaxSide) + " limit");
+
+  ImageFile file;
+  const int channels = std::min(spec.nchannels, kMaxChannels);
+  file.image = Image(spec.width, spec.height, channels);
+  for (int c = 0; c < channels; ++c) file.image.channelNames.push_back(spec.channel_name(c));
+  const auto storedAs = [&](OIIO::TypeDesc type) {
+    return spec.format == type && std::all_of(spec.channelformats.begin(), spec.channelformats.end(),
+                                              [&](OIIO::TypeDesc t) { return t == type; });
+  };
+  file.eightBit = storedAs(OIIO::TypeDesc::UINT8);
+  std::vector<float>& pixels = file.image.pixels;
+  bool read = false;
+  if (file.eightBit) {
+    read = readScaled<std::uint8_t>(*in, channels, 255.0f, pixels);
+  } else if (storedAs(OIIO::TypeDesc::UINT16)) {
+    read = readScaled<std::uint16_t>(*in, channels, 65535.0f, pixels);
+  } else {
+    read = in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data());
+  }
+  if (!read) throw readFailure(path, "cannot read: " + oneLine(in->geterror()));
+  in->close();
+  return file;
+}
+
+void writeImage(const std::string& path, const Image& image, PixelType type) {
+  UVTK_CHECK(image.width > 0 && image.height > 0 && image.channels > 0);
+  UVTK_CHECK(image.pixels.size() == image.index(0, image.height));
+  UVTK_CHECK(image.channelNames.empty() || int(image.channelNames.size()) == image.channels);
+
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) {
+    OIIO::geterror();  // drop OpenImageIO's own message so it is not printed at exit
+    throw UsageError(path + ": error: cannot write images of this type");
+  }
+  // OpenImageIO has no query for float support; writers of other formats silently convert.
+  const std::string format = out->format_name();
+  if (type == PixelType::Float && format != "openexr" && format != "tiff")
+    throw UsageError(path + ": error: cannot write float pixels to a " + format +
+                     " file (use .exr, .tif or .tiff)");
+
+  // Our own rounding, not OpenImageIO's conversion, so that NaN and the halfway cases are defined.
+  std::vector<std::uint8_t> rounded;
+  const void* pixels = image.pixels.data();
+  OIIO::TypeDesc pixelType = OIIO::TypeDesc::FLOAT;
+  if (type == PixelType::UInt8) {
+    rounded.resize(image.pixels.size());
+    std::transform(image.pixels.begin(), image.pixels.end(), rounded.begin(), toUInt8);
+    pixels = rounded.data();
+    pixelType = OIIO::TypeDesc::UINT8;
+  }
+
+  OIIO::ImageSpec spec(image.width, image.height, image.channels, pixelType);
+  if (!image.channelNames.empty()) {
+    spec.channelnames = image.channelNames;
+    const auto alpha = std::find(spec.channelnames.begin(), spec.channelnames.end(), "A");
+    spec.alpha_channel = alpha == spec.channelnames.end() ? -1 : int(alpha - spec.channelnames.begin());
+  }
+  // Store alpha as given: by default PNG and TIFF writers divide colour by it.
+  spec.attribute("oiio:UnassociatedAlpha", 1);
+
+  const std::string temporary = createTemporary(path);
+  const auto fail = [&](const std::string& reason) {
+    std::remove(temporary.c_str());
+    return writeFailure(path, reason);
+  };
+  if (!out->open(temporary, spec)) throw fail(oneLine(out->geterror()));
+  const bool written = out->write_image(pixelType, pixels);
+  const bool closed = out->close();
+  if (!written || !closed) throw fail(oneLine(out->geterror()));
+  if (std::rename(temporary.c_str(), path.c_str()) != 0)
+    throw fail(std::string("cannot rename the temporary file onto it: ") + std::strerror(errno));
+}
+
+}  // namespace uvtk::io

@@ -1,0 +1,32 @@
+// Images through OpenImageIO: any format it reads (PNG, JPEG, EXR, TIFF, ...), 8-bit PNG or
+// float EXR/TIFF written atomically.
+#pragma once
+
+#include <string>
+
+#include "core/image.h"
+
+namespace uvtk::io {
+
+struct ImageFile {
+  Image image;            // values as stored: 8-bit and 16-bit integers scaled to [0, 1]
+  bool eightBit = false;  // every channel was stored as 8-bit unsigned integers
+};
+
+// Reads the first subimage with all its channels (up to 64) in OpenImageIO's order, which for
+// EXR is R, G, B, A, then the rest alphabetically: EXR files do not record the order channels
+// were written in, so find channels by name. Throws InputError "PATH: error: ..." for a missing,
+// unreadable or undecodable file, an empty image, and one larger than 16384 x 16384 pixels
+// (refused, never allocated).
+ImageFile readImage(const std::string& path);
+
+enum class PixelType { UInt8, Float };
+
+// Writes `image` to `path` in the format its extension names: UInt8 stores round(clamp(c, 0, 1)
+// * 255); Float needs a format that holds floats (.exr, .tif, .tiff) and keeps non-finite values
+// as they are. Channel names come from image.channelNames when given. Written to a temporary
+// file in the same folder, then renamed; throws OutputError (nothing left behind) on failure and
+// UsageError for an extension OpenImageIO cannot write or Float to an 8-bit-only format.
+void writeImage(const std::string& path, const Image& image, PixelType type);
+
+}  // namespace uvtk::io

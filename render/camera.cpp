@@ -1,0 +1,59 @@
+#include "render/camera.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/error.h"
+#include "core/gl_matrices.h"
+
+namespace uvtk::render {
+
+Vec3 Camera::eye() const {
+  const Mat3 r = viewFromWorld.topLeftCorner<3, 3>();
+  return -(r.inverse() * viewFromWorld.block<3, 1>(0, 3));
+}
+
+BoundingSphere boundingSphere(const std::vector<Vec3>& points) {
+  BoundingSphere s;
+  if (points.empty()) return s;
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Vec3& p : points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  s.center = 0.5 * (lo + hi);
+  for (const Vec3& p : points) s.radius = std::max(s.radius, (p - s.center).norm());
+  return s;
+}
+
+Camera frameSphere(const BoundingSphere& sphere, const Vec3& eyeDirection, const Vec3& up, const Projection& projection,
+                   int width, int height) {
+  if (width <= 0 || height <= 0) throw UsageError("the image size must be positive");
+  if (!(eyeDirection.norm() > 0.0)) throw UsageError("camera auto: the viewing direction is zero");
+  const double aspect = double(width) / double(height);
+  // A point-like mesh still gets a finite view volume.
+  const double radius = sphere.radius > 0.0 ? sphere.radius : 1.0;
+  const Vec3 direction = eyeDirection.normalized();
+  Camera camera;
+  camera.width = width;
+  camera.height = height;
+  if (projection.orthographic) {
+    const double half = 1.05 * radius;
+    const double distance = 3.0 * radius;
+    camera.viewFromWorld = lookAt(sphere.center + distance * direction, sphere.center, up);
+    const double hx = aspect >= 1.0 ? half * aspect : half, hy = aspect >= 1.0 ? half : half / aspect;
+    camera.clipFromView = orthographic(-hx, hx, -hy, hy, distance - 2.0 * radius, distance + 2.0 * radius);
+    return camera;
+  }
+  const double halfFovy = projection.fovyDegrees * kPi / 360.0;
+  const double halfFovx = std::atan(std::tan(halfFovy) * aspect);
+  // The sphere, shrunk to 90% of the field, touches the narrower half-angle's cone.
+  const double distance = radius / (0.9 * std::sin(std::min(halfFovy, halfFovx)));
+  camera.viewFromWorld = lookAt(sphere.center + distance * direction, sphere.center, up);
+  const double zNear = std::max(0.5 * (distance - radius), 1e-6 * distance);
+  camera.clipFromView = perspective(projection.fovyDegrees, aspect, zNear, distance + 2.0 * radius);
+  return camera;
+}
+
+}  // namespace uvtk::render

@@ -1,0 +1,162 @@
+#include "render/procedural.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "render/font.h"
+
+namespace uvtk::render {
+
+namespace {
+
+constexpr int kCheckerMax = 16384;
+constexpr int kCheckerDefaultSquare = 8;
+constexpr int kGridMin = 64, kGridMax = 8192, kGridDefault = 1024;
+constexpr int kCells = 8;  // cells per side of the uv grid
+
+// The nearest 8-bit value, as a float: round(v 255) / 255.
+float eightBit(double v) { return float(std::round(v * 255.0) / 255.0); }
+
+// HSV to RGB with value 1 (Smith, "Color gamut transform pairs", SIGGRAPH 1978): hue in turns.
+std::array<double, 3> hsvToRgb(double hue, double saturation) {
+  const double h = hue * 6.0;
+  const int sector = int(std::floor(h)) % 6;
+  const double f = h - std::floor(h);
+  const double p = 1.0 - saturation, q = 1.0 - saturation * f, t = 1.0 - saturation * (1.0 - f);
+  switch (sector) {
+    case 0: return {1.0, t, p};
+    case 1: return {q, 1.0, p};
+    case 2: return {p, 1.0, t};
+    case 3: return {p, q, 1.0};
+    case 4: return {t, p, 1.0};
+    default: return {1.0, p, q};
+  }
+}
+
+// The background of the cell in column `column` (A = 0, along u) and row `row` (1 = 0, along v):
+// the hue turns with the column, the saturation grows with the row from 0.15 to 0.50, the value
+// is 1, so every channel stays at or above 1/2 and black reads on all 64 colours.
+std::array<float, 3> cellColour(int column, int row) {
+  const std::array<double, 3> rgb = hsvToRgb(double(column) / kCells, 0.15 + 0.05 * row);
+  return {eightBit(rgb[0]), eightBit(rgb[1]), eightBit(rgb[2])};
+}
+
+void setPixel(Image& image, int x, int y, const std::array<float, 3>& rgb) {
+  for (int c = 0; c < 3; ++c) image.at(x, y, c) = rgb[std::size_t(c)];
+}
+
+// The digits of a decimal count (no sign, no spaces, at most 9 digits), or -1.
+int parseCount(const std::string& text) {
+  if (text.empty() || text.size() > 9 ||
+      !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    return -1;
+  return std::stoi(text);
+}
+
+// The fields of `text` between its colons.
+std::vector<std::string> splitColons(const std::string& text) {
+  std::vector<std::string> fields;
+  std::size_t begin = 0;
+  for (std::size_t colon; (colon = text.find(':', begin)) != std::string::npos; begin = colon + 1)
+    fields.push_back(text.substr(begin, colon - begin));
+  fields.push_back(text.substr(begin));
+  return fields;
+}
+
+}  // namespace
+
+Texture checkerTexture(int n, int c) {
+  if (!(1 <= n && n <= kCheckerMax && 1 <= c && c <= kCheckerMax))
+    throw UsageError("checker texture: expected 1 <= N, C <= 16384, got N = " + std::to_string(n) +
+                     ", C = " + std::to_string(c));
+  TexelLevel base;
+  base.width = base.height = n;
+  base.texels.resize(std::size_t(n) * std::size_t(n));
+  const Rgba white(1.0f, 1.0f, 1.0f, 1.0f), black(0.0f, 0.0f, 0.0f, 1.0f);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) base.at(i, j) = (i / c + j / c) % 2 == 0 ? white : black;
+  return Texture(std::move(base), true);
+}
+
+// The layout, in pixels of the N x N image (row 0 at the top, v = 1): cell boundaries at
+// b_k = k N / 8 (integer division), k = 0..8; cell column A..H spans x in [b_k, b_k+1) left to
+// right, cell row 8..1 spans y in [b_k, b_k+1) top to bottom. Black lines on every inner boundary
+// (x = b_k or y = b_k, k = 1..7) and on the two outermost pixels of each side. Each cell's label
+// (e.g. "C5"), scale max(1, floor(h / 21)) for the cell height h = N / 8 (about a third of it),
+// is centred in the cell when it fits between the cell's lines (in every cell from N = 104 on).
+// The arrow of cell A1 (width w, height h, top y0) lies below the label: a shaft along row
+// y0 + 5h/6 (scale rows thick) from x = w/5 to x = 4w/5, ending in a head whose column
+// 4w/5 - d spans rows y0 + 5h/6 +- d/2 for d = 0..h/6.
+Image uvGridImage(int n) {
+  if (!(kGridMin <= n && n <= kGridMax))
+    throw UsageError("uvgrid texture: expected 64 <= N <= 8192, got N = " + std::to_string(n));
+  Image image(n, n, 3);
+  std::array<int, kCells + 1> bound{};
+  for (int k = 0; k <= kCells; ++k) bound[std::size_t(k)] = k * n / kCells;
+  const int scale = std::max(1, (n / kCells) / 21);
+  const std::array<float, 3> black{0.0f, 0.0f, 0.0f};
+  const float ink[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+
+  for (int cellY = 0; cellY < kCells; ++cellY)
+    for (int column = 0; column < kCells; ++column) {
+      const int row = kCells - 1 - cellY;  // 0 for digit 1, at the bottom (v = 0)
+      const int x0 = bound[std::size_t(column)], y0 = bound[std::size_t(cellY)];
+      const int w = bound[std::size_t(column) + 1] - x0, h = bound[std::size_t(cellY) + 1] - y0;
+      const std::array<float, 3> background = cellColour(column, row);
+      for (int y = y0; y < y0 + h; ++y)
+        for (int x = x0; x < x0 + w; ++x) setPixel(image, x, y, background);
+
+      const std::string label{char('A' + column), char('1' + row)};
+      const int labelWidth = textWidth(label, scale), labelHeight = textHeight(scale);
+      if (labelWidth <= w - 2 && labelHeight <= h - 2)
+        drawText(image, x0 + (w - labelWidth) / 2, y0 + (h - labelHeight) / 2, label, scale, ink);
+    }
+
+  for (int p = 0; p < n; ++p) {
+    for (int k = 1; k < kCells; ++k) {
+      setPixel(image, bound[std::size_t(k)], p, black);
+      setPixel(image, p, bound[std::size_t(k)], black);
+    }
+    for (int edge : {0, 1, n - 2, n - 1}) {
+      setPixel(image, edge, p, black);
+      setPixel(image, p, edge, black);
+    }
+  }
+
+  // The arrow in cell A1 (column 0, the bottom cell row), pointing to +u.
+  const int w = bound[1], y0 = bound[kCells - 1], h = n - y0;
+  const int axis = y0 + 5 * h / 6, tail = w / 5, tip = 4 * w / 5;
+  for (int x = tail; x <= tip; ++x)
+    for (int y = axis - scale / 2; y < axis - scale / 2 + scale; ++y) setPixel(image, x, y, black);
+  for (int d = 0; d <= h / 6; ++d)
+    for (int y = axis - d / 2; y <= axis + d / 2; ++y) setPixel(image, tip - d, y, black);
+  return image;
+}
+
+std::optional<Texture> proceduralTexture(const std::string& name) {
+  const std::string checker = "checker", uvgrid = "uvgrid";
+  // A name is procedural when it is the bare word or the word and a colon: "checker.png" is a file.
+  const auto names = [&](const std::string& word) { return name == word || name.compare(0, word.size() + 1, word + ":") == 0; };
+  if (names(checker)) {
+    const std::vector<std::string> fields = splitColons(name);
+    const int n = fields.size() >= 2 ? parseCount(fields[1]) : -1;
+    const int c = fields.size() == 3 ? parseCount(fields[2]) : kCheckerDefaultSquare;
+    if (fields.size() < 2 || fields.size() > 3 || !(1 <= n && n <= kCheckerMax && 1 <= c && c <= kCheckerMax))
+      throw UsageError("texture '" + name + "': expected checker:N[:C] with 1 <= N, C <= 16384");
+    return checkerTexture(n, c);
+  }
+  if (names(uvgrid)) {
+    const std::vector<std::string> fields = splitColons(name);
+    const int n = fields.size() == 2 ? parseCount(fields[1]) : kGridDefault;
+    if (fields.size() > 2 || !(kGridMin <= n && n <= kGridMax))
+      throw UsageError("texture '" + name + "': expected uvgrid[:N] with 64 <= N <= 8192");
+    return Texture::fromImage(uvGridImage(n), true);
+  }
+  return std::nullopt;
+}
+
+}  // namespace uvtk::render

@@ -1,0 +1,316 @@
+#include "render/raster.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "core/error.h"
+#include "render/parallel.h"
+
+namespace uvtk::render {
+
+namespace {
+
+__extension__ typedef __int128 Int128;  // exact polygon areas of snapped coordinates
+
+constexpr int kSubpixelBits = 8;  // vertices snap to 1/256 pixel, as GL hardware commonly does
+constexpr std::int64_t kSubpixel = std::int64_t(1) << kSubpixelBits;
+constexpr std::int64_t kHalfPixel = kSubpixel / 2;
+constexpr int kTileSize = 64;
+constexpr int kMaxViewport = 16384;
+
+struct Point {
+  std::int64_t x, y;
+};
+
+// One triangle ready for the edge tests: counter-clockwise, snapped, with its pixel bounds.
+struct SetupTriangle {
+  Point v[3];
+  std::int32_t face;
+  int x0, x1, y0, y1;  // inclusive pixel range (window coordinates, y up)
+  Vec3 depthPlane;     // window depth = a x + b y + c
+};
+
+// The clip-space half-spaces a visible point satisfies: near, far, and the guard band, wide
+// enough to leave every visible pixel untouched and narrow enough that snapped window
+// coordinates stay below 2^21 pixels (so edge functions fit in 64 bits).
+struct ClipPlanes {
+  double guard;
+  double distance(int plane, const Vec4& p) const {
+    switch (plane) {
+      case 0: return p.w() + p.z();  // near
+      case 1: return p.w() - p.z();  // far
+      case 2: return guard * p.w() - p.x();
+      case 3: return guard * p.w() + p.x();
+      case 4: return guard * p.w() - p.y();
+      default: return guard * p.w() + p.y();
+    }
+  }
+  // Sets the clipped coordinate so that the point lies exactly on the plane: with huge corners
+  // the interpolated coordinate alone would carry their rounding error.
+  void putOn(int plane, Vec4& p) const {
+    switch (plane) {
+      case 0: p.z() = -p.w(); break;
+      case 1: p.z() = p.w(); break;
+      case 2: p.x() = guard * p.w(); break;
+      case 3: p.x() = -guard * p.w(); break;
+      case 4: p.y() = guard * p.w(); break;
+      default: p.y() = -guard * p.w(); break;
+    }
+  }
+};
+
+using Polygon = std::array<Vec4, 9>;  // a triangle clipped by six planes has at most 9 corners
+
+// Sutherland-Hodgman against one plane. The intersection is always computed from the inside
+// corner towards the outside one, so two triangles sharing an edge get the same new corner and
+// stay watertight.
+int clipAgainst(const ClipPlanes& planes, int plane, const Polygon& in, int n, Polygon& out) {
+  int m = 0;
+  for (int i = 0; i < n; ++i) {
+    const Vec4& a = in[i];
+    const Vec4& b = in[(i + 1) % n];
+    const double da = planes.distance(plane, a), db = planes.distance(plane, b);
+    if (da >= 0.0) out[m++] = a;
+    if ((da >= 0.0) != (db >= 0.0)) {
+      const bool aInside = da >= 0.0;
+      const Vec4& inside = aInside ? a : b;
+      const Vec4& outside = aInside ? b : a;
+      const double dIn = aInside ? da : db, dOut = aInside ? db : da;
+      Vec4 p = inside + (dIn / (dIn - dOut)) * (outside - inside);
+      planes.putOn(plane, p);
+      out[m++] = p;
+    }
+  }
+  return m;
+}
+
+Int128 twiceArea(const Point* p, int n) {
+  Int128 sum = 0;
+  for (int i = 0; i < n; ++i) {
+    const Point& a = p[i];
+    const Point& b = p[(i + 1) % n];
+    sum += Int128(a.x) * b.y - Int128(b.x) * a.y;
+  }
+  return sum;
+}
+
+std::int64_t floorDiv(std::int64_t a, std::int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
+
+// The edge a -> b of a counter-clockwise triangle (window coordinates, y up) owns the pixel
+// centres on it when it is a left edge (going down) or a top edge (horizontal, going left).
+bool isTopLeft(const Point& a, const Point& b) {
+  const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
+  return dy < 0 || (dy == 0 && dx < 0);
+}
+
+struct Binned {
+  std::vector<SetupTriangle> triangles;
+  std::vector<std::vector<std::uint32_t>> tiles;  // per tile, indices into triangles
+  RasterStats stats;
+};
+
+class Setup {
+ public:
+  Setup(int width, int height, int tilesX, const RasterOptions& options)
+      : width_(width), height_(height), tilesX_(tilesX), options_(options) {
+    planes_.guard = double(1 << 20) / double(std::max(width, height));
+  }
+
+  void triangle(const std::vector<Vec4>& clip, std::int32_t face, Binned& out) const {
+    Polygon a{clip[3 * std::size_t(face)], clip[3 * std::size_t(face) + 1], clip[3 * std::size_t(face) + 2]};
+    if (!(a[0].allFinite() && a[1].allFinite() && a[2].allFinite())) {
+      ++out.stats.clipped;
+      return;
+    }
+    const TriangleInterpolator interpolator(a[0], a[1], a[2], width_, height_);
+    if (!interpolator.valid()) {  // seen edge-on: it covers no area
+      ++out.stats.culled;
+      return;
+    }
+    Polygon b;
+    int n = 3;
+    Polygon* in = &a;
+    Polygon* outPolygon = &b;
+    for (int plane = 0; plane < 6 && n > 0; ++plane) {
+      bool allInside = true;
+      for (int i = 0; i < n && allInside; ++i) allInside = planes_.distance(plane, (*in)[i]) >= 0.0;
+      if (allInside) continue;
+      n = clipAgainst(planes_, plane, *in, n, *outPolygon);
+      std::swap(in, outPolygon);
+    }
+    if (n < 3) {
+      ++out.stats.clipped;
+      return;
+    }
+    std::array<Point, 9> p;
+    for (int i = 0; i < n; ++i) {
+      const Vec4& c = (*in)[i];
+      if (!(c.w() > 0.0)) {  // only the degenerate point (0, 0, 0, 0) survives the guard band at w <= 0
+        ++out.stats.clipped;
+        return;
+      }
+      const double x = (c.x() / c.w() + 1.0) * 0.5 * width_, y = (c.y() / c.w() + 1.0) * 0.5 * height_;
+      p[i] = Point{std::llround(x * kSubpixel), std::llround(y * kSubpixel)};
+    }
+    const Int128 area = twiceArea(p.data(), n);
+    if (area == 0) {
+      ++out.stats.culled;
+      return;
+    }
+    const bool front = area > 0;
+    if ((options_.cull == Cull::Back && !front) || (options_.cull == Cull::Front && front)) {
+      ++out.stats.culled;
+      return;
+    }
+    ++out.stats.drawn;
+    const Vec3 depthPlane = 0.5 * interpolator.ndcDepthPlane() + Vec3(0, 0, 0.5);  // glDepthRange(0, 1)
+    for (int i = 1; i + 1 < n; ++i) {  // a fan over the convex polygon
+      SetupTriangle t;
+      t.v[0] = p[0];
+      t.v[1] = front ? p[i] : p[i + 1];
+      t.v[2] = front ? p[i + 1] : p[i];
+      const Int128 subArea = twiceArea(t.v, 3);
+      if (subArea <= 0) continue;  // a sliver that snapping collapsed or turned over
+      std::int64_t minX = t.v[0].x, maxX = minX, minY = t.v[0].y, maxY = minY;
+      for (const Point& q : t.v) {
+        minX = std::min(minX, q.x), maxX = std::max(maxX, q.x);
+        minY = std::min(minY, q.y), maxY = std::max(maxY, q.y);
+      }
+      // Pixels whose centre i + 1/2 lies in [min, max].
+      t.x0 = int(std::max<std::int64_t>(0, floorDiv(minX - kHalfPixel + kSubpixel - 1, kSubpixel)));
+      t.x1 = int(std::min<std::int64_t>(width_ - 1, floorDiv(maxX - kHalfPixel, kSubpixel)));
+      t.y0 = int(std::max<std::int64_t>(0, floorDiv(minY - kHalfPixel + kSubpixel - 1, kSubpixel)));
+      t.y1 = int(std::min<std::int64_t>(height_ - 1, floorDiv(maxY - kHalfPixel, kSubpixel)));
+      if (t.x0 > t.x1 || t.y0 > t.y1) continue;
+      t.face = face;
+      t.depthPlane = depthPlane;
+      const auto index = std::uint32_t(out.triangles.size());
+      out.triangles.push_back(t);
+      for (int ty = t.y0 / kTileSize; ty <= t.y1 / kTileSize; ++ty)
+        for (int tx = t.x0 / kTileSize; tx <= t.x1 / kTileSize; ++tx)
+          out.tiles[std::size_t(ty) * std::size_t(tilesX_) + std::size_t(tx)].push_back(index);
+    }
+  }
+
+ private:
+  int width_, height_, tilesX_;
+  RasterOptions options_;
+  ClipPlanes planes_{};
+};
+
+// Edge tests and the depth test of one triangle over the pixels of one tile.
+void drawInTile(const SetupTriangle& t, int tileX0, int tileX1, int tileY0, int tileY1, VisibilityBuffer& buffer) {
+  const int x0 = std::max(t.x0, tileX0), x1 = std::min(t.x1, tileX1);
+  const int y0 = std::max(t.y0, tileY0), y1 = std::min(t.y1, tileY1);
+  if (x0 > x1 || y0 > y1) return;
+  std::int64_t rowStart[3], stepX[3], stepY[3];
+  const std::int64_t px = std::int64_t(x0) * kSubpixel + kHalfPixel, py = std::int64_t(y0) * kSubpixel + kHalfPixel;
+  for (int e = 0; e < 3; ++e) {
+    const Point& a = t.v[e];
+    const Point& b = t.v[(e + 1) % 3];
+    // E(p) = (b - a) x (p - a): positive inside a counter-clockwise triangle. A centre on a
+    // edge that does not own it is pushed out by one unit.
+    rowStart[e] = (b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x) - (isTopLeft(a, b) ? 0 : 1);
+    stepX[e] = -(b.y - a.y) * kSubpixel;
+    stepY[e] = (b.x - a.x) * kSubpixel;
+  }
+  for (int y = y0; y <= y1; ++y) {
+    std::int64_t e0 = rowStart[0], e1 = rowStart[1], e2 = rowStart[2];
+    const int row = buffer.height - 1 - y;
+    for (int x = x0; x <= x1; ++x) {
+      if ((e0 | e1 | e2) >= 0) {
+        const double z = t.depthPlane.dot(Vec3(x + 0.5, y + 0.5, 1.0));
+        const float depth = float(std::clamp(z, 0.0, 1.0));
+        const std::size_t i = buffer.index(x, row);
+        if (depth < buffer.depth[i]) {
+          buffer.depth[i] = depth;
+          buffer.face[i] = t.face;
+        }
+      }
+      e0 += stepX[0], e1 += stepX[1], e2 += stepX[2];
+    }
+    for (int e = 0; e < 3; ++e) rowStart[e] += stepY[e];
+  }
+}
+
+}  // namespace
+
+TriangleInterpolator::TriangleInterpolator(const Vec4& c0, const Vec4& c1, const Vec4& c2, int width, int height) {
+  Mat3 m;
+  m << c0.x(), c1.x(), c2.x(),  //
+      c0.y(), c1.y(), c2.y(),    //
+      c0.w(), c1.w(), c2.w();
+  const double det = m.determinant();
+  if (!(det != 0.0) || !std::isfinite(det)) return;
+  Mat3 ndcFromWindow;  // X = 2 x / W - 1, Y = 2 y / H - 1
+  ndcFromWindow << 2.0 / width, 0, -1,  //
+      0, 2.0 / height, -1,              //
+      0, 0, 1;
+  kFromWindow_ = m.inverse() * ndcFromWindow;
+  if (!kFromWindow_.allFinite()) return;
+  depthPlane_ = (Vec3(c0.z(), c1.z(), c2.z()).transpose() * kFromWindow_).transpose();
+  valid_ = true;
+}
+
+TriangleInterpolator::Barycentrics TriangleInterpolator::at(double x, double y) const {
+  const Vec3 k = kFromWindow_ * Vec3(x, y, 1.0);
+  const Vec3 dkdx = kFromWindow_.col(0), dkdy = kFromWindow_.col(1);
+  const double s = k.sum(), dsdx = dkdx.sum(), dsdy = dkdy.sum();
+  Barycentrics r;
+  r.b = k / s;
+  r.dbdx = (dkdx * s - k * dsdx) / (s * s);  // quotient rule on k / s
+  r.dbdy = (dkdy * s - k * dsdy) / (s * s);
+  return r;
+}
+
+VisibilityBuffer rasterize(const std::vector<Vec4>& clip, int width, int height, const RasterOptions& options,
+                           RasterStats* stats) {
+  if (width <= 0 || height <= 0 || width > kMaxViewport || height > kMaxViewport)
+    throw UsageError("the image size must lie between 1 x 1 and 16384 x 16384 pixels");
+  UVTK_CHECK(clip.size() % 3 == 0);
+  VisibilityBuffer buffer;
+  buffer.width = width;
+  buffer.height = height;
+  buffer.face.assign(std::size_t(width) * std::size_t(height), -1);
+  buffer.depth.assign(buffer.face.size(), 1.0f);
+
+  const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
+  const int tileCount = tilesX * tilesY;
+  const auto faceCount = std::int64_t(clip.size() / 3);
+  UVTK_CHECK(faceCount <= std::numeric_limits<std::int32_t>::max());
+
+  // Set-up in chunks of consecutive triangles; each chunk bins its own triangles, and tiles read
+  // the chunks in order, so the drawing order is the input order whatever the thread count.
+  const int threads = threadCount(options.threads);
+  const int chunkCount = int(std::clamp<std::int64_t>(faceCount / 4096, 1, 4 * threads));
+  std::vector<Binned> chunks(static_cast<std::size_t>(chunkCount));
+  const Setup setup(width, height, tilesX, options);
+  parallelFor(chunkCount, threads, [&](int c) {
+    Binned& chunk = chunks[std::size_t(c)];
+    chunk.tiles.resize(std::size_t(tileCount));
+    const std::int64_t begin = faceCount * c / chunkCount, end = faceCount * (c + 1) / chunkCount;
+    for (std::int64_t f = begin; f < end; ++f) setup.triangle(clip, std::int32_t(f), chunk);
+  });
+
+  parallelFor(tileCount, threads, [&](int tile) {
+    const int tx = tile % tilesX, ty = tile / tilesX;
+    const int x0 = tx * kTileSize, x1 = std::min(width, x0 + kTileSize) - 1;
+    const int y0 = ty * kTileSize, y1 = std::min(height, y0 + kTileSize) - 1;
+    for (const Binned& chunk : chunks)
+      for (std::uint32_t index : chunk.tiles[std::size_t(tile)]) drawInTile(chunk.triangles[index], x0, x1, y0, y1, buffer);
+  });
+
+  if (stats) {
+    *stats = RasterStats{};
+    for (const Binned& chunk : chunks) {
+      stats->culled += chunk.stats.culled;
+      stats->clipped += chunk.stats.clipped;
+      stats->drawn += chunk.stats.drawn;
+    }
+  }
+  return buffer;
+}
+
+}  // namespace uvtk::render

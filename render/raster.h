@@ -1,0 +1,71 @@
+// The rasterizer's visibility pass: triangles in clip space in, for every pixel the nearest
+// triangle covering its centre out (depth test LESS on a float depth buffer, cleared to 1).
+// Clipping against the near and far planes (and a wide guard band) in homogeneous space,
+// vertices snapped to 1/256 pixel, coverage by exact integer edge functions with the top-left
+// rule, so that triangles sharing an edge cover each pixel centre on it exactly once.
+// docs/conventions.md §7.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/math.h"
+
+namespace uvtk::render {
+
+enum class Cull { None, Back, Front };  // front faces are counter-clockwise in window coordinates
+
+struct RasterOptions {
+  Cull cull = Cull::Back;
+  int threads = 0;  // 0: one per hardware thread; the output does not depend on it
+};
+
+// Per pixel, row 0 at the top of the image (window row height - 1).
+struct VisibilityBuffer {
+  int width = 0, height = 0;
+  std::vector<std::int32_t> face;  // triangle index, -1 where nothing was drawn
+  std::vector<float> depth;        // window depth in [0, 1]; 1 where nothing was drawn
+
+  std::size_t index(int x, int row) const { return std::size_t(row) * std::size_t(width) + std::size_t(x); }
+};
+
+struct RasterStats {
+  std::size_t culled = 0;    // triangles removed by face culling
+  std::size_t clipped = 0;   // triangles entirely outside the near-far range or the guard band
+  std::size_t drawn = 0;     // triangles that reached the edge tests
+};
+
+// `clip`: three clip-space positions per triangle (corner k of triangle f at 3 f + k).
+// Throws UsageError for an empty or too large viewport (more than 16384 pixels a side).
+VisibilityBuffer rasterize(const std::vector<Vec4>& clip, int width, int height, const RasterOptions& options,
+                           RasterStats* stats = nullptr);
+
+// Perspective-correct barycentric coordinates of one triangle at any point of the window, from its
+// unclipped clip-space corners: with M the 3 x 3 matrix of the corners' (x, y, w) as columns,
+// k = M^-1 (X_ndc, Y_ndc, 1) and b = k / (k0 + k1 + k2), which is the interpolation rule
+// a = sum(l_i a_i / w_i) / sum(l_i / w_i) in closed form; the derivatives are analytic.
+class TriangleInterpolator {
+ public:
+  TriangleInterpolator(const Vec4& c0, const Vec4& c1, const Vec4& c2, int width, int height);
+
+  bool valid() const { return valid_; }  // false when the triangle is seen edge-on (M singular)
+
+  struct Barycentrics {
+    Vec3 b;     // sums to 1
+    Vec3 dbdx;  // per pixel to the right
+    Vec3 dbdy;  // per pixel up the window (one image row towards the top)
+  };
+  // At window coordinates (x, y) with y up; the centre of image pixel (i, row) is
+  // (i + 0.5, height - row - 0.5).
+  Barycentrics at(double x, double y) const;
+
+  // Normalised device depth z/w = a x + b y + c at window (x, y): the coefficients (a, b, c).
+  const Vec3& ndcDepthPlane() const { return depthPlane_; }
+
+ private:
+  bool valid_ = false;
+  Eigen::Matrix3d kFromWindow_;  // row i: k_i as a x + b y + c in window coordinates
+  Vec3 depthPlane_ = Vec3::Zero();
+};
+
+}  // namespace uvtk::render

@@ -1,0 +1,206 @@
+#include "render/renderer.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "core/error.h"
+#include "render/parallel.h"
+
+namespace uvtk::render {
+
+namespace {
+
+constexpr int kRowsPerBand = 8;
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Texture coordinates of one fragment and their screen-space derivatives, after the division by q.
+struct FragmentTexcoords {
+  Vec2 st = Vec2::Zero();
+  Vec2 dstDx = Vec2::Zero(), dstDy = Vec2::Zero();
+};
+
+// d(a / q) = (da q - a dq) / q^2, for the interpolated (s, t, r, q) and its derivative.
+Vec2 projectedDerivative(const Vec4& tc, const Vec4& dtc) {
+  return (dtc.head<2>() * tc.w() - tc.head<2>() * dtc.w()) / (tc.w() * tc.w());
+}
+
+// Everything the shading pass reads, computed once per frame.
+struct FrameData {
+  const Mesh& mesh;
+  const TexcoordSource& source;
+  const RenderOptions& options;
+  const std::vector<Vec4>& clip;
+  std::vector<Vec3> normals;       // object space, per corner: for lighting or the pixel mapping
+  std::vector<Vec4> cornerColour;  // lit colour per corner when the environment reads it
+};
+
+class Shader {
+ public:
+  explicit Shader(const FrameData& frame) : f_(frame) {}
+
+  // The pixel (x, row) of triangle `face`; returns RGB and fills the AOV values.
+  Vec3 shade(int x, int row, std::int32_t face, float* aov) {
+    const RenderOptions& o = f_.options;
+    if (face != cachedFace_) {
+      const std::size_t c = 3 * std::size_t(face);
+      interpolator_ = TriangleInterpolator(f_.clip[c], f_.clip[c + 1], f_.clip[c + 2], o.camera.width, o.camera.height);
+      cachedFace_ = face;
+    }
+    const double wx = x + 0.5, wy = o.camera.height - row - 0.5;  // window coordinates, y up
+    const TriangleInterpolator::Barycentrics b = interpolator_.at(wx, wy);
+    const FragmentTexcoords tc = f_.source.pixelMapping ? exactTexcoords(face, b) : interpolatedTexcoords(face, b);
+    const Texture& texture = *o.texture;
+    const double lambda = levelOfDetail(texture.width(), texture.height(), tc.dstDx, tc.dstDy);
+    const Vec4 texel = sample(texture, o.sampler, tc.st.x(), tc.st.y(), lambda);
+    Vec4 fragment = Vec4::Ones();
+    if (!f_.cornerColour.empty()) {
+      fragment = Vec4::Zero();
+      for (int k = 0; k < 3; ++k) fragment += b.b[k] * f_.cornerColour[3 * std::size_t(face) + std::size_t(k)];
+    }
+    const Vec4 colour = textureEnvironment(o.env, fragment, texel, o.envColour);
+    if (aov) {
+      aov[0] = float(tc.st.x());
+      aov[1] = float(tc.st.y());
+      aov[4] = std::isfinite(lambda) ? float(lambda) : (lambda > 0 ? 1000.0f : -1000.0f);  // GL's lod clamp
+    }
+    return colour.head<3>();
+  }
+
+ private:
+  FragmentTexcoords interpolatedTexcoords(std::int32_t face, const TriangleInterpolator::Barycentrics& b) const {
+    const Vec4* corners = &f_.source.corners[3 * std::size_t(face)];
+    Vec4 tc = Vec4::Zero(), dx = Vec4::Zero(), dy = Vec4::Zero();
+    for (int k = 0; k < 3; ++k) {
+      tc += b.b[k] * corners[k];
+      dx += b.dbdx[k] * corners[k];
+      dy += b.dbdy[k] * corners[k];
+    }
+    FragmentTexcoords out;
+    out.st = tc.head<2>() / tc.w();
+    out.dstDx = projectedDerivative(tc, dx);
+    out.dstDy = projectedDerivative(tc, dy);
+    return out;
+  }
+
+  // The mapping at the fragment, and its derivatives by central differences a thousandth of a
+  // pixel to either side on the triangle's plane; across the seam of a wrapping mapping the
+  // nearest difference, so no line of the coarsest level appears along the seam.
+  FragmentTexcoords exactTexcoords(std::int32_t face, const TriangleInterpolator::Barycentrics& b) const {
+    constexpr double h = 1e-3;
+    FragmentTexcoords out;
+    out.st = exactAt(face, b.b);
+    out.dstDx = difference(exactAt(face, b.b + h * b.dbdx), exactAt(face, b.b - h * b.dbdx)) / (2 * h);
+    out.dstDy = difference(exactAt(face, b.b + h * b.dbdy), exactAt(face, b.b - h * b.dbdy)) / (2 * h);
+    return out;
+  }
+
+  Vec2 difference(const Vec2& a, const Vec2& b) const {
+    Vec2 d = a - b;
+    if (!d.allFinite()) return Vec2::Zero();
+    if (f_.source.pixelMapping->wrapsS) d.x() -= std::round(d.x());
+    return d;
+  }
+
+  Vec2 exactAt(std::int32_t face, const Vec3& b) const {
+    const Triangle& t = f_.mesh.triangles[std::size_t(face)];
+    const Vec3 position = b[0] * f_.mesh.positions[t[0]] + b[1] * f_.mesh.positions[t[1]] + b[2] * f_.mesh.positions[t[2]];
+    Vec3 normal = Vec3::Zero();
+    if (!f_.normals.empty()) {
+      for (int k = 0; k < 3; ++k) normal += b[k] * f_.normals[3 * std::size_t(face) + std::size_t(k)];
+      const double length = normal.norm();
+      normal = length > 0.0 ? Vec3(normal / length) : Vec3::Zero();
+    }
+    const Vec4 tc = f_.source.pixelMapping->texcoordAt(position, normal, face);
+    return tc.head<2>() / tc.w();
+  }
+
+  const FrameData& f_;
+  std::int32_t cachedFace_ = -1;
+  TriangleInterpolator interpolator_{Vec4::Zero(), Vec4::Zero(), Vec4::Zero(), 1, 1};
+};
+
+std::vector<Vec4> cornerClipPositions(const Mesh& mesh, const Mat4& clipFromObject) {
+  std::vector<Vec4> vertexClip(mesh.positions.size());
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+    vertexClip[v] = clipFromObject * mesh.positions[v].homogeneous();
+  std::vector<Vec4> clip(3 * mesh.triangles.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) clip[3 * f + std::size_t(k)] = vertexClip[std::size_t(mesh.triangles[f][k])];
+  return clip;
+}
+
+int fullMipmapLevels(int width, int height) {
+  int levels = 1;
+  for (int size = std::max(width, height); size > 1; size /= 2) ++levels;
+  return levels;
+}
+
+}  // namespace
+
+Rendering render(const Mesh& mesh, const TexcoordSource& source, const RenderOptions& o) {
+  if (!o.texture) throw UsageError("render: no texture is bound");
+  if (!source.pixelMapping && source.corners.size() != 3 * mesh.triangles.size())
+    throw UsageError("render: expected 3 texture coordinates per triangle");
+  UVTK_CHECK(!needsMipmaps(o.sampler.minFilter) ||
+             o.texture->levelCount() == fullMipmapLevels(o.texture->width(), o.texture->height()));
+  const int width = o.camera.width, height = o.camera.height;
+  Rendering out;
+
+  const auto rasterStart = std::chrono::steady_clock::now();
+  const Mat4 eyeFromObject = o.camera.viewFromWorld * o.worldFromObject;
+  const std::vector<Vec4> clip = cornerClipPositions(mesh, o.camera.clipFromView * eyeFromObject);
+  const VisibilityBuffer visible = rasterize(clip, width, height, o.raster, &out.raster);
+  out.rasterMs = millisecondsSince(rasterStart);
+
+  const auto shadeStart = std::chrono::steady_clock::now();
+  FrameData frame{mesh, source, o, clip, {}, {}};
+  // Normals and lighting only when something reads them.
+  const bool lit = readsFragmentColour(o.env);
+  if (lit || (source.pixelMapping && source.pixelMapping->needsNormal)) frame.normals = cornerNormals(mesh);
+  if (lit) {
+    const Mat3 normalMatrix = eyeFromObject.topLeftCorner<3, 3>().inverse().transpose();
+    frame.cornerColour.resize(frame.normals.size());
+    for (std::size_t c = 0; c < frame.normals.size(); ++c) {
+      const Vec3 n = normalMatrix * frame.normals[c];
+      const double length = n.norm();
+      frame.cornerColour[c] = headlightColour(o.lighting, length > 0.0 ? Vec3(n / length) : Vec3::Zero());
+    }
+  }
+
+  out.colour = Image(width, height, 3);
+  if (o.aovs) {
+    out.aovs = Image(width, height, 5);
+    out.aovs.channelNames = {"u", "v", "depth", "face", "lod"};
+  }
+  const int bands = (height + kRowsPerBand - 1) / kRowsPerBand;
+  std::vector<std::size_t> covered(std::size_t(bands), 0);
+  parallelFor(bands, o.raster.threads, [&](int band) {
+    Shader shader(frame);
+    for (int row = band * kRowsPerBand; row < std::min(height, (band + 1) * kRowsPerBand); ++row)
+      for (int x = 0; x < width; ++x) {
+        const std::size_t i = visible.index(x, row);
+        const std::int32_t face = visible.face[i];
+        float* aov = o.aovs ? &out.aovs.pixels[out.aovs.index(x, row)] : nullptr;
+        Vec3 rgb = o.background;
+        if (face >= 0) {
+          rgb = shader.shade(x, row, face, aov);
+          ++covered[std::size_t(band)];
+        } else if (aov) {
+          aov[0] = aov[1] = aov[4] = 0.0f;
+        }
+        if (aov) {
+          aov[2] = visible.depth[i];
+          aov[3] = float(face);
+        }
+        for (int c = 0; c < 3; ++c) out.colour.at(x, row, c) = float(rgb[c]);
+      }
+  });
+  for (std::size_t n : covered) out.coveredPixels += n;
+  out.shadeMs = millisecondsSince(shadeStart);
+  return out;
+}
+
+}  // namespace uvtk::render

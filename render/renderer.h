@@ -1,0 +1,65 @@
+// The verification renderer: a mesh with texture coordinates from any source (a file, a
+// projector, texgen) drawn as OpenGL's fixed-function pipeline draws it, or with the mapping
+// evaluated exactly at every pixel. Visibility first (render/raster.h), then each visible pixel is
+// shaded once: perspective-correct texture coordinates and their analytic derivatives, GL's level
+// of detail and filters, the texture environment. docs/conventions.md §7 and §9.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "core/image.h"
+#include "core/mesh.h"
+#include "render/camera.h"
+#include "render/raster.h"
+#include "render/shading.h"
+#include "render/texture.h"
+
+namespace uvtk::render {
+
+// Texture coordinates evaluated at each pixel: the fragment's object-space position (interpolated
+// perspective-correctly) and unit normal (interpolated and renormalised) go through the mapping.
+struct PixelMapping {
+  // (s, t, r, q) at a point of triangle `face`; non-finite where the mapping has no value.
+  std::function<Vec4(const Vec3& position, const Vec3& normal, std::int32_t face)> texcoordAt;
+  bool wrapsS = false;      // s has period 1: its derivatives take the nearest difference
+  bool needsNormal = false;
+};
+
+// Where the texture coordinates come from: per corner (interpolated), or per pixel.
+struct TexcoordSource {
+  std::vector<Vec4> corners;                 // (s, t, r, q), 3 per triangle; used without pixelMapping
+  std::optional<PixelMapping> pixelMapping;  // evaluated at every pixel instead
+};
+
+struct RenderOptions {
+  Camera camera;
+  Mat4 worldFromObject = Mat4::Identity();
+  RasterOptions raster;
+  const Texture* texture = nullptr;  // with its mipmaps when the sampler's filter needs them
+  SamplerState sampler;
+  EnvMode env = EnvMode::Replace;
+  Vec4 envColour = Vec4::Zero();  // GL_TEXTURE_ENV_COLOR, read by BLEND
+  Lighting lighting;
+  Vec3 background = Vec3::Zero();
+  bool aovs = false;  // also fill Rendering::aovs
+};
+
+struct Rendering {
+  Image colour;  // RGB, row 0 at the top
+  // With RenderOptions::aovs: channels u, v (s/q, t/q as interpolated, before wrapping), depth
+  // (window depth), face (triangle index, -1 for the background) and lod (lambda); the background
+  // has u = v = lod = 0 and depth 1.
+  Image aovs;
+  RasterStats raster;
+  std::size_t coveredPixels = 0;
+  double rasterMs = 0.0, shadeMs = 0.0;
+};
+
+// Throws UsageError when the texture coordinates do not match the mesh (3 per triangle) and
+// there is no pixel mapping, or when there is no texture.
+Rendering render(const Mesh& mesh, const TexcoordSource& texcoords, const RenderOptions& options);
+
+}  // namespace uvtk::render

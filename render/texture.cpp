@@ -1,0 +1,220 @@
+#include "render/texture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/error.h"
+
+namespace uvtk::render {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Texel coordinates beyond 2^62 are all "far outside"; clamping there keeps the int64 cast defined.
+constexpr double kFarTexel = 4611686018427387904.0;  // 2^62
+
+// floor(u) as an integer texel index; NaN counts as 0, infinities as +-2^62.
+std::int64_t floorToTexel(double u) {
+  if (std::isnan(u)) return 0;
+  return static_cast<std::int64_t>(std::floor(std::clamp(u, -kFarTexel, kFarTexel)));
+}
+
+// i mod n in [0, n) for n > 0, whatever the sign of i.
+std::int64_t positiveModulo(std::int64_t i, std::int64_t n) {
+  const std::int64_t r = i % n;
+  return r < 0 ? r + n : r;
+}
+
+// The lower of the two texels LINEAR blends along one axis and the weight of the upper one.
+struct LinearTap {
+  std::int64_t lower;
+  double alpha;
+};
+
+LinearTap linearTap(double coordinate, int size) {
+  double u = coordinate * size - 0.5;  // GL 4.6 §8.14.2: u = s w - 1/2, i0 = floor(u), alpha = frac(u)
+  u = std::isnan(u) ? 0.0 : std::clamp(u, -kFarTexel, kFarTexel);
+  const double lower = std::floor(u);
+  return {static_cast<std::int64_t>(lower), u - lower};
+}
+
+Vec4 widen(const Rgba& texel) { return texel.cast<double>(); }
+
+// Within-level filtering by a filter that names NEAREST or LINEAR (alone or within a mipmap filter).
+Vec4 sampleLevel(const TexelLevel& level, bool linear, const SamplerState& sampler, double s, double t) {
+  return linear ? sampleLinear(level, sampler.wrapS, sampler.wrapT, s, t)
+                : widen(sampleNearest(level, sampler.wrapS, sampler.wrapT, s, t));
+}
+
+// One axis of the box filter: the fine texels under coarse texel i and their overlaps. A fine
+// texel k spans [k w', (k+1) w') and the coarse one [i w, (i+1) w) in units of 1/w' fine texels,
+// so the overlaps are integers and sum to w.
+struct AxisTap {
+  int fine;
+  std::int64_t overlap;
+};
+
+std::vector<std::vector<AxisTap>> boxTaps(int fineSize, int coarseSize) {
+  std::vector<std::vector<AxisTap>> taps(static_cast<std::size_t>(coarseSize));
+  const std::int64_t w = fineSize, wc = coarseSize;
+  for (std::int64_t i = 0; i < wc; ++i) {
+    const std::int64_t begin = i * w, end = (i + 1) * w;
+    for (std::int64_t k = begin / wc; k * wc < end; ++k) {
+      const std::int64_t overlap = std::min((k + 1) * wc, end) - std::max(k * wc, begin);
+      if (overlap > 0) taps[std::size_t(i)].push_back({int(k), overlap});
+    }
+  }
+  return taps;
+}
+
+// The next coarser level: the area-weighted mean of the texels under each coarse texel (GL 4.6
+// §8.14.4 leaves the filter open and suggests a 2 x 2 box; this is that box, exact on odd sizes).
+// For an 8-bit texture the mean is taken over the stored byte values and rounded half away from
+// zero, exactly, as an RGBA8 level stores it.
+TexelLevel downsample(const TexelLevel& fine, bool eightBit) {
+  TexelLevel coarse;
+  coarse.width = std::max(1, fine.width / 2);
+  coarse.height = std::max(1, fine.height / 2);
+  coarse.texels.resize(std::size_t(coarse.width) * std::size_t(coarse.height));
+  const auto tapsS = boxTaps(fine.width, coarse.width);
+  const auto tapsT = boxTaps(fine.height, coarse.height);
+  const double area = double(fine.width) * double(fine.height);  // the overlaps sum to w along s, h along t
+  for (int j = 0; j < coarse.height; ++j)
+    for (int i = 0; i < coarse.width; ++i) {
+      Vec4 sum = Vec4::Zero();
+      for (const AxisTap& tj : tapsT[std::size_t(j)])
+        for (const AxisTap& ti : tapsS[std::size_t(i)]) {
+          const Vec4 texel = widen(fine.at(ti.fine, tj.fine));
+          sum += double(ti.overlap * tj.overlap) * (eightBit ? Vec4((texel * 255.0).array().round()) : texel);
+        }
+      const Vec4 mean = sum / area;
+      coarse.at(i, j) = (eightBit ? Vec4(mean.array().round() / 255.0) : mean).cast<float>();
+    }
+  return coarse;
+}
+
+bool isMipmapFilter(Filter filter) { return filter != Filter::Nearest && filter != Filter::Linear; }
+
+}  // namespace
+
+SamplerState samplerFor(Filter filter, Wrap wrap) {
+  SamplerState sampler;
+  sampler.minFilter = filter;
+  const bool nearest = filter == Filter::Nearest || filter == Filter::NearestMipmapNearest ||
+                       filter == Filter::NearestMipmapLinear;
+  sampler.magFilter = nearest ? Filter::Nearest : Filter::Linear;
+  sampler.wrapS = sampler.wrapT = wrap;
+  return sampler;
+}
+
+bool needsMipmaps(Filter minFilter) { return isMipmapFilter(minFilter); }
+
+Texture::Texture(TexelLevel base, bool eightBit) : eightBit_(eightBit) {
+  if (base.width < 1 || base.height < 1 ||
+      base.texels.size() != std::size_t(base.width) * std::size_t(base.height))
+    throw UsageError("texture: expected width, height >= 1 and width * height texels, got " +
+                     std::to_string(base.width) + " x " + std::to_string(base.height) + " with " +
+                     std::to_string(base.texels.size()) + " texels");
+  levels_.push_back(std::move(base));
+}
+
+Texture Texture::fromImage(const Image& image, bool eightBit) {
+  if (image.channels < 1 || image.channels > 4)
+    throw UsageError("texture: expected an image of 1 to 4 channels, got " + std::to_string(image.channels));
+  TexelLevel base;
+  base.width = image.width;
+  base.height = image.height;
+  base.texels.resize(std::size_t(std::max(0, image.width)) * std::size_t(std::max(0, image.height)));
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const auto channel = [&](int c) { return image.at(x, y, c); };
+      Rgba texel;
+      switch (image.channels) {
+        case 1: texel = Rgba(channel(0), channel(0), channel(0), 1.0f); break;
+        case 2: texel = Rgba(channel(0), channel(0), channel(0), channel(1)); break;
+        case 3: texel = Rgba(channel(0), channel(1), channel(2), 1.0f); break;
+        default: texel = Rgba(channel(0), channel(1), channel(2), channel(3)); break;
+      }
+      base.at(x, image.height - 1 - y) = texel;  // image row 0 (top) is GL's last row, t = 1
+    }
+  return Texture(std::move(base), eightBit);
+}
+
+void Texture::buildMipmaps() {
+  if (levels_.size() > 1) return;
+  // GL 4.6 §8.14.3: level k is max(1, floor(w / 2^k)) x max(1, floor(h / 2^k)), down to 1 x 1.
+  while (levels_.back().width > 1 || levels_.back().height > 1)
+    levels_.push_back(downsample(levels_.back(), eightBit_));
+}
+
+int wrapTexel(std::int64_t i, int size, Wrap wrap) {
+  UVTK_CHECK(size > 0);
+  const std::int64_t n = size;
+  if (wrap == Wrap::Repeat) return int(positiveModulo(i, n));  // GL 4.6 §8.14.2: REPEAT, i mod size
+  if (wrap == Wrap::ClampToEdge) return int(std::clamp<std::int64_t>(i, 0, n - 1));  // GL 4.6 §8.14.2
+  // GL 4.6 §8.14.2: MIRRORED_REPEAT, (size - 1) - mirror((i mod 2 size) - size), mirror(a) = a >= 0 ? a : -(1 + a)
+  const std::int64_t a = positiveModulo(i, 2 * n) - n;
+  return int((n - 1) - (a >= 0 ? a : -(1 + a)));
+}
+
+Rgba sampleNearest(const TexelLevel& level, Wrap wrapS, Wrap wrapT, double s, double t) {
+  // GL 4.6 §8.14.2: NEAREST takes texel (floor(u), floor(v)), u = s w, v = t h, each wrapped
+  const int i = wrapTexel(floorToTexel(s * level.width), level.width, wrapS);
+  const int j = wrapTexel(floorToTexel(t * level.height), level.height, wrapT);
+  return level.at(i, j);
+}
+
+Vec4 sampleLinear(const TexelLevel& level, Wrap wrapS, Wrap wrapT, double s, double t) {
+  const LinearTap u = linearTap(s, level.width), v = linearTap(t, level.height);
+  const int i0 = wrapTexel(u.lower, level.width, wrapS), i1 = wrapTexel(u.lower + 1, level.width, wrapS);
+  const int j0 = wrapTexel(v.lower, level.height, wrapT), j1 = wrapTexel(v.lower + 1, level.height, wrapT);
+  const double a = u.alpha, b = v.alpha;
+  // GL 4.6 §8.14.2: tau = (1-a)(1-b) t_i0j0 + a(1-b) t_i1j0 + (1-a) b t_i0j1 + a b t_i1j1
+  return (1 - a) * (1 - b) * widen(level.at(i0, j0)) + a * (1 - b) * widen(level.at(i1, j0)) +
+         (1 - a) * b * widen(level.at(i0, j1)) + a * b * widen(level.at(i1, j1));
+}
+
+double levelOfDetail(int width, int height, const Vec2& dstDx, const Vec2& dstDy) {
+  if (dstDx.hasNaN() || dstDy.hasNaN()) return kInfinity;  // undefined footprint: the coarsest level
+  // GL 4.6 §8.14.1: rho = max(sqrt((du/dx)^2 + (dv/dx)^2), sqrt((du/dy)^2 + (dv/dy)^2)), u = s w, v = t h
+  const double rho = std::max(std::hypot(dstDx.x() * width, dstDx.y() * height),
+                              std::hypot(dstDy.x() * width, dstDy.y() * height));
+  return std::log2(rho);  // GL 4.6 §8.14.1: lambda_base = log2(rho); log2(0) = -inf, log2(inf) = +inf
+}
+
+Vec4 sample(const Texture& texture, const SamplerState& sampler, double s, double t, double lambda) {
+  if (!std::isfinite(s) || !std::isfinite(t)) return widen(texture.level(0).at(0, 0));
+  UVTK_CHECK(!isMipmapFilter(sampler.magFilter));
+  if (std::isnan(lambda)) lambda = kInfinity;  // as levelOfDetail for an undefined footprint
+  // GL 4.6 §8.15: c = 0.5 for a LINEAR magnification filter with a NEAREST_MIPMAP_* minification filter
+  const bool halfCrossover = sampler.magFilter == Filter::Linear && (sampler.minFilter == Filter::NearestMipmapNearest ||
+                                                                     sampler.minFilter == Filter::NearestMipmapLinear);
+  const double c = halfCrossover ? 0.5 : 0.0;
+  if (lambda <= c) return sampleLevel(texture.level(0), sampler.magFilter == Filter::Linear, sampler, s, t);
+
+  if (!isMipmapFilter(sampler.minFilter))
+    return sampleLevel(texture.level(0), sampler.minFilter == Filter::Linear, sampler, s, t);
+  // A mipmap filter needs the full chain down to 1 x 1 (GL's mipmap completeness, §8.17).
+  const TexelLevel& last = texture.level(texture.levelCount() - 1);
+  UVTK_CHECK(last.width == 1 && last.height == 1);
+  const int q = texture.levelCount() - 1;
+  const bool linearWithin = sampler.minFilter == Filter::LinearMipmapNearest || sampler.minFilter == Filter::LinearMipmapLinear;
+
+  if (sampler.minFilter == Filter::NearestMipmapNearest || sampler.minFilter == Filter::LinearMipmapNearest) {
+    // GL 4.6 §8.14.3: d = 0 for lambda <= 1/2, ceil(lambda + 1/2) - 1 up to q + 1/2, else q
+    const int d = lambda <= 0.5 ? 0 : lambda > q + 0.5 ? q : int(std::ceil(lambda + 0.5)) - 1;
+    return sampleLevel(texture.level(d), linearWithin, sampler, s, t);
+  }
+  // GL 4.6 §8.14.3: d1 = d2 = q for lambda >= q, else d1 = floor(lambda), d2 = d1 + 1;
+  // tau = (1 - frac(lambda)) tau1 + frac(lambda) tau2
+  if (lambda >= q) return sampleLevel(texture.level(q), linearWithin, sampler, s, t);
+  const int d1 = int(std::floor(lambda)), d2 = d1 + 1;  // lambda < q: d2 <= q
+  const double f = lambda - std::floor(lambda);
+  return (1 - f) * sampleLevel(texture.level(d1), linearWithin, sampler, s, t) +
+         f * sampleLevel(texture.level(d2), linearWithin, sampler, s, t);
+}
+
+}  // namespace uvtk::render

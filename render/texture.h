@@ -1,0 +1,99 @@
+// Textures as OpenGL samples them: texel arrays in GL order, mipmaps by a 2x2 box filter, the
+// wrap modes, NEAREST and LINEAR within a level, the four mipmap filters between levels, and the
+// level of detail from the screen-space derivatives of (s, t). OpenGL 4.6 compatibility profile
+// §8.14 (texture minification and magnification); docs/conventions.md §7 states our choices.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/image.h"
+#include "core/math.h"
+
+namespace uvtk::render {
+
+using Rgba = Eigen::Vector4f;  // a stored texel, each channel in [0, 1] for 8-bit sources
+
+enum class Filter {
+  Nearest,
+  Linear,
+  NearestMipmapNearest,
+  LinearMipmapNearest,
+  NearestMipmapLinear,
+  LinearMipmapLinear,
+};
+
+enum class Wrap { Repeat, ClampToEdge, MirroredRepeat };
+
+struct SamplerState {
+  Filter minFilter = Filter::Nearest;
+  Filter magFilter = Filter::Nearest;  // Nearest or Linear only
+  Wrap wrapS = Wrap::Repeat;
+  Wrap wrapT = Wrap::Repeat;
+};
+
+// The filter a user names on the command line sets both: the minification filter as named, the
+// magnification filter NEAREST for nearest and nearest_mipmap_*, LINEAR for the others.
+SamplerState samplerFor(Filter filter, Wrap wrap);
+
+bool needsMipmaps(Filter minFilter);
+
+// One level: texel (i, j) with i along s and j along t, j = 0 at t = 0 (GL's first row).
+struct TexelLevel {
+  int width = 0, height = 0;
+  std::vector<Rgba> texels;  // j * width + i
+  const Rgba& at(int i, int j) const { return texels[std::size_t(j) * std::size_t(width) + std::size_t(i)]; }
+  Rgba& at(int i, int j) { return texels[std::size_t(j) * std::size_t(width) + std::size_t(i)]; }
+};
+
+class Texture {
+ public:
+  // `base` in GL order. `eightBit`: the texels are multiples of 1/255 and every mipmap level is
+  // rounded back to 8 bits, as a GL texture of internal format RGBA8 stores it.
+  Texture(TexelLevel base, bool eightBit);
+
+  // An image whose top row lands at t = 1. Grey images are spread to RGB, a missing alpha is 1.
+  static Texture fromImage(const Image& image, bool eightBit);
+
+  // Levels 1..n down to 1 x 1; level k is max(1, floor(w / 2^k)) x max(1, floor(h / 2^k)).
+  // A coarse texel is the area-weighted mean of the fine texels under its footprint: the 2 x 2
+  // box for even sizes; along an odd axis of size w the coarse texel i covers [i w/w', (i+1) w/w')
+  // of the fine one (5 -> 2: weights 1, 1, 1/2 and 1/2, 1, 1 over 2.5 texels, exactly); along an
+  // axis of size 1 the single texel. Does nothing when the levels exist.
+  void buildMipmaps();
+
+  int levelCount() const { return int(levels_.size()); }
+  const TexelLevel& level(int k) const { return levels_[std::size_t(k)]; }
+  int width() const { return levels_[0].width; }
+  int height() const { return levels_[0].height; }
+  bool eightBit() const { return eightBit_; }
+
+ private:
+  std::vector<TexelLevel> levels_;
+  bool eightBit_ = false;
+};
+
+// GL's wrap of an integer texel coordinate onto [0, size): REPEAT i mod size, CLAMP_TO_EDGE
+// clamp(i, 0, size - 1), MIRRORED_REPEAT (size - 1) - mirror((i mod 2 size) - size) with
+// mirror(a) = a >= 0 ? a : -(1 + a).
+int wrapTexel(std::int64_t i, int size, Wrap wrap);
+
+// NEAREST within one level: texel (wrap(floor(s W)), wrap(floor(t H))), products in double.
+Rgba sampleNearest(const TexelLevel& level, Wrap wrapS, Wrap wrapT, double s, double t);
+
+// LINEAR within one level: i0 = floor(s W - 1/2), alpha = frac(s W - 1/2), likewise j0, beta;
+// the 2 x 2 texels wrapped separately and blended with weights (1-alpha)(1-beta) ... in double.
+Vec4 sampleLinear(const TexelLevel& level, Wrap wrapS, Wrap wrapT, double s, double t);
+
+// lambda = log2(rho), rho = max(|(ds/dx W, dt/dx H)|, |(ds/dy W, dt/dy H)|) for the base level's
+// W x H; -infinity when rho = 0, +infinity for infinite or NaN derivatives (the coarsest level).
+double levelOfDetail(int width, int height, const Vec2& dstDx, const Vec2& dstDy);
+
+// The filtered texel at (s, t) for level of detail `lambda`: magnification (lambda <= c, c = 0.5
+// when the magnification filter is LINEAR and the minification filter NEAREST_MIPMAP_NEAREST or
+// NEAREST_MIPMAP_LINEAR, else c = 0) samples level 0 with the magnification filter; minification
+// uses the minification filter with GL's level selection (GL 4.6 §8.14.3). A mipmap filter on a
+// texture without mipmaps is a programmer error. Non-finite s or t give texel (0, 0) of level 0.
+Vec4 sample(const Texture& texture, const SamplerState& sampler, double s, double t, double lambda);
+
+}  // namespace uvtk::render

@@ -1,0 +1,206 @@
+#include "io/image_io.h"
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <set>
+#include <string>
+
+#include "core/error.h"
+#include "scratch_dir.h"
+
+namespace uvtk::io {
+namespace {
+
+class ImageIoTest : public ScratchDirTest {
+ protected:
+  std::set<std::string> listing() const {
+    std::set<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir_)) names.insert(entry.path().filename());
+    return names;
+  }
+};
+
+// Distinct multiples of 1/255 in every channel of every pixel.
+Image gradient(int width, int height, int channels) {
+  Image image(width, height, channels);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = float((i * 7) % 256) / 255.0f;
+  return image;
+}
+
+template <typename Error, typename F>
+std::string messageOf(F&& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no exception of the expected type";
+  return {};
+}
+
+void expectOneLineError(const std::string& message, const std::string& path) {
+  EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
+  EXPECT_NE(message.find("error:"), std::string::npos) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST_F(ImageIoTest, PngRoundTripKeepsValuesAndRowOrder) {
+  const Image image = gradient(7, 5, 3);
+  ASSERT_NE(image.at(2, 0, 1), image.at(2, 4, 1));  // the top and bottom rows differ
+  writeImage(path("a.png"), image, PixelType::UInt8);
+
+  const ImageFile file = readImage(path("a.png"));
+  EXPECT_TRUE(file.eightBit);
+  ASSERT_EQ(file.image.width, 7);
+  ASSERT_EQ(file.image.height, 5);
+  ASSERT_EQ(file.image.channels, 3);
+  EXPECT_EQ(file.image.pixels, image.pixels);
+  EXPECT_EQ(file.image.at(2, 0, 1), image.at(2, 0, 1));
+  EXPECT_EQ(listing(), std::set<std::string>{"a.png"});  // no temporary left
+
+  // Like AtomicFile: the mode of a newly created file, not mkstemp's 0600.
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  struct stat info {};
+  ASSERT_EQ(::stat(path("a.png").c_str(), &info), 0);
+  EXPECT_EQ(info.st_mode & 0777, 0666 & ~mask);
+}
+
+TEST_F(ImageIoTest, UInt8RoundsAndClamps) {
+  Image image(6, 1, 1);
+  image.pixels = {0.5f / 255.0f + 1e-5f, -0.25f, 1.5f, std::numeric_limits<float>::quiet_NaN(),
+                  -std::numeric_limits<float>::infinity(), 0.4f / 255.0f};
+  writeImage(path("r.png"), image, PixelType::UInt8);
+  const Image back = readImage(path("r.png")).image;
+  const std::vector<float> expected = {1 / 255.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f};
+  EXPECT_EQ(back.pixels, expected);
+}
+
+TEST_F(ImageIoTest, ExrRoundTripIsBitExactWithNames) {
+  Image image(3, 2, 5);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = float(i) * 0.1f - 1.0f;
+  image.at(0, 0, 2) = 1e20f;
+  image.at(1, 0, 2) = std::numeric_limits<float>::infinity();
+  image.at(2, 1, 0) = -3.25e-7f;
+  image.channelNames = {"u", "v", "depth", "face", "lod"};
+  writeImage(path("a.exr"), image, PixelType::Float);
+
+  // EXR lists channels alphabetically.
+  const ImageFile file = readImage(path("a.exr"));
+  EXPECT_FALSE(file.eightBit);
+  ASSERT_EQ(file.image.channels, 5);
+  ASSERT_EQ(file.image.channelNames, (std::vector<std::string>{"depth", "face", "lod", "u", "v"}));
+  for (int c = 0; c < 5; ++c) {
+    const auto written = std::find(image.channelNames.begin(), image.channelNames.end(), file.image.channelNames[c]);
+    const int source = int(written - image.channelNames.begin());
+    for (int y = 0; y < 2; ++y)
+      for (int x = 0; x < 3; ++x) {
+        const float expected = image.at(x, y, source), actual = file.image.at(x, y, c);
+        EXPECT_EQ(std::memcmp(&expected, &actual, sizeof(float)), 0) << x << "," << y << " " << image.channelNames[source];
+      }
+  }
+}
+
+TEST_F(ImageIoTest, TiffHoldsFloats) {
+  Image image(2, 2, 2);
+  image.pixels = {-1.0f, 0.5f, 1e20f, 2.0f, 3.0f, -4.0f, 0.125f, std::numeric_limits<float>::infinity()};
+  writeImage(path("a.tif"), image, PixelType::Float);
+  const ImageFile file = readImage(path("a.tif"));
+  EXPECT_FALSE(file.eightBit);
+  EXPECT_EQ(file.image.pixels, image.pixels);
+}
+
+TEST_F(ImageIoTest, OneAndFourChannelPngRoundTrip) {
+  for (int channels : {1, 4}) {
+    const Image image = gradient(4, 3, channels);  // alpha below 1 must not touch the colour
+    const std::string file = path("c" + std::to_string(channels) + ".png");
+    writeImage(file, image, PixelType::UInt8);
+    const ImageFile back = readImage(file);
+    EXPECT_TRUE(back.eightBit);
+    ASSERT_EQ(back.image.channels, channels);
+    EXPECT_EQ(back.image.pixels, image.pixels) << channels << " channels";
+  }
+}
+
+TEST_F(ImageIoTest, UnreadableInputsAreInputErrors) {
+  const std::string missing = path("missing.png");
+  const std::string text = writeText("text.png", "this is not a PNG\nat all\n");
+  for (const std::string& file : {missing, dir_.string(), text}) {
+    const std::string message = messageOf<InputError>([&] { readImage(file); });
+    expectOneLineError(message, file);
+  }
+  EXPECT_NE(messageOf<InputError>([&] { readImage(missing); }).find("No such file or directory"),
+            std::string::npos);
+}
+
+TEST_F(ImageIoTest, RefusesImagesOverTheSizeLimit) {
+  writeImage(path("wide.png"), Image(16385, 1, 1), PixelType::UInt8);
+  EXPECT_NE(messageOf<InputError>([&] { readImage(path("wide.png")); })
+                .find("image is 16385 x 1, larger than the 16384 x 16384 limit"),
+            std::string::npos);
+}
+
+// The CRC that PNG chunks end with (ISO 3309), over the chunk type and data.
+std::uint32_t crc32(const std::string& bytes) {
+  std::uint32_t crc = 0xffffffffu;
+  for (unsigned char b : bytes) {
+    crc ^= b;
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+  }
+  return ~crc;
+}
+
+std::string bigEndian(std::uint32_t v) {
+  return {char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+}
+
+TEST_F(ImageIoTest, RefusesAHugeHeaderWithoutReadingPixels) {
+  // A valid 1x1 PNG whose header then claims 20000 x 20000: refused before any allocation.
+  writeImage(path("small.png"), Image(1, 1, 3), PixelType::UInt8);
+  std::string png = readText(path("small.png"));
+  const std::size_t ihdr = png.find("IHDR");
+  ASSERT_EQ(ihdr, 12u);
+  png.replace(ihdr + 4, 8, bigEndian(20000) + bigEndian(20000));
+  png.replace(ihdr + 17, 4, bigEndian(crc32(png.substr(ihdr, 17))));
+  const std::string file = writeText("huge.png", png);
+  const std::string message = messageOf<InputError>([&] { readImage(file); });
+  expectOneLineError(message, file);
+  EXPECT_NE(message.find("20000 x 20000, larger than the 16384 x 16384 limit"), std::string::npos) << message;
+}
+
+TEST_F(ImageIoTest, WriteErrors) {
+  const Image image = gradient(2, 2, 3);
+  const std::string nowhere = path("no/such/folder/a.png");
+  expectOneLineError(messageOf<OutputError>([&] { writeImage(nowhere, image, PixelType::UInt8); }), nowhere);
+  EXPECT_TRUE(listing().empty());
+
+  EXPECT_THROW(writeImage(path("a.xyz"), image, PixelType::UInt8), UsageError);
+  EXPECT_THROW(writeImage(path("a.png"), image, PixelType::Float), UsageError);
+  EXPECT_THROW(writeImage(path("a.jpg"), image, PixelType::Float), UsageError);
+  EXPECT_TRUE(listing().empty());
+}
+
+TEST_F(ImageIoTest, FailedWriteLeavesTheTargetAlone) {
+  const std::string target = writeText("keep.png", "old contents");
+  // PNG holds at most four channels, so the writer fails after the temporary exists.
+  const std::string message =
+      messageOf<OutputError>([&] { writeImage(target, gradient(2, 2, 5), PixelType::UInt8); });
+  expectOneLineError(message, target);
+  EXPECT_NE(message.find("cannot write:"), std::string::npos) << message;
+  EXPECT_EQ(readText(target), "old contents");
+  EXPECT_EQ(listing(), std::set<std::string>{"keep.png"});
+
+  writeImage(target, gradient(2, 2, 3), PixelType::UInt8);  // success replaces it
+  EXPECT_EQ(readImage(target).image.pixels, gradient(2, 2, 3).pixels);
+  EXPECT_EQ(listing(), std::set<std::string>{"keep.png"});
+}
+
+}  // namespace
+}  // namespace uvtk::io
