@@ -29,12 +29,13 @@ namespace uvtk::cli {
 namespace {
 
 enum class UvEvaluation { PerVertex, PerPixel };
+enum class CameraMode { Auto, Explicit };
 
 struct RenderArguments {
   std::string input, output, json;
   // camera
   std::string eye, center = "0,0,0", up = "0,1,0", viewDir = "0,0,1", ortho, size = "512x512", model;
-  bool cameraAuto = false;
+  CameraMode camera = CameraMode::Auto;
   double fovy = 45.0;
   std::optional<double> zNear, zFar;
   render::Cull cull = render::Cull::Back;
@@ -67,7 +68,11 @@ bool given(const RenderArguments& a, const char* option) { return a.projector.ap
 render::Camera makeCamera(const RenderArguments& a, const Mesh& mesh, const Mat4& worldFromObject) {
   const auto [width, height] = parseSize(a.size);
   const Vec3 up = parseVec3(a.up, "--up");
-  const bool manual = !a.eye.empty() && !a.cameraAuto;
+  // Explicit when asked for, or when --eye is given without --camera.
+  const bool cameraGiven = a.projector.app->get_option("--camera")->count() > 0;
+  const bool manual = cameraGiven ? a.camera == CameraMode::Explicit : !a.eye.empty();
+  if (manual && a.eye.empty()) throw UsageError("--camera explicit: expected --eye x,y,z");
+  if (manual && a.ortho == "auto") throw UsageError("--ortho auto goes with the automatic camera");
   render::Camera camera;
   if (!manual) {
     std::vector<Vec3> world(mesh.positions.size());
@@ -261,11 +266,11 @@ void addRenderCommand(CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
       "render", "Render a textured mesh as OpenGL's fixed-function pipeline would (checker, uvgrid or an image)");
   cmd->add_option("input", a->input, "Input mesh (.obj or .off)")->required();
-  cmd->add_option("-o,--output", a->output, "Output image (8-bit; .png by default format of the extension)")->required();
+  cmd->add_option("-o,--output", a->output, "Output image, 8-bit RGB, format by extension (.png, .tif, .jpg, ...)")->required();
   // camera
-  cmd->add_flag("--camera-auto", a->cameraAuto,
-                "Frame the mesh's bounding sphere even when --eye is given (then eye - center is the direction); "
-                "the camera is automatic whenever --eye is absent");
+  addChoice<CameraMode>(*cmd, "--camera", a->camera, {{"auto", CameraMode::Auto}, {"explicit", CameraMode::Explicit}},
+                        "auto frames the mesh's bounding sphere (along --view-dir, or eye - center when --eye is "
+                        "given); explicit uses --eye, --center, --up as given. Default: explicit when --eye is given");
   cmd->add_option("--eye", a->eye, "Camera: gluLookAt eye (x,y,z); without it the camera frames the mesh")
       ->type_name("X,Y,Z");
   cmd->add_option("--center", a->center, "Camera: gluLookAt center")->type_name("X,Y,Z")->capture_default_str();

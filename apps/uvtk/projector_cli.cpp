@@ -24,8 +24,9 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEy
                           {"cylinder", SurfaceKind::Cylinder},
                           {"sphere", SurfaceKind::Sphere},
                           {"cube", SurfaceKind::Cube}},
-                         "Intermediate surface (S-mapping)")
-      ->default_str("sphere");
+                         cameraOwnsEye ? "Texture coordinates by this projector (its intermediate surface)"
+                                       : "Intermediate surface (S-mapping)")
+      ->default_str(cameraOwnsEye ? "" : "sphere");
   addChoice<RayKind>(app, "--omap", o.ray,
                      {{"isn", RayKind::SurfaceNormal},
                       {"centroid", RayKind::Centroid},
