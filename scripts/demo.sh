@@ -20,3 +20,12 @@ printf '%-22s ' "sphere --seam cut" >&2
 printf '%-22s ' "cube --cube-layout cross" >&2
 "$uvtk" map "$mesh" --projector cube --cube-layout cross -o out/sphere_cube_cross.obj
 echo "demo: wrote $(ls out/*.obj | wc -l) OBJ files with UVs into out/" >&2
+# Pictures: the UV grid on the sphere per vertex and per pixel (the pole fan shows the difference),
+# and a texgen sphere map on the torus.
+"$uvtk" render "$mesh" --projector sphere --texture uvgrid --filter linear_mipmap_linear --env modulate \
+  --view-dir 0,-1,1 -o out/render_sphere_uvgrid.png
+"$uvtk" render "$mesh" --projector sphere --uv per-pixel --texture uvgrid --filter linear_mipmap_linear \
+  --env modulate --view-dir 0,-1,1 -o out/render_sphere_uvgrid_per_pixel.png
+"$uvtk" render meshes/torus.obj --texgen sphere_map --texture uvgrid:512 --filter linear --view-dir 0,1,2 \
+  -o out/render_torus_sphere_map.png
+echo "demo: rendered $(ls out/*.png | wc -l) pictures into out/" >&2
