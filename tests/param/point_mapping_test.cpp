@@ -1,0 +1,66 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "meshes/generators.h"
+#include "param/placement.h"
+#include "param/projector.h"
+
+namespace uvtk::param {
+namespace {
+
+TEST(PointMapping, EqualsMapVerticesThenTheUvTransformForEveryWrappingOrPlanarSurface) {
+  const Mesh mesh = meshes::icosphere(2);
+  const std::vector<Vec3> normals = areaWeightedVertexNormals(mesh);
+  for (SurfaceKind surface : {SurfaceKind::Plane, SurfaceKind::TwoPlane, SurfaceKind::Cylinder, SurfaceKind::Sphere})
+    for (RayKind ray : {RayKind::SurfaceNormal, RayKind::Centroid, RayKind::ObjectNormal, RayKind::Reflection}) {
+      ProjectorOptions o;
+      o.surface = surface;
+      o.ray = ray;
+      if (ray == RayKind::Reflection) o.eye = Vec3(0.5, -3, 1);
+      o.uvTransform.scale = Vec2(2, 3);
+      o.uvTransform.rotateDegrees = 30;
+      const Affine3 frame = fitPlacement(mesh.positions, surface, o.placement);
+      std::vector<VertexUv> expected;
+      mapVertices(o, frame, mesh.positions, normals, expected);
+      const PointMapping mapping(o, frame);
+      EXPECT_EQ(mapping.wrapsU(), surface == SurfaceKind::Cylinder || surface == SurfaceKind::Sphere);
+      EXPECT_EQ(mapping.needsNormal(), ray == RayKind::ObjectNormal || ray == RayKind::Reflection);
+      for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+        const VertexUv got = mapping.at(mesh.positions[v], normals[v]);
+        ASSERT_EQ(got.state, expected[v].state);
+        if (got.state == CornerState::Invalid) continue;
+        EXPECT_LT((got.uv - o.uvTransform.apply(expected[v].uv)).norm(), 1e-12) << int(surface) << " " << int(ray);
+      }
+    }
+}
+
+TEST(PointMapping, TheCubeTakesTheFaceOfEachPointsOwnProbe) {
+  ProjectorOptions o;
+  o.surface = SurfaceKind::Cube;
+  o.ray = RayKind::Centroid;  // a central projection: GL's cube-map lookup of the direction
+  o.placement.fit = Fit::None;
+  const PointMapping mapping(o, Affine3::Identity());
+  // GL's face table (conventions §3): +x face sc = -z, tc = -y, ma = x; (s, t) = ((sc/ma + 1)/2, (tc/ma + 1)/2).
+  const VertexUv onPlusX = mapping.at(Vec3(2, 0.5, -1), Vec3::Zero());
+  ASSERT_EQ(onPlusX.state, CornerState::Ok);
+  EXPECT_LT((onPlusX.uv - Vec2((0.5 + 1) / 2, (-0.25 + 1) / 2)).norm(), 1e-15);
+  // +y face: sc = x, tc = z.
+  const VertexUv onPlusY = mapping.at(Vec3(0.5, 2, -1), Vec3::Zero());
+  EXPECT_LT((onPlusY.uv - Vec2((0.25 + 1) / 2, (-0.5 + 1) / 2)).norm(), 1e-15);
+}
+
+TEST(PointMapping, ACapFaceMapsByTheCapProjectionMirroredOnTheBottom) {
+  ProjectorOptions o;
+  o.surface = SurfaceKind::Cylinder;
+  o.cylinderCaps = true;
+  o.placement.fit = Fit::None;
+  const PointMapping mapping(o, Affine3::Identity());
+  EXPECT_LT((mapping.at(Vec3(0.5, -0.5, 1), Vec3::UnitZ(), true).uv - Vec2(0.75, 0.25)).norm(), 1e-15);
+  EXPECT_LT((mapping.at(Vec3(0.5, -0.5, 0), -Vec3::UnitZ(), true).uv - Vec2(0.25, 0.25)).norm(), 1e-15);
+  // Not a cap face: the cylinder, u from the azimuth of (0.5, -0.5): 7/8.
+  EXPECT_NEAR(mapping.at(Vec3(0.5, -0.5, 0.3), Vec3::Zero(), false).uv.x(), 0.875, 1e-15);
+}
+
+}  // namespace
+}  // namespace uvtk::param
