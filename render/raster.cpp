@@ -118,17 +118,13 @@ class Setup {
     planes_.guard = double(1 << 20) / double(std::max(width, height));
   }
 
-  void triangle(const std::vector<Vec4>& clip, std::int32_t face, Binned& out) const {
-    Polygon a{clip[3 * std::size_t(face)], clip[3 * std::size_t(face) + 1], clip[3 * std::size_t(face) + 2]};
+  void triangle(const std::vector<Vec4>& clip, const Triangle& corners, std::int32_t face, Binned& out) const {
+    Polygon a{clip[std::size_t(corners[0])], clip[std::size_t(corners[1])], clip[std::size_t(corners[2])]};
     if (!(a[0].allFinite() && a[1].allFinite() && a[2].allFinite())) {
       ++out.stats.clipped;
       return;
     }
-    const TriangleInterpolator interpolator(a[0], a[1], a[2], width_, height_);
-    if (!interpolator.valid()) {  // seen edge-on: it covers no area
-      ++out.stats.culled;
-      return;
-    }
+    const Vec4 c0 = a[0], c1 = a[1], c2 = a[2];  // the unclipped corners, for the depth plane
     Polygon b;
     int n = 3;
     Polygon* in = &a;
@@ -161,6 +157,11 @@ class Setup {
     }
     const bool front = area > 0;
     if ((options_.cull == Cull::Back && !front) || (options_.cull == Cull::Front && front)) {
+      ++out.stats.culled;
+      return;
+    }
+    const TriangleInterpolator interpolator(c0, c1, c2, width_, height_);
+    if (!interpolator.valid()) {  // seen edge-on: it covers no area
       ++out.stats.culled;
       return;
     }
@@ -265,11 +266,10 @@ TriangleInterpolator::Barycentrics TriangleInterpolator::at(double x, double y) 
   return r;
 }
 
-VisibilityBuffer rasterize(const std::vector<Vec4>& clip, int width, int height, const RasterOptions& options,
-                           RasterStats* stats) {
+VisibilityBuffer rasterize(const std::vector<Vec4>& clip, const std::vector<Triangle>& triangles, int width, int height,
+                           const RasterOptions& options, RasterStats* stats) {
   if (width <= 0 || height <= 0 || width > kMaxViewport || height > kMaxViewport)
     throw UsageError("the image size must lie between 1 x 1 and 16384 x 16384 pixels");
-  UVTK_CHECK(clip.size() % 3 == 0);
   VisibilityBuffer buffer;
   buffer.width = width;
   buffer.height = height;
@@ -278,7 +278,7 @@ VisibilityBuffer rasterize(const std::vector<Vec4>& clip, int width, int height,
 
   const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
   const int tileCount = tilesX * tilesY;
-  const auto faceCount = std::int64_t(clip.size() / 3);
+  const auto faceCount = std::int64_t(triangles.size());
   UVTK_CHECK(faceCount <= std::numeric_limits<std::int32_t>::max());
 
   // Set-up in chunks of consecutive triangles; each chunk bins its own triangles, and tiles read
@@ -291,7 +291,7 @@ VisibilityBuffer rasterize(const std::vector<Vec4>& clip, int width, int height,
     Binned& chunk = chunks[std::size_t(c)];
     chunk.tiles.resize(std::size_t(tileCount));
     const std::int64_t begin = faceCount * c / chunkCount, end = faceCount * (c + 1) / chunkCount;
-    for (std::int64_t f = begin; f < end; ++f) setup.triangle(clip, std::int32_t(f), chunk);
+    for (std::int64_t f = begin; f < end; ++f) setup.triangle(clip, triangles[std::size_t(f)], std::int32_t(f), chunk);
   });
 
   parallelFor(tileCount, threads, [&](int tile) {

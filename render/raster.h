@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "core/mesh.h"
 
 namespace uvtk::render {
 
@@ -35,10 +36,10 @@ struct RasterStats {
   std::size_t drawn = 0;     // triangles that reached the edge tests
 };
 
-// `clip`: three clip-space positions per triangle (corner k of triangle f at 3 f + k).
-// Throws UsageError for an empty or too large viewport (more than 16384 pixels a side).
-VisibilityBuffer rasterize(const std::vector<Vec4>& clip, int width, int height, const RasterOptions& options,
-                           RasterStats* stats = nullptr);
+// `clip`: clip-space positions, indexed by `triangles`. Throws UsageError for an empty or too
+// large viewport (more than 16384 pixels a side).
+VisibilityBuffer rasterize(const std::vector<Vec4>& clip, const std::vector<Triangle>& triangles, int width, int height,
+                           const RasterOptions& options, RasterStats* stats = nullptr);
 
 // Perspective-correct barycentric coordinates of one triangle at any point of the window, from its
 // unclipped clip-space corners: with M the 3 x 3 matrix of the corners' (x, y, w) as columns,

@@ -1,5 +1,6 @@
 #include "render/renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -32,7 +33,7 @@ struct FrameData {
   const Mesh& mesh;
   const TexcoordSource& source;
   const RenderOptions& options;
-  const std::vector<Vec4>& clip;
+  const std::vector<Vec4>& clip;  // per vertex
   std::vector<Vec3> normals;       // object space, per corner: for lighting or the pixel mapping
   std::vector<Vec4> cornerColour;  // lit colour per corner when the environment reads it
 };
@@ -45,8 +46,9 @@ class Shader {
   Vec3 shade(int x, int row, std::int32_t face, float* aov) {
     const RenderOptions& o = f_.options;
     if (face != cachedFace_) {
-      const std::size_t c = 3 * std::size_t(face);
-      interpolator_ = TriangleInterpolator(f_.clip[c], f_.clip[c + 1], f_.clip[c + 2], o.camera.width, o.camera.height);
+      const Triangle& t = f_.mesh.triangles[std::size_t(face)];
+      interpolator_ = TriangleInterpolator(f_.clip[std::size_t(t[0])], f_.clip[std::size_t(t[1])], f_.clip[std::size_t(t[2])],
+                                           o.camera.width, o.camera.height);
       cachedFace_ = face;
     }
     const double wx = x + 0.5, wy = o.camera.height - row - 0.5;  // window coordinates, y up
@@ -122,13 +124,13 @@ class Shader {
   TriangleInterpolator interpolator_{Vec4::Zero(), Vec4::Zero(), Vec4::Zero(), 1, 1};
 };
 
-std::vector<Vec4> cornerClipPositions(const Mesh& mesh, const Mat4& clipFromObject) {
-  std::vector<Vec4> vertexClip(mesh.positions.size());
-  for (std::size_t v = 0; v < mesh.positions.size(); ++v)
-    vertexClip[v] = clipFromObject * mesh.positions[v].homogeneous();
-  std::vector<Vec4> clip(3 * mesh.triangles.size());
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k) clip[3 * f + std::size_t(k)] = vertexClip[std::size_t(mesh.triangles[f][k])];
+std::vector<Vec4> clipPositions(const Mesh& mesh, const Mat4& clipFromObject, int threads) {
+  std::vector<Vec4> clip(mesh.positions.size());
+  constexpr int kChunk = 1 << 16;
+  parallelFor(int((clip.size() + kChunk - 1) / kChunk), threads, [&](int chunk) {
+    const std::size_t end = std::min(clip.size(), std::size_t(chunk + 1) * kChunk);
+    for (std::size_t v = std::size_t(chunk) * kChunk; v < end; ++v) clip[v] = clipFromObject * mesh.positions[v].homogeneous();
+  });
   return clip;
 }
 
@@ -151,8 +153,8 @@ Rendering render(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
 
   const auto rasterStart = std::chrono::steady_clock::now();
   const Mat4 eyeFromObject = o.camera.viewFromWorld * o.worldFromObject;
-  const std::vector<Vec4> clip = cornerClipPositions(mesh, o.camera.clipFromView * eyeFromObject);
-  const VisibilityBuffer visible = rasterize(clip, width, height, o.raster, &out.raster);
+  const std::vector<Vec4> clip = clipPositions(mesh, o.camera.clipFromView * eyeFromObject, o.raster.threads);
+  const VisibilityBuffer visible = rasterize(clip, mesh.triangles, width, height, o.raster, &out.raster);
   out.rasterMs = millisecondsSince(rasterStart);
 
   const auto shadeStart = std::chrono::steady_clock::now();

@@ -19,12 +19,20 @@ Vec4 windowPoint(double x, double y, int width, int height, double z = 0.0) {
   return Vec4(2.0 * x / width - 1.0, 2.0 * y / height - 1.0, z, 1.0);
 }
 
+// Rasterizes three clip-space corners per triangle.
+VisibilityBuffer rasterizeCorners(const std::vector<Vec4>& corners, int width, int height, const RasterOptions& options,
+                                  RasterStats* stats = nullptr) {
+  std::vector<Triangle> triangles;
+  for (int c = 0; c + 2 < int(corners.size()); c += 3) triangles.push_back({c, c + 1, c + 2});
+  return rasterize(corners, triangles, width, height, options, stats);
+}
+
 // How many triangles cover each pixel, each triangle rasterized alone.
 std::vector<int> coverageCounts(const std::vector<Vec4>& clip, int width, int height, Cull cull = Cull::None) {
   std::vector<int> count(std::size_t(width) * std::size_t(height), 0);
   for (std::size_t f = 0; f < clip.size() / 3; ++f) {
     const std::vector<Vec4> one(clip.begin() + long(3 * f), clip.begin() + long(3 * f + 3));
-    const VisibilityBuffer b = rasterize(one, width, height, {cull, 1});
+    const VisibilityBuffer b = rasterizeCorners(one, width, height, {cull, 1});
     for (std::size_t i = 0; i < count.size(); ++i) count[i] += b.face[i] >= 0;
   }
   return count;
@@ -77,15 +85,15 @@ TEST(Rasterize, AHorizontalSharedEdgeThroughPixelCentresGoesToTheTriangleBelowIt
                                    windowPoint(0, 2.5, width, height)};
   const std::vector<Vec4> upper = {windowPoint(0, 2.5, width, height), windowPoint(8, 2.5, width, height),
                                    windowPoint(0, 6, width, height)};
-  const VisibilityBuffer low = rasterize(lower, width, height, {Cull::None, 1});
-  const VisibilityBuffer up = rasterize(upper, width, height, {Cull::None, 1});
+  const VisibilityBuffer low = rasterizeCorners(lower, width, height, {Cull::None, 1});
+  const VisibilityBuffer up = rasterizeCorners(upper, width, height, {Cull::None, 1});
   const int row = height - 1 - 2;  // window row 2
   EXPECT_EQ(low.face[low.index(0, row)], 0);
   EXPECT_EQ(up.face[up.index(0, row)], -1);
   // The left edge x = 0 passes no pixel centre; the vertical left edge of this one does: x = 0.5.
   const std::vector<Vec4> left = {windowPoint(0.5, 0, width, height), windowPoint(4, 3, width, height),
                                   windowPoint(0.5, 6, width, height)};
-  const VisibilityBuffer l = rasterize(left, width, height, {Cull::None, 1});
+  const VisibilityBuffer l = rasterizeCorners(left, width, height, {Cull::None, 1});
   EXPECT_EQ(l.face[l.index(0, height - 1 - 3)], 0);  // centre (0.5, 3.5) on the left edge: owned
 }
 
@@ -94,10 +102,10 @@ TEST(Rasterize, CullsByWindowWindingAndKeepsTheNearestFragment) {
   const std::vector<Vec4> ccw = {windowPoint(0, 0, width, height, 0.5), windowPoint(4, 0, width, height, 0.5),
                                  windowPoint(0, 4, width, height, 0.5)};
   const std::vector<Vec4> cw = {ccw[0], ccw[2], ccw[1]};
-  EXPECT_EQ(rasterize(ccw, width, height, {Cull::Back, 1}).face[12], 0);
-  EXPECT_EQ(rasterize(cw, width, height, {Cull::Back, 1}).face[12], -1);
-  EXPECT_EQ(rasterize(cw, width, height, {Cull::Front, 1}).face[12], 0);
-  EXPECT_EQ(rasterize(ccw, width, height, {Cull::Front, 1}).face[12], -1);
+  EXPECT_EQ(rasterizeCorners(ccw, width, height, {Cull::Back, 1}).face[12], 0);
+  EXPECT_EQ(rasterizeCorners(cw, width, height, {Cull::Back, 1}).face[12], -1);
+  EXPECT_EQ(rasterizeCorners(cw, width, height, {Cull::Front, 1}).face[12], 0);
+  EXPECT_EQ(rasterizeCorners(ccw, width, height, {Cull::Front, 1}).face[12], -1);
 
   // Three full-screen triangles: depth 0.5, 0.0 and 0.0 again. LESS keeps the second.
   std::vector<Vec4> stack;
@@ -106,7 +114,7 @@ TEST(Rasterize, CullsByWindowWindingAndKeepsTheNearestFragment) {
     stack.push_back(windowPoint(20, -10, width, height, z));
     stack.push_back(windowPoint(-10, 20, width, height, z));
   }
-  const VisibilityBuffer b = rasterize(stack, width, height, {Cull::Back, 1});
+  const VisibilityBuffer b = rasterizeCorners(stack, width, height, {Cull::Back, 1});
   for (std::size_t i = 0; i < b.face.size(); ++i) {
     EXPECT_EQ(b.face[i], 1);
     EXPECT_EQ(b.depth[i], 0.5f);  // window depth = (z_ndc + 1) / 2
@@ -124,9 +132,9 @@ TEST(Rasterize, TheOutputDoesNotDependOnTheThreadCount) {
   }
   const std::vector<Vec4> again = clip;
   clip.insert(clip.end(), again.begin(), again.end());
-  const VisibilityBuffer one = rasterize(clip, width, height, {Cull::None, 1});
-  const VisibilityBuffer two = rasterize(clip, width, height, {Cull::None, 2});
-  const VisibilityBuffer five = rasterize(clip, width, height, {Cull::None, 5});
+  const VisibilityBuffer one = rasterizeCorners(clip, width, height, {Cull::None, 1});
+  const VisibilityBuffer two = rasterizeCorners(clip, width, height, {Cull::None, 2});
+  const VisibilityBuffer five = rasterizeCorners(clip, width, height, {Cull::None, 5});
   EXPECT_EQ(one.face, two.face);
   EXPECT_EQ(one.face, five.face);
   EXPECT_EQ(one.depth, two.depth);
@@ -152,7 +160,7 @@ TEST(Rasterize, ATriangleReachingBehindTheEyeCoversExactlyThePixelsWhoseRaysHitI
   const Vec3 a(-50, -1, -50), b(50, -1, -50), c(0, -1, 50);  // counter-clockwise in the (x, z) plane
   const std::vector<Vec4> clip = {s.clip(a), s.clip(b), s.clip(c)};
   ASSERT_LT(clip[2].w(), 0.0);  // the third corner is behind the eye
-  const VisibilityBuffer buffer = rasterize(clip, s.width, s.height, {Cull::None, 1});
+  const VisibilityBuffer buffer = rasterizeCorners(clip, s.width, s.height, {Cull::None, 1});
   int covered = 0;
   for (int row = 0; row < s.height; ++row)
     for (int x = 0; x < s.width; ++x) {
@@ -207,20 +215,20 @@ TEST(Rasterize, TrianglesBehindTheEyeOrWithHugeOrNonFiniteCoordinatesDrawNothing
   // Wholly behind the eye.
   const std::vector<Vec4> behind = {s.clip(Vec3(-1, -1, 1)), s.clip(Vec3(1, -1, 1)), s.clip(Vec3(0, 1, 1))};
   RasterStats stats;
-  const VisibilityBuffer b = rasterize(behind, s.width, s.height, {Cull::None, 1}, &stats);
+  const VisibilityBuffer b = rasterizeCorners(behind, s.width, s.height, {Cull::None, 1}, &stats);
   EXPECT_EQ(std::count(b.face.begin(), b.face.end(), -1), long(b.face.size()));
   EXPECT_EQ(stats.clipped, 1u);
   // Enormous but finite: a screen-covering triangle, clipped by the guard band, covers every pixel.
   const std::vector<Vec4> huge = {Vec4(-1e30, -1e30, 0, 1), Vec4(1e30, -1e30, 0, 1), Vec4(0, 1e30, 0, 1)};
-  const VisibilityBuffer h = rasterize(huge, s.width, s.height, {Cull::None, 1});
+  const VisibilityBuffer h = rasterizeCorners(huge, s.width, s.height, {Cull::None, 1});
   EXPECT_EQ(std::count(h.face.begin(), h.face.end(), 0), long(h.face.size()));
   // Non-finite corners are dropped.
   const double inf = std::numeric_limits<double>::infinity();
   const std::vector<Vec4> bad = {Vec4(0, 0, 0, 1), Vec4(inf, 0, 0, 1), Vec4(0, 1, 0, 1)};
-  const VisibilityBuffer n = rasterize(bad, s.width, s.height, {Cull::None, 1});
+  const VisibilityBuffer n = rasterizeCorners(bad, s.width, s.height, {Cull::None, 1});
   EXPECT_EQ(std::count(n.face.begin(), n.face.end(), -1), long(n.face.size()));
-  EXPECT_THROW(rasterize(bad, 0, 10, {}), UsageError);
-  EXPECT_THROW(rasterize(bad, 16385, 10, {}), UsageError);
+  EXPECT_THROW(rasterizeCorners(bad, 0, 10, {}), UsageError);
+  EXPECT_THROW(rasterizeCorners(bad, 16385, 10, {}), UsageError);
 }
 
 TEST(TriangleInterpolator, GivesTheBarycentricsOfThePointWhereThePixelRayMeetsTheTriangle) {
