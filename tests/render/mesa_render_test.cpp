@@ -1,0 +1,684 @@
+// The renderer against a real OpenGL: every scene is drawn by uvtk and by Mesa's fixed-function
+// pipeline through OSMesa with the same matrices, texels, sampler and environment, and the two
+// images are compared pixel by pixel. OSMesa runs on its default gallium driver, llvmpipe (here
+// Mesa 22.3.6, LLVM 15, 256-bit vectors; GALLIUM_DRIVER=softpipe would select softpipe, which
+// passes all but the llvmpipe-specific mipmap test, skipped then). The statistics of every scene
+// are printed ("[mesa] ...") and recorded as test properties.
+#include <GL/gl.h>
+#include <GL/osmesa.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/gl_matrices.h"
+#include "meshes/generators.h"
+#include "render/procedural.h"
+#include "render/renderer.h"
+#include "texgen/texgen.h"
+
+namespace uvtk::render {
+namespace {
+
+constexpr int kWidth = 128, kHeight = 96;
+
+struct Scene {
+  std::string name;
+  Mesh mesh;
+  std::vector<Vec4> corners;                    // (s, t, r, q) per corner, what uvtk interpolates
+  std::optional<texgen::TexgenOptions> texgen;  // Mesa generates the corners itself with glTexGen
+  Camera camera;
+  Mat4 worldFromObject = Mat4::Identity();
+  const Texture* texture = nullptr;
+  Filter filter = Filter::Nearest;
+  Wrap wrap = Wrap::Repeat;
+  EnvMode env = EnvMode::Replace;
+  Cull cull = Cull::Back;
+  Vec3 background = Vec3(40, 90, 160) / 255.0;  // 8-bit values, so both clear to the same bytes
+};
+
+Camera perspectiveCamera(const Vec3& eye, const Vec3& centre, double fovy, double zNear, double zFar) {
+  Camera c;
+  c.width = kWidth, c.height = kHeight;
+  c.viewFromWorld = lookAt(eye, centre, Vec3::UnitY());
+  c.clipFromView = perspective(fovy, double(kWidth) / kHeight, zNear, zFar);
+  return c;
+}
+
+// Every texel a distinct colour with large steps between neighbours, so that a texel off by one
+// or a blend weight off by a little shows in the 8-bit result.
+Texture rampTexture(int width, int height) {
+  TexelLevel level{width, height, {}};
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i)
+      level.texels.push_back(
+          Rgba(float((i * 97) % 256), float((j * 57) % 256), float(((i + j) * 151 + 37) % 256), 255.0f) / 255.0f);
+  return Texture(level, true);
+}
+
+// The square [-1, 1]^2 of z = 0, two counter-clockwise triangles, texture coordinates from `lo`
+// to `hi` along both axes, tilted away from a camera that sees it in perspective.
+Scene tiltedQuad(std::string name, const Texture& texture, Filter filter, Wrap wrap, double lo, double hi) {
+  Scene s;
+  s.name = std::move(name);
+  s.mesh.positions = {Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0)};
+  s.mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  for (const Triangle& t : s.mesh.triangles)
+    for (int v : t) {
+      const Vec3& p = s.mesh.positions[std::size_t(v)];
+      s.corners.emplace_back(lo + (hi - lo) * (p.x() + 1) / 2, lo + (hi - lo) * (p.y() + 1) / 2, 0.0, 1.0);
+    }
+  s.worldFromObject =
+      (Affine3(Eigen::AngleAxisd(-1.0, Vec3::UnitX())) * Eigen::AngleAxisd(0.35, Vec3::UnitZ()) * Eigen::Scaling(1.4))
+          .matrix();
+  s.camera = perspectiveCamera(Vec3(0, 0.4, 3), Vec3::Zero(), 50.0, 0.5, 20.0);
+  s.texture = &texture;
+  s.filter = filter;
+  s.wrap = wrap;
+  return s;
+}
+
+// A unit sphere with its pole tipped towards the camera, culled, with a fixed (u, v) per corner:
+// u = atan2(y, x) / 2 pi made continuous within each triangle (the pole takes its neighbours'
+// mean), v = acos(z) / pi.
+Scene sphere(std::string name, const Texture& texture, Filter filter) {
+  Scene s;
+  s.name = std::move(name);
+  s.mesh = meshes::latLongSphere(16, 8, 1.0);
+  for (const Triangle& t : s.mesh.triangles) {
+    std::array<double, 3> u{}, v{};
+    std::array<bool, 3> pole{};
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& p = s.mesh.positions[std::size_t(t[k])];
+      pole[k] = p.x() == 0.0 && p.y() == 0.0;
+      u[k] = std::atan2(p.y(), p.x()) / kTwoPi;
+      if (u[k] < 0) u[k] += 1;
+      v[k] = std::acos(std::clamp(p.z(), -1.0, 1.0)) / kPi;
+    }
+    double maxU = 0;
+    for (int k = 0; k < 3; ++k)
+      if (!pole[k]) maxU = std::max(maxU, u[k]);
+    double sum = 0;
+    int count = 0;
+    for (int k = 0; k < 3; ++k)
+      if (!pole[k]) {
+        if (maxU - u[k] > 0.5) u[k] += 1;
+        sum += u[k], ++count;
+      }
+    for (int k = 0; k < 3; ++k) s.corners.emplace_back(pole[k] ? sum / count : u[k], v[k], 0.0, 1.0);
+  }
+  s.worldFromObject =
+      (Affine3(Eigen::AngleAxisd(-1.1, Vec3::UnitX())) * Eigen::AngleAxisd(0.4, Vec3::UnitZ())).matrix();
+  s.camera = perspectiveCamera(Vec3(0.2, 0.3, 2.8), Vec3::Zero(), 45.0, 1.0, 10.0);
+  s.texture = &texture;
+  s.filter = filter;
+  return s;
+}
+
+// The sphere with texture coordinates from texgen: uvtk gets generateTexcoords' corners, Mesa
+// the same options as glTexGen state.
+Scene texgenSphere(std::string name, const Texture& texture, Filter filter, texgen::TexgenOptions options) {
+  Scene s = sphere(std::move(name), texture, filter);
+  options.modelviewAtPlanes = options.modelviewAtDraw = s.camera.viewFromWorld * s.worldFromObject;
+  const texgen::TexgenResult generated = texgen::generateTexcoords(s.mesh, options);
+  EXPECT_EQ(generated.sphereMapSingular, 0u) << s.name;
+  EXPECT_EQ(generated.invalidCorners, 0u) << s.name;
+  s.corners.clear();
+  for (std::size_t c = 0; c < generated.uv.uv.size(); ++c)
+    s.corners.emplace_back(generated.uv.uv[c].x(), generated.uv.uv[c].y(), generated.uv.w[c], generated.q[c]);
+  s.texgen = options;
+  return s;
+}
+
+// An 8-bit channel as uvtk writes one (io/image_io.cpp): round(clamp(c, 0, 1) 255).
+std::uint8_t toByte(double c) { return static_cast<std::uint8_t>(std::lround(std::clamp(c, 0.0, 1.0) * 255.0)); }
+
+GLenum glFilter(Filter f) {
+  switch (f) {
+    case Filter::Nearest: return GL_NEAREST;
+    case Filter::Linear: return GL_LINEAR;
+    case Filter::NearestMipmapNearest: return GL_NEAREST_MIPMAP_NEAREST;
+    case Filter::LinearMipmapNearest: return GL_LINEAR_MIPMAP_NEAREST;
+    case Filter::NearestMipmapLinear: return GL_NEAREST_MIPMAP_LINEAR;
+    case Filter::LinearMipmapLinear: return GL_LINEAR_MIPMAP_LINEAR;
+  }
+  return 0;
+}
+
+GLenum glWrap(Wrap w) {
+  switch (w) {
+    case Wrap::Repeat: return GL_REPEAT;
+    case Wrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
+    case Wrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
+  }
+  return 0;
+}
+
+GLenum glEnv(EnvMode m) {
+  switch (m) {
+    case EnvMode::Replace: return GL_REPLACE;
+    case EnvMode::Modulate: return GL_MODULATE;
+    case EnvMode::Decal: return GL_DECAL;
+    case EnvMode::Blend: return GL_BLEND;
+  }
+  return 0;
+}
+
+GLenum glTexgenMode(texgen::TexgenMode m) {
+  switch (m) {
+    case texgen::TexgenMode::ObjectLinear: return GL_OBJECT_LINEAR;
+    case texgen::TexgenMode::EyeLinear: return GL_EYE_LINEAR;
+    case texgen::TexgenMode::SphereMap: return GL_SPHERE_MAP;
+    case texgen::TexgenMode::NormalMap: return GL_NORMAL_MAP;
+    case texgen::TexgenMode::ReflectionMap: return GL_REFLECTION_MAP;
+    case texgen::TexgenMode::Off: break;
+  }
+  return 0;
+}
+
+std::array<GLfloat, 4> floats(const Vec4& v) { return {GLfloat(v[0]), GLfloat(v[1]), GLfloat(v[2]), GLfloat(v[3])}; }
+
+// An OSMesa context on a kWidth x kHeight RGBA8 buffer with a 24-bit depth buffer.
+class Mesa {
+ public:
+  enum class Pass { Colour, FaceIds };
+
+  Mesa() : context_(createContext()) {
+    if (context_) OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, kWidth, kHeight);
+  }
+  ~Mesa() {
+    if (context_) OSMesaDestroyContext(context_);
+  }
+  Mesa(const Mesa&) = delete;
+  Mesa& operator=(const Mesa&) = delete;
+
+  bool ok() const { return context_ != nullptr; }
+
+  std::string renderer() const {
+    const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return name ? name : "?";
+  }
+
+  // RGBA, row 0 at the top like uvtk's Image (OSMesa's row 0 is the bottom). The FaceIds pass
+  // draws each triangle flat in the colour face + 1 (24 bits) on black: Mesa's coverage.
+  std::vector<std::uint8_t> draw(const Scene& s, Pass pass) {
+    const bool colour = pass == Pass::Colour;
+    glViewport(0, 0, kWidth, kHeight);
+    glDisable(GL_DITHER);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glClearDepth(1.0);
+    if (colour)
+      glClearColor(GLfloat(s.background.x()), GLfloat(s.background.y()), GLfloat(s.background.z()), 1.0f);
+    else
+      glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glFrontFace(GL_CCW);
+    enable(GL_CULL_FACE, s.cull != Cull::None);
+    glCullFace(s.cull == Cull::Front ? GL_FRONT : GL_BACK);
+    glHint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST);
+    glShadeModel(colour ? GL_SMOOTH : GL_FLAT);
+    glEnable(GL_NORMALIZE);
+    glMatrixMode(GL_PROJECTION);
+    glLoadMatrixd(s.camera.clipFromView.data());  // Eigen is column-major, as GL reads it
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+
+    const bool lit = colour && readsFragmentColour(s.env);
+    if (lit) setHeadlight(Lighting{});
+    enable(GL_LIGHTING, lit);
+    GLuint name = 0;
+    if (colour) name = bindTexture(s);
+    enable(GL_TEXTURE_2D, colour);
+    setTexgen(colour ? s.texgen : std::nullopt);
+
+    const Mat4 modelview = s.camera.viewFromWorld * s.worldFromObject;
+    glLoadMatrixd(modelview.data());
+    const std::vector<Vec3> normals = cornerNormals(s.mesh);
+    glTexCoord4d(0, 0, 0, 1);  // what texgen leaves in the coordinates it does not generate
+    glBegin(GL_TRIANGLES);
+    for (std::size_t f = 0; f < s.mesh.faceCount(); ++f) {
+      const auto id = std::uint32_t(f + 1);  // the colour pass ignores it: REPLACE or lighting replaces it
+      glColor4ub(GLubyte(id & 0xff), GLubyte((id >> 8) & 0xff), GLubyte((id >> 16) & 0xff), 255);
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t c = 3 * f + std::size_t(k);
+        const Vec3& p = s.mesh.positions[std::size_t(s.mesh.triangles[f][k])];
+        glNormal3d(normals[c].x(), normals[c].y(), normals[c].z());
+        if (!s.texgen) glTexCoord4d(s.corners[c][0], s.corners[c][1], s.corners[c][2], s.corners[c][3]);
+        glVertex3d(p.x(), p.y(), p.z());
+      }
+    }
+    glEnd();
+    glFinish();
+    if (name) glDeleteTextures(1, &name);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << s.name;
+
+    std::vector<std::uint8_t> topDown(buffer_.size());
+    const std::size_t rowBytes = std::size_t(kWidth) * 4;
+    for (int row = 0; row < kHeight; ++row)
+      std::copy_n(&buffer_[std::size_t(kHeight - 1 - row) * rowBytes], rowBytes, &topDown[std::size_t(row) * rowBytes]);
+    return topDown;
+  }
+
+ private:
+  static void enable(GLenum capability, bool on) { on ? glEnable(capability) : glDisable(capability); }
+
+  // uvtk's head-light (render/shading.h): GL_LIGHT0 at (0, 0, 1, 0) given under the identity.
+  static void setHeadlight(const Lighting& l) {
+    const GLfloat position[4] = {0, 0, 1, 0};
+    glLightfv(GL_LIGHT0, GL_POSITION, position);
+    glLightfv(GL_LIGHT0, GL_AMBIENT, floats(l.lightAmbient).data());
+    glLightfv(GL_LIGHT0, GL_DIFFUSE, floats(l.lightDiffuse).data());
+    glLightfv(GL_LIGHT0, GL_SPECULAR, floats(l.lightSpecular).data());
+    glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, floats(l.materialAmbient).data());
+    glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, floats(l.materialDiffuse).data());
+    glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, floats(l.materialSpecular).data());
+    glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, GLfloat(l.shininess));
+    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, floats(l.modelAmbient).data());
+    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GL_FALSE);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
+    glEnable(GL_LIGHT0);
+  }
+
+  // The scene's texels as RGBA8, every mipmap level uvtk built when the filter reads them, so
+  // that both sample identical levels.
+  static GLuint bindTexture(const Scene& s) {
+    GLuint name = 0;
+    glGenTextures(1, &name);
+    glBindTexture(GL_TEXTURE_2D, name);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    const Texture& texture = *s.texture;
+    const int levels = needsMipmaps(s.filter) ? texture.levelCount() : 1;
+    EXPECT_TRUE(!needsMipmaps(s.filter) || levels > 1) << s.name;
+    for (int k = 0; k < levels; ++k) {
+      const TexelLevel& level = texture.level(k);
+      std::vector<std::uint8_t> bytes;
+      for (int j = 0; j < level.height; ++j)
+        for (int i = 0; i < level.width; ++i)
+          for (int c = 0; c < 4; ++c) bytes.push_back(toByte(level.at(i, j)[c]));
+      glTexImage2D(GL_TEXTURE_2D, k, GL_RGBA8, level.width, level.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    }
+    const SamplerState sampler = samplerFor(s.filter, s.wrap);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GLint(glFilter(sampler.minFilter)));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GLint(glFilter(sampler.magFilter)));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GLint(glWrap(sampler.wrapS)));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GLint(glWrap(sampler.wrapT)));
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GLint(glEnv(s.env)));
+    return name;
+  }
+
+  // texgen::TexgenOptions as GL state; the planes given under modelviewAtPlanes.
+  static void setTexgen(const std::optional<texgen::TexgenOptions>& o) {
+    static constexpr GLenum kCoordinate[4] = {GL_S, GL_T, GL_R, GL_Q};
+    static constexpr GLenum kEnable[4] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q};
+    glMatrixMode(GL_TEXTURE);
+    o ? glLoadMatrixd(o->textureMatrix.data()) : glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    if (o) glLoadMatrixd(o->modelviewAtPlanes.data());
+    for (int i = 0; i < 4; ++i) {
+      if (!o || o->coordinates[std::size_t(i)].mode == texgen::TexgenMode::Off) {
+        glDisable(kEnable[i]);
+        continue;
+      }
+      const texgen::TexgenCoordinate& c = o->coordinates[std::size_t(i)];
+      glTexGeni(kCoordinate[i], GL_TEXTURE_GEN_MODE, GLint(glTexgenMode(c.mode)));
+      glTexGendv(kCoordinate[i], GL_OBJECT_PLANE, c.plane.data());
+      glTexGendv(kCoordinate[i], GL_EYE_PLANE, c.plane.data());
+      glEnable(kEnable[i]);
+    }
+  }
+
+  // By default llvmpipe filters 8-bit textures with REPEAT or CLAMP_TO_EDGE in its "AoS" path
+  // with 8-bit fixed-point weights: there the LINEAR scenes below were only 47.9% (ramp texture,
+  // lit) to 96.6% (checker) identical, though never more than 1 step apart. Its float path (which
+  // MIRRORED_REPEAT always takes) is GL's filter to float precision, so the reference is that.
+  // gallivm reads GALLIVM_PERF once, when the first context creates the screen.
+  static OSMesaContext createContext() {
+    setenv("GALLIVM_PERF", "no_aos_sampling", 1);
+    return OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
+  }
+
+  OSMesaContext context_;
+  std::vector<std::uint8_t> buffer_ = std::vector<std::uint8_t>(std::size_t(kWidth) * kHeight * 4);
+};
+
+// Both renderings of one scene: uvtk's with its AOVs, Mesa's colours and Mesa's face ids.
+struct Renderings {
+  Rendering ours;
+  std::vector<std::uint8_t> theirs, theirFaces;
+
+  int face(int x, int row) const { return int(ours.aovs.at(x, row, 3)); }
+  int mesaFace(int x, int row) const {
+    const std::uint8_t* p = &theirFaces[(std::size_t(row) * kWidth + std::size_t(x)) * 4];
+    return int(p[0] | (p[1] << 8) | (p[2] << 16)) - 1;
+  }
+  int mesa(int x, int row, int channel) const {
+    return theirs[(std::size_t(row) * kWidth + std::size_t(x)) * 4 + std::size_t(channel)];
+  }
+  // A pixel is an edge pixel when uvtk's face AOV changes within its 3 x 3 neighbourhood.
+  bool isEdge(int x, int row) const {
+    for (int ny = std::max(0, row - 1); ny <= std::min(kHeight - 1, row + 1); ++ny)
+      for (int nx = std::max(0, x - 1); nx <= std::min(kWidth - 1, x + 1); ++nx)
+        if (face(nx, ny) != face(x, row)) return true;
+    return false;
+  }
+};
+
+RenderOptions uvtkOptions(const Scene& s) {
+  RenderOptions o;
+  o.camera = s.camera;
+  o.worldFromObject = s.worldFromObject;
+  o.raster.cull = s.cull;
+  o.texture = s.texture;
+  o.sampler = samplerFor(s.filter, s.wrap);
+  o.env = s.env;
+  o.background = s.background;
+  o.aovs = true;
+  return o;
+}
+
+Renderings renderBoth(Mesa& mesa, const Scene& s) {
+  TexcoordSource source;
+  source.corners = s.corners;
+  return {render(s.mesh, source, uvtkOptions(s)), mesa.draw(s, Mesa::Pass::Colour), mesa.draw(s, Mesa::Pass::FaceIds)};
+}
+
+// Pixel statistics of one comparison. Differences are in 8-bit steps (1/255), per pixel the
+// largest over R, G and B.
+struct Comparison {
+  std::string scene;
+  std::size_t covered = 0;              // pixels uvtk drew
+  std::size_t compared = 0;             // covered non-edge pixels
+  std::size_t equal = 0;                // ... with identical RGB bytes
+  std::size_t interiorFaceDiffers = 0;  // non-edge pixels (background included) where Mesa drew another face
+  int maxDifference = 0;
+  double meanDifference = 0;  // over channels of the compared pixels
+  std::size_t edge = 0, edgeFaceDiffers = 0;
+  std::string firstDifference;  // the first compared pixel that differs, for the log
+  // |uvtk's lambda - Mesa's| where either is below the coarsest level (compareWithMesasLevelOfDetail).
+  double lodDifferenceMax = 0, lodDifferenceMean = 0;
+
+  double equalFraction() const { return compared ? double(equal) / double(compared) : 0.0; }
+
+  // Accumulates one compared pixel: uvtk's RGB against Mesa's bytes.
+  void add(const Vec3& ours, const Renderings& r, int x, int row) {
+    ++compared;
+    int difference = 0;
+    std::array<int, 3> a{}, b{};
+    for (int c = 0; c < 3; ++c) {
+      a[std::size_t(c)] = toByte(ours[c]);
+      b[std::size_t(c)] = r.mesa(x, row, c);
+      const int d = std::abs(a[std::size_t(c)] - b[std::size_t(c)]);
+      difference = std::max(difference, d);
+      meanDifference += d;  // a sum until finish()
+    }
+    maxDifference = std::max(maxDifference, difference);
+    equal += difference == 0;
+    if (difference != 0 && firstDifference.empty()) {
+      std::ostringstream out;
+      out << "; first difference at (" << x << ", " << row << "): uvtk " << a[0] << " " << a[1] << " " << a[2]
+          << ", Mesa " << b[0] << " " << b[1] << " " << b[2] << ", uv " << r.ours.aovs.at(x, row, 0) << " "
+          << r.ours.aovs.at(x, row, 1) << ", lod " << r.ours.aovs.at(x, row, 4);
+      firstDifference = out.str();
+    }
+  }
+  void finish();
+};
+
+std::ostream& operator<<(std::ostream& out, const Comparison& c) {
+  out << c.scene << ": compared " << c.compared << " (identical " << c.equal << " = " << 100.0 * c.equalFraction()
+      << "%, max diff " << c.maxDifference << ", mean diff " << c.meanDifference << ")";
+  if (c.covered)
+    out << ", covered " << c.covered << ", edge " << c.edge << " (coverage differs " << c.edgeFaceDiffers
+        << "), interior coverage differs " << c.interiorFaceDiffers;
+  if (c.lodDifferenceMax > 0)
+    out << ", lambda differs by max " << c.lodDifferenceMax << ", mean " << c.lodDifferenceMean;
+  return out << c.firstDifference;
+}
+
+void Comparison::finish() {
+  if (compared) meanDifference /= 3.0 * double(compared);
+  std::cout << "[mesa] " << *this << "\n";
+  std::ostringstream out;
+  out << *this;
+  testing::Test::RecordProperty(scene, out.str());
+}
+
+// uvtk's image against Mesa's over the non-edge pixels, and the coverage of both everywhere.
+Comparison compare(const Scene& s, const Renderings& r) {
+  Comparison c;
+  c.scene = s.name;
+  for (int row = 0; row < kHeight; ++row)
+    for (int x = 0; x < kWidth; ++x) {
+      c.covered += r.face(x, row) >= 0;
+      const bool sameFace = r.face(x, row) == r.mesaFace(x, row);
+      if (r.isEdge(x, row)) {
+        ++c.edge;
+        c.edgeFaceDiffers += !sameFace;
+        continue;
+      }
+      c.interiorFaceDiffers += !sameFace;
+      if (r.face(x, row) < 0) continue;  // the background: its coverage is all there is to compare
+      c.add(Vec3(r.ours.colour.at(x, row, 0), r.ours.colour.at(x, row, 1), r.ours.colour.at(x, row, 2)), r, x, row);
+    }
+  c.finish();
+  return c;
+}
+
+void expectCoverageAgrees(const Comparison& c) {
+  EXPECT_EQ(c.interiorFaceDiffers, 0u) << c;
+  // Both snap vertices to 1/256 pixel and own edges by the top-left rule, so only a centre within
+  // rounding distance of an edge may fall differently: measured 0 pixels in every scene but the
+  // ground plane (1 of 488, on its far edge near the horizon).
+  EXPECT_LE(c.edgeFaceDiffers, c.edge / 200) << c;
+}
+
+// Every scene must show enough of itself for its statistics to mean something.
+void expectSubstantial(const Comparison& c) { EXPECT_GE(c.compared, std::size_t(kWidth * kHeight / 8)) << c; }
+
+// NEAREST: all pixels but those whose texel coordinate lies within float rounding of a texel
+// boundary (Mesa interpolates in float, uvtk in double). Measured: 100% in every scene.
+void expectNearestMatch(const Comparison& c) {
+  expectSubstantial(c);
+  expectCoverageAgrees(c);
+  EXPECT_GE(c.equalFraction(), 0.999) << c;
+}
+
+// LINEAR: llvmpipe's float filter (see Mesa::createContext) against uvtk's double one can round
+// the last bit differently. Measured: 99.81% to 100% identical, never more than 1 step apart.
+void expectLinearMatch(const Comparison& c) {
+  expectSubstantial(c);
+  expectCoverageAgrees(c);
+  EXPECT_GE(c.equalFraction(), 0.995) << c;
+  EXPECT_LE(c.maxDifference, 1) << c;
+}
+
+TEST(MesaRender, PerspectiveTexturedQuadsMatchMesaPixelForPixel) {
+  Mesa mesa;
+  ASSERT_TRUE(mesa.ok());
+  std::cout << "[mesa] " << mesa.renderer() << "\n";
+  testing::Test::RecordProperty("GL_RENDERER", mesa.renderer());
+  const Texture checker = checkerTexture(64, 8);
+  const Texture ramp = rampTexture(32, 32);
+  for (const Texture* texture : {&checker, &ramp}) {
+    const std::string name = texture == &checker ? "quad checker:64:8" : "quad ramp32";
+    const auto scene = [&](const std::string& variant, Filter filter, Wrap wrap, double lo, double hi) {
+      const Scene s = tiltedQuad(name + " " + variant, *texture, filter, wrap, lo, hi);
+      return compare(s, renderBoth(mesa, s));
+    };
+    expectNearestMatch(scene("nearest repeat", Filter::Nearest, Wrap::Repeat, -0.5, 1.5));
+    expectLinearMatch(scene("linear clamp", Filter::Linear, Wrap::ClampToEdge, -0.25, 1.25));
+    expectLinearMatch(scene("linear mirrored", Filter::Linear, Wrap::MirroredRepeat, -1.5, 2.5));
+  }
+}
+
+TEST(MesaRender, CulledDepthTestedSphereMatchesMesaPixelForPixel) {
+  Mesa mesa;
+  ASSERT_TRUE(mesa.ok());
+  const Texture ramp = rampTexture(32, 32);
+  const Scene nearest = sphere("sphere ramp32 nearest", ramp, Filter::Nearest);
+  expectNearestMatch(compare(nearest, renderBoth(mesa, nearest)));
+  const Scene linear = sphere("sphere ramp32 linear", ramp, Filter::Linear);
+  expectLinearMatch(compare(linear, renderBoth(mesa, linear)));
+}
+
+TEST(MesaRender, TexgenObjectLinearAndSphereMapMatchMesasGeneratedCoordinates) {
+  Mesa mesa;
+  ASSERT_TRUE(mesa.ok());
+  const Texture ramp = rampTexture(32, 32);
+  texgen::TexgenOptions objectLinear;
+  objectLinear.coordinates[0] = {texgen::TexgenMode::ObjectLinear, Vec4(0.35, -0.2, 0.15, 0.5)};
+  objectLinear.coordinates[1] = {texgen::TexgenMode::ObjectLinear, Vec4(0.1, 0.3, -0.25, 0.5)};
+  objectLinear.coordinates[3] = {texgen::TexgenMode::ObjectLinear, Vec4(0.1, 0.05, 0.2, 1.0)};  // projective
+  texgen::TexgenOptions sphereMap;
+  sphereMap.coordinates[0] = {texgen::TexgenMode::SphereMap, Vec4::Zero()};
+  sphereMap.coordinates[1] = {texgen::TexgenMode::SphereMap, Vec4::Zero()};
+  for (const auto& [name, options] :
+       {std::pair{"texgen object linear", objectLinear}, std::pair{"texgen sphere map", sphereMap}}) {
+    const Scene nearest = texgenSphere(std::string(name) + " nearest", ramp, Filter::Nearest, options);
+    expectNearestMatch(compare(nearest, renderBoth(mesa, nearest)));
+    const Scene linear = texgenSphere(std::string(name) + " linear", ramp, Filter::Linear, options);
+    expectLinearMatch(compare(linear, renderBoth(mesa, linear)));
+  }
+}
+
+TEST(MesaRender, HeadlitModulatedSphereMatchesMesasLighting) {
+  Mesa mesa;
+  ASSERT_TRUE(mesa.ok());
+  const Texture ramp = rampTexture(32, 32);
+  Scene s = sphere("sphere ramp32 linear modulate", ramp, Filter::Linear);
+  s.env = EnvMode::Modulate;
+  // Mesa lights the vertices in float, uvtk in double: the same 1-step bound as LINEAR alone.
+  expectLinearMatch(compare(s, renderBoth(mesa, s)));
+}
+
+// The ground y = 0 seen from just above it, 64 texels every 2 units: lambda runs from below 0 in
+// front to beyond the coarsest level at the horizon.
+Scene groundPlane(std::string name, const Texture& texture, Filter filter) {
+  Scene s;
+  s.name = std::move(name);
+  s.mesh.positions = {Vec3(-40, 0, 2), Vec3(40, 0, 2), Vec3(40, 0, -80), Vec3(-40, 0, -80)};
+  s.mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  for (const Triangle& t : s.mesh.triangles)
+    for (int v : t) {
+      const Vec3& p = s.mesh.positions[std::size_t(v)];
+      s.corners.emplace_back(p.x() / 2, -p.z() / 2, 0.0, 1.0);
+    }
+  s.worldFromObject = Affine3(Eigen::AngleAxisd(0.3, Vec3::UnitY())).matrix();
+  s.camera = perspectiveCamera(Vec3(0, 0.6, 3), Vec3(0, 0.1, -5), 60.0, 0.1, 200.0);
+  s.texture = &texture;
+  s.filter = filter;
+  return s;
+}
+
+// log2 as llvmpipe computes it for a mipmap-linear filter (gallivm lp_build_fast_log2): the
+// exponent plus the mantissa less one, piecewise linear between powers of two.
+double piecewiseLinearLog2(double x) {
+  int exponent = 0;
+  const double mantissa = 2 * std::frexp(x, &exponent);  // x = mantissa 2^(exponent - 1), mantissa in [1, 2)
+  return (exponent - 1) + (mantissa - 1);
+}
+
+// uvtk's sampler fed with the level of detail Mesa computes, to isolate every other part of the
+// mipmapped lookup (the levels, level selection, the blend between levels): per 2 x 2 quad of
+// the window (rows 2k, 2k + 1), one lambda from the differences of (s, t) from its top-left pixel
+// to the right and lower neighbours (gallivm lp_build_packed_ddx_ddy; the top-left in uvtk's
+// image, found by trying: the bottom-left matches only 72% of linear_mipmap_linear pixels), its
+// log2 as llvmpipe takes it (exact for mipmap-nearest filters). Quads are compared where uvtk
+// drew one face on all four pixels, using uvtk's (u, v) AOV.
+Comparison compareWithMesasLevelOfDetail(const Scene& s, const Renderings& r) {
+  Comparison c;
+  c.scene = s.name + " with Mesa's per-quad lambda";
+  const SamplerState sampler = samplerFor(s.filter, s.wrap);
+  const auto uv = [&](int x, int row) { return Vec2(r.ours.aovs.at(x, row, 0), r.ours.aovs.at(x, row, 1)); };
+  const double coarsest = s.texture->levelCount() - 1;
+  std::size_t lodCount = 0;
+  for (int row = 0; row < kHeight; row += 2)
+    for (int x = 0; x < kWidth; x += 2) {
+      const int f = r.face(x, row);
+      if (f < 0 || r.face(x + 1, row) != f || r.face(x, row + 1) != f || r.face(x + 1, row + 1) != f) continue;
+      const double lambda = levelOfDetail(s.texture->width(), s.texture->height(), uv(x + 1, row) - uv(x, row),
+                                          uv(x, row + 1) - uv(x, row));
+      const double lambdaUsed =
+          s.filter == Filter::LinearMipmapLinear ? 0.5 * piecewiseLinearLog2(std::exp2(2 * lambda)) : lambda;
+      for (int dy = 0; dy < 2; ++dy)
+        for (int dx = 0; dx < 2; ++dx) {
+          const Vec2 p = uv(x + dx, row + dy);
+          c.add(sample(*s.texture, sampler, p.x(), p.y(), lambdaUsed).head<3>(), r, x + dx, row + dy);
+          const double ours = r.ours.aovs.at(x + dx, row + dy, 4);
+          if (std::min(ours, lambda) >= coarsest) continue;  // both take the 1 x 1 level
+          c.lodDifferenceMax = std::max(c.lodDifferenceMax, std::abs(ours - lambda));
+          c.lodDifferenceMean += std::abs(ours - lambda);
+          ++lodCount;
+        }
+    }
+  if (lodCount) c.lodDifferenceMean /= double(lodCount);
+  c.finish();
+  return c;
+}
+
+// Mesa takes one lambda per 2 x 2 quad from finite differences, uvtk the analytic derivative at
+// each pixel, so the images differ where the two lambdas straddle a level switch (NEAREST_MIPMAP_
+// NEAREST) or blend the levels in other proportions (LINEAR_MIPMAP_LINEAR). Measured on llvmpipe:
+//   nearest_mipmap_nearest: 98.51% identical, max diff 128 (a whole level: white against grey), mean 1.90
+//   linear_mipmap_linear:   62.74% identical, max diff 17, mean 1.19
+// With Mesa's lambda substituted, uvtk's lookup gives 100% and 99.95% identical (max diff 1): the
+// levels, the level selection and the blend between levels agree, and all of the difference is
+// lambda's, which differs from uvtk's by at most 0.24 (mean 0.073) below the coarsest level.
+TEST(MesaRender, MipmappedRecedingPlaneMatchesMesaUpToItsPerQuadLevelOfDetail) {
+  Mesa mesa;
+  ASSERT_TRUE(mesa.ok());
+  if (mesa.renderer().rfind("llvmpipe", 0) != 0) GTEST_SKIP() << "the bounds are llvmpipe's, not " << mesa.renderer();
+  Texture checker = checkerTexture(64, 8);
+  checker.buildMipmaps();
+  const Scene nearest =
+      groundPlane("ground checker:64:8 nearest_mipmap_nearest", checker, Filter::NearestMipmapNearest);
+  const Scene linear = groundPlane("ground checker:64:8 linear_mipmap_linear", checker, Filter::LinearMipmapLinear);
+  for (const Scene* s : {&nearest, &linear}) {
+    const Renderings r = renderBoth(mesa, *s);
+    const Comparison direct = compare(*s, r);
+    expectSubstantial(direct);
+    expectCoverageAgrees(direct);
+    const Comparison emulated = compareWithMesasLevelOfDetail(*s, r);
+    EXPECT_GE(emulated.compared, direct.compared * 9 / 10) << emulated;  // whole quads cover nearly all
+    EXPECT_GE(emulated.equalFraction(), 0.995) << emulated;
+    EXPECT_LE(emulated.maxDifference, 1) << emulated;
+    // A finite difference across one pixel against the derivative at the pixel: a quarter level
+    // on this plane; a derivative off by a factor of 2 would be a whole level off.
+    EXPECT_LE(emulated.lodDifferenceMax, 0.3) << emulated;
+    EXPECT_LE(emulated.lodDifferenceMean, 0.1) << emulated;
+    if (s == &nearest) {
+      EXPECT_GE(direct.equalFraction(), 0.98) << direct;
+    } else {
+      // A trilinear texel moves by at most 255 steps per level of lambda.
+      EXPECT_LE(direct.maxDifference, 255 * emulated.lodDifferenceMax) << direct;
+      EXPECT_LE(direct.meanDifference, 1.5) << direct;
+    }
+  }
+}
+
+TEST(MesaRender, TriangleCrossingTheEyePlaneIsClippedAsMesaClipsIt) {
+  Mesa mesa;
+  ASSERT_TRUE(mesa.ok());
+  const Texture ramp = rampTexture(32, 32);
+  Scene s;
+  s.name = "eye-plane triangle ramp32 nearest";
+  // The second corner lies behind the eye (w < 0): only near clipping makes the triangle drawable.
+  s.mesh.positions = {Vec3(-2.5, 0, -12), Vec3(0.3, 0, 5), Vec3(3, 0, -12)};
+  s.mesh.triangles = {{0, 1, 2}};
+  for (const Vec3& p : s.mesh.positions) s.corners.emplace_back(p.x() / 3, -p.z() / 3, 0.0, 1.0);
+  s.camera = perspectiveCamera(Vec3(0, 1, 0), Vec3(0.3, 0.2, -4), 60.0, 0.1, 50.0);
+  s.texture = &ramp;
+  expectNearestMatch(compare(s, renderBoth(mesa, s)));
+}
+
+}  // namespace
+}  // namespace uvtk::render
