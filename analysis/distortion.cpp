@@ -1,0 +1,156 @@
+#include "analysis/distortion.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+
+namespace uvtk::analysis {
+
+namespace {
+
+constexpr double kZeroAreaRelative = 1e-14;  // area <= this times the longest edge squared: zero
+
+// One triangle's areas and normal: what the statuses and the majority vote read.
+struct TriangleAreas {
+  double area3d = 0.0;
+  double signedAreaUv = 0.0;   // positive when the UV corners run counter-clockwise
+  double longestEdge3d = 0.0;  // squared lengths, for the zero-area thresholds
+  double longestEdgeUv = 0.0;
+  Vec3 normal = Vec3::Zero();  // twice the area-weighted normal
+};
+
+template <class Point>
+double longestSquared(const Point& a, const Point& b, const Point& c) {
+  return std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+}
+
+TriangleAreas triangleAreas(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec2& t0, const Vec2& t1,
+                            const Vec2& t2) {
+  TriangleAreas a;
+  a.normal = triangleAreaNormal(p0, p1, p2);
+  a.area3d = 0.5 * a.normal.norm();
+  const Vec2 e1 = t1 - t0, e2 = t2 - t0;
+  a.signedAreaUv = 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
+  a.longestEdge3d = longestSquared(p0, p1, p2);
+  a.longestEdgeUv = longestSquared(t0, t1, t2);
+  return a;
+}
+
+// The Jacobian J of the linear map surface -> UV of a triangle with non-zero 3D area, in the
+// orthonormal frame (e1, e2) of its plane with p0 at the origin. With e2 = n x e1 the corners
+// run counter-clockwise in that frame, so det J has the sign of the UV triangle's area.
+Eigen::Matrix2d jacobian(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec2& t0, const Vec2& t1,
+                         const Vec2& t2) {
+  const Vec3 e1 = (p1 - p0).normalized();
+  const Vec3 e2 = triangleAreaNormal(p0, p1, p2).normalized().cross(e1);
+  Eigen::Matrix2d edges3d, edgesUv;
+  edges3d << (p1 - p0).dot(e1), (p2 - p0).dot(e1), 0.0, (p2 - p0).dot(e2);
+  edgesUv << t1 - t0, t2 - t0;
+  // J takes the triangle's edge vectors to its UV edge vectors: J edges3d = edgesUv.
+  return edgesUv * edges3d.inverse();
+}
+
+// Singular values of a 2x2 matrix in closed form (Blinn, "Consider the Lowly 2x2 Matrix", IEEE
+// CG&A 1996): s1 = Q + R; s2 = det / s1 rather than Q - R, which keeps the sign of the
+// determinant and avoids the cancellation.
+void singularValues(const Eigen::Matrix2d& m, double& s1, double& s2) {
+  const double e = 0.5 * (m(0, 0) + m(1, 1)), f = 0.5 * (m(0, 0) - m(1, 1));
+  const double g = 0.5 * (m(1, 0) + m(0, 1)), h = 0.5 * (m(1, 0) - m(0, 1));
+  s1 = std::hypot(e, h) + std::hypot(f, g);
+  s2 = m.determinant() / s1;
+}
+
+}  // namespace
+
+const char* toString(FaceStatus status) {
+  switch (status) {
+    case FaceStatus::Ok: return "ok";
+    case FaceStatus::ZeroArea3d: return "zero_area_3d";
+    case FaceStatus::ZeroAreaUv: return "zero_area_uv";
+    case FaceStatus::Flipped: return "flipped";
+    case FaceStatus::Backfacing: return "backfacing";
+    case FaceStatus::Invalid: return "invalid";
+    case FaceStatus::PoleFace: return "pole_face";
+  }
+  return "invalid";
+}
+
+bool isMeasured(FaceStatus status) {
+  return status == FaceStatus::Ok || status == FaceStatus::PoleFace || status == FaceStatus::Backfacing ||
+         status == FaceStatus::Flipped;
+}
+
+std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const DistortionOptions& options) {
+  const std::size_t faceCount = mesh.triangles.size();
+  UVTK_CHECK(uv.uv.size() == 3 * faceCount && uv.faceFlags.size() == faceCount);
+  UVTK_CHECK(uv.cornerInvalid.empty() || uv.cornerInvalid.size() == 3 * faceCount);
+  auto position = [&](std::size_t f, int k) -> const Vec3& { return mesh.positions[mesh.triangles[f][k]]; };
+
+  std::vector<TriangleAreas> areas(faceCount);
+  std::vector<FaceDistortion> faces(faceCount);
+  // Turned away from the projector: mirrored by design.
+  auto turnedAway = [&](std::size_t f) {
+    return options.projectionDirection && areas[f].normal.dot(*options.projectionDirection) < 0.0;
+  };
+
+  // First pass: areas, and the statuses that need no mesh-wide decision.
+  double vote = 0.0;  // 3D area voting for counter-clockwise UV winding minus area against it
+  for (std::size_t f = 0; f < faceCount; ++f) {
+    const Vec2* t = &uv.uv[3 * f];
+    const TriangleAreas& a = areas[f] = triangleAreas(position(f, 0), position(f, 1), position(f, 2), t[0], t[1], t[2]);
+    bool invalid = uv.faceHas(f, kFaceInvalid);
+    for (int k = 0; k < 3 && !uv.cornerInvalid.empty(); ++k) invalid = invalid || uv.cornerInvalid[3 * f + k] != 0;
+    FaceDistortion& face = faces[f];
+    face.area3d = a.area3d;
+    face.areaUv = invalid ? 0.0 : std::fabs(a.signedAreaUv);
+    if (invalid) {
+      face.status = FaceStatus::Invalid;
+    } else if (a.area3d <= kZeroAreaRelative * a.longestEdge3d) {
+      face.status = FaceStatus::ZeroArea3d;
+    } else if (face.areaUv <= kZeroAreaRelative * a.longestEdgeUv) {
+      face.status = FaceStatus::ZeroAreaUv;
+    } else {
+      face.status = FaceStatus::Ok;  // until the majority winding is known
+      vote += (a.signedAreaUv > 0.0) != turnedAway(f) ? a.area3d : -a.area3d;
+    }
+  }
+  const double majority = vote >= 0.0 ? 1.0 : -1.0;
+
+  // Second pass: pole and mirrored faces, and the measures of every face with a Jacobian.
+  for (std::size_t f = 0; f < faceCount; ++f) {
+    FaceDistortion& face = faces[f];
+    if (face.status != FaceStatus::Ok) continue;
+    const bool mirrored = areas[f].signedAreaUv * majority < 0.0;
+    if (uv.faceHas(f, kFacePole)) face.status = FaceStatus::PoleFace;
+    else if (mirrored) face.status = turnedAway(f) ? FaceStatus::Backfacing : FaceStatus::Flipped;
+    const Vec2* t = &uv.uv[3 * f];
+    const Eigen::Matrix2d j = jacobian(position(f, 0), position(f, 1), position(f, 2), t[0], t[1], t[2]);
+    singularValues(j, face.sigmaMax, face.sigmaMin);
+    face.sigmaMin *= majority;
+    // Sander et al. 2001, "Texture stretch metric": UV -> surface has singular values G = 1/|s2|, g = 1/s1.
+    const double bigG = 1.0 / std::fabs(face.sigmaMin), smallG = 1.0 / face.sigmaMax;
+    // Sander et al. 2001, "Texture stretch metric": L2 = sqrt((G^2 + g^2) / 2), the root-mean-square stretch.
+    face.l2Stretch = std::sqrt(0.5 * (bigG * bigG + smallG * smallG));
+    // Sander et al. 2001, "Texture stretch metric": Linf = G, the greatest stretch in any direction.
+    face.linfStretch = bigG;
+    // Conformal distortion: s1/|s2|, the dilatation of a quasi-conformal map, 1 where angles are preserved.
+    face.angleDistortion = face.sigmaMax / std::fabs(face.sigmaMin);
+    face.areaRatio = face.areaUv / face.area3d;
+  }
+
+  // Third pass: the area ratio normalised by the ok faces' totals, r = (Auv/A3) (sum(A3)/sum(Auv)).
+  const double surfacePerUv = okAreaTotals(faces).surfacePerUv();
+  for (FaceDistortion& face : faces)
+    if (isMeasured(face.status)) face.areaDistortion = std::log2(face.areaRatio * surfacePerUv);
+  return faces;
+}
+
+AreaTotals okAreaTotals(const std::vector<FaceDistortion>& faces) {
+  AreaTotals totals;
+  for (const FaceDistortion& face : faces)
+    if (face.status == FaceStatus::Ok) totals.surface += face.area3d, totals.uv += face.areaUv;
+  return totals;
+}
+
+}  // namespace uvtk::analysis

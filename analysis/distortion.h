@@ -1,0 +1,81 @@
+// Per-triangle distortion of a UV layout: the linear map from each 3D triangle to its UV
+// triangle, its singular values and the stretch measures of Sander, Snyder, Gortler and Hoppe,
+// "Texture Mapping Progressive Meshes", SIGGRAPH 2001.
+//
+// For a face, J is the Jacobian of the map surface -> UV, written in an orthonormal frame of the
+// triangle's plane; s1 >= |s2| are its singular values. Sander et al. measure the inverse map
+// UV -> surface, whose singular values are G = 1/|s2| (largest) and g = 1/s1 (smallest).
+//
+// Status of a face, the first that applies (priority order):
+//   invalid       the face has kFaceInvalid or a corner with cornerInvalid set
+//   zero_area_3d  A3  <= 1e-14 (longest 3D edge)^2: the triangle is a point or a segment
+//   zero_area_uv  Auv <= 1e-14 (longest UV edge)^2
+//   pole_face     the face has kFacePole
+//   backfacing    mirrored, and its 3D normal n satisfies n . direction < 0 for the caller's
+//                 projection direction: planar projections mirror the faces turned away by design
+//   flipped       mirrored: its UV winding is opposite to the mesh's majority winding
+//   ok
+// The zero-area thresholds are relative, so they do not depend on the units; 1e-14 lies about
+// 50 times above the rounding noise of a cross product (2^-52 times the squared edge length).
+//
+// Majority winding: each non-degenerate, valid face (status ok, pole_face, backfacing or flipped)
+// votes its 3D area for the sign of its UV signed area; a face turned away from the projection
+// direction (n . direction < 0) votes with the opposite sign, since its mirroring is expected.
+// The sign with the larger total wins; a tie goes to counter-clockwise (positive).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "core/math.h"
+#include "core/mesh.h"
+#include "core/uv_map.h"
+
+namespace uvtk::analysis {
+
+enum class FaceStatus : std::uint8_t { Ok, ZeroArea3d, ZeroAreaUv, Flipped, Backfacing, Invalid, PoleFace };
+constexpr int kFaceStatusCount = 7;
+
+// "ok", "zero_area_3d", "zero_area_uv", "flipped", "backfacing", "invalid", "pole_face".
+const char* toString(FaceStatus status);
+
+// Whether a face of this status has a non-degenerate Jacobian, so that its measures are defined:
+// ok, pole_face, backfacing and flipped faces.
+bool isMeasured(FaceStatus status);
+
+// The measures of one face. area3d is always set, areaUv unless the face is invalid; the
+// Jacobian's measures only where isMeasured(status), else they are 0. Nothing is NaN or infinite.
+struct FaceDistortion {
+  FaceStatus status = FaceStatus::Invalid;
+  double area3d = 0.0;  // A3, the triangle's area in object space
+  double areaUv = 0.0;  // Auv, the absolute area of its UV triangle
+  double sigmaMax = 0.0;  // s1, the larger singular value of J
+  double sigmaMin = 0.0;  // s2, |s2| <= s1; negative when the face is mirrored against the majority
+  double l2Stretch = 0.0;        // sqrt((G^2 + g^2) / 2), G = 1/|s2|, g = 1/s1; in UV units
+  double linfStretch = 0.0;      // G
+  double angleDistortion = 0.0;  // s1 / |s2|: 1 where the map is conformal
+  double areaRatio = 0.0;        // Auv / A3, not normalised
+  double areaDistortion = 0.0;   // log2(r), r = areaRatio sum(A3) / sum(Auv) over the ok faces: 0 where equiareal
+};
+
+struct DistortionOptions {
+  // The direction the projector looks along, in object space (for the plane projector the image
+  // of local +z: localFromObject.inverse().linear().col(2)). Unset: no face is backfacing.
+  std::optional<Vec3> projectionDirection;
+};
+
+// One FaceDistortion per triangle of `mesh`. Precondition: `uv` has 3 corners per triangle.
+std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const DistortionOptions& options = {});
+
+// The sums sum(A3) and sum(Auv) over the status-ok faces: the normalisation of every mesh-wide
+// value. Faces of any other status are reported by count only.
+struct AreaTotals {
+  double surface = 0.0;  // sum(A3)
+  double uv = 0.0;       // sum(Auv)
+  // sum(A3) / sum(Auv): multiplies Auv/A3 into the normalised ratio r; 1 when there is no ok face.
+  double surfacePerUv() const { return surface > 0.0 && uv > 0.0 ? surface / uv : 1.0; }
+};
+AreaTotals okAreaTotals(const std::vector<FaceDistortion>& faces);
+
+}  // namespace uvtk::analysis

@@ -1,0 +1,107 @@
+#include "analysis/seams.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+
+#include "core/error.h"
+
+namespace uvtk::analysis {
+
+namespace {
+
+constexpr double kUvTolerance = 1e-6;
+
+bool cornerValid(const UvMap& uv, std::size_t corner) {
+  return uv.cornerInvalid.empty() || uv.cornerInvalid[corner] == 0;
+}
+
+// The distance of x from the nearest integer.
+double offInteger(double x) { return std::fabs(x - std::round(x)); }
+
+// One side of an edge: the face, and its corners at the edge's lower and higher vertex index.
+struct HalfEdge {
+  int lower, higher;  // vertex indices, lower < higher
+  std::size_t cornerLower, cornerHigher;  // indices into uv.uv
+};
+
+}  // namespace
+
+std::vector<int> fannedPoleVertices(const Mesh& mesh, const UvMap& uv) {
+  UVTK_CHECK(uv.uv.size() == 3 * mesh.triangles.size() && uv.faceFlags.size() == mesh.triangles.size());
+  enum : std::uint8_t { kUnseen, kSeen, kPole };
+  std::vector<std::uint8_t> state(mesh.positions.size(), kUnseen);
+  std::vector<double> firstU(mesh.positions.size(), 0.0);
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    if (!uv.faceHas(f, kFacePole)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t corner = 3 * f + static_cast<std::size_t>(k);
+      const auto v = static_cast<std::size_t>(mesh.triangles[f][k]);
+      if (!cornerValid(uv, corner)) continue;
+      const double u = uv.uv[corner].x();
+      if (state[v] == kUnseen) state[v] = kSeen, firstU[v] = u;
+      // Any two of the vertex's u values differ by a non-integer exactly when one differs so from the first.
+      else if (offInteger(u - firstU[v]) > kUvTolerance) state[v] = kPole;
+    }
+  }
+  std::vector<int> poles;
+  for (std::size_t v = 0; v < state.size(); ++v)
+    if (state[v] == kPole) poles.push_back(static_cast<int>(v));
+  return poles;
+}
+
+SeamEdges classifySeamEdges(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices) {
+  UVTK_CHECK(uv.uv.size() == 3 * mesh.triangles.size());
+  std::vector<char> isPole(mesh.positions.size(), 0);
+  for (int v : poleVertices) {
+    UVTK_CHECK(v >= 0 && static_cast<std::size_t>(v) < isPole.size());
+    isPole[static_cast<std::size_t>(v)] = 1;
+  }
+
+  // Every face's three edges, sorted so that the sides of one edge are adjacent.
+  std::vector<HalfEdge> halfEdges;
+  halfEdges.reserve(3 * mesh.triangles.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int next = (k + 1) % 3;
+      HalfEdge e{mesh.triangles[f][k], mesh.triangles[f][next], 3 * f + std::size_t(k), 3 * f + std::size_t(next)};
+      if (e.lower > e.higher) std::swap(e.lower, e.higher), std::swap(e.cornerLower, e.cornerHigher);
+      halfEdges.push_back(e);
+    }
+  std::sort(halfEdges.begin(), halfEdges.end(), [](const HalfEdge& a, const HalfEdge& b) {
+    return std::pair(a.lower, a.higher) < std::pair(b.lower, b.higher);
+  });
+
+  SeamEdges seams;
+  for (std::size_t first = 0, end; first < halfEdges.size(); first = end) {
+    const HalfEdge& a = halfEdges[first];
+    end = first + 1;
+    while (end < halfEdges.size() && halfEdges[end].lower == a.lower && halfEdges[end].higher == a.higher) ++end;
+    if (end - first != 2) continue;  // a boundary or non-manifold edge
+    const HalfEdge& b = halfEdges[first + 1];
+    if (!cornerValid(uv, a.cornerLower) || !cornerValid(uv, a.cornerHigher) || !cornerValid(uv, b.cornerLower) ||
+        !cornerValid(uv, b.cornerHigher))
+      continue;
+    const std::pair<int, Vec2> differences[2] = {{a.lower, uv.uv[a.cornerLower] - uv.uv[b.cornerLower]},
+                                                 {a.higher, uv.uv[a.cornerHigher] - uv.uv[b.cornerHigher]}};
+    bool compared = false, differs = false, wraps = true;
+    double shift = 0.0;  // the integer u offset of the first compared endpoint
+    for (const auto& [vertex, d] : differences) {
+      if (isPole[static_cast<std::size_t>(vertex)]) continue;
+      differs = differs || std::fabs(d.x()) > kUvTolerance || std::fabs(d.y()) > kUvTolerance;
+      const bool integerShift =
+          std::fabs(d.x()) > 0.5 && offInteger(d.x()) <= kUvTolerance && std::fabs(d.y()) <= kUvTolerance;
+      if (!compared) shift = std::round(d.x());
+      wraps = wraps && integerShift && std::round(d.x()) == shift;
+      compared = true;
+    }
+    if (!compared || !differs) continue;
+    const double length = (mesh.positions[a.lower] - mesh.positions[a.higher]).norm();
+    if (wraps) ++seams.wrapEdges, seams.wrapLength += length;
+    else ++seams.cutEdges, seams.cutLength += length;
+  }
+  return seams;
+}
+
+}  // namespace uvtk::analysis

@@ -1,0 +1,38 @@
+// Seams and fanned poles of a UV layout, read from the per-corner UVs alone.
+//
+// An edge is a pair of vertex indices; it is examined when exactly two triangles have it (a
+// boundary or non-manifold edge is never a seam) and none of the four corners at its endpoints
+// is invalid. It is a seam edge when the two faces give one of its endpoints UVs that differ by
+// more than 1e-6 in u or in v. Endpoints that are pole vertices are left out of the comparison:
+// a fanned pole has a different u in every face by construction (docs/conventions.md §5).
+//   wrap seam: at every compared endpoint the UVs differ by the same non-zero integer in u
+//              (within 1e-6) and agree in v (within 1e-6): the two sides meet under REPEAT.
+//   cut:       any other difference.
+// An edge whose endpoints are both poles is not classified.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "core/mesh.h"
+#include "core/uv_map.h"
+
+namespace uvtk::analysis {
+
+struct SeamEdges {
+  std::size_t wrapEdges = 0, cutEdges = 0;
+  double wrapLength = 0.0, cutLength = 0.0;  // total 3D edge length of each class
+};
+
+// Pole vertices of a fanned pole: vertices of kFacePole faces whose valid corners in those
+// faces have u values that differ by more than 1e-6 from any integer. A ring vertex on the seam
+// differs by exactly 1 between its pole faces and is not a pole; a pole mapped with
+// PoleMode::None (u = 0 everywhere) is not detected, and needs no exclusion. Ascending order.
+std::vector<int> fannedPoleVertices(const Mesh& mesh, const UvMap& uv);
+
+// Classifies the seam edges, leaving out the endpoints listed in `poleVertices` (any order), for
+// example fannedPoleVertices(mesh, uv) or a projector's own list.
+// Precondition: `uv` has 3 corners per triangle.
+SeamEdges classifySeamEdges(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices);
+
+}  // namespace uvtk::analysis

@@ -1,0 +1,39 @@
+// Area-weighted statistics of a per-face measure: mean, percentiles, extremes and a histogram,
+// each face counting with its 3D area.
+#pragma once
+
+#include <vector>
+
+namespace uvtk::analysis {
+
+enum class BinSpacing {
+  Linear,  // equal widths over [lo, hi]
+  Log2,    // equal widths of log2(value): for ratios such as stretch and angle distortion
+};
+
+struct Histogram {
+  double lo = 0.0, hi = 0.0;  // the smallest and the largest value
+  BinSpacing spacing = BinSpacing::Linear;
+  std::vector<double> weightFraction;  // per bin, its fraction of the total weight; sums to 1
+
+  // Bin i holds [edge(i), edge(i + 1)), the last bin also hi; edge(bins) = hi.
+  double edge(int i) const;
+};
+
+struct Statistics {
+  double totalWeight = 0.0;
+  double mean = 0.0;  // weighted mean
+  // Weighted percentiles: the smallest value v such that the values <= v carry at least that
+  // fraction of the total weight (the lower inverse of the weighted distribution; no interpolation).
+  double p50 = 0.0, p90 = 0.0, p99 = 0.0;
+  double min = 0.0, max = 0.0;
+  Histogram histogram;  // `bins` bins over [min, max]; all the weight in bin 0 when min = max
+};
+
+// Statistics of values[i] with weights[i] >= 0. Entries of zero weight still count for min and
+// max. Empty input gives zeros and empty bins. Preconditions: equal sizes, bins >= 1, and
+// values > 0 for Log2 spacing.
+Statistics weightedStatistics(const std::vector<double>& values, const std::vector<double>& weights,
+                              BinSpacing spacing, int bins = 32);
+
+}  // namespace uvtk::analysis

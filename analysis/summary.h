@@ -1,0 +1,52 @@
+// The mesh-wide report of a UV layout: face counts per status, the stretch of Sander, Snyder,
+// Gortler and Hoppe, "Texture Mapping Progressive Meshes" (SIGGRAPH 2001) over the whole mesh,
+// area-weighted statistics of the per-face measures, seams, poles, UV bounds and overlap.
+//
+// Only status-ok faces enter the stretch values and the statistics (the sums sum(A3), sum(Auv)
+// included); pole, flipped, backfacing, degenerate and invalid faces are reported by count.
+// The stretch values are normalised by sqrt(sum(Auv) / sum(A3)), so that they do not depend on
+// the scale of the layout: an isometry up to a uniform scale scores 1, and nothing scores below 1.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "analysis/distortion.h"
+#include "analysis/overlap.h"
+#include "analysis/seams.h"
+#include "analysis/statistics.h"
+#include "core/mesh.h"
+#include "core/uv_map.h"
+
+namespace uvtk::analysis {
+
+struct StatusCounts {
+  std::array<std::size_t, kFaceStatusCount> faces{};
+  std::size_t operator[](FaceStatus status) const { return faces[static_cast<std::size_t>(status)]; }
+};
+
+struct Summary {
+  StatusCounts statusCounts;
+  // sqrt(sum(A3 L2^2) / sum(A3)) sqrt(sum(Auv) / sum(A3)); 0 when there is no ok face.
+  double l2Stretch = 0.0;
+  // max(Linf) sqrt(sum(Auv) / sum(A3)); 0 when there is no ok face.
+  double linfStretch = 0.0;
+  // Over the ok faces, weighted by A3, 32 bins each. The per-face L2 and Linf enter normalised
+  // as the mesh values are (a face at 1 is stretched like an isometric layout of the same area).
+  // Ratios get log2-spaced bins (angle, L2, Linf); area distortion, already a log2, linear bins.
+  Statistics angleDistortion, areaDistortion, l2Stretches, linfStretches;
+  SeamEdges seams;                 // classifySeamEdges with the fanned pole vertices
+  std::size_t poleFaces = 0;       // faces flagged kFacePole, whatever their status
+  std::vector<int> poleVertices;   // fannedPoleVertices
+  Eigen::AlignedBox2d uvBounds;    // over every valid corner; empty when there is none
+  Overlap overlap;
+};
+
+// The report for `faces` = measureFaces(mesh, uv, ...). Preconditions: matching sizes.
+Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDistortion>& faces,
+                  int overlapResolution = 1024);
+
+}  // namespace uvtk::analysis

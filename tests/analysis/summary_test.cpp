@@ -1,0 +1,321 @@
+// The mesh-wide report: Sander's normalised stretch, weighted statistics, seams, poles, bounds
+// and overlap, on hand-made layouts and on the projectors' output.
+#include "analysis/summary.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "meshes/generators.h"
+#include "param/projector.h"
+
+namespace uvtk::analysis {
+namespace {
+
+// A mesh and per-corner UVs, every corner valid and no face flagged.
+struct Layout {
+  Mesh mesh;
+  UvMap uv;
+};
+
+Layout makeLayout(std::vector<Vec3> positions, std::vector<Triangle> triangles, std::vector<Vec2> uvs) {
+  Layout l;
+  l.mesh.positions = std::move(positions);
+  l.mesh.triangles = std::move(triangles);
+  l.uv.uv = std::move(uvs);
+  l.uv.faceFlags.assign(l.mesh.triangles.size(), kFaceOk);
+  l.uv.cornerInvalid.assign(l.uv.uv.size(), 0);
+  return l;
+}
+
+// Separate triangles in the plane z = 0 whose UVs are their (x, y).
+Layout flatTriangles(const std::vector<Vec2>& corners) {
+  std::vector<Vec3> positions;
+  std::vector<Triangle> triangles;
+  for (const Vec2& c : corners) positions.push_back({c.x(), c.y(), 0.0});
+  for (int f = 0; 3 * f < int(corners.size()); ++f) triangles.push_back({3 * f, 3 * f + 1, 3 * f + 2});
+  return makeLayout(positions, triangles, corners);
+}
+
+Summary summarizeLayout(const Layout& l, int overlapResolution = 1024) {
+  return summarize(l.mesh, l.uv, measureFaces(l.mesh, l.uv), overlapResolution);
+}
+
+param::Projection projectSphere(int longitudes, int latitudes, param::SeamMode seam, double frameTurn = 0.0) {
+  param::ProjectorOptions o;
+  o.surface = param::SurfaceKind::Sphere;
+  o.seam = seam;
+  o.placement.fit = param::Fit::None;
+  if (frameTurn != 0.0) {  // the seam half-plane turned about z, off the generator's vertices
+    param::ExplicitFrame frame;
+    frame.refDir = Vec3(std::cos(frameTurn), std::sin(frameTurn), 0.0);
+    o.placement.frame = frame;
+  }
+  return param::project(meshes::latLongSphere(longitudes, latitudes), o);
+}
+
+void expectFinite(const Statistics& s) {
+  for (double x : {s.totalWeight, s.mean, s.p50, s.p90, s.p99, s.min, s.max, s.histogram.lo, s.histogram.hi})
+    EXPECT_TRUE(std::isfinite(x));
+  for (double x : s.histogram.weightFraction) EXPECT_TRUE(std::isfinite(x));
+}
+
+// ---- Sander et al.'s mesh-wide stretch ----
+
+// UV = 2 x: every face has L2 = Linf = 1/2, and the normalisation sqrt(sum Auv / sum A3) = 2
+// brings the mesh values to 1, as for the isometry.
+TEST(Summarize, UniformScaleNormalisesToOne) {
+  Layout l = flatTriangles({{0, 0}, {1, 0}, {0, 1}, {1, 0}, {1, 1}, {0, 1}});
+  for (Vec2& t : l.uv.uv) t *= 2.0;
+  const Summary s = summarizeLayout(l);
+  EXPECT_DOUBLE_EQ(s.l2Stretch, 1.0);
+  EXPECT_DOUBLE_EQ(s.linfStretch, 1.0);
+  EXPECT_DOUBLE_EQ(s.l2Stretches.max, 1.0);
+  EXPECT_DOUBLE_EQ(s.areaDistortion.max, 0.0);
+}
+
+// Two unit right triangles, one mapped as it is and one scaled by 2: A3 = 1/2 each, Auv = 1/2
+// and 2, per-face L2 = 1 and 1/2. L2(M) = sqrt((1/2 + 1/8) / 1) sqrt(5/2) = 5/4;
+// Linf(M) = max(1, 1/2) sqrt(5/2). Normalised area ratios r = 0.4 and 1.6.
+TEST(Summarize, MeshStretchOfTwoDifferentlyScaledFaces) {
+  Layout l = flatTriangles({{0, 0}, {1, 0}, {0, 1}, {2, 0}, {3, 0}, {2, 1}});
+  for (int k = 3; k < 6; ++k) l.uv.uv[k] *= 2.0;
+  const Summary s = summarizeLayout(l);
+  EXPECT_NEAR(s.l2Stretch, 1.25, 1e-15);
+  EXPECT_NEAR(s.linfStretch, std::sqrt(2.5), 1e-15);
+  EXPECT_NEAR(s.areaDistortion.min, std::log2(0.4), 1e-15);
+  EXPECT_NEAR(s.areaDistortion.max, std::log2(1.6), 1e-15);
+  EXPECT_NEAR(s.areaDistortion.mean, 0.5 * (std::log2(0.4) + std::log2(1.6)), 1e-15);
+  EXPECT_EQ(s.statusCounts[FaceStatus::Ok], 2u);
+}
+
+// On a mapped sphere the normalised stretch is at least 1 (Cauchy-Schwarz), and every value of
+// the report is finite.
+TEST(Summarize, SphereReportIsConsistent) {
+  const param::Projection p = projectSphere(32, 16, param::SeamMode::Shift);
+  const std::vector<FaceDistortion> faces = measureFaces(p.mesh, p.uv);
+  const Summary s = summarize(p.mesh, p.uv, faces);
+  EXPECT_EQ(s.statusCounts[FaceStatus::Ok], 2u * 32u * 14u);  // two per quad, 14 quad bands
+  EXPECT_EQ(s.statusCounts[FaceStatus::PoleFace], 64u);
+  EXPECT_EQ(s.poleFaces, 64u);
+  EXPECT_GT(s.l2Stretch, 1.0);
+  EXPECT_GE(s.linfStretch, s.l2Stretch);
+  for (const Statistics* st : {&s.angleDistortion, &s.areaDistortion, &s.l2Stretches, &s.linfStretches}) {
+    expectFinite(*st);
+    EXPECT_NEAR(st->totalWeight, okAreaTotals(faces).surface, 1e-12);
+    EXPECT_LE(st->min, st->p50);
+    EXPECT_LE(st->p50, st->p90);
+    EXPECT_LE(st->p90, st->p99);
+    EXPECT_LE(st->p99, st->max);
+  }
+  EXPECT_GE(s.angleDistortion.min, 1.0);
+  EXPECT_NEAR(s.linfStretches.max, s.linfStretch, 1e-15);
+  EXPECT_EQ(s.uvBounds.min(), Vec2(0, 0));  // the seam's vertices shifted to u = 1; the poles at v = 0, 1
+  EXPECT_EQ(s.uvBounds.max(), Vec2(1, 1));
+}
+
+// Nothing but degenerate and invalid faces: counts, zeros, no NaN.
+TEST(Summarize, NoOkFaceGivesZerosNotNaN) {
+  Layout l = makeLayout({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 1, 3}, {0, 1, 3}},
+                        {{0, 0}, {1, 0}, {0, 1}, {0, 0}, {1, 1}, {2, 2}, {0, 0}, {1, 0}, {0, 1}});
+  l.uv.cornerInvalid[8] = 1;
+  const Summary s = summarizeLayout(l);
+  EXPECT_EQ(s.statusCounts[FaceStatus::ZeroArea3d], 1u);
+  EXPECT_EQ(s.statusCounts[FaceStatus::ZeroAreaUv], 1u);
+  EXPECT_EQ(s.statusCounts[FaceStatus::Invalid], 1u);
+  EXPECT_EQ(s.statusCounts[FaceStatus::Ok], 0u);
+  EXPECT_EQ(s.l2Stretch, 0.0);
+  EXPECT_EQ(s.linfStretch, 0.0);
+  for (const Statistics* st : {&s.angleDistortion, &s.areaDistortion, &s.l2Stretches, &s.linfStretches}) {
+    expectFinite(*st);
+    EXPECT_EQ(st->totalWeight, 0.0);
+  }
+  EXPECT_EQ(s.overlap.coveredPixels, 0u);
+  EXPECT_EQ(s.overlap.fraction(), 0.0);
+  // The bounds leave out the invalid corner only.
+  EXPECT_EQ(s.uvBounds.min(), Vec2(0, 0));
+  EXPECT_EQ(s.uvBounds.max(), Vec2(2, 2));
+}
+
+TEST(Summarize, UvBoundsSkipInvalidCorners) {
+  Layout l = flatTriangles({{0.2, 0.3}, {0.8, 0.3}, {0.2, 0.9}});
+  l.uv.uv[0] = Vec2::Zero();  // what a projector writes for a corner without a UV
+  l.uv.cornerInvalid[0] = 1;
+  const Summary s = summarizeLayout(l);
+  EXPECT_EQ(s.uvBounds.min(), Vec2(0.2, 0.3));
+  EXPECT_EQ(s.uvBounds.max(), Vec2(0.8, 0.9));
+}
+
+// ---- Weighted statistics ----
+
+// Values 1..5 with weights 1, 4, 2, 2.5, 0.5 (total 10): running weights 1, 5, 7, 9.5, 10.
+// p50 is the first value whose running weight reaches 5: 2 (reached exactly); p90: 4; p99: 5.
+TEST(WeightedStatistics, PercentilesMeanAndHistogramOfAHandMadeSet) {
+  const Statistics s = weightedStatistics({4, 2, 5, 1, 3}, {2.5, 4, 0.5, 1, 2}, BinSpacing::Linear, 4);
+  EXPECT_DOUBLE_EQ(s.totalWeight, 10.0);
+  EXPECT_DOUBLE_EQ(s.mean, 2.75);  // (1 + 8 + 6 + 10 + 2.5) / 10
+  EXPECT_EQ(s.p50, 2.0);
+  EXPECT_EQ(s.p90, 4.0);
+  EXPECT_EQ(s.p99, 5.0);
+  EXPECT_EQ(s.min, 1.0);
+  EXPECT_EQ(s.max, 5.0);
+  // Bins [1, 2), [2, 3), [3, 4), [4, 5]: the maximum falls into the last.
+  const std::vector<double> expected = {0.1, 0.4, 0.2, 0.3};
+  ASSERT_EQ(s.histogram.weightFraction.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(s.histogram.weightFraction[i], expected[i], 1e-15);
+  for (int i = 0; i <= 4; ++i) EXPECT_DOUBLE_EQ(s.histogram.edge(i), 1.0 + i);
+}
+
+TEST(WeightedStatistics, EqualWeightsGiveTheLowerMedian) {
+  const Statistics s = weightedStatistics({1, 2, 3, 4}, {1, 1, 1, 1}, BinSpacing::Linear);
+  EXPECT_EQ(s.p50, 2.0);
+  EXPECT_EQ(s.p90, 4.0);
+  EXPECT_DOUBLE_EQ(s.mean, 2.5);
+  EXPECT_EQ(s.histogram.weightFraction.size(), 32u);
+}
+
+// Log2 spacing over [1, 8] with 3 bins: edges 1, 2, 4, 8.
+TEST(WeightedStatistics, Log2SpacedBins) {
+  const Statistics s = weightedStatistics({1, 3, 5, 8}, {1, 1, 1, 1}, BinSpacing::Log2, 3);
+  EXPECT_DOUBLE_EQ(s.histogram.edge(1), 2.0);
+  EXPECT_DOUBLE_EQ(s.histogram.edge(2), 4.0);
+  EXPECT_EQ(s.histogram.edge(3), 8.0);
+  const std::vector<double> expected = {0.25, 0.25, 0.5};
+  for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_DOUBLE_EQ(s.histogram.weightFraction[i], expected[i]);
+}
+
+TEST(WeightedStatistics, OneValueAndNoValue) {
+  const Statistics one = weightedStatistics({3, 3}, {1, 2}, BinSpacing::Log2, 4);
+  EXPECT_EQ(one.p50, 3.0);
+  EXPECT_EQ(one.histogram.weightFraction, (std::vector<double>{1, 0, 0, 0}));
+  const Statistics none = weightedStatistics({}, {}, BinSpacing::Linear, 4);
+  EXPECT_EQ(none.mean, 0.0);
+  EXPECT_EQ(none.histogram.weightFraction, (std::vector<double>(4, 0.0)));
+}
+
+// ---- Seams and poles ----
+
+// latLongSphere(16, 8) has a vertex on the seam half-plane (y = 0, x > 0) in every ring, so the
+// seam runs along the meridian's 8 edges, one per stack, the first and the last ending at a pole.
+// Shift moves those vertices to u = 1 in the faces west of the seam: both endpoints of the inner
+// 6 edges differ by exactly (1, 0); the 2 polar ones differ so at their ring end and their pole
+// end is left out (a fanned pole has a different u in every face). 8 wrap edges, no cut; their
+// length is 8 chords of pi/8, the same as the projector reports.
+TEST(SeamEdges, ShiftedSphereHasItsMeridianAsWrapSeam) {
+  const param::Projection p = projectSphere(16, 8, param::SeamMode::Shift);
+  const Summary s = summarize(p.mesh, p.uv, measureFaces(p.mesh, p.uv));
+  EXPECT_EQ(s.seams.wrapEdges, 8u);
+  EXPECT_EQ(s.seams.cutEdges, 0u);
+  EXPECT_NEAR(s.seams.wrapLength, 8 * 2 * std::sin(kPi / 16), 1e-14);
+  EXPECT_EQ(s.seams.wrapEdges, p.summary.seamEdges);
+  EXPECT_NEAR(s.seams.wrapLength, p.summary.seamLength, 1e-14);
+  EXPECT_EQ(s.poleVertices, (std::vector<int>{0, 113}));  // the north pole first, the south pole last
+  EXPECT_EQ(s.poleVertices, p.summary.poleVertexList);
+}
+
+// Cut splits the straddling triangles along the seam. With the seam turned off the generator's
+// vertices, it crosses each of the 7 rings' edges and the 6 quad bands' diagonals: 13 new
+// vertices. Each new vertex carries u = 1 on the high side and u = 0 on the low side, which is
+// an integer offset: the cut's edges are wrap seams, 2 per quad band and 1 per polar band (from
+// the pole): 14 wrap edges, no cut. Without the turn the seam passes through vertices and the
+// cut changes nothing.
+TEST(SeamEdges, CutSphereHasWrapSeamsAlongTheCut) {
+  const param::Projection p = projectSphere(16, 8, param::SeamMode::Cut, 0.1);
+  const Summary s = summarize(p.mesh, p.uv, measureFaces(p.mesh, p.uv));
+  EXPECT_EQ(p.summary.addedVertices, 13u);
+  EXPECT_EQ(s.seams.wrapEdges, 14u);
+  EXPECT_EQ(s.seams.cutEdges, 0u);
+  EXPECT_NEAR(s.seams.wrapLength, p.summary.seamLength, 1e-14);
+  EXPECT_EQ(s.uvBounds.max().x(), 1.0);  // the cut layout lies in [0, 1]
+
+  const param::Projection aligned = projectSphere(16, 8, param::SeamMode::Cut);
+  const Summary a = summarize(aligned.mesh, aligned.uv, measureFaces(aligned.mesh, aligned.uv));
+  EXPECT_EQ(aligned.summary.addedVertices, 0u);
+  EXPECT_EQ(a.seams.wrapEdges, 8u);
+  EXPECT_EQ(a.seams.cutEdges, 0u);
+}
+
+// Two triangles sharing the edge (1, 2) of length sqrt 2; the second face's UVs are the first's
+// layout moved by `offset` at the shared vertices.
+Layout twoTriangles(const Vec2& offset) {
+  return makeLayout({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, {{0, 1, 2}, {2, 1, 3}},
+                    {{0, 0}, {1, 0}, {0, 1}, Vec2(0, 1) + offset, Vec2(1, 0) + offset, Vec2(1, 1) + offset});
+}
+
+TEST(SeamEdges, HandMadeWrapAndCut) {
+  const Layout wrap = twoTriangles({1, 0});
+  const SeamEdges w = classifySeamEdges(wrap.mesh, wrap.uv, {});
+  EXPECT_EQ(w.wrapEdges, 1u);
+  EXPECT_EQ(w.cutEdges, 0u);
+  EXPECT_DOUBLE_EQ(w.wrapLength, std::sqrt(2.0));
+
+  for (const Vec2& offset : {Vec2(0.3, 0), Vec2(1, 0.5), Vec2(0, 1)}) {
+    const Layout cut = twoTriangles(offset);
+    const SeamEdges c = classifySeamEdges(cut.mesh, cut.uv, {});
+    EXPECT_EQ(c.wrapEdges, 0u);
+    EXPECT_EQ(c.cutEdges, 1u);
+    EXPECT_DOUBLE_EQ(c.cutLength, std::sqrt(2.0));
+  }
+
+  const Layout none = twoTriangles({0, 0});  // continuous: no seam; boundary edges never are
+  const SeamEdges n = classifySeamEdges(none.mesh, none.uv, {});
+  EXPECT_EQ(n.wrapEdges + n.cutEdges, 0u);
+
+  // Endpoints at different integer offsets, (1, 0) at one and (2, 0) at the other: not a translation.
+  Layout twisted = twoTriangles({1, 0});
+  twisted.uv.uv[4].x() += 1.0;
+  EXPECT_EQ(classifySeamEdges(twisted.mesh, twisted.uv, {}).cutEdges, 1u);
+
+  // A pole endpoint is left out: only the other endpoint's offset decides.
+  Layout polar = twoTriangles({1, 0});
+  polar.uv.uv[3].x() += 0.25;  // vertex 2 fanned
+  EXPECT_EQ(classifySeamEdges(polar.mesh, polar.uv, {}).cutEdges, 1u);
+  EXPECT_EQ(classifySeamEdges(polar.mesh, polar.uv, {2}).wrapEdges, 1u);
+}
+
+// ---- Overlap ----
+
+// Two unit right triangles, the second moved by (1/4, 1/4): they share a right triangle with
+// legs 1/2 (area 1/8) of a union of area 7/8, so the overlapped fraction is 1/7.
+TEST(Overlap, TwoOverlappingTrianglesMatchTheirAreas) {
+  const Layout l = flatTriangles({{0, 0}, {1, 0}, {0, 1}, {0.25, 0.25}, {1.25, 0.25}, {0.25, 1.25}});
+  const Overlap o = measureOverlap(l.uv, measureFaces(l.mesh, l.uv));
+  EXPECT_EQ(o.resolution, 1024);
+  EXPECT_NEAR(o.fraction(), 1.0 / 7.0, 0.01 / 7.0);
+  EXPECT_NEAR(double(o.coveredPixels) / (1024.0 * 1024.0), 0.875 / (1.25 * 1.25), 1e-2);
+}
+
+// A grid tiling a square: shared edges are covered once. At 10 x 10 pixels over a 4 x 4 grid
+// the grid's vertices fall on pixel centres (every 2.5 pixels) and its edges and diagonals run
+// through centres, so every centre is covered exactly once only by the tie rule.
+TEST(Overlap, ATilingHasNoneExactly) {
+  param::ProjectorOptions o;
+  o.surface = param::SurfaceKind::Plane;
+  o.placement.fit = param::Fit::None;
+  for (int n : {4, 7}) {
+    const param::Projection p = param::project(meshes::planeGrid(n, n, 1.0, 1.0), o);
+    const std::vector<FaceDistortion> faces = measureFaces(p.mesh, p.uv);
+    for (int resolution : {10, 1024}) {
+      const Overlap overlap = measureOverlap(p.uv, faces, resolution);
+      EXPECT_EQ(overlap.overlappedPixels, 0u) << n << " " << resolution;
+      EXPECT_EQ(overlap.coveredPixels, std::size_t(resolution) * std::size_t(resolution));
+    }
+  }
+}
+
+// The shifted sphere layout tiles [0, 1]^2 but for the gaps between the fanned pole triangles;
+// the planar projection of a closed mesh covers its disk twice, front and back.
+TEST(Overlap, SphereLayouts) {
+  const param::Projection spherical = projectSphere(32, 16, param::SeamMode::Shift);
+  EXPECT_EQ(measureOverlap(spherical.uv, measureFaces(spherical.mesh, spherical.uv)).overlappedPixels, 0u);
+
+  param::ProjectorOptions o;
+  o.surface = param::SurfaceKind::Plane;
+  const param::Projection planar = param::project(meshes::icosphere(3), o);
+  EXPECT_GT(measureOverlap(planar.uv, measureFaces(planar.mesh, planar.uv)).fraction(), 0.99);  // 1 exactly here
+}
+
+}  // namespace
+}  // namespace uvtk::analysis
