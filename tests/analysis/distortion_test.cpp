@@ -10,27 +10,12 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/layout.h"
 #include "meshes/generators.h"
 #include "param/projector.h"
 
 namespace uvtk::analysis {
 namespace {
-
-// A mesh and per-corner UVs, every corner valid and no face flagged.
-struct Layout {
-  Mesh mesh;
-  UvMap uv;
-};
-
-Layout makeLayout(std::vector<Vec3> positions, std::vector<Triangle> triangles, std::vector<Vec2> uvs) {
-  Layout l;
-  l.mesh.positions = std::move(positions);
-  l.mesh.triangles = std::move(triangles);
-  l.uv.uv = std::move(uvs);
-  l.uv.faceFlags.assign(l.mesh.triangles.size(), kFaceOk);
-  l.uv.cornerInvalid.assign(l.uv.uv.size(), 0);
-  return l;
-}
 
 // The unit right triangle, its UVs the images of (0, 0), (1, 0), (0, 1) under `map`.
 template <class Map>

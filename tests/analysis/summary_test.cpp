@@ -8,27 +8,12 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/layout.h"
 #include "meshes/generators.h"
 #include "param/projector.h"
 
 namespace uvtk::analysis {
 namespace {
-
-// A mesh and per-corner UVs, every corner valid and no face flagged.
-struct Layout {
-  Mesh mesh;
-  UvMap uv;
-};
-
-Layout makeLayout(std::vector<Vec3> positions, std::vector<Triangle> triangles, std::vector<Vec2> uvs) {
-  Layout l;
-  l.mesh.positions = std::move(positions);
-  l.mesh.triangles = std::move(triangles);
-  l.uv.uv = std::move(uvs);
-  l.uv.faceFlags.assign(l.mesh.triangles.size(), kFaceOk);
-  l.uv.cornerInvalid.assign(l.uv.uv.size(), 0);
-  return l;
-}
 
 // Separate triangles in the plane z = 0 whose UVs are their (x, y).
 Layout flatTriangles(const std::vector<Vec2>& corners) {
