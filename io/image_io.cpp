@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <filesystem>
 #include <sstream>
 #include <vector>
@@ -97,6 +98,21 @@ std::string createTemporary(const std::string& path) {
   return buffer.data();
 }
 
+// The writer for `path`'s format; throws UsageError when there is none or it cannot hold `type`.
+std::unique_ptr<OIIO::ImageOutput> writerFor(const std::string& path, PixelType type) {
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) {
+    OIIO::geterror();  // drop OpenImageIO's own message so it is not printed at exit
+    throw UsageError(path + ": error: cannot write images of this type");
+  }
+  // OpenImageIO has no query for float support; writers of other formats silently convert.
+  const std::string format = out->format_name();
+  if (type == PixelType::Float && format != "openexr" && format != "tiff")
+    throw UsageError(path + ": error: cannot write float pixels to a " + format +
+                     " file (use .exr, .tif or .tiff)");
+  return out;
+}
+
 }  // namespace
 
 ImageFile readImage(const std::string& path) {
@@ -140,21 +156,14 @@ ImageFile readImage(const std::string& path) {
   return file;
 }
 
+void checkImageType(const std::string& path, PixelType type) { writerFor(path, type); }
+
 void writeImage(const std::string& path, const Image& image, PixelType type) {
   UVTK_CHECK(image.width > 0 && image.height > 0 && image.channels > 0);
   UVTK_CHECK(image.pixels.size() == image.index(0, image.height));
   UVTK_CHECK(image.channelNames.empty() || int(image.channelNames.size()) == image.channels);
 
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) {
-    OIIO::geterror();  // drop OpenImageIO's own message so it is not printed at exit
-    throw UsageError(path + ": error: cannot write images of this type");
-  }
-  // OpenImageIO has no query for float support; writers of other formats silently convert.
-  const std::string format = out->format_name();
-  if (type == PixelType::Float && format != "openexr" && format != "tiff")
-    throw UsageError(path + ": error: cannot write float pixels to a " + format +
-                     " file (use .exr, .tif or .tiff)");
+  auto out = writerFor(path, type);
 
   // Our own rounding, not OpenImageIO's conversion, so that NaN and the halfway cases are defined.
   std::vector<std::uint8_t> rounded;

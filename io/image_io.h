@@ -22,6 +22,9 @@ ImageFile readImage(const std::string& path);
 
 enum class PixelType { UInt8, Float };
 
+// Throws the UsageError writeImage would for `path` and `type`, before any work is done.
+void checkImageType(const std::string& path, PixelType type);
+
 // Writes `image` to `path` in the format its extension names: UInt8 stores round(clamp(c, 0, 1)
 // * 255); Float needs a format that holds floats (.exr, .tif, .tiff) and keeps non-finite values
 // as they are. Channel names come from image.channelNames when given. Written to a temporary

@@ -134,20 +134,13 @@ std::vector<Vec4> clipPositions(const Mesh& mesh, const Mat4& clipFromObject, in
   return clip;
 }
 
-int fullMipmapLevels(int width, int height) {
-  int levels = 1;
-  for (int size = std::max(width, height); size > 1; size /= 2) ++levels;
-  return levels;
-}
-
 }  // namespace
 
 Rendering render(const Mesh& mesh, const TexcoordSource& source, const RenderOptions& o) {
   if (!o.texture) throw UsageError("render: no texture is bound");
   if (!source.pixelMapping && source.corners.size() != 3 * mesh.triangles.size())
     throw UsageError("render: expected 3 texture coordinates per triangle");
-  UVTK_CHECK(!needsMipmaps(o.sampler.minFilter) ||
-             o.texture->levelCount() == fullMipmapLevels(o.texture->width(), o.texture->height()));
+  UVTK_CHECK(!needsMipmaps(o.sampler.minFilter) || o.texture->hasMipmaps());
   const int width = o.camera.width, height = o.camera.height;
   Rendering out;
 

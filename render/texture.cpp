@@ -197,9 +197,7 @@ Vec4 sample(const Texture& texture, const SamplerState& sampler, double s, doubl
 
   if (!isMipmapFilter(sampler.minFilter))
     return sampleLevel(texture.level(0), sampler.minFilter == Filter::Linear, sampler, s, t);
-  // A mipmap filter needs the full chain down to 1 x 1 (GL's mipmap completeness, §8.17).
-  const TexelLevel& last = texture.level(texture.levelCount() - 1);
-  UVTK_CHECK(last.width == 1 && last.height == 1);
+  UVTK_CHECK(texture.hasMipmaps());
   const int q = texture.levelCount() - 1;
   const bool linearWithin = sampler.minFilter == Filter::LinearMipmapNearest || sampler.minFilter == Filter::LinearMipmapLinear;
 

@@ -63,6 +63,8 @@ class Texture {
   void buildMipmaps();
 
   int levelCount() const { return int(levels_.size()); }
+  // The full chain down to 1 x 1 exists (GL's mipmap completeness, §8.17).
+  bool hasMipmaps() const { return levels_.back().width == 1 && levels_.back().height == 1; }
   const TexelLevel& level(int k) const { return levels_[std::size_t(k)]; }
   int width() const { return levels_[0].width; }
   int height() const { return levels_[0].height; }

@@ -1,6 +1,7 @@
 // `uvtk render`: draw a mesh with its texture coordinates (from the file, a projector or texgen,
 // per vertex or evaluated per pixel) as OpenGL's fixed-function pipeline draws it, into a PNG,
 // with optional float AOVs (u, v, depth, face, lod) in an EXR.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -63,13 +64,11 @@ std::pair<int, int> parseSize(const std::string& text) {
   return {w, h};
 }
 
-bool given(const RenderArguments& a, const char* option) { return a.projector.app->get_option(option)->count() > 0; }
-
 render::Camera makeCamera(const RenderArguments& a, const Mesh& mesh, const Mat4& worldFromObject) {
   const auto [width, height] = parseSize(a.size);
   const Vec3 up = parseVec3(a.up, "--up");
   // Explicit when asked for, or when --eye is given without --camera.
-  const bool cameraGiven = a.projector.app->get_option("--camera")->count() > 0;
+  const bool cameraGiven = given(a.projector.app, "--camera");
   const bool manual = cameraGiven ? a.camera == CameraMode::Explicit : !a.eye.empty();
   if (manual && a.eye.empty()) throw UsageError("--camera explicit: expected --eye x,y,z");
   if (manual && a.ortho == "auto") throw UsageError("--ortho auto goes with the automatic camera");
@@ -103,38 +102,45 @@ render::Texture loadTexture(const std::string& name) {
   return render::Texture::fromImage(file.image, file.eightBit);
 }
 
-// The AOV image with the channels `list` names ("uv,depth,face,lod" in any order and subset).
-Image selectAovs(const Image& all, const std::string& list) {
-  std::vector<int> channels;
+// The AOV channels `list` names ("uv,depth,face,lod" in any order and subset), by their names in
+// Rendering::aovs; throws UsageError for anything else.
+std::vector<std::string> aovChannels(const std::string& list) {
+  std::vector<std::string> channels;
   std::stringstream in(list);
   std::string name;
   while (std::getline(in, name, ',')) {
     if (name == "uv") {
-      channels.push_back(0), channels.push_back(1);
-    } else if (name == "depth") {
-      channels.push_back(2);
-    } else if (name == "face") {
-      channels.push_back(3);
-    } else if (name == "lod") {
-      channels.push_back(4);
+      channels.push_back("u"), channels.push_back("v");
+    } else if (name == "depth" || name == "face" || name == "lod") {
+      channels.push_back(name);
     } else {
       throw UsageError("--aov: expected a list of uv, depth, face, lod, found '" + name + "'");
     }
   }
-  Image out(all.width, all.height, int(channels.size()));
-  for (int c : channels) out.channelNames.push_back(all.channelNames[std::size_t(c)]);
+  return channels;
+}
+
+Image selectChannels(const Image& all, const std::vector<std::string>& names) {
+  std::vector<int> source;
+  for (const std::string& name : names)
+    source.push_back(int(std::find(all.channelNames.begin(), all.channelNames.end(), name) - all.channelNames.begin()));
+  Image out(all.width, all.height, int(names.size()));
+  out.channelNames = names;
   for (int y = 0; y < all.height; ++y)
     for (int x = 0; x < all.width; ++x)
-      for (std::size_t k = 0; k < channels.size(); ++k) out.at(x, y, int(k)) = all.at(x, y, channels[k]);
+      for (std::size_t k = 0; k < source.size(); ++k) out.at(x, y, int(k)) = all.at(x, y, source[k]);
   return out;
 }
 
 void runRender(RenderArguments& a) {
-  const bool projectorGiven = given(a, "--projector");
+  const bool projectorGiven = given(a.projector.app, "--projector");
   if (projectorGiven && a.texgen.given()) throw UsageError("--projector and texgen options exclude each other");
+  const std::vector<std::string> aovs = a.aov.empty() ? std::vector<std::string>() : aovChannels(a.aov);
   if (!a.aov.empty() && a.aovOutput.empty())
     a.aovOutput = std::filesystem::path(a.output).replace_extension(".exr").string();
   if (!a.aov.empty() && a.aovOutput == a.output) throw UsageError("--aov-output must differ from --output");
+  io::checkImageType(a.output, io::PixelType::UInt8);  // nothing is written unless both outputs can be
+  if (!a.aov.empty()) io::checkImageType(a.aovOutput, io::PixelType::Float);
   const Mat4 worldFromObject = a.model.empty() ? Mat4::Identity() : parseMatrix(a.model, "--model");
 
   StageClock clock("uvtk render");
@@ -228,7 +234,7 @@ void runRender(RenderArguments& a) {
 
   clock.start("writing", a.output);
   io::writeImage(a.output, rendering.colour, io::PixelType::UInt8);
-  if (!a.aov.empty()) io::writeImage(a.aovOutput, selectAovs(rendering.aovs, a.aov), io::PixelType::Float);
+  if (!a.aov.empty()) io::writeImage(a.aovOutput, selectChannels(rendering.aovs, aovs), io::PixelType::Float);
   const double writeMs = clock.stop();
 
   if (!a.json.empty()) {

@@ -8,12 +8,6 @@ namespace uvtk::cli {
 
 using namespace uvtk::param;
 
-namespace {
-
-bool given(const CLI::App* app, const char* name) { return app->get_option(name)->count() > 0; }
-
-}  // namespace
-
 void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEye) {
   a.app = &app;
   a.cameraOwnsEye = cameraOwnsEye;

@@ -38,8 +38,6 @@ texgen::TexgenCoordinate parseCoordinate(const std::string& text, const std::str
   return c;
 }
 
-std::string shortcutOption;  // the name the shortcut was registered under, for messages
-
 }  // namespace
 
 const char* texgenModeName(TexgenMode mode) {
@@ -91,7 +89,7 @@ texgen::TexgenOptions TexgenArguments::resolve(const Mat4& view, const Mat4& mod
 }
 
 void addTexgenOptions(CLI::App& app, TexgenArguments& a, const std::string& shortcut) {
-  shortcutOption = shortcut;
+  a.shortcutOption = shortcut;
   const std::string modes = "MODE[:a,b,c,d]";
   const char* const planeHelp =
       ": object_linear|eye_linear|sphere_map|normal_map|reflection_map|off, optionally with the plane "

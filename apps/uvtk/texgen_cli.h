@@ -16,6 +16,7 @@ struct TexgenArguments {
   std::string mode;                        // the shortcut option's value, empty when absent
   std::string textureMatrix;
   bool noNormalize = false;
+  std::string shortcutOption;  // the shortcut's name as registered, for messages
 
   bool given() const;  // any coordinate option or the shortcut
   // Throws UsageError for a malformed or disallowed coordinate. Without any coordinate option
