@@ -32,27 +32,20 @@ std::int64_t floorDiv(std::int64_t a, std::int64_t b) { return a / b - ((a % b !
 
 }  // namespace
 
-Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces, int resolution) {
+void forEachCoveredPixel(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid,
+                         const std::function<void(std::size_t face, int x, int y)>& visit) {
   UVTK_CHECK(uv.uv.size() == 3 * faces.size());
+  const int resolution = grid.resolution;
   UVTK_CHECK(resolution >= 1 && resolution <= 65536);
-  Overlap overlap;
-  overlap.resolution = resolution;
-
-  Eigen::AlignedBox2d bounds;
-  for (std::size_t f = 0; f < faces.size(); ++f)
-    if (isMeasured(faces[f].status))
-      for (int k = 0; k < 3; ++k) bounds.extend(uv.uv[3 * f + std::size_t(k)]);
-  if (bounds.isEmpty()) return overlap;
-  const Vec2 size = bounds.sizes();
+  const Vec2 origin = grid.bounds.min(), size = grid.bounds.sizes();
+  UVTK_CHECK(origin.allFinite() && size.allFinite() && size.x() > 0.0 && size.y() > 0.0);
   auto snap = [&](const Vec2& t) {
+    const Vec2 relative = (t - origin).cwiseQuotient(size);  // in [0, 1] over the grid
+    UVTK_CHECK(relative.x() >= -1.0 && relative.x() <= 2.0 && relative.y() >= -1.0 && relative.y() <= 2.0);
     const double scale = static_cast<double>(resolution * kSubpixel);
-    return Point{std::llround((t.x() - bounds.min().x()) / size.x() * scale),
-                 std::llround((t.y() - bounds.min().y()) / size.y() * scale)};
+    return Point{std::llround(relative.x() * scale), std::llround(relative.y() * scale)};
   };
 
-  // Coverage per pixel, counted up to 2: once and more than once are all that is asked.
-  const auto n = static_cast<std::size_t>(resolution);
-  std::vector<std::uint8_t> coverage(n * n, 0);
   for (std::size_t f = 0; f < faces.size(); ++f) {
     if (!isMeasured(faces[f].status)) continue;
     Point p[3] = {snap(uv.uv[3 * f]), snap(uv.uv[3 * f + 1]), snap(uv.uv[3 * f + 2])};
@@ -77,11 +70,32 @@ Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces
           const std::int64_t edge = twiceArea(a, b, centre);
           inside = edge > 0 || (edge == 0 && ownsCentresOnIt(a, b));
         }
-        std::uint8_t& count = coverage[static_cast<std::size_t>(y) * n + static_cast<std::size_t>(x)];
-        if (inside && count < 2) ++count;
+        if (inside) visit(f, static_cast<int>(x), static_cast<int>(y));
       }
   }
-  for (std::uint8_t count : coverage) {
+}
+
+std::vector<std::uint8_t> coverageCounts(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid) {
+  const auto n = static_cast<std::size_t>(grid.resolution);
+  std::vector<std::uint8_t> counts(n * n, 0);
+  forEachCoveredPixel(uv, faces, grid, [&](std::size_t, int x, int y) {
+    std::uint8_t& count = counts[static_cast<std::size_t>(y) * n + static_cast<std::size_t>(x)];
+    if (count < 255) ++count;
+  });
+  return counts;
+}
+
+Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces, int resolution) {
+  UVTK_CHECK(uv.uv.size() == 3 * faces.size());
+  UVTK_CHECK(resolution >= 1 && resolution <= 65536);
+  Overlap overlap;
+  overlap.resolution = resolution;
+  UvGrid grid{{}, resolution};
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    if (isMeasured(faces[f].status))
+      for (int k = 0; k < 3; ++k) grid.bounds.extend(uv.uv[3 * f + std::size_t(k)]);
+  if (grid.bounds.isEmpty()) return overlap;
+  for (std::uint8_t count : coverageCounts(uv, faces, grid)) {
     overlap.coveredPixels += count >= 1;
     overlap.overlappedPixels += count >= 2;
   }

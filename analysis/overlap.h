@@ -1,16 +1,21 @@
 // Overlap of a UV layout, measured by rasterizing it: how much of the covered texture area is
 // covered more than once.
 //
-// The faces are drawn into a resolution x resolution grid over their own UV bounding box (as
-// they lie: a seam-shifted layout in u in [0, 1.5) is not wrapped). A pixel is covered by a
-// triangle when its centre is. Corners snap to 1/256 pixel and coverage is decided by exact
-// integer edge functions with a tie rule (an edge owns the centres on it when, with the corners
-// made counter-clockwise, it runs downward in v or horizontally towards +u: the top-left rule
-// with rows counted from v = max), so two triangles sharing an edge cover each centre on it once.
+// The faces are drawn into a resolution x resolution grid of pixels over a box of the UV plane;
+// measureOverlap uses the faces' own UV bounding box (as they lie: a seam-shifted layout in u in
+// [0, 1.5) is not wrapped). A pixel is covered by a triangle when its centre is. Corners snap to
+// 1/256 pixel and coverage is decided by exact integer edge functions with a tie rule (an edge
+// owns the centres on it when, with the corners made counter-clockwise, it runs downward in v or
+// horizontally towards +u: the top-left rule with rows counted from v = max), so two triangles
+// sharing an edge cover each centre on it once.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <vector>
+
+#include <Eigen/Geometry>
 
 #include "analysis/distortion.h"
 #include "core/uv_map.h"
@@ -27,9 +32,30 @@ struct Overlap {
   }
 };
 
-// Rasterizes the faces with a non-degenerate Jacobian (isMeasured(faces[f].status): ok, pole,
-// backfacing and flipped faces, whatever their winding). Preconditions: `faces` from
-// measureFaces on the same UVs, resolution in [1, 65536].
+// A resolution x resolution grid over `bounds`: pixel (x, y) is the cell whose lower-left corner
+// is bounds.min() + (x, y) bounds.sizes() / resolution, y counted upward from v = bounds.min().y()
+// (pixel index y * resolution + x); its centre is half a cell further.
+struct UvGrid {
+  Eigen::AlignedBox2d bounds;
+  int resolution = 0;
+};
+
+// Calls visit(face, x, y) for every pixel centre of `grid` that a face covers, face by face in
+// index order, for the faces with a non-degenerate Jacobian (isMeasured(faces[f].status): ok,
+// pole, backfacing and flipped faces, whatever their winding). Preconditions: `faces` from
+// measureFaces on the same UVs; bounds of positive finite size; resolution in [1, 65536]; every
+// corner of a drawn face within the bounds enlarged by their size on every side, which keeps the
+// exact integer arithmetic far from overflow (the grid may show part of a layout: pixels outside
+// it are skipped).
+void forEachCoveredPixel(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid,
+                         const std::function<void(std::size_t face, int x, int y)>& visit);
+
+// Per pixel of `grid` (index y * resolution + x), how many faces cover its centre, saturating at
+// 255. Preconditions as forEachCoveredPixel.
+std::vector<std::uint8_t> coverageCounts(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid);
+
+// Covered and overlapped pixels from the coverageCounts of those faces over their own UV
+// bounding box. Preconditions: `faces` from measureFaces on the same UVs, resolution in [1, 65536].
 Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces, int resolution = 1024);
 
 }  // namespace uvtk::analysis

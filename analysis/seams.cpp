@@ -51,7 +51,7 @@ std::vector<int> fannedPoleVertices(const Mesh& mesh, const UvMap& uv) {
   return poles;
 }
 
-SeamEdges classifySeamEdges(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices) {
+std::vector<SeamEdge> seamEdgeList(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices) {
   UVTK_CHECK(uv.uv.size() == 3 * mesh.triangles.size());
   std::vector<char> isPole(mesh.positions.size(), 0);
   for (int v : poleVertices) {
@@ -73,7 +73,7 @@ SeamEdges classifySeamEdges(const Mesh& mesh, const UvMap& uv, const std::vector
     return std::pair(a.lower, a.higher) < std::pair(b.lower, b.higher);
   });
 
-  SeamEdges seams;
+  std::vector<SeamEdge> seams;
   for (std::size_t first = 0, end; first < halfEdges.size(); first = end) {
     const HalfEdge& a = halfEdges[first];
     end = first + 1;
@@ -97,8 +97,16 @@ SeamEdges classifySeamEdges(const Mesh& mesh, const UvMap& uv, const std::vector
       compared = true;
     }
     if (!compared || !differs) continue;
-    const double length = (mesh.positions[a.lower] - mesh.positions[a.higher]).norm();
-    if (wraps) ++seams.wrapEdges, seams.wrapLength += length;
+    seams.push_back({a.lower, a.higher, {a.cornerLower, b.cornerLower}, {a.cornerHigher, b.cornerHigher}, wraps});
+  }
+  return seams;
+}
+
+SeamEdges classifySeamEdges(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices) {
+  SeamEdges seams;
+  for (const SeamEdge& e : seamEdgeList(mesh, uv, poleVertices)) {
+    const double length = (mesh.positions[e.a] - mesh.positions[e.b]).norm();
+    if (e.wrap) ++seams.wrapEdges, seams.wrapLength += length;
     else ++seams.cutEdges, seams.cutLength += length;
   }
   return seams;

@@ -11,6 +11,7 @@
 // An edge whose endpoints are both poles is not classified.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -24,15 +25,27 @@ struct SeamEdges {
   double wrapLength = 0.0, cutLength = 0.0;  // total 3D edge length of each class
 };
 
+// One seam edge, with the corners of both faces at its endpoints, so that each face's side of
+// the edge can be found in the UV layout.
+struct SeamEdge {
+  int a = 0, b = 0;                      // vertex indices, a < b
+  std::array<std::size_t, 2> cornerA{};  // per face sharing the edge: its corner (index into UvMap::uv) at a
+  std::array<std::size_t, 2> cornerB{};  // and at b
+  bool wrap = false;                     // a wrap seam; else a cut
+};
+
 // Pole vertices of a fanned pole: vertices of kFacePole faces whose valid corners in those
 // faces have u values that differ by more than 1e-6 from any integer. A ring vertex on the seam
 // differs by exactly 1 between its pole faces and is not a pole; a pole mapped with
 // PoleMode::None (u = 0 everywhere) is not detected, and needs no exclusion. Ascending order.
 std::vector<int> fannedPoleVertices(const Mesh& mesh, const UvMap& uv);
 
-// Classifies the seam edges, leaving out the endpoints listed in `poleVertices` (any order), for
-// example fannedPoleVertices(mesh, uv) or a projector's own list.
+// The seam edges in ascending (a, b) order, leaving out the endpoints listed in `poleVertices`
+// (any order), for example fannedPoleVertices(mesh, uv) or a projector's own list.
 // Precondition: `uv` has 3 corners per triangle.
+std::vector<SeamEdge> seamEdgeList(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices);
+
+// The counts and lengths of seamEdgeList(mesh, uv, poleVertices) per class.
 SeamEdges classifySeamEdges(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices);
 
 }  // namespace uvtk::analysis

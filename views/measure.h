@@ -1,0 +1,44 @@
+// The per-face distortion measures that the heatmap views and the layout view show: the value of
+// a face, the colour scale, and the face colours with their legend. docs/views.md, "Heatmaps".
+#pragma once
+
+#include <vector>
+
+#include "analysis/distortion.h"
+#include "analysis/summary.h"
+#include "views/legend.h"
+#include "views/views.h"
+
+namespace uvtk::views {
+
+// Stretch, Linf, Angle and Area are measures; the other views are not.
+bool isMeasure(View view);
+
+// The value a measure shows for a face with a Jacobian (analysis::isMeasured):
+//   stretch  Sander's L2 stretch normalised as the mesh value is: l2Stretch sqrt(sum(Auv) / sum(A3))
+//   linf     linfStretch, normalised likewise
+//   angle    angleDistortion, s1 / |s2|
+//   area     areaDistortion, log2 r
+// `totals`: okAreaTotals of the mesh's faces. Precondition: isMeasure(measure).
+double measureValue(View measure, const analysis::FaceDistortion& face, const analysis::AreaTotals& totals);
+
+// The colour scale of a measure:
+//   stretch, linf, angle: sequential from 1 (isometric, conformal) to top = the measure's p99 over
+//                         the ok faces (the summary's statistics), at least 1.0001;
+//   area:                 diverging from -R to +R, R = the p99 of |log2 r| over the ok faces
+//                         (weighted by their 3D area), at least log2(1.0001).
+// Values beyond the ends take the end colours.
+ColourScale measureScale(View measure, const std::vector<analysis::FaceDistortion>& faces,
+                         const analysis::Summary& summary);
+
+// Per face: the measure's colour for ok faces, the status colour for every other status; and the
+// legend: the measure's title, its colour bar with five labelled ticks, and one entry per status
+// present in the mesh with its face count.
+struct FaceColouring {
+  std::vector<Vec3> colours;
+  Legend legend;
+};
+FaceColouring colourByMeasure(View measure, const std::vector<analysis::FaceDistortion>& faces,
+                              const analysis::Summary& summary);
+
+}  // namespace uvtk::views

@@ -1,0 +1,57 @@
+#include "views/scene.h"
+
+#include <cmath>
+
+#include "core/error.h"
+#include "views/canvas.h"
+
+namespace uvtk::views {
+
+double faceShade(const Vec3& eye0, const Vec3& eye1, const Vec3& eye2) {
+  const Vec3 n = triangleAreaNormal(eye0, eye1, eye2);
+  const double length = n.norm();
+  const double cosine = length > 0.0 ? std::fabs(n.z()) / length : 0.0;  // n . l with l = (0, 0, 1)
+  return 0.35 + 0.65 * cosine;
+}
+
+Scene rasterizeScene(const Mesh& mesh, const render::RenderOptions& options) {
+  const render::Camera& camera = options.camera;
+  const Mat4 eyeFromObject = camera.viewFromWorld * options.worldFromObject;
+  Scene scene;
+  scene.clipFromObject = camera.clipFromView * eyeFromObject;
+  std::vector<Vec3> eye(mesh.positions.size());
+  scene.clip.resize(mesh.positions.size());
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    const Vec4 p = mesh.positions[v].homogeneous();
+    eye[v] = (eyeFromObject * p).head<3>();
+    scene.clip[v] = scene.clipFromObject * p;
+  }
+  scene.visible = render::rasterize(scene.clip, mesh.triangles, camera.width, camera.height, options.raster);
+  scene.shade.resize(mesh.triangles.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const Triangle& t = mesh.triangles[f];
+    scene.shade[f] = faceShade(eye[t[0]], eye[t[1]], eye[t[2]]);
+  }
+  return scene;
+}
+
+Image shadeFaces(const Scene& scene, const std::vector<Vec3>& colours, const Vec3& background) {
+  UVTK_CHECK(colours.size() == scene.shade.size());
+  const render::VisibilityBuffer& visible = scene.visible;
+  Image image(visible.width, visible.height, 3);
+  for (int row = 0; row < visible.height; ++row)
+    for (int x = 0; x < visible.width; ++x) {
+      const std::int32_t face = visible.face[visible.index(x, row)];
+      setPixel(image, x, row, face < 0 ? background : Vec3(colours[std::size_t(face)] * scene.shade[std::size_t(face)]));
+    }
+  return image;
+}
+
+render::TexcoordSource cornerTexcoords(const UvMap& uv) {
+  render::TexcoordSource source;
+  source.corners.reserve(uv.uv.size());
+  for (const Vec2& t : uv.uv) source.corners.emplace_back(t.x(), t.y(), 0.0, 1.0);
+  return source;
+}
+
+}  // namespace uvtk::views

@@ -1,0 +1,74 @@
+// The inspection views of a UV mapping: the mesh textured with test patterns, per-face
+// distortion heatmaps, the seams, the error of per-vertex UVs against the exact mapping, and the
+// UV layout itself; and a contact sheet that puts several views side by side. docs/views.md
+// describes every view, its colour map, legend and scale so that it can be reproduced.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "analysis/distortion.h"
+#include "analysis/summary.h"
+#include "core/image.h"
+#include "core/mesh.h"
+#include "core/uv_map.h"
+#include "render/renderer.h"
+
+namespace uvtk::views {
+
+enum class View { Checker, Uvgrid, Stretch, Linf, Angle, Area, Seams, UvError, Layout };
+
+// "checker", "uvgrid", "stretch", "linf", "angle", "area", "seams", "uverror", "layout".
+const char* toString(View view);
+std::optional<View> parseView(std::string_view name);
+// "stretch,seams" -> {Stretch, Seams}, in the given order. Throws UsageError naming the bad entry
+// and the valid names.
+std::vector<View> parseViewList(const std::string& commaList);
+// Whether the view compares against the mapping evaluated per pixel (ViewInput::exact): UvError.
+bool needsExactMapping(View view);
+
+struct ViewInput {
+  const Mesh* mesh = nullptr;
+  const UvMap* uv = nullptr;  // 3 corners per triangle, face flags (kFaceSeamStraddle, kFacePole, kFaceInvalid...)
+  const std::vector<analysis::FaceDistortion>* faces = nullptr;  // measureFaces(mesh, uv)
+  const analysis::Summary* summary = nullptr;                    // summarize(...)
+  std::vector<int> poleVertices;  // vertices drawn as poles (a projector's list or summary->poleVertices)
+  bool wrapsU = false;            // u compared modulo 1 by uverror
+  std::optional<render::PixelMapping> exact;  // the mapping evaluated per pixel; required by UvError (UsageError if missing)
+};
+
+struct ViewOptions {
+  // Camera, model, raster options, lighting, background; render.texture = the bound texture
+  // (uverror measures in its texels; checker and uvgrid bind their own).
+  render::RenderOptions render;
+  View layoutFill = View::Stretch;  // measure that fills triangles in the layout view: Stretch, Linf, Angle or Area
+  int layoutSize = 512;             // layout image is layoutSize x layoutSize (+ legend)
+};
+
+// The view as a 3-channel RGB image in [0, 1], row 0 at the top. The camera views are
+// render.camera's width x height, with the legend in a strip below (docs/views.md).
+// Preconditions: mesh and uv set; faces for the heatmaps, seams and layout; summary for the
+// heatmaps and layout. Throws UsageError for uverror without `exact`, and for a layout fill
+// that is not a measure or a layoutSize outside 16..16384.
+Image drawView(View view, const ViewInput& in, const ViewOptions& options);
+
+// Per pixel, |uv_per_vertex - uv_exact| in texels of options.render.texture (W x H; 1024 x 1024
+// if none): sqrt((du W)^2 + (dv H)^2), du taken modulo 1 to [-0.5, 0.5] when wrapsU. One channel
+// "uverror": -1 on the background, -2 where either value is not finite (counted in
+// invalidPixels). max and mean are over the `pixels` covered pixels with a finite error.
+struct UvErrorMap {
+  Image texels;
+  double max = 0, mean = 0;
+  std::size_t pixels = 0, invalidPixels = 0;
+};
+UvErrorMap uvErrorMap(const ViewInput& in, const ViewOptions& options);
+
+// Tiles in a grid, `columns` per row, each with its label drawn under it (render/font.h), on a
+// dark grey background. Throws UsageError for no tiles or columns < 1.
+Image contactSheet(const std::vector<std::pair<std::string, Image>>& tiles, int columns);
+
+}  // namespace uvtk::views
