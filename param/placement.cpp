@@ -38,9 +38,8 @@ Mat3 fittedRotation(const std::vector<Vec3>& positions, SurfaceKind surface, con
 
 double positiveOr(double value, double fallback) { return value > 0.0 && std::isfinite(value) ? value : fallback; }
 
-}  // namespace
-
-Affine3 fitPlacement(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options) {
+// The frame of the fit or of the explicit placement, before the turn about its axis.
+Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options) {
   Affine3 localFromObject = Affine3::Identity();
   if (surface == SurfaceKind::TwoPlane) return localFromObject;
   if (options.frame) {
@@ -102,6 +101,17 @@ Affine3 fitPlacement(const std::vector<Vec3>& positions, SurfaceKind surface, co
   localFromObject.linear() = scale.asDiagonal() * rotation;
   localFromObject.translation() = -(scale.asDiagonal() * origin);
   return localFromObject;
+}
+
+}  // namespace
+
+Affine3 fitPlacement(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options) {
+  const Affine3 frame = frameBeforeTurn(positions, surface, options);
+  if (options.turnDegrees == 0.0 || surface == SurfaceKind::TwoPlane) return frame;
+  if (!std::isfinite(options.turnDegrees)) throw UsageError("--seam-place: expected a finite angle in degrees");
+  // Turning the frame by +a puts the point at old azimuth a on the new local +x axis.
+  const double radians = options.turnDegrees * (kPi / 180.0);
+  return Affine3(Eigen::AngleAxisd(-radians, Vec3::UnitZ())) * frame;
 }
 
 }  // namespace uvtk::param

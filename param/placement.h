@@ -31,6 +31,9 @@ struct PlacementOptions {
   Fit fit = Fit::BBox;
   int axis = 2;                        // 0, 1, 2: object x, y or z becomes local z (bbox fit)
   std::optional<ExplicitFrame> frame;  // when set, it replaces the fit
+  // A turn of the frame about its local z axis, counter-clockwise seen from +z, after the fit or
+  // the explicit frame: it moves the seam of a wrapping surface to this azimuth.
+  double turnDegrees = 0.0;
 };
 
 // The frame for `surface` over `positions`. Fitted scales: plane, the box's x, y extent to

@@ -123,6 +123,20 @@ class PointMapping {
   bool wrapsU_ = false, needsNormal_ = false;
 };
 
+// Seam placement (`--seam-place auto`): the turn of a wrapping projector about its axis
+// (PlacementOptions::turnDegrees) whose seam crosses the fewest faces.
+struct SeamPlacement {
+  double turnDegrees = 0.0;
+  std::size_t facesCrossed = 0, facesCrossedBefore = 0;  // straddling faces at the chosen turn, and at the given one
+  double seamLength = 0.0, seamLengthBefore = 0.0;       // the seam edges' total length, likewise
+};
+
+// Candidate turns put the seam midway between the azimuths of neighbouring corners, so that no
+// corner lies on it; the given turn is kept unless a candidate crosses fewer faces; among equal
+// candidates the widest gap wins. Straddling is decided as project() decides it (§5). Throws
+// UsageError unless the surface wraps (cylinder, sphere).
+SeamPlacement placeSeam(const Mesh& mesh, const ProjectorOptions& options);
+
 // Maps `mesh` (taken by value: with SeamMode::Cut its triangles change). Throws UsageError for
 // inconsistent options (reflection without an eye, parallel two-plane planes, ...).
 Projection project(Mesh mesh, const ProjectorOptions& options);

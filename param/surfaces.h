@@ -100,6 +100,7 @@ struct CylinderSurface {  // radius 1 about the z axis
   Vec2 uvAt(const Vec3& q) const { return cylinderUv(q); }
   double vAt(const Vec3& q) const { return q.z(); }
   double uStart() const { return 0.0; }
+  double uPerTurn() const { return 1.0; }  // u grows counter-clockwise seen from +z
 };
 
 struct SphereSurface {  // radius 1 about the origin
@@ -109,6 +110,7 @@ struct SphereSurface {  // radius 1 about the origin
   Vec2 uvAt(const Vec3& q) const { return sphereUv(q, preset); }
   double vAt(const Vec3& q) const { return sphereV(q, preset); }
   double uStart() const { return uPeriodStart(preset); }
+  double uPerTurn() const { return preset == SpherePreset::Glu ? -1.0 : 1.0; }  // gluSphere's s runs clockwise
 };
 
 // The box [-1, 1]^3. Faces are chosen per triangle (chooseFace); each corner is then projected
