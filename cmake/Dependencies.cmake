@@ -5,6 +5,7 @@ find_package(CGAL REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(OpenImageIO REQUIRED)
+find_package(OpenSSL REQUIRED)  # SHA-256 of the inputs a report measured
 
 # Debian's OpenImageIO package lists /usr/include/opencv4 as an include directory even when
 # OpenCV is not installed, and CMake's generate step then fails. Keep only directories that exist.

@@ -1,6 +1,8 @@
 #include "io/image_io.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <OpenImageIO/strutil.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -158,24 +160,16 @@ ImageFile readImage(const std::string& path) {
 
 void checkImageType(const std::string& path, PixelType type) { writerFor(path, type); }
 
-void writeImage(const std::string& path, const Image& image, PixelType type) {
-  UVTK_CHECK(image.width > 0 && image.height > 0 && image.channels > 0);
-  UVTK_CHECK(image.pixels.size() == image.index(0, image.height));
-  UVTK_CHECK(image.channelNames.empty() || int(image.channelNames.size()) == image.channels);
+namespace {
 
-  auto out = writerFor(path, type);
-
-  // Our own rounding, not OpenImageIO's conversion, so that NaN and the halfway cases are defined.
-  std::vector<std::uint8_t> rounded;
-  const void* pixels = image.pixels.data();
-  OIIO::TypeDesc pixelType = OIIO::TypeDesc::FLOAT;
+// The spec of `image` stored as `type`; for UInt8 also its rounded pixels, by our own rounding
+// rather than OpenImageIO's conversion, so that NaN and the halfway cases are defined.
+OIIO::ImageSpec specFor(const Image& image, PixelType type, std::vector<std::uint8_t>& rounded) {
+  const OIIO::TypeDesc pixelType = type == PixelType::UInt8 ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
   if (type == PixelType::UInt8) {
     rounded.resize(image.pixels.size());
     std::transform(image.pixels.begin(), image.pixels.end(), rounded.begin(), toUInt8);
-    pixels = rounded.data();
-    pixelType = OIIO::TypeDesc::UINT8;
   }
-
   OIIO::ImageSpec spec(image.width, image.height, image.channels, pixelType);
   if (!image.channelNames.empty()) {
     spec.channelnames = image.channelNames;
@@ -184,6 +178,22 @@ void writeImage(const std::string& path, const Image& image, PixelType type) {
   }
   // Store alpha as given: by default PNG and TIFF writers divide colour by it.
   spec.attribute("oiio:UnassociatedAlpha", 1);
+  return spec;
+}
+
+}  // namespace
+
+void writeImage(const std::string& path, const Image& image, PixelType type) {
+  UVTK_CHECK(image.width > 0 && image.height > 0 && image.channels > 0);
+  UVTK_CHECK(image.pixels.size() == image.index(0, image.height));
+  UVTK_CHECK(image.channelNames.empty() || int(image.channelNames.size()) == image.channels);
+
+  auto out = writerFor(path, type);
+
+  std::vector<std::uint8_t> rounded;
+  const OIIO::ImageSpec spec = specFor(image, type, rounded);
+  const void* pixels = type == PixelType::UInt8 ? static_cast<const void*>(rounded.data()) : image.pixels.data();
+  const OIIO::TypeDesc pixelType = spec.format;
 
   const std::string temporary = createTemporary(path);
   const auto fail = [&](const std::string& reason) {
@@ -196,6 +206,23 @@ void writeImage(const std::string& path, const Image& image, PixelType type) {
   if (!written || !closed) throw fail(oneLine(out->geterror()));
   if (std::rename(temporary.c_str(), path.c_str()) != 0)
     throw fail(std::string("cannot rename the temporary file onto it: ") + std::strerror(errno));
+}
+
+std::string encodePng(const Image& image) {
+  UVTK_CHECK(image.width > 0 && image.height > 0 && image.channels > 0);
+  std::vector<std::uint8_t> rounded;
+  const OIIO::ImageSpec spec = specFor(image, PixelType::UInt8, rounded);
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  auto out = OIIO::ImageOutput::create("memory.png", &memory);
+  if (!out || !out->open("memory.png", spec) || !out->write_image(OIIO::TypeDesc::UINT8, rounded.data()) ||
+      !out->close())
+    throw std::runtime_error("OpenImageIO: cannot encode a PNG in memory: " + OIIO::geterror());
+  return std::string(bytes.begin(), bytes.end());
+}
+
+std::string pngDataUri(const Image& image) {
+  return "data:image/png;base64," + OIIO::Strutil::base64_encode(encodePng(image));
 }
 
 }  // namespace uvtk::io

@@ -32,4 +32,10 @@ void checkImageType(const std::string& path, PixelType type);
 // UsageError for an extension OpenImageIO cannot write or Float to an 8-bit-only format.
 void writeImage(const std::string& path, const Image& image, PixelType type);
 
+// The 8-bit PNG file `image` would be written as, in memory.
+std::string encodePng(const Image& image);
+
+// The PNG as a data URI ("data:image/png;base64,..."), for pages that embed their pictures.
+std::string pngDataUri(const Image& image);
+
 }  // namespace uvtk::io
