@@ -31,6 +31,9 @@ inline CLI::Option* addChoice(CLI::App& app, const std::string& name, Enum& targ
 // Whether the user typed option `name` (rather than leaving its default).
 inline bool given(const CLI::App* app, const char* name) { return app->get_option(name)->count() > 0; }
 
+// An image size "WxH" with 1 <= W, H <= 16384; throws UsageError naming `option`.
+std::pair<int, int> parseImageSize(const std::string& text, const std::string& option);
+
 // A 4x4 matrix from 16 numbers separated by spaces or commas, column-major like glLoadMatrix.
 Mat4 parseMatrix(const std::string& text, const std::string& option);
 

@@ -8,6 +8,7 @@
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
 #include "io/obj_writer.h"
+#include "mapped_mesh.h"
 #include "param/projector.h"
 #include "projector_cli.h"
 #include "run_report.h"
@@ -33,26 +34,28 @@ void runMap(const MapArguments& a) {
   const nlohmann::json inputSummary = inputJson(a.input, input);
 
   clock.start("mapping", std::to_string(input.mesh.faceCount()) + " faces");
-  const param::Projection projection = param::project(std::move(input.mesh), options);
+  const MappedMesh mapped = mapByProjector(std::move(input.mesh), options, a.projector.seamPlaceAuto());
   const double mapMs = clock.stop();
-  const param::MappingSummary& s = projection.summary;
+  const param::MappingSummary& s = mapped.projection->summary;
 
   clock.start("writing", a.output);
   io::ObjWriteOptions write;
   write.writeW = a.writeW;
   write.floatPrecision = a.floatDigits;
   write.header = "uvtk map " + a.input;
-  io::writeObj(a.output, projection.mesh, &projection.uv, write);
+  io::writeObj(a.output, mapped.mesh, &mapped.uv, write);
   const double writeMs = clock.stop();
 
   if (!a.json.empty()) {
     nlohmann::json j = summaryJson(s);
     j["input"] = inputSummary;
     j["output"] = a.output;
+    if (mapped.seamPlacement) j["seam_placement"] = seamPlacementJson(*mapped.seamPlacement);
     j["milliseconds"] = {{"read", readMs}, {"map", mapMs}, {"write", writeMs}};
     io::writeFileAtomically(a.json, j.dump(2) + "\n");
   }
   printInputWarnings(a.input, input.warnings);
+  if (mapped.seamPlacement) printSeamPlacement(*mapped.seamPlacement);
   std::fprintf(stderr,
                "uvtk map: %zu vertices, %zu faces, %zu seam edges, %zu pole vertices, %zu pole faces, "
                "%zu invalid vertices, %.1f ms\n",

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "analysis/summary.h"
 #include "cli_values.h"
 #include "commands.h"
 #include "core/error.h"
@@ -17,13 +18,14 @@
 #include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "io/mesh_reader.h"
-#include "param/projector.h"
+#include "mapped_mesh.h"
 #include "projector_cli.h"
 #include "render/procedural.h"
 #include "render/renderer.h"
 #include "run_report.h"
 #include "texgen/texgen.h"
 #include "texgen_cli.h"
+#include "views/views.h"
 
 namespace uvtk::cli {
 
@@ -53,19 +55,13 @@ struct RenderArguments {
   TexgenArguments texgen;
   // outputs
   std::string aov, aovOutput;
+  std::string view;  // inspection views instead of the textured picture
+  views::View layoutFill = views::View::Stretch;
+  int layoutSize = 512;
 };
 
-std::pair<int, int> parseSize(const std::string& text) {
-  int w = 0, h = 0;
-  char x = 0, extra = 0;
-  std::istringstream in(text);
-  if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || (in >> extra) || w < 1 || h < 1 || w > 16384 || h > 16384)
-    throw UsageError("--size: expected WxH with 1 <= W, H <= 16384, found '" + text + "'");
-  return {w, h};
-}
-
 render::Camera makeCamera(const RenderArguments& a, const Mesh& mesh, const Mat4& worldFromObject) {
-  const auto [width, height] = parseSize(a.size);
+  const auto [width, height] = parseImageSize(a.size, "--size");
   const Vec3 up = parseVec3(a.up, "--up");
   // Explicit when asked for, or when --eye is given without --camera.
   const bool cameraGiven = given(a.projector.app, "--camera");
@@ -75,11 +71,12 @@ render::Camera makeCamera(const RenderArguments& a, const Mesh& mesh, const Mat4
   render::Camera camera;
   if (!manual) {
     std::vector<Vec3> world(mesh.positions.size());
-    for (std::size_t v = 0; v < world.size(); ++v) world[v] = (worldFromObject * mesh.positions[v].homogeneous()).head<3>();
+    for (std::size_t v = 0; v < world.size(); ++v)
+      world[v] = (worldFromObject * mesh.positions[v].homogeneous()).head<3>();
     const Vec3 direction = a.eye.empty() ? parseVec3(a.viewDir, "--view-dir")
                                          : Vec3(parseVec3(a.eye, "--eye") - parseVec3(a.center, "--center"));
-    camera = render::frameSphere(render::boundingSphere(world), direction, up, {!a.ortho.empty() && a.ortho == "auto", a.fovy},
-                                 width, height);
+    camera = render::frameSphere(render::boundingSphere(world), direction, up,
+                                 {!a.ortho.empty() && a.ortho == "auto", a.fovy}, width, height);
     if (!a.zNear && !a.zFar) return camera;
   }
   camera.width = width;
@@ -132,6 +129,49 @@ Image selectChannels(const Image& all, const std::vector<std::string>& names) {
   return out;
 }
 
+// `--view`: the named inspection views (one picture, or a contact sheet of several) instead of the
+// textured picture. Distortion is measured only when a view shows it.
+void drawViews(const RenderArguments& a, const std::vector<views::View>& list, const MappedMesh& mapped,
+               const render::RenderOptions& renderOptions, const nlohmann::json& inputSummary) {
+  StageClock clock("uvtk render");
+  const auto showsMeasures = [](views::View v) {
+    return v != views::View::Checker && v != views::View::Uvgrid && v != views::View::UvError;
+  };
+  std::vector<analysis::FaceDistortion> faces;
+  analysis::Summary summary;
+  if (std::any_of(list.begin(), list.end(), showsMeasures)) {
+    clock.start("measuring", std::to_string(mapped.mesh.faceCount()) + " faces");
+    faces = analysis::measureFaces(mapped.mesh, mapped.uv, mapped.distortionOptions());
+    summary = analysis::summarize(mapped.mesh, mapped.uv, faces);
+    clock.stop();
+  }
+  const views::ViewInput in = mapped.viewInput(faces, summary);
+  views::ViewOptions options;
+  options.render = renderOptions;
+  options.layoutFill = a.layoutFill;
+  options.layoutSize = a.layoutSize;
+
+  nlohmann::json j = {{"input", inputSummary}, {"output", a.output}, {"texcoords", mapped.source}, {"views", {}}};
+  std::vector<std::pair<std::string, Image>> tiles;
+  for (const views::View view : list) {
+    clock.start("drawing", views::toString(view));
+    tiles.emplace_back(views::toString(view), views::drawView(view, in, options));
+    j["views"].push_back(views::toString(view));
+    if (view == views::View::UvError && !a.json.empty()) {
+      const views::UvErrorMap error = views::uvErrorMap(in, options);
+      j["uverror_texels"] = {
+          {"max", error.max}, {"mean", error.mean}, {"pixels", error.pixels}, {"invalid_pixels", error.invalidPixels}};
+    }
+    clock.stop();
+  }
+  clock.start("writing", a.output);
+  const Image picture =
+      tiles.size() == 1 ? tiles.front().second : views::contactSheet(tiles, std::min<int>(3, int(tiles.size())));
+  io::writeImage(a.output, picture, io::PixelType::UInt8);
+  if (!a.json.empty()) io::writeFileAtomically(a.json, j.dump(2) + "\n");
+  clock.stop();
+}
+
 void runRender(RenderArguments& a) {
   const bool projectorGiven = given(a.projector.app, "--projector");
   if (projectorGiven && a.texgen.given()) throw UsageError("--projector and texgen options exclude each other");
@@ -139,6 +179,9 @@ void runRender(RenderArguments& a) {
   if (!a.aov.empty() && a.aovOutput.empty())
     a.aovOutput = std::filesystem::path(a.output).replace_extension(".exr").string();
   if (!a.aov.empty() && a.aovOutput == a.output) throw UsageError("--aov-output must differ from --output");
+  const std::vector<views::View> viewList = a.view.empty() ? std::vector<views::View>() : views::parseViewList(a.view);
+  if (!viewList.empty() && !a.aov.empty()) throw UsageError("--view and --aov exclude each other");
+  if (a.layoutSize < 16 || a.layoutSize > 16384) throw UsageError("--layout-size: expected 16 to 16384 pixels");
   io::checkImageType(a.output, io::PixelType::UInt8);  // nothing is written unless both outputs can be
   if (!a.aov.empty()) io::checkImageType(a.aovOutput, io::PixelType::Float);
   const Mat4 worldFromObject = a.model.empty() ? Mat4::Identity() : parseMatrix(a.model, "--model");
@@ -160,64 +203,24 @@ void runRender(RenderArguments& a) {
 
   clock.start("texture coordinates", std::to_string(input.mesh.faceCount()) + " faces");
   const bool perPixel = a.uv == UvEvaluation::PerPixel;
-  Mesh mesh;
-  render::TexcoordSource texcoords;
-  std::string source;
+  MappedMesh mapped;
   if (projectorGiven) {
-    source = "projector";
     const Mat4 objectFromWorld = worldFromObject.inverse();
     a.projector.options.eye = (objectFromWorld * options.camera.eye().homogeneous()).head<3>();
-    const param::ProjectorOptions projectorOptions = a.projector.resolve();
-    param::Projection projection = param::project(std::move(input.mesh), projectorOptions);
-    mesh = std::move(projection.mesh);
-    texcoords.corners.resize(projection.uv.uv.size());
-    for (std::size_t c = 0; c < texcoords.corners.size(); ++c)
-      texcoords.corners[c] = Vec4(projection.uv.uv[c].x(), projection.uv.uv[c].y(), 0.0, 1.0);
-    if (perPixel) {
-      auto mapping = std::make_shared<param::PointMapping>(projectorOptions, projection.localFromObject);
-      auto capFaces = std::make_shared<std::vector<std::uint8_t>>(projection.uv.faceFlags);
-      const Mesh* m = &mesh;
-      texcoords.pixelMapping = render::PixelMapping{
-          [mapping, capFaces, m](const Vec3& p, const Vec3& n, std::int32_t face) -> Vec4 {
-            const bool cap = ((*capFaces)[std::size_t(face)] & kFaceCap) != 0;
-            Vec3 normal = n;
-            if (cap) {  // the cap's side comes from the face, as project() decided it
-              const Triangle& t = m->triangles[std::size_t(face)];
-              normal = triangleAreaNormal(m->positions[t[0]], m->positions[t[1]], m->positions[t[2]]);
-            }
-            const param::VertexUv uv = mapping->at(p, normal, cap);
-            const double nan = std::numeric_limits<double>::quiet_NaN();
-            return uv.state == param::CornerState::Invalid ? Vec4(nan, nan, 0, 1) : Vec4(uv.uv.x(), uv.uv.y(), 0, 1);
-          },
-          mapping->wrapsU(), mapping->needsNormal()};
-    }
+    mapped = mapByProjector(std::move(input.mesh), a.projector.resolve(), a.projector.seamPlaceAuto());
   } else if (a.texgen.given()) {
-    source = "texgen";
-    mesh = std::move(input.mesh);
-    const texgen::TexgenOptions texgenOptions = a.texgen.resolve(options.camera.viewFromWorld, worldFromObject);
-    if (perPixel) {
-      texcoords.pixelMapping = render::PixelMapping{
-          [texgenOptions](const Vec3& p, const Vec3& n, std::int32_t) { return texgen::texgenAt(p, n, texgenOptions); },
-          false, true};
-    } else {
-      const texgen::TexgenResult generated = texgen::generateTexcoords(mesh, texgenOptions);
-      texcoords.corners.resize(generated.q.size());
-      for (std::size_t c = 0; c < generated.q.size(); ++c)
-        texcoords.corners[c] = Vec4(generated.uv.uv[c].x(), generated.uv.uv[c].y(), generated.uv.w[c], generated.q[c]);
-    }
+    mapped = mapByTexgen(std::move(input.mesh), a.texgen.resolve(options.camera.viewFromWorld, worldFromObject));
   } else {
-    source = "file";
-    mesh = std::move(input.mesh);
     if (perPixel) throw UsageError("--uv per-pixel evaluates a mapping: give --projector or --texgen");
-    if (!mesh.hasTexcoords())
-      throw UsageError(a.input + " has no texture coordinates (vt): give --projector or --texgen");
-    texcoords.corners.resize(3 * mesh.faceCount());
-    for (std::size_t f = 0; f < mesh.faceCount(); ++f)
-      for (int k = 0; k < 3; ++k) {
-        const int t = mesh.cornerTexcoords[f][k];  // a corner without vt keeps GL's current (0, 0, 0, 1)
-        const Vec3 uvw = t >= 0 ? mesh.texcoords[std::size_t(t)] : Vec3::Zero();
-        texcoords.corners[3 * f + std::size_t(k)] = Vec4(uvw.x(), uvw.y(), uvw.z(), 1.0);
-      }
+    if (std::any_of(viewList.begin(), viewList.end(), views::needsExactMapping))
+      throw UsageError("--view uverror compares with the exact mapping: give --projector or --texgen");
+    mapped = withFileUvs(std::move(input.mesh), a.input);
+  }
+  render::TexcoordSource texcoords;
+  if (perPixel) {
+    texcoords.pixelMapping = mapped.exact;
+  } else {
+    texcoords.corners = mapped.corners();
   }
   const double uvMs = clock.stop();
 
@@ -227,9 +230,16 @@ void runRender(RenderArguments& a) {
   options.texture = &texture;
   const double textureMs = clock.stop();
 
+  if (!viewList.empty()) {
+    drawViews(a, viewList, mapped, options, inputSummary);
+    printInputWarnings(a.input, input.warnings);
+    if (mapped.seamPlacement) printSeamPlacement(*mapped.seamPlacement);
+    return;
+  }
+
   clock.start("rendering", std::to_string(options.camera.width) + "x" + std::to_string(options.camera.height));
   options.aovs = !a.aov.empty();
-  const render::Rendering rendering = render::render(mesh, texcoords, options);
+  const render::Rendering rendering = render::render(mapped.mesh, texcoords, options);
   clock.stop();
 
   clock.start("writing", a.output);
@@ -240,24 +250,32 @@ void runRender(RenderArguments& a) {
   if (!a.json.empty()) {
     nlohmann::json j = {{"input", inputSummary},
                         {"output", a.output},
-                        {"texcoords", source},
+                        {"texcoords", mapped.source},
                         {"uv", perPixel ? "per-pixel" : "per-vertex"},
                         {"width", options.camera.width},
                         {"height", options.camera.height},
-                        {"faces", mesh.faceCount()},
+                        {"faces", mapped.mesh.faceCount()},
                         {"faces_drawn", rendering.raster.drawn},
                         {"faces_culled", rendering.raster.culled},
                         {"faces_clipped", rendering.raster.clipped},
                         {"covered_pixels", rendering.coveredPixels},
-                        {"texture", {{"name", a.texture}, {"width", texture.width()}, {"height", texture.height()},
-                                     {"levels", texture.levelCount()}}},
+                        {"texture",
+                         {{"name", a.texture},
+                          {"width", texture.width()},
+                          {"height", texture.height()},
+                          {"levels", texture.levelCount()}}},
                         {"milliseconds",
-                         {{"read", readMs}, {"texcoords", uvMs}, {"texture", textureMs}, {"raster", rendering.rasterMs},
-                          {"shade", rendering.shadeMs}, {"write", writeMs}}}};
+                         {{"read", readMs},
+                          {"texcoords", uvMs},
+                          {"texture", textureMs},
+                          {"raster", rendering.rasterMs},
+                          {"shade", rendering.shadeMs},
+                          {"write", writeMs}}}};
     if (!a.aov.empty()) j["aov_output"] = a.aovOutput;
     io::writeFileAtomically(a.json, j.dump(2) + "\n");
   }
   printInputWarnings(a.input, input.warnings);
+  if (mapped.seamPlacement) printSeamPlacement(*mapped.seamPlacement);
   std::fprintf(stderr,
                "uvtk render: %dx%d, %zu faces drawn, %zu culled, %zu clipped, %zu pixels covered, raster %.1f ms, "
                "shade %.1f ms\n",
@@ -272,7 +290,8 @@ void addRenderCommand(CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
       "render", "Render a textured mesh as OpenGL's fixed-function pipeline would (checker, uvgrid or an image)");
   cmd->add_option("input", a->input, "Input mesh (.obj or .off)")->required();
-  cmd->add_option("-o,--output", a->output, "Output image, 8-bit RGB, format by extension (.png, .tif, .jpg, ...)")->required();
+  cmd->add_option("-o,--output", a->output, "Output image, 8-bit RGB, format by extension (.png, .tif, .jpg, ...)")
+      ->required();
   // camera
   addChoice<CameraMode>(*cmd, "--camera", a->camera, {{"auto", CameraMode::Auto}, {"explicit", CameraMode::Explicit}},
                         "auto frames the mesh's bounding sphere (along --view-dir, or eye - center when --eye is "
@@ -327,14 +346,28 @@ void addRenderCommand(CLI::App& root) {
   cmd->add_option("--env-color", a->envColour, "GL_TEXTURE_ENV_COLOR for blend (r,g,b,a)")->capture_default_str();
   cmd->add_option("--background", a->background, "Background colour r,g,b in [0, 1]")->capture_default_str();
   // texture coordinates
-  addChoice<UvEvaluation>(*cmd, "--uv", a->uv, {{"per-vertex", UvEvaluation::PerVertex}, {"per-pixel", UvEvaluation::PerPixel}},
+  addChoice<UvEvaluation>(*cmd, "--uv", a->uv,
+                          {{"per-vertex", UvEvaluation::PerVertex}, {"per-pixel", UvEvaluation::PerPixel}},
                           "Interpolate per-vertex texture coordinates, or evaluate the mapping at every pixel")
       ->default_str("per-vertex");
   addProjectorOptions(*cmd, a->projector, true);
   addTexgenOptions(*cmd, a->texgen, "--texgen");
   // outputs
-  cmd->add_option("--aov", a->aov, "Also write float AOVs: a list of uv, depth, face, lod")->type_name("uv,depth,face,lod");
+  cmd->add_option("--aov", a->aov, "Also write float AOVs: a list of uv, depth, face, lod")
+      ->type_name("uv,depth,face,lod");
   cmd->add_option("--aov-output", a->aovOutput, "The AOV file (.exr or .tif; default: the output with .exr)");
+  cmd->add_option("--view", a->view,
+                  "Draw inspection views instead: checker, uvgrid, stretch, linf, angle, area, seams, uverror, layout "
+                  "(several: a contact sheet)")
+      ->type_name("NAME[,NAME...]");
+  addChoice<views::View>(*cmd, "--layout-fill", a->layoutFill,
+                         {{"stretch", views::View::Stretch},
+                          {"linf", views::View::Linf},
+                          {"angle", views::View::Angle},
+                          {"area", views::View::Area}},
+                         "The measure that fills the triangles of the layout view")
+      ->default_str("stretch");
+  cmd->add_option("--layout-size", a->layoutSize, "Pixels across the layout view's UV square")->capture_default_str();
   cmd->add_option("--json", a->json, "Also write a summary as JSON");
   cmd->callback([a] { runRender(*a); });
 }

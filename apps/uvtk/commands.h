@@ -8,5 +8,7 @@ namespace uvtk::cli {
 void addMapCommand(CLI::App& root);
 void addTexgenCommand(CLI::App& root);
 void addRenderCommand(CLI::App& root);
+void addReportCommand(CLI::App& root);
+void addCompareCommand(CLI::App& root);
 
 }  // namespace uvtk::cli

@@ -12,6 +12,8 @@ int main(int argc, char** argv) {
   uvtk::cli::addMapCommand(app);
   uvtk::cli::addTexgenCommand(app);
   uvtk::cli::addRenderCommand(app);
+  uvtk::cli::addReportCommand(app);
+  uvtk::cli::addCompareCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,5 +1,6 @@
 #include "projector_cli.h"
 
+#include <cstdio>
 
 #include "cli_values.h"
 #include "core/error.h"
@@ -8,34 +9,60 @@ namespace uvtk::cli {
 
 using namespace uvtk::param;
 
+namespace {
+
+// The option names of each choice, shared by the options and the JSON record of a run.
+const std::vector<std::pair<std::string, SurfaceKind>> kSurfaceNames = {{"plane", SurfaceKind::Plane},
+                                                                        {"two-plane", SurfaceKind::TwoPlane},
+                                                                        {"cylinder", SurfaceKind::Cylinder},
+                                                                        {"sphere", SurfaceKind::Sphere},
+                                                                        {"cube", SurfaceKind::Cube}};
+const std::vector<std::pair<std::string, RayKind>> kRayNames = {{"isn", RayKind::SurfaceNormal},
+                                                                {"centroid", RayKind::Centroid},
+                                                                {"normal", RayKind::ObjectNormal},
+                                                                {"reflection", RayKind::Reflection}};
+const std::vector<std::pair<std::string, Fit>> kFitNames = {
+    {"none", Fit::None}, {"bbox", Fit::BBox}, {"pca", Fit::Pca}, {"obb", Fit::Obb}};
+const std::vector<std::pair<std::string, int>> kAxisNames = {{"x", 0}, {"y", 1}, {"z", 2}};
+const std::vector<std::pair<std::string, SpherePreset>> kSpherePresetNames = {
+    {"default", SpherePreset::Default}, {"glu", SpherePreset::Glu}, {"seed004", SpherePreset::Seed004}};
+const std::vector<std::pair<std::string, CubeConvention>> kCubeConventionNames = {{"gl", CubeConvention::Gl},
+                                                                                  {"direct", CubeConvention::Direct}};
+const std::vector<std::pair<std::string, CubeLayout>> kCubeLayoutNames = {{"faces", CubeLayout::Faces},
+                                                                          {"cross", CubeLayout::Cross},
+                                                                          {"strip", CubeLayout::Strip},
+                                                                          {"3x2", CubeLayout::ThreeByTwo}};
+const std::vector<std::pair<std::string, SeamMode>> kSeamNames = {
+    {"none", SeamMode::None}, {"shift", SeamMode::Shift}, {"cut", SeamMode::Cut}};
+const std::vector<std::pair<std::string, PoleMode>> kPoleNames = {{"none", PoleMode::None}, {"fan", PoleMode::Fan}};
+
+// The name `table` gives `value`.
+template <class Enum>
+const std::string& nameOf(const std::vector<std::pair<std::string, Enum>>& table, Enum value) {
+  for (const auto& [name, v] : table)
+    if (v == value) return name;
+  throw std::logic_error("a choice without a name");
+}
+
+}  // namespace
+
 void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEye) {
   a.app = &app;
   a.cameraOwnsEye = cameraOwnsEye;
   ProjectorOptions& o = a.options;
-  addChoice<SurfaceKind>(app, "--projector", o.surface,
-                         {{"plane", SurfaceKind::Plane},
-                          {"two-plane", SurfaceKind::TwoPlane},
-                          {"cylinder", SurfaceKind::Cylinder},
-                          {"sphere", SurfaceKind::Sphere},
-                          {"cube", SurfaceKind::Cube}},
+  addChoice<SurfaceKind>(app, "--projector", o.surface, kSurfaceNames,
                          cameraOwnsEye ? "Texture coordinates by this projector (its intermediate surface)"
                                        : "Intermediate surface (S-mapping)")
       ->default_str(cameraOwnsEye ? "" : "sphere");
-  addChoice<RayKind>(app, "--omap", o.ray,
-                     {{"isn", RayKind::SurfaceNormal},
-                      {"centroid", RayKind::Centroid},
-                      {"normal", RayKind::ObjectNormal},
-                      {"reflection", RayKind::Reflection}},
+  addChoice<RayKind>(app, "--omap", o.ray, kRayNames,
                      "Ray mapping (O-mapping): isn = along the intermediate surface's own normal")
       ->default_str("isn");
-  addChoice<Fit>(app, "--fit", o.placement.fit,
-                 {{"none", Fit::None}, {"bbox", Fit::BBox}, {"pca", Fit::Pca}, {"obb", Fit::Obb}},
-                 "Placement fitted to the mesh; none = object coordinates")
+  addChoice<Fit>(app, "--fit", o.placement.fit, kFitNames, "Placement fitted to the mesh; none = object coordinates")
       ->default_str("bbox");
-  addChoice<int>(app, "--axis", o.placement.axis, {{"x", 0}, {"y", 1}, {"z", 2}},
-                 "Object axis that becomes the local z of a bbox fit")
+  addChoice<int>(app, "--axis", o.placement.axis, kAxisNames, "Object axis that becomes the local z of a bbox fit")
       ->default_str("z");
-  app.add_option(cameraOwnsEye ? "--frame-center" : "--center", a.center, "Explicit placement: origin x,y,z (replaces the fit)")
+  app.add_option(cameraOwnsEye ? "--frame-center" : "--center", a.center,
+                 "Explicit placement: origin x,y,z (replaces the fit)")
       ->type_name("X,Y,Z");
   app.add_option("--axis-dir", a.axisDir, "Explicit placement: local z direction")
       ->type_name("X,Y,Z")
@@ -53,36 +80,31 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEy
   app.add_flag("--caps", o.cylinderCaps, "cylinder: planar caps on faces facing along the axis");
   app.add_option("--cap-angle", o.capAngleDegrees, "cylinder: degrees between a cap face's normal and the axis")
       ->default_str("45");
-  addChoice<SpherePreset>(app, "--sphere-preset", o.spherePreset,
-                          {{"default", SpherePreset::Default}, {"glu", SpherePreset::Glu}, {"seed004", SpherePreset::Seed004}},
+  addChoice<SpherePreset>(app, "--sphere-preset", o.spherePreset, kSpherePresetNames,
                           "sphere: default (u from +x, v = 1 at +z), glu (gluSphere), seed004")
       ->default_str("default");
-  addChoice<CubeConvention>(app, "--cube-convention", o.cubeConvention,
-                            {{"gl", CubeConvention::Gl}, {"direct", CubeConvention::Direct}},
+  addChoice<CubeConvention>(app, "--cube-convention", o.cubeConvention, kCubeConventionNames,
                             "cube: gl (OpenGL face table) or direct")
       ->default_str("gl");
-  addChoice<CubeLayout>(app, "--cube-layout", o.cubeLayout,
-                        {{"faces", CubeLayout::Faces},
-                         {"cross", CubeLayout::Cross},
-                         {"strip", CubeLayout::Strip},
-                         {"3x2", CubeLayout::ThreeByTwo}},
+  addChoice<CubeLayout>(app, "--cube-layout", o.cubeLayout, kCubeLayoutNames,
                         "cube: faces (face id as w), cross, strip, 3x2")
       ->default_str("faces");
   if (!cameraOwnsEye)
     app.add_option("--eye", a.eye, "reflection: eye position in object space (required)")->type_name("X,Y,Z");
   app.add_flag("--at-infinity", o.atInfinity, "reflection: look up by the reflected direction only");
-  addChoice<SeamMode>(app, "--seam", o.seam,
-                      {{"none", SeamMode::None}, {"shift", SeamMode::Shift}, {"cut", SeamMode::Cut}},
-                      "Seam repair: none, shift (u in [0,1.5)), cut (u in [0,1])")
+  addChoice<SeamMode>(app, "--seam", o.seam, kSeamNames, "Seam repair: none, shift (u in [0,1.5)), cut (u in [0,1])")
       ->default_str("shift");
-  addChoice<PoleMode>(app, "--pole", o.pole, {{"none", PoleMode::None}, {"fan", PoleMode::Fan}},
+  addChoice<PoleMode>(app, "--pole", o.pole, kPoleNames,
                       "Pole corners: none (u = 0) or fan (mean u of the face's other corners)")
       ->default_str("fan");
   app.add_option("--pole-eps", o.poleEpsilon, "A pole: hypot(x,y) <= eps |q|, eps in [0, 1)")->default_str("1e-06");
+  app.add_option("--seam-place", a.seamPlace,
+                 "cylinder, sphere: turn the projector about its axis to put the seam at this azimuth in degrees, or "
+                 "auto: where it crosses the fewest faces")
+      ->type_name("DEGREES|auto");
   app.add_option("--uv-scale", a.uvScale, "UV transform: scale")->type_name("SU,SV")->default_str(a.uvScale);
   app.add_option("--uv-offset", a.uvOffset, "UV transform: offset")->type_name("OU,OV")->default_str(a.uvOffset);
-  app.add_option("--uv-rotate", o.uvTransform.rotateDegrees, "UV transform: degrees about (0.5,0.5)")
-      ->default_str("0");
+  app.add_option("--uv-rotate", o.uvTransform.rotateDegrees, "UV transform: degrees about (0.5,0.5)")->default_str("0");
   app.add_flag("--flip-u", o.uvTransform.flipU, "UV transform: u -> 1 - u (first)");
   app.add_flag("--flip-v", o.uvTransform.flipV, "UV transform: v -> 1 - v (first)");
 }
@@ -90,8 +112,8 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEy
 ProjectorOptions ProjectorArguments::resolve() const {
   ProjectorOptions o = options;
   const char* centerOption = cameraOwnsEye ? "--frame-center" : "--center";
-  const bool explicitFrame = given(app, centerOption) || given(app, "--axis-dir") || given(app, "--ref-dir") ||
-                             given(app, "--scale");
+  const bool explicitFrame =
+      given(app, centerOption) || given(app, "--axis-dir") || given(app, "--ref-dir") || given(app, "--scale");
   if (explicitFrame) {
     if (given(app, "--fit") && o.placement.fit != Fit::None)
       throw UsageError(std::string(centerOption) +
@@ -109,10 +131,60 @@ ProjectorOptions ProjectorArguments::resolve() const {
   if (o.ray == RayKind::Reflection && !o.eye) throw UsageError("--omap reflection: expected --eye x,y,z");
   if (o.ray != RayKind::Reflection && (o.atInfinity || (!cameraOwnsEye && o.eye)))
     throw UsageError("--eye and --at-infinity go with --omap reflection only");
+  if (!seamPlace.empty()) {
+    if (o.surface != SurfaceKind::Cylinder && o.surface != SurfaceKind::Sphere)
+      throw UsageError("--seam-place: only the wrapping projectors (cylinder, sphere) have a seam to place");
+    if (!seamPlaceAuto()) o.placement.turnDegrees = parseNumbers(seamPlace, 1, "--seam-place")[0];
+  }
   o.uvTransform.scale = parseVec2(uvScale, "--uv-scale");
   o.uvTransform.offset = parseVec2(uvOffset, "--uv-offset");
   if (!std::isfinite(o.uvTransform.rotateDegrees)) throw UsageError("--uv-rotate: expected a finite number");
   return o;
+}
+
+nlohmann::json projectorOptionsJson(const ProjectorOptions& o) {
+  nlohmann::json j = {{"projector", nameOf(kSurfaceNames, o.surface)},
+                      {"omap", nameOf(kRayNames, o.ray)},
+                      {"fit", nameOf(kFitNames, o.placement.fit)},
+                      {"axis", nameOf(kAxisNames, o.placement.axis)},
+                      {"turn_degrees", o.placement.turnDegrees},
+                      {"seam", nameOf(kSeamNames, o.seam)},
+                      {"pole", nameOf(kPoleNames, o.pole)},
+                      {"pole_eps", o.poleEpsilon},
+                      {"sphere_preset", nameOf(kSpherePresetNames, o.spherePreset)},
+                      {"cube_convention", nameOf(kCubeConventionNames, o.cubeConvention)},
+                      {"cube_layout", nameOf(kCubeLayoutNames, o.cubeLayout)},
+                      {"caps", o.cylinderCaps},
+                      {"cap_angle", o.capAngleDegrees},
+                      {"plane_u", {o.planeU[0], o.planeU[1], o.planeU[2], o.planeU[3]}},
+                      {"plane_v", {o.planeV[0], o.planeV[1], o.planeV[2], o.planeV[3]}},
+                      {"uv_scale", {o.uvTransform.scale.x(), o.uvTransform.scale.y()}},
+                      {"uv_offset", {o.uvTransform.offset.x(), o.uvTransform.offset.y()}},
+                      {"uv_rotate", o.uvTransform.rotateDegrees},
+                      {"flip_u", o.uvTransform.flipU},
+                      {"flip_v", o.uvTransform.flipV}};
+  if (const auto& f = o.placement.frame)
+    j["frame"] = {{"center", {f->center.x(), f->center.y(), f->center.z()}},
+                  {"axis_dir", {f->axisDir.x(), f->axisDir.y(), f->axisDir.z()}},
+                  {"ref_dir", {f->refDir.x(), f->refDir.y(), f->refDir.z()}},
+                  {"scale", f->scale}};
+  if (o.eye) j["eye"] = {o.eye->x(), o.eye->y(), o.eye->z()};
+  if (o.ray == RayKind::Reflection) j["at_infinity"] = o.atInfinity;
+  return j;
+}
+
+void printSeamPlacement(const SeamPlacement& p) {
+  std::fprintf(stderr,
+               "uvtk: seam placed at %.6g degrees: it crosses %zu faces (%zu before), seam length %.6g (%.6g before)\n",
+               p.turnDegrees, p.facesCrossed, p.facesCrossedBefore, p.seamLength, p.seamLengthBefore);
+}
+
+nlohmann::json seamPlacementJson(const SeamPlacement& p) {
+  return {{"turn_degrees", p.turnDegrees},
+          {"faces_crossed", p.facesCrossed},
+          {"faces_crossed_before", p.facesCrossedBefore},
+          {"seam_length", p.seamLength},
+          {"seam_length_before", p.seamLengthBefore}};
 }
 
 }  // namespace uvtk::cli

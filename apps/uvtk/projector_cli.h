@@ -2,6 +2,8 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "param/projector.h"
@@ -16,12 +18,24 @@ struct ProjectorArguments {
   std::string planeU = "1,0,0,0", planeV = "0,1,0,0";
   std::string eye;
   std::string uvScale = "1,1", uvOffset = "0,0";
+  std::string seamPlace;  // "auto" or degrees
   CLI::App* app = nullptr;
   bool cameraOwnsEye = false;  // `uvtk render`: --eye and --center belong to the camera
 
-  // Checks combinations and parses vectors; throws UsageError.
+  // Checks combinations and parses vectors; throws UsageError. `--seam-place auto` is left to
+  // the caller, which has the mesh (mapByProjector in mapped_mesh.h).
   param::ProjectorOptions resolve() const;
+  bool seamPlaceAuto() const { return seamPlace == "auto"; }
 };
+
+// Every option as a JSON object, named as on the command line.
+nlohmann::json projectorOptionsJson(const param::ProjectorOptions& options);
+
+// One line on stderr: where --seam-place auto put the seam and what it gained.
+void printSeamPlacement(const param::SeamPlacement& placement);
+
+// The JSON record of a seam placement.
+nlohmann::json seamPlacementJson(const param::SeamPlacement& placement);
 
 // Adds --projector, --omap, --fit and all the other mapping options to `app`. With
 // `cameraOwnsEye` (uvtk render) the placement's origin is --frame-center and the reflection

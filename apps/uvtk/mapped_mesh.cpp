@@ -1,0 +1,122 @@
+#include "mapped_mesh.h"
+
+#include <limits>
+#include <memory>
+
+#include "core/error.h"
+#include "param/projector.h"
+
+namespace uvtk::cli {
+
+analysis::DistortionOptions MappedMesh::distortionOptions() const {
+  analysis::DistortionOptions options;
+  if (projector && projector->surface == param::SurfaceKind::Plane)
+    options.projectionDirection = projection->localFromObject.inverse().linear().col(2);
+  return options;
+}
+
+views::ViewInput MappedMesh::viewInput(const std::vector<analysis::FaceDistortion>& faces,
+                                       const analysis::Summary& summary) const {
+  views::ViewInput in;
+  in.mesh = &mesh;
+  in.uv = &uv;
+  in.faces = &faces;
+  in.summary = &summary;
+  in.poleVertices = projection ? projection->summary.poleVertexList : summary.poleVertices;
+  in.exact = exact;
+  in.wrapsU = exact && exact->wrapsS;
+  return in;
+}
+
+std::vector<Vec4> MappedMesh::corners() const {
+  std::vector<Vec4> out(uv.uv.size());
+  for (std::size_t c = 0; c < out.size(); ++c)
+    out[c] = Vec4(uv.uv[c].x(), uv.uv[c].y(), uv.w.empty() ? 0.0 : uv.w[c], q.empty() ? 1.0 : q[c]);
+  return out;
+}
+
+namespace {
+
+// The projector evaluated at every pixel (docs/conventions.md §9).
+render::PixelMapping projectorPixelMapping(const param::ProjectorOptions& options, const Affine3& localFromObject,
+                                           const Mesh& mesh, const UvMap& uv) {
+  auto mapping = std::make_shared<param::PointMapping>(options, localFromObject);
+  // A cap face maps by the side its own normal faces, as project() decided (param/projector.h).
+  auto capNormals = std::make_shared<std::vector<Vec3>>(uv.faceCount(), Vec3::Zero());
+  for (std::size_t f = 0; f < uv.faceCount(); ++f)
+    if (uv.faceHas(f, kFaceCap)) {
+      const Triangle& t = mesh.triangles[f];
+      (*capNormals)[f] = triangleAreaNormal(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
+    }
+  return render::PixelMapping{[mapping, capNormals](const Vec3& p, const Vec3& n, std::int32_t face) -> Vec4 {
+                                const Vec3& capNormal = (*capNormals)[std::size_t(face)];
+                                const bool cap = !capNormal.isZero();
+                                const param::VertexUv mapped = mapping->at(p, cap ? capNormal : n, cap);
+                                const double nan = std::numeric_limits<double>::quiet_NaN();
+                                return mapped.state == param::CornerState::Invalid
+                                           ? Vec4(nan, nan, 0, 1)
+                                           : Vec4(mapped.uv.x(), mapped.uv.y(), 0, 1);
+                              },
+                              mapping->wrapsU(), mapping->needsNormal()};
+}
+
+}  // namespace
+
+UvMap fileUvs(const Mesh& mesh, const std::string& path) {
+  if (!mesh.hasTexcoords()) throw UsageError(path + " has no texture coordinates (vt): give --projector");
+  UvMap uv;
+  uv.uv.resize(3 * mesh.faceCount(), Vec2::Zero());
+  uv.faceFlags.assign(mesh.faceCount(), kFaceOk);
+  uv.w.assign(3 * mesh.faceCount(), 0.0);
+  uv.cornerInvalid.assign(3 * mesh.faceCount(), 0);
+  for (std::size_t f = 0; f < mesh.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t corner = 3 * f + std::size_t(k);
+      const int t = mesh.cornerTexcoords[f][k];
+      if (t >= 0) {
+        uv.uv[corner] = mesh.texcoords[std::size_t(t)].head<2>();
+        uv.w[corner] = mesh.texcoords[std::size_t(t)].z();
+      } else {
+        uv.cornerInvalid[corner] = 1;
+        uv.faceFlags[f] |= kFaceInvalid;
+      }
+    }
+  return uv;
+}
+
+MappedMesh mapByProjector(Mesh mesh, param::ProjectorOptions options, bool seamPlaceAuto) {
+  MappedMesh out;
+  if (seamPlaceAuto) {
+    out.seamPlacement = param::placeSeam(mesh, options);
+    options.placement.turnDegrees = out.seamPlacement->turnDegrees;
+  }
+  out.projection = param::project(std::move(mesh), options);
+  out.mesh = std::move(out.projection->mesh);
+  out.uv = std::move(out.projection->uv);
+  out.projector = options;
+  out.source = "projector";
+  out.exact = projectorPixelMapping(options, out.projection->localFromObject, out.mesh, out.uv);
+  return out;
+}
+
+MappedMesh mapByTexgen(Mesh mesh, const texgen::TexgenOptions& options) {
+  MappedMesh out;
+  texgen::TexgenResult generated = texgen::generateTexcoords(mesh, options);
+  out.uv = std::move(generated.uv);
+  out.q = std::move(generated.q);
+  out.mesh = std::move(mesh);
+  out.source = "texgen";
+  out.exact = render::PixelMapping{
+      [options](const Vec3& p, const Vec3& n, std::int32_t) { return texgen::texgenAt(p, n, options); }, false, true};
+  return out;
+}
+
+MappedMesh withFileUvs(Mesh mesh, const std::string& path) {
+  MappedMesh out;
+  out.uv = fileUvs(mesh, path);
+  out.mesh = std::move(mesh);
+  out.source = "file";
+  return out;
+}
+
+}  // namespace uvtk::cli

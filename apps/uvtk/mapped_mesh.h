@@ -1,0 +1,54 @@
+// A mesh with its per-corner UVs, from the file's own vt or from a projector, and what analysis
+// and the views need to know about where they came from: the step every inspecting subcommand
+// (render, report, compare) shares.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "analysis/distortion.h"
+#include "analysis/summary.h"
+#include "core/mesh.h"
+#include "core/uv_map.h"
+#include "param/projector.h"
+#include "render/renderer.h"
+#include "texgen/texgen.h"
+#include "views/views.h"
+
+namespace uvtk::cli {
+
+struct MappedMesh {
+  Mesh mesh;                                         // with a projector and --seam cut, the cut mesh
+  UvMap uv;                                          // (s, t) per corner, and r in uv.w where the source has it
+  std::vector<double> q;                             // texgen's q per corner; empty means 1
+  std::string source;                                // "file", "projector" or "texgen"
+  std::optional<param::ProjectorOptions> projector;  // set when a projector made the UVs
+  std::optional<param::Projection> projection;       // its summary and frame (its mesh and uv moved out)
+  std::optional<param::SeamPlacement> seamPlacement;
+  std::optional<render::PixelMapping> exact;  // the mapping evaluated at every pixel (§9); none for a file
+
+  // (s, t, r, q) per corner, as the renderer takes them.
+  std::vector<Vec4> corners() const;
+  // Where a planar projector looks, so that faces turned away count as backfacing, not flipped.
+  analysis::DistortionOptions distortionOptions() const;
+  // What the views draw: this mesh and its UVs with their measures (which must outlive it); the
+  // poles the projector found, or for the file's UVs the fanned poles the summary found.
+  views::ViewInput viewInput(const std::vector<analysis::FaceDistortion>& faces,
+                             const analysis::Summary& summary) const;
+};
+
+// The file's vt as per-corner UVs (w in uv.w): a corner without vt is invalid (kFaceInvalid on its
+// face) and reads (0, 0, 0) as GL's current texture coordinate would.
+// Throws UsageError when the mesh has no vt at all, naming `path`.
+UvMap fileUvs(const Mesh& mesh, const std::string& path);
+
+// `mesh` mapped by `options` (after --seam-place auto when `seamPlaceAuto`).
+MappedMesh mapByProjector(Mesh mesh, param::ProjectorOptions options, bool seamPlaceAuto);
+
+// `mesh` with OpenGL texgen's (s, t, r, q).
+MappedMesh mapByTexgen(Mesh mesh, const texgen::TexgenOptions& options);
+
+// `mesh` with its own UVs.
+MappedMesh withFileUvs(Mesh mesh, const std::string& path);
+
+}  // namespace uvtk::cli
