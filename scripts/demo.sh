@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The main job: set up, build, map a bundled mesh with every projector into out/, render it, report
-# what is wrong with one mapping (out/report_sphere.html) and rank every mapping of the torus.
+# what is wrong with one mapping (out/report_sphere.html) and rank every mapping of the icosphere.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh build
@@ -30,9 +30,9 @@ echo "demo: wrote $(ls out/*.obj | wc -l) OBJ files with UVs into out/" >&2
 "$uvtk" render meshes/torus.obj --texgen sphere_map --texture uvgrid:512 --filter linear --view-dir 0,1,2 \
   -o out/render_torus_sphere_map.png
 echo "demo: rendered $(ls out/*.png | wc -l) pictures into out/" >&2
-# What is wrong with the sphere projector, and which mapping suits the torus best.
+# What is wrong with the sphere projector, and which mapping suits the icosphere best.
 "$uvtk" report "$mesh" --projector sphere --json out/report_sphere.json --html out/report_sphere.html \
   --views checker,uvgrid,stretch,angle,area,seams,uverror,layout
-"$uvtk" compare meshes/torus.obj --json out/compare_torus.json --markdown out/compare_torus.md \
-  --sheet out/compare_torus.png >/dev/null
-echo "demo: open out/report_sphere.html in a browser; the ranking for the torus is out/compare_torus.md" >&2
+"$uvtk" compare meshes/icosphere.obj --json out/compare_icosphere.json --markdown out/compare_icosphere.md \
+  --sheet out/compare_icosphere.png >/dev/null
+echo "demo: open out/report_sphere.html in a browser; the ranking for the icosphere is out/compare_icosphere.md" >&2

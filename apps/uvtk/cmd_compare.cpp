@@ -93,10 +93,14 @@ Candidate measure(std::string name, MappedMesh mapped, const CompareArguments& a
   return c;
 }
 
-// Usable candidates first, by the measure, then by seam length; the others by their problem area.
+// Usable candidates first, by the measure, then by seam length; the others by their problem area
+// plus their overlap fraction.
 bool ranksBefore(const Candidate& x, const Candidate& y) {
   if (x.usable != y.usable) return x.usable;
-  if (!x.usable) return x.problemArea < y.problemArea || (x.problemArea == y.problemArea && x.key < y.key);
+  if (!x.usable) {
+    const double xBad = x.problemArea + x.summary.overlap.fraction(), yBad = y.problemArea + y.summary.overlap.fraction();
+    return xBad < yBad || (xBad == yBad && x.key < y.key);
+  }
   return x.key < y.key || (x.key == y.key && x.seamLength < y.seamLength);
 }
 
