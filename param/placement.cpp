@@ -31,7 +31,9 @@ Mat3 fittedRotation(const std::vector<Vec3>& positions, SurfaceKind surface, con
   }
   // Spread-ordered axes e0 (largest), e1, e2 (smallest). A plane looks along the smallest spread
   // with x along the largest; the other surfaces put their axis along the largest spread.
-  const Mat3 e = options.fit == Fit::Pca ? principalAxes(positions) : orientedBoxAxes(positions);
+  const Mat3 e = options.spreadAxes ? *options.spreadAxes
+                 : options.fit == Fit::Pca ? principalAxes(positions)
+                                           : orientedBoxAxes(positions);
   if (surface == SurfaceKind::Plane) return frameRows(e.row(2), e.row(0));
   return frameRows(e.row(0), e.row(1));
 }

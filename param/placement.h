@@ -31,6 +31,9 @@ struct PlacementOptions {
   Fit fit = Fit::BBox;
   int axis = 2;                        // 0, 1, 2: object x, y or z becomes local z (bbox fit)
   std::optional<ExplicitFrame> frame;  // when set, it replaces the fit
+  // The pca or obb fit's axes when the caller has them already (principalAxes or
+  // orientedBoxAxes of the same positions), so that mapping one mesh many ways fits it once.
+  std::optional<Mat3> spreadAxes;
   // A turn of the frame about its local z axis, counter-clockwise seen from +z, after the fit or
   // the explicit frame: it moves the seam of a wrapping surface to this azimuth.
   double turnDegrees = 0.0;

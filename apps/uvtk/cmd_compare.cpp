@@ -108,7 +108,7 @@ bool ranksBefore(const Candidate& x, const Candidate& y) {
 // eye, which compare does not have) x fit (bbox about each axis, PCA, oriented box; the two-plane
 // projector works in object space, so one fit). The cube is laid out as a cross, so that its faces
 // do not overlap in UV.
-std::vector<std::pair<std::string, param::ProjectorOptions>> configurations() {
+std::vector<std::pair<std::string, param::ProjectorOptions>> configurations(const Mesh& mesh) {
   using namespace param;
   const std::pair<const char*, SurfaceKind> surfaces[] = {{"plane", SurfaceKind::Plane},
                                                           {"two-plane", SurfaceKind::TwoPlane},
@@ -117,11 +117,20 @@ std::vector<std::pair<std::string, param::ProjectorOptions>> configurations() {
                                                           {"cube", SurfaceKind::Cube}};
   const std::pair<const char*, RayKind> rays[] = {
       {"isn", RayKind::SurfaceNormal}, {"centroid", RayKind::Centroid}, {"normal", RayKind::ObjectNormal}};
-  const std::pair<const char*, PlacementOptions> fits[] = {{"bbox-x", {Fit::BBox, 0, {}}},
-                                                           {"bbox-y", {Fit::BBox, 1, {}}},
-                                                           {"bbox-z", {Fit::BBox, 2, {}}},
-                                                           {"pca", {Fit::Pca, 2, {}}},
-                                                           {"obb", {Fit::Obb, 2, {}}}};
+  const auto fitted = [&mesh](Fit fit, int axis) {
+    PlacementOptions placement;
+    placement.fit = fit;
+    placement.axis = axis;
+    if (fit == Fit::Pca && !mesh.positions.empty()) placement.spreadAxes = principalAxes(mesh.positions);
+    if (fit == Fit::Obb && !mesh.positions.empty()) placement.spreadAxes = orientedBoxAxes(mesh.positions);
+    return placement;
+  };
+  // The spread axes are fitted once for all the surfaces and O-mappings.
+  const std::pair<const char*, PlacementOptions> fits[] = {{"bbox-x", fitted(Fit::BBox, 0)},
+                                                           {"bbox-y", fitted(Fit::BBox, 1)},
+                                                           {"bbox-z", fitted(Fit::BBox, 2)},
+                                                           {"pca", fitted(Fit::Pca, 2)},
+                                                           {"obb", fitted(Fit::Obb, 2)}};
   std::vector<std::pair<std::string, ProjectorOptions>> out;
   for (const auto& [surfaceName, surface] : surfaces)
     for (const auto& [rayName, ray] : rays)
@@ -235,7 +244,7 @@ void runCompare(const CompareArguments& a) {
 
   std::vector<Candidate> ranked;
   nlohmann::json skipped = nlohmann::json::array();
-  const auto all = configurations();
+  const auto all = configurations(input.mesh);
   for (std::size_t i = 0; i < all.size(); ++i) {
     const auto& [name, options] = all[i];
     clock.start("mapping", name + " (" + std::to_string(i + 1) + "/" + std::to_string(all.size()) + ")");

@@ -487,5 +487,27 @@ TEST(Project, TheOriginUnderARadialProjectionIsInvalidNotNaN) {
   EXPECT_EQ(p.uv.uv[0], Vec2::Zero());
 }
 
+TEST(Placement, GivenSpreadAxesFitAsTheComputedOnes) {
+  Mesh mesh = meshes::torus(24, 12, 2.0, 0.5);
+  for (Vec3& p : mesh.positions) p = Vec3(p.x() + 0.3 * p.z(), 1.5 * p.y(), p.z() - 0.2 * p.x());
+  for (Fit fit : {Fit::Pca, Fit::Obb})
+    for (SurfaceKind surface : {SurfaceKind::Plane, SurfaceKind::Cylinder, SurfaceKind::Sphere, SurfaceKind::Cube}) {
+      PlacementOptions computed;
+      computed.fit = fit;
+      PlacementOptions given = computed;
+      given.spreadAxes = fit == Fit::Pca ? principalAxes(mesh.positions) : orientedBoxAxes(mesh.positions);
+      EXPECT_TRUE(fitPlacement(mesh.positions, surface, given).isApprox(fitPlacement(mesh.positions, surface, computed), 0.0))
+          << int(fit) << " " << int(surface);
+    }
+  // Axes given are used as given: with the identity, object x (the "largest spread") becomes the
+  // sphere's axis, whatever the points' own spread.
+  PlacementOptions identity;
+  identity.fit = Fit::Pca;
+  identity.spreadAxes = Mat3::Identity();
+  const Vec3 x = fitPlacement(mesh.positions, SurfaceKind::Sphere, identity).linear() * Vec3::UnitX();
+  EXPECT_EQ(x.head<2>(), Vec2::Zero());
+  EXPECT_GT(x.z(), 0.0);
+}
+
 }  // namespace
 }  // namespace uvtk::param
