@@ -23,6 +23,7 @@ namespace uvtk::analysis {
 struct SeamEdges {
   std::size_t wrapEdges = 0, cutEdges = 0;
   double wrapLength = 0.0, cutLength = 0.0;  // total 3D edge length of each class
+  double length() const { return wrapLength + cutLength; }
 };
 
 // One seam edge, with the corners of both faces at its endpoints, so that each face's side of

@@ -133,7 +133,9 @@ struct SeamPlacement {
 
 // Candidate turns put the seam midway between the azimuths of neighbouring corners, so that no
 // corner lies on it; the given turn is kept unless a candidate crosses fewer faces; among equal
-// candidates the widest gap wins. Straddling is decided as project() decides it (§5). Throws
+// candidates the widest gap wins. Straddling is decided as project() decides it (§5). It maps the
+// mesh up to three times: unrepaired for the sweep, then at the given and the chosen turn for the
+// numbers it reports. Throws
 // UsageError unless the surface wraps (cylinder, sphere).
 SeamPlacement placeSeam(const Mesh& mesh, const ProjectorOptions& options);
 

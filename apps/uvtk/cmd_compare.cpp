@@ -34,20 +34,23 @@ struct CompareArguments {
   RankBy by = RankBy::StretchL2;
   int top = 8, tileSize = 256, overlapResolution = 512, baselineMaxFaces = 200000, threads = 0;
   bool seamPlaceAuto = false, baselines = true;
-  std::string viewDir = "1,-1.5,0.8", up = "0,0,1";
+  ViewCamera camera;
 };
 
 // One ranked candidate: a projector configuration or a baseline, with its measures.
 struct Candidate {
   std::string name;
   MappedMesh mapped;
-  std::vector<analysis::FaceDistortion> faces;
-  analysis::Summary summary;
+  MappedMesh::Measures measures;
   double problemArea = 0.0;  // fraction of the 3D area on flipped, backfacing, zero-UV-area or invalid faces
   double key = 0.0;          // the ranking measure
-  double seamLength = 0.0;
+
   bool usable = false;  // problemArea and the overlap fraction at most kTolerated
   nlohmann::json record;
+
+  const analysis::Summary& summary() const { return measures.summary; }
+  // How much of the mapping is wrong: the problem area plus the overlap fraction.
+  double badness() const { return problemArea + summary().overlap.fraction(); }
 };
 
 // A candidate is usable when at most this fraction of its area is mapped wrongly or overlapped.
@@ -62,7 +65,7 @@ double rankKey(const analysis::Summary& s, RankBy by) {
     case RankBy::Angle:
       return s.angleDistortion.mean;
     case RankBy::SeamLength:
-      return s.seams.wrapLength + s.seams.cutLength;
+      return s.seams.length();
   }
   return 0.0;
 }
@@ -71,20 +74,19 @@ Candidate measure(std::string name, MappedMesh mapped, const CompareArguments& a
   Candidate c;
   c.name = std::move(name);
   c.mapped = std::move(mapped);
-  c.faces = analysis::measureFaces(c.mapped.mesh, c.mapped.uv, c.mapped.distortionOptions());
-  c.summary = analysis::summarize(c.mapped.mesh, c.mapped.uv, c.faces, a.overlapResolution);
+  c.measures = c.mapped.measure(a.overlapResolution);
   double total = 0.0, problem = 0.0;
-  for (const analysis::FaceDistortion& face : c.faces) {
+  for (const analysis::FaceDistortion& face : c.measures.faces) {
     total += face.area3d;
     using analysis::FaceStatus;
     if (face.status != FaceStatus::Ok && face.status != FaceStatus::PoleFace && face.status != FaceStatus::ZeroArea3d)
       problem += face.area3d;
   }
   c.problemArea = total > 0.0 ? problem / total : 0.0;
-  c.key = rankKey(c.summary, a.by);
-  c.seamLength = c.summary.seams.wrapLength + c.summary.seams.cutLength;
-  c.usable = c.problemArea <= kTolerated && c.summary.overlap.fraction() <= kTolerated && c.summary.l2Stretch > 0.0;
-  c.record = measuresJson(c.mapped, c.summary);
+  c.key = rankKey(c.summary(), a.by);
+
+  c.usable = c.problemArea <= kTolerated && c.summary().overlap.fraction() <= kTolerated && c.summary().l2Stretch > 0.0;
+  c.record = measuresJson(c.mapped, c.summary());
   c.record["name"] = c.name;
   c.record["problem_area_fraction"] = c.problemArea;
   c.record["usable"] = c.usable;
@@ -98,10 +100,9 @@ Candidate measure(std::string name, MappedMesh mapped, const CompareArguments& a
 bool ranksBefore(const Candidate& x, const Candidate& y) {
   if (x.usable != y.usable) return x.usable;
   if (!x.usable) {
-    const double xBad = x.problemArea + x.summary.overlap.fraction(), yBad = y.problemArea + y.summary.overlap.fraction();
-    return xBad < yBad || (xBad == yBad && x.key < y.key);
+    return x.badness() < y.badness() || (x.badness() == y.badness() && x.key < y.key);
   }
-  return x.key < y.key || (x.key == y.key && x.seamLength < y.seamLength);
+  return x.key < y.key || (x.key == y.key && x.summary().seams.length() < y.summary().seams.length());
 }
 
 // The projector configurations compare runs: every surface x O-mapping (the reflection needs an
@@ -201,8 +202,9 @@ std::string markdownTable(const std::vector<Candidate>& ranked) {
   for (std::size_t i = 0; i < ranked.size(); ++i) {
     const Candidate& c = ranked[i];
     std::snprintf(row, sizeof row, "| %zu | %s | %.5g | %.5g | %.5g | %.5g | %.3g%% | %.3g%% | %s |\n", i + 1,
-                  c.name.c_str(), c.summary.l2Stretch, c.summary.linfStretch, c.summary.angleDistortion.mean,
-                  c.seamLength, 100.0 * c.problemArea, 100.0 * c.summary.overlap.fraction(), c.usable ? "yes" : "no");
+                  c.name.c_str(), c.summary().l2Stretch, c.summary().linfStretch, c.summary().angleDistortion.mean,
+                  c.summary().seams.length(), 100.0 * c.problemArea, 100.0 * c.summary().overlap.fraction(),
+                  c.usable ? "yes" : "no");
     table += row;
   }
   return table;
@@ -214,11 +216,9 @@ Image contactSheetOf(const std::vector<Candidate>& ranked, const CompareArgument
   std::vector<std::pair<std::string, Image>> tiles;
   for (std::size_t i = 0; i < count; ++i) {
     const Candidate& c = ranked[i];
-    const views::ViewInput in = c.mapped.viewInput(c.faces, c.summary);
+    const views::ViewInput in = c.mapped.viewInput(c.measures);
     views::ViewOptions options;
-    options.render.camera =
-        render::frameSphere(render::boundingSphere(c.mapped.mesh.positions), parseVec3(a.viewDir, "--view-dir"),
-                            parseVec3(a.up, "--up"), render::Projection{}, a.tileSize, a.tileSize);
+    options.render.camera = a.camera.frame(c.mapped.mesh, a.tileSize, a.tileSize);
     options.render.raster = {render::Cull::None, a.threads};
     for (const views::View view : {views::View::Checker, views::View::Stretch})
       tiles.emplace_back("#" + std::to_string(i + 1) + " " + c.name + " " + views::toString(view),
@@ -233,8 +233,7 @@ void runCompare(const CompareArguments& a) {
   if (a.overlapResolution < 1 || a.overlapResolution > 16384)
     throw UsageError("--overlap-resolution: expected 1 to 16384 pixels");
   if (!a.sheet.empty()) io::checkImageType(a.sheet, io::PixelType::UInt8);
-  parseVec3(a.viewDir, "--view-dir");
-  parseVec3(a.up, "--up");
+    a.camera.check();
 
   StageClock clock("uvtk compare");
   clock.start("reading", a.input);
@@ -312,8 +311,7 @@ void addCompareCommand(CLI::App& root) {
   cmd->add_option("--sheet", a->sheet, "Write a contact sheet of the checker and stretch views of the best ones");
   cmd->add_option("--top", a->top, "How many of the best the contact sheet shows")->capture_default_str();
   cmd->add_option("--tile-size", a->tileSize, "Pixels across each picture of the sheet")->capture_default_str();
-  cmd->add_option("--view-dir", a->viewDir, "Direction from the mesh to the camera")->capture_default_str();
-  cmd->add_option("--up", a->up, "The camera's up direction")->capture_default_str();
+  a->camera.addOptions(*cmd);
   cmd->add_option("--overlap-resolution", a->overlapResolution, "Pixels across the layout raster that measures overlap")
       ->capture_default_str();
   cmd->add_flag("--seam-place-auto", a->seamPlaceAuto, "Place the seam of cylinder and sphere (as --seam-place auto)");

@@ -54,8 +54,7 @@ void runMap(const MapArguments& a) {
     j["milliseconds"] = {{"read", readMs}, {"map", mapMs}, {"write", writeMs}};
     io::writeFileAtomically(a.json, j.dump(2) + "\n");
   }
-  printInputWarnings(a.input, input.warnings);
-  if (mapped.seamPlacement) printSeamPlacement(*mapped.seamPlacement);
+  printMappingNotes(a.input, input.warnings, mapped);
   std::fprintf(stderr,
                "uvtk map: %zu vertices, %zu faces, %zu seam edges, %zu pole vertices, %zu pole faces, "
                "%zu invalid vertices, %.1f ms\n",

@@ -137,15 +137,13 @@ void drawViews(const RenderArguments& a, const std::vector<views::View>& list, c
   const auto showsMeasures = [](views::View v) {
     return v != views::View::Checker && v != views::View::Uvgrid && v != views::View::UvError;
   };
-  std::vector<analysis::FaceDistortion> faces;
-  analysis::Summary summary;
+  MappedMesh::Measures measures;
   if (std::any_of(list.begin(), list.end(), showsMeasures)) {
     clock.start("measuring", std::to_string(mapped.mesh.faceCount()) + " faces");
-    faces = analysis::measureFaces(mapped.mesh, mapped.uv, mapped.distortionOptions());
-    summary = analysis::summarize(mapped.mesh, mapped.uv, faces);
+    measures = mapped.measure();
     clock.stop();
   }
-  const views::ViewInput in = mapped.viewInput(faces, summary);
+  const views::ViewInput in = mapped.viewInput(measures);
   views::ViewOptions options;
   options.render = renderOptions;
   options.layoutFill = a.layoutFill;
@@ -232,8 +230,7 @@ void runRender(RenderArguments& a) {
 
   if (!viewList.empty()) {
     drawViews(a, viewList, mapped, options, inputSummary);
-    printInputWarnings(a.input, input.warnings);
-    if (mapped.seamPlacement) printSeamPlacement(*mapped.seamPlacement);
+    printMappingNotes(a.input, input.warnings, mapped);
     return;
   }
 
@@ -274,8 +271,7 @@ void runRender(RenderArguments& a) {
     if (!a.aov.empty()) j["aov_output"] = a.aovOutput;
     io::writeFileAtomically(a.json, j.dump(2) + "\n");
   }
-  printInputWarnings(a.input, input.warnings);
-  if (mapped.seamPlacement) printSeamPlacement(*mapped.seamPlacement);
+  printMappingNotes(a.input, input.warnings, mapped);
   std::fprintf(stderr,
                "uvtk render: %dx%d, %zu faces drawn, %zu culled, %zu clipped, %zu pixels covered, raster %.1f ms, "
                "shade %.1f ms\n",

@@ -30,7 +30,8 @@ namespace {
 struct ReportArguments {
   std::string input, json, html;
   std::string views = "checker,uvgrid,stretch,linf,angle,area,seams,layout";
-  std::string size = "384x384", viewDir = "1,-1.5,0.8", up = "0,0,1";
+  std::string size = "384x384";
+  ViewCamera camera;
   int overlapResolution = 1024, textureSize = 1024, threads = 0;
   ProjectorArguments projector;
 };
@@ -43,7 +44,8 @@ void runReport(const ReportArguments& a) {
   const bool projectorGiven = given(a.projector.app, "--projector");
   const param::ProjectorOptions projectorOptions = a.projector.resolve();
   const std::vector<views::View> views = a.html.empty() ? std::vector<views::View>() : views::parseViewList(a.views);
-  const auto [width, height] = parseImageSize(a.size, "--size");
+    const auto [width, height] = parseImageSize(a.size, "--size");
+  a.camera.check();
 
   StageClock clock("uvtk report");
   clock.start("reading", a.input);
@@ -59,9 +61,8 @@ void runReport(const ReportArguments& a) {
   const double mapMs = clock.stop();
 
   clock.start("measuring", std::to_string(mapped.mesh.faceCount()) + " faces");
-  const std::vector<analysis::FaceDistortion> faces =
-      analysis::measureFaces(mapped.mesh, mapped.uv, mapped.distortionOptions());
-  const analysis::Summary summary = analysis::summarize(mapped.mesh, mapped.uv, faces, a.overlapResolution);
+  const MappedMesh::Measures measures = mapped.measure(a.overlapResolution);
+  const analysis::Summary& summary = measures.summary;
   const double measureMs = clock.stop();
 
   nlohmann::json report = measuresJson(mapped, summary);
@@ -78,11 +79,9 @@ void runReport(const ReportArguments& a) {
   if (!views.empty()) {
     clock.start("drawing views", a.views);
     const render::Texture texture = render::checkerTexture(a.textureSize, std::max(1, a.textureSize / 8));
-    const views::ViewInput in = mapped.viewInput(faces, summary);
+    const views::ViewInput in = mapped.viewInput(measures);
     views::ViewOptions options;
-    options.render.camera =
-        render::frameSphere(render::boundingSphere(mapped.mesh.positions), parseVec3(a.viewDir, "--view-dir"),
-                            parseVec3(a.up, "--up"), render::Projection{}, width, height);
+    options.render.camera = a.camera.frame(mapped.mesh, width, height);
     options.render.raster.threads = a.threads;
     options.render.raster.cull = render::Cull::None;
     options.render.texture = &texture;
@@ -98,8 +97,7 @@ void runReport(const ReportArguments& a) {
 
   if (!a.json.empty()) io::writeFileAtomically(a.json, report.dump(2) + "\n");
   if (!a.html.empty()) io::writeFileAtomically(a.html, htmlReport(report, pictures));
-  printInputWarnings(a.input, input.warnings);
-  if (mapped.seamPlacement) printSeamPlacement(*mapped.seamPlacement);
+  printMappingNotes(a.input, input.warnings, mapped);
   std::fprintf(stderr, "uvtk report: %zu faces, L2 stretch %.6g, Linf stretch %.6g, %zu seam edges, overlap %.4g%%\n",
                mapped.mesh.faceCount(), summary.l2Stretch, summary.linfStretch,
                summary.seams.wrapEdges + summary.seams.cutEdges, 100.0 * summary.overlap.fraction());
@@ -116,8 +114,7 @@ void addReportCommand(CLI::App& root) {
   cmd->add_option("--html", a->html, "Write one self-contained HTML page with the views, measures and histograms");
   cmd->add_option("--views", a->views, "The views on the HTML page")->capture_default_str();
   cmd->add_option("--size", a->size, "Size of each view WxH")->capture_default_str();
-  cmd->add_option("--view-dir", a->viewDir, "Direction from the mesh to the camera")->capture_default_str();
-  cmd->add_option("--up", a->up, "The camera's up direction")->capture_default_str();
+  a->camera.addOptions(*cmd);
   cmd->add_option("--texture-size", a->textureSize, "Texels across the texture whose texels uverror counts")
       ->capture_default_str();
   cmd->add_option("--overlap-resolution", a->overlapResolution, "Pixels across the layout raster that measures overlap")

@@ -3,8 +3,11 @@
 #include <limits>
 #include <memory>
 
+#include "cli_values.h"
 #include "core/error.h"
 #include "param/projector.h"
+#include "projector_cli.h"
+#include "run_report.h"
 
 namespace uvtk::cli {
 
@@ -15,14 +18,20 @@ analysis::DistortionOptions MappedMesh::distortionOptions() const {
   return options;
 }
 
-views::ViewInput MappedMesh::viewInput(const std::vector<analysis::FaceDistortion>& faces,
-                                       const analysis::Summary& summary) const {
+MappedMesh::Measures MappedMesh::measure(int overlapResolution) const {
+  Measures m;
+  m.faces = analysis::measureFaces(mesh, uv, distortionOptions());
+  m.summary = analysis::summarize(mesh, uv, m.faces, overlapResolution);
+  return m;
+}
+
+views::ViewInput MappedMesh::viewInput(const Measures& measures) const {
   views::ViewInput in;
   in.mesh = &mesh;
   in.uv = &uv;
-  in.faces = &faces;
-  in.summary = &summary;
-  in.poleVertices = projection ? projection->summary.poleVertexList : summary.poleVertices;
+  in.faces = &measures.faces;
+  in.summary = &measures.summary;
+  in.poleVertices = projection ? projection->summary.poleVertexList : measures.summary.poleVertices;
   in.exact = exact;
   in.wrapsU = exact && exact->wrapsS;
   return in;
@@ -117,6 +126,26 @@ MappedMesh withFileUvs(Mesh mesh, const std::string& path) {
   out.mesh = std::move(mesh);
   out.source = "file";
   return out;
+}
+
+void printMappingNotes(const std::string& inputPath, const MeshWarnings& warnings, const MappedMesh& mapped) {
+  printInputWarnings(inputPath, warnings);
+  if (mapped.seamPlacement) printSeamPlacement(*mapped.seamPlacement);
+}
+
+void ViewCamera::addOptions(CLI::App& app) {
+  app.add_option("--view-dir", viewDir, "Direction from the mesh to the camera of the views")->capture_default_str();
+  app.add_option("--up", up, "The up direction of the views' camera")->capture_default_str();
+}
+
+void ViewCamera::check() const {
+  parseVec3(viewDir, "--view-dir");
+  parseVec3(up, "--up");
+}
+
+render::Camera ViewCamera::frame(const Mesh& mesh, int width, int height) const {
+  return render::frameSphere(render::boundingSphere(mesh.positions), parseVec3(viewDir, "--view-dir"),
+                             parseVec3(up, "--up"), render::Projection{}, width, height);
 }
 
 }  // namespace uvtk::cli

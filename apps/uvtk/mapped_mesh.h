@@ -3,6 +3,7 @@
 // (render, report, compare) shares.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 
@@ -11,6 +12,7 @@
 #include "core/mesh.h"
 #include "core/uv_map.h"
 #include "param/projector.h"
+#include "render/camera.h"
 #include "render/renderer.h"
 #include "texgen/texgen.h"
 #include "views/views.h"
@@ -31,10 +33,27 @@ struct MappedMesh {
   std::vector<Vec4> corners() const;
   // Where a planar projector looks, so that faces turned away count as backfacing, not flipped.
   analysis::DistortionOptions distortionOptions() const;
+  // The per-face distortion and the mesh-wide summary of these UVs.
+  struct Measures {
+    std::vector<analysis::FaceDistortion> faces;
+    analysis::Summary summary;
+  };
+  Measures measure(int overlapResolution = 1024) const;
   // What the views draw: this mesh and its UVs with their measures (which must outlive it); the
   // poles the projector found, or for the file's UVs the fanned poles the summary found.
-  views::ViewInput viewInput(const std::vector<analysis::FaceDistortion>& faces,
-                             const analysis::Summary& summary) const;
+  views::ViewInput viewInput(const Measures& measures) const;
+};
+
+// On stderr: the input's warnings, and where --seam-place auto put the seam.
+void printMappingNotes(const std::string& inputPath, const MeshWarnings& warnings, const MappedMesh& mapped);
+
+// The camera of the inspection views: it frames the mesh's bounding sphere from the direction
+// `viewDir` with `up` ("x,y,z" texts, checked when parsed).
+struct ViewCamera {
+  std::string viewDir = "1,-1.5,0.8", up = "0,0,1";
+    void addOptions(CLI::App& app);
+  void check() const;  // throws UsageError for a malformed direction
+  render::Camera frame(const Mesh& mesh, int width, int height) const;
 };
 
 // The file's vt as per-corner UVs (w in uv.w): a corner without vt is invalid (kFaceInvalid on its

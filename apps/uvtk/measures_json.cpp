@@ -41,7 +41,7 @@ nlohmann::json measuresJson(const MappedMesh& mapped, const analysis::Summary& s
           {"seams",
            {{"wrap_edges", s.seams.wrapEdges},
             {"cut_edges", s.seams.cutEdges},
-            {"length", s.seams.wrapLength + s.seams.cutLength},
+            {"length", s.seams.length()},
             {"wrap_length", s.seams.wrapLength},
             {"cut_length", s.seams.cutLength}}},
           {"poles", {{"vertices", poleVertices}, {"faces", s.poleFaces}}},
