@@ -1,17 +1,16 @@
-// Mapping throughput on a 2048 x 1024 lat-long sphere (2.1 M vertices), single-threaded:
-// - mapVertices: the two-stage mapping per vertex into a reused buffer (the number to compare
-//   with other per-vertex UV generators);
+// Mapping throughput on a 2048 x 1024 lat-long sphere (2.1 M vertices), single-threaded. The
+// per-vertex mapping for every projector, precision and math mode is `uvtk bench`; here:
 // - project: the whole job of `uvtk map` short of file I/O: placement fit, per-corner UVs,
 //   pole and seam repair, summary.
-// - atan2: the arctangent alone over the sphere's (y, x), ours (param::arcTangent2) against
-//   glibc's std::atan2, the cost that dominates the sphere and cylinder.
+// - atan2: the arctangent alone over the sphere's (y, x) in each precision and math mode
+//   (param::atan2Block), the cost that dominates the sphere and cylinder.
 // `per_vertex` is seconds per vertex, printed with an SI prefix: "12.3n" is 12.3 ns.
 #include <benchmark/benchmark.h>
 
-#include <cmath>
+#include <vector>
 
 #include "meshes/generators.h"
-#include "param/formulas.h"
+#include "param/batch_atan2.h"
 #include "param/projector.h"
 
 namespace {
@@ -25,38 +24,16 @@ const Mesh& sphere() {
   return mesh;
 }
 
-param::ProjectorOptions optionsFor(SurfaceKind surface, RayKind ray) {
-  param::ProjectorOptions options;
-  options.surface = surface;
-  options.ray = ray;
-  if (ray == RayKind::Reflection) options.eye = Vec3(0, 0, 5);
-  return options;
-}
-
 void setPerVertex(benchmark::State& state, std::size_t vertices) {
   state.counters["per_vertex"] = benchmark::Counter(static_cast<double>(vertices),
                                                     benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
-void mapVertices(benchmark::State& state, SurfaceKind surface, RayKind ray) {
-  const Mesh& mesh = sphere();
-  const param::ProjectorOptions options = optionsFor(surface, ray);
-  const Affine3 localFromObject = param::fitPlacement(mesh.positions, surface, options.placement);
-  const std::vector<Vec3> normals = ray == RayKind::SurfaceNormal || ray == RayKind::Centroid
-                                        ? std::vector<Vec3>()
-                                        : areaWeightedVertexNormals(mesh);
-  std::vector<param::VertexUv> out(mesh.vertexCount());  // allocated (and paged in) before timing
-  param::mapVertices(options, localFromObject, mesh.positions, normals, out);
-  for (auto _ : state) {
-    param::mapVertices(options, localFromObject, mesh.positions, normals, out);
-    benchmark::DoNotOptimize(out.data());
-  }
-  setPerVertex(state, mesh.vertexCount());
-}
-
 void project(benchmark::State& state, SurfaceKind surface, RayKind ray) {
   const Mesh& mesh = sphere();
-  const param::ProjectorOptions options = optionsFor(surface, ray);
+  param::ProjectorOptions options;
+  options.surface = surface;
+  options.ray = ray;
   for (auto _ : state) {
     param::Projection p = param::project(mesh, options);
     benchmark::DoNotOptimize(p.uv.uv.data());
@@ -64,32 +41,31 @@ void project(benchmark::State& state, SurfaceKind surface, RayKind ray) {
   setPerVertex(state, mesh.vertexCount());
 }
 
-template <double (*Atan2)(double, double)>
-void atan2OverTheSphere(benchmark::State& state) {
+template <class T>
+void atan2OverTheSphere(benchmark::State& state, MathMode math) {
   const Mesh& mesh = sphere();
-  std::vector<double> angles(mesh.vertexCount());
+  std::vector<T> y(mesh.vertexCount()), x(mesh.vertexCount()), angles(mesh.vertexCount());
+  for (std::size_t i = 0; i < y.size(); ++i) y[i] = T(mesh.positions[i].y()), x[i] = T(mesh.positions[i].x());
   for (auto _ : state) {
-    for (std::size_t i = 0; i < angles.size(); ++i) angles[i] = Atan2(mesh.positions[i].y(), mesh.positions[i].x());
+    param::atan2Block(math, y.data(), x.data(), angles.data(), angles.size());
     benchmark::DoNotOptimize(angles.data());
   }
   setPerVertex(state, mesh.vertexCount());
 }
 
-double libmAtan2(double y, double x) { return std::atan2(y, x); }
+void atan2_double(benchmark::State& state, MathMode math) { atan2OverTheSphere<double>(state, math); }
+void atan2_float(benchmark::State& state, MathMode math) { atan2OverTheSphere<float>(state, math); }
 
-BENCHMARK_TEMPLATE(atan2OverTheSphere, param::arcTangent2)->Name("atan2/uvtk")->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(atan2OverTheSphere, libmAtan2)->Name("atan2/glibc")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(atan2_double, exact, MathMode::Exact)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(atan2_double, fast, MathMode::Fast)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(atan2_double, fast_u10, MathMode::FastU10)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(atan2_float, exact, MathMode::Exact)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(atan2_float, fast, MathMode::Fast)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(atan2_float, fast_u10, MathMode::FastU10)->Unit(benchmark::kMillisecond);
 
-#define UVTK_MAP_BENCHMARKS(name, surface, ray)                                                      \
-  BENCHMARK_CAPTURE(mapVertices, name, surface, ray)->Unit(benchmark::kMillisecond)->MinTime(1.0); \
-  BENCHMARK_CAPTURE(project, name, surface, ray)->Unit(benchmark::kMillisecond)->MinTime(1.0)
-
-UVTK_MAP_BENCHMARKS(plane_isn, SurfaceKind::Plane, RayKind::SurfaceNormal);
-UVTK_MAP_BENCHMARKS(two_plane_isn, SurfaceKind::TwoPlane, RayKind::SurfaceNormal);
-UVTK_MAP_BENCHMARKS(cylinder_isn, SurfaceKind::Cylinder, RayKind::SurfaceNormal);
-UVTK_MAP_BENCHMARKS(sphere_isn, SurfaceKind::Sphere, RayKind::SurfaceNormal);
-UVTK_MAP_BENCHMARKS(sphere_normal, SurfaceKind::Sphere, RayKind::ObjectNormal);
-UVTK_MAP_BENCHMARKS(sphere_reflection, SurfaceKind::Sphere, RayKind::Reflection);
+BENCHMARK_CAPTURE(project, plane_isn, SurfaceKind::Plane, RayKind::SurfaceNormal)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(project, cylinder_isn, SurfaceKind::Cylinder, RayKind::SurfaceNormal)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(project, sphere_isn, SurfaceKind::Sphere, RayKind::SurfaceNormal)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(project, cube_isn, SurfaceKind::Cube, RayKind::SurfaceNormal)->Unit(benchmark::kMillisecond);
 
 }  // namespace

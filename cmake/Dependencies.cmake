@@ -6,6 +6,9 @@ find_package(CLI11 REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(OpenImageIO REQUIRED)
 find_package(OpenSSL REQUIRED)  # SHA-256 of the inputs a report measured
+# SLEEF: the vectorised atan2 of --math fast (Debian's libsleef-dev ships a pkg-config file).
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(SLEEF REQUIRED IMPORTED_TARGET sleef)
 
 # Debian's OpenImageIO package lists /usr/include/opencv4 as an include directory even when
 # OpenCV is not installed, and CMake's generate step then fails. Keep only directories that exist.

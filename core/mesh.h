@@ -35,7 +35,8 @@ struct MeshWarnings {
 };
 
 // Twice the area-weighted normal of a triangle: the cross product of two edges.
-inline Vec3 triangleAreaNormal(const Vec3& a, const Vec3& b, const Vec3& c) {
+template <class T>
+Vec3T<T> triangleAreaNormal(const Vec3T<T>& a, const Vec3T<T>& b, const Vec3T<T>& c) {
   return (b - a).cross(c - a);
 }
 

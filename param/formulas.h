@@ -4,65 +4,39 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <utility>
 
 #include "core/math.h"
 
 namespace uvtk::param {
 
-// hypot(x, y) without std::hypot's cost where the squares neither overflow nor underflow;
+// hypot(x, y) without std::hypot's cost where the squares neither overflow nor underflow in T;
 // the fallback keeps huge and tiny coordinates exact.
-inline double radialDistance(double x, double y) {
-  const double m = std::fmax(std::fabs(x), std::fabs(y));
-  if (m > 1e-150 && m < 1e150) return std::sqrt(x * x + y * y);
+template <class T>
+T radialDistance(T x, T y) {
+  // Squares of magnitudes in (kLow, 1/kLow) neither overflow nor lose digits to subnormals.
+  constexpr T kLow = std::is_same_v<T, float> ? T(1e-15f) : T(1e-150);
+  const T m = std::fmax(std::fabs(x), std::fabs(y));
+  if (m > kLow && m < T(1) / kLow) return std::sqrt(x * x + y * y);
   return std::hypot(x, y);
 }
 
-// atan(t) for |t| <= 0.66 by Cephes' rational approximation (S. L. Moshier, Cephes atan.c,
-// 1989), relative error below 2e-16 there.
-inline double atanReduced(double t) {
-  const double z = t * t;
-  const double p = (((-8.750608600031904122785e-01 * z - 1.615753718733365076637e+01) * z -
-                     7.500855792314704667340e+01) * z - 1.228866684490136173410e+02) * z - 6.485021904942025371773e+01;
-  const double q = ((((z + 2.485846490142306297962e+01) * z + 1.650270098316988542046e+02) * z +
-                     4.328810604912902668951e+02) * z + 4.853903996359136964868e+02) * z + 1.945506571482613964425e+02;
-  return t + t * (z * p / q);
+// Fraction of a full turn of the angle theta = atan2(y, x) in (-pi, pi], in [0, 1): the seam
+// lies on the +x half-plane, u grows counter-clockwise seen from +z; +0 and -0 land on the same
+// side (§3). Written without branches so that a block of angles vectorises.
+template <class T>
+T turnFromAngle(T theta) {
+  constexpr T kTurn = T(kTwoPi), kInverseTurn = T(1.0 / kTwoPi);
+  const T u = (theta + static_cast<T>(theta < T(0)) * kTurn) * kInverseTurn + T(0);  // -0 becomes +0
+  return u * static_cast<T>(u < T(1));
 }
 
-// atan2(y, x) with the conventions of std::atan2 (signed zeros included) within 2 ulp, at a
-// fraction of glibc's cost. With a <= b the smaller and larger of |x|, |y|, the angle is
-// k pi/4 +- atan(t): t = a/b, or (a - b)/(a + b) above atan(0.66), one division either way.
-// Branch-free, so that random directions cost no mispredictions.
-// Measured against atan2l in tests/param/formulas_test.cpp; docs/benchmarks.md has the speed.
-inline double arcTangent2(double y, double x) {
-  // k pi/4 split into a double and its rounding error, and the sign of atan(t), per case
-  // (|y| > |x|, x < 0, above atan(0.66)).
-  static constexpr double kHigh[8] = {0.0, 0.7853981633974483, 3.141592653589793, 2.356194490192345,
-                                      1.5707963267948966, 0.7853981633974483, 1.5707963267948966, 2.356194490192345};
-  static constexpr double kLow[8] = {0.0, 3.061616997868383e-17, 1.2246467991473532e-16, 9.184850993605148e-17,
-                                     6.123233995736766e-17, 3.061616997868383e-17, 6.123233995736766e-17,
-                                     9.184850993605148e-17};
-  static constexpr double kSign[8] = {1, 1, -1, -1, -1, -1, 1, 1};
-  const double ay = std::fabs(y), ax = std::fabs(x);
-  double a = std::min(ax, ay), b = std::max(ax, ay);
-  if (b > 0x1p1000) a *= 0x1p-8, b *= 0x1p-8;  // keeps a + b finite; exact, being a power of two
-  // Selects written as arithmetic on 0 and 1, which compilers do not turn back into branches.
-  const bool aboutQuarter = a > 0.66 * b;
-  const double quarter = aboutQuarter;
-  const double numerator = a - quarter * b;                                     // exact (Sterbenz)
-  const double denominator = b + quarter * a + static_cast<double>(b == 0.0);  // (0, 0) gives 0 / 1
-  const int k = 4 * (ay > ax) + 2 * std::signbit(x) + aboutQuarter;
-  const double angle = kHigh[k] + (kSign[k] * atanReduced(numerator / denominator) + kLow[k]);
-  return std::copysign(angle, y);
-}
-
-// Fraction of a full turn of atan2(y, x), in [0, 1): the seam lies on the +x half-plane,
-// u grows counter-clockwise seen from +z; +0 and -0 land on the same side (§3).
-// Precondition: (x, y) != (0, 0); poles are handled before this is called.
-inline double turnFraction(double y, double x) {
-  const double theta = arcTangent2(y, x);
-  const double u = (theta + static_cast<double>(theta < 0.0) * kTwoPi) * (1.0 / kTwoPi) + 0.0;  // -0 becomes +0
-  return u * static_cast<double>(u < 1.0);
+// The turn fraction of (x, y) with libm's atan2. Precondition: (x, y) != (0, 0); poles are
+// handled before this is called.
+template <class T>
+T turnFraction(T y, T x) {
+  return turnFromAngle(std::atan2(y, x));
 }
 
 // The pole test hypot(x, y) <= eps |q| of §5 without a square root: for eps in [0, 1) it holds
@@ -70,15 +44,24 @@ inline double turnFraction(double y, double x) {
 struct PoleTest {
   double slope;
   explicit PoleTest(double epsilon) : slope(epsilon / std::sqrt(1.0 - epsilon * epsilon)) {}
-  bool operator()(double rho, double z) const { return rho <= slope * std::fabs(z); }
+  template <class T>
+  bool operator()(T rho, T z) const {
+    return rho <= static_cast<T>(slope) * std::fabs(z);
+  }
 };
 
-// Polar angle from +z in [0, pi]; atan2 keeps full precision near the poles where acos loses
-// half the digits (§3).
-inline double polarAngle(double x, double y, double z) { return arcTangent2(radialDistance(x, y), z); }
+// The angle from the nearer pole, in [0, pi/2]: atan2 keeps full precision near the poles where
+// acos loses half the digits, and measuring from the nearer pole keeps it where v is small (§3).
+template <class T>
+T angleFromNearerPole(T x, T y, T z) {
+  return std::atan2(radialDistance(x, y), std::fabs(z));
+}
 
 // Cylinder, radius 1, axis z: (u, v) = (turn fraction, z) (§3).
-inline Vec2 cylinderUv(const Vec3& q) { return {turnFraction(q.y(), q.x()), q.z()}; }
+template <class T>
+Vec2T<T> cylinderUv(const Vec3T<T>& q) {
+  return {turnFraction(q.y(), q.x()), q.z()};
+}
 
 // Sphere conventions (§3). Each maps a point (any positive scale) to (u, v).
 enum class SpherePreset {
@@ -87,24 +70,46 @@ enum class SpherePreset {
   Seed004,  // s = atan2(y, x)/(2 pi) in (-1/2, 1/2], t = acos(z)/pi (t = 0 at +z)
 };
 
-// v of a sphere preset; defined at the poles, where u is not.
-inline double sphereV(const Vec3& q, SpherePreset preset) {
-  const double phi = polarAngle(q.x(), q.y(), q.z());
-  // The seed writes acos(z)/pi for the unit vector; atan2 gives the same angle, exactly rounded.
-  return preset == SpherePreset::Seed004 ? phi / kPi : 1.0 - phi / kPi;
+// The arctangent arguments (y, x) of a sphere preset's azimuth at q (§3).
+template <class T>
+std::pair<T, T> sphereAzimuthArguments(const Vec3T<T>& q, SpherePreset preset) {
+  return preset == SpherePreset::Glu ? std::pair<T, T>(q.x(), q.y()) : std::pair<T, T>(q.y(), q.x());
 }
 
-// u of a sphere preset. Precondition: q is not on the z axis.
-inline double sphereU(const Vec3& q, SpherePreset preset) {
-  switch (preset) {
-    case SpherePreset::Default: return turnFraction(q.y(), q.x());
-    case SpherePreset::Glu: return turnFraction(q.x(), q.y());
-    case SpherePreset::Seed004: return arcTangent2(q.y(), q.x()) / kTwoPi + 0.0;
-  }
-  return 0.0;
+// u of a sphere preset from its azimuth angle (atan2 of sphereAzimuthArguments).
+template <class T>
+T sphereUFromAngle(T azimuth, SpherePreset preset) {
+  return preset == SpherePreset::Seed004 ? azimuth / T(kTwoPi) + T(0) : turnFromAngle(azimuth);
 }
 
-inline Vec2 sphereUv(const Vec3& q, SpherePreset preset) { return {sphereU(q, preset), sphereV(q, preset)}; }
+// v of a sphere preset from the angle psi from the nearer pole (the southern one when z has its
+// sign bit set); defined at the poles, where u is not. With phi = psi or pi - psi the polar angle
+// from +z, v = 1 - phi/pi, but each hemisphere is computed where it needs no cancellation.
+template <class T>
+T sphereVFromPoleAngle(T psi, bool southern, SpherePreset preset) {
+  const T fraction = psi / T(kPi);
+  // The seed writes acos(z)/pi for the unit vector (t = 0 at +z): the same angle, measured downwards.
+  const bool fromZero = southern != (preset == SpherePreset::Seed004);
+  return fromZero ? fraction : T(1) - fraction;
+}
+
+// v and u of a sphere preset at a point q (any positive scale), with libm's atan2. u needs q off
+// the z axis.
+template <class T>
+T sphereV(const Vec3T<T>& q, SpherePreset preset) {
+  return sphereVFromPoleAngle(angleFromNearerPole(q.x(), q.y(), q.z()), std::signbit(q.z()), preset);
+}
+
+template <class T>
+T sphereU(const Vec3T<T>& q, SpherePreset preset) {
+  const auto [y, x] = sphereAzimuthArguments(q, preset);
+  return sphereUFromAngle(std::atan2(y, x), preset);
+}
+
+template <class T>
+Vec2T<T> sphereUv(const Vec3T<T>& q, SpherePreset preset) {
+  return {sphereU(q, preset), sphereV(q, preset)};
+}
 
 // Where the u period of a wrapping preset starts: u lies in [start, start + 1).
 inline double uPeriodStart(SpherePreset preset) { return preset == SpherePreset::Seed004 ? -0.5 : 0.0; }
@@ -116,15 +121,16 @@ constexpr int kCubeFaceCount = 6;
 
 // The face of the major axis; ties go to x before y before z, the sign follows the sign bit,
 // so +0 picks the + face and -0 the - face.
-inline CubeFace majorAxisFace(const Vec3& d) {
-  const double ax = std::fabs(d.x()), ay = std::fabs(d.y()), az = std::fabs(d.z());
+template <class T>
+CubeFace majorAxisFace(const Vec3T<T>& d) {
+  const T ax = std::fabs(d.x()), ay = std::fabs(d.y()), az = std::fabs(d.z());
   if (ax >= ay && ax >= az) return std::signbit(d.x()) ? CubeFace::NegX : CubeFace::PosX;
   if (ay >= az) return std::signbit(d.y()) ? CubeFace::NegY : CubeFace::PosY;
   return std::signbit(d.z()) ? CubeFace::NegZ : CubeFace::PosZ;
 }
 
 inline int faceAxis(CubeFace f) { return static_cast<int>(f) / 2; }
-inline double faceSign(CubeFace f) { return static_cast<int>(f) % 2 == 0 ? 1.0 : -1.0; }
+inline int faceSign(CubeFace f) { return static_cast<int>(f) % 2 == 0 ? 1 : -1; }
 
 enum class CubeConvention {
   Gl,      // (sc, tc) from OpenGL's table: seen from outside, s runs right and t runs down
@@ -132,8 +138,9 @@ enum class CubeConvention {
 };
 
 // The in-face coordinates (sc, tc) of point d on face f, before division by |ma|.
-inline Vec2 cubeFaceCoordinates(const Vec3& d, CubeFace f, CubeConvention convention) {
-  const double x = d.x(), y = d.y(), z = d.z();
+template <class T>
+Vec2T<T> cubeFaceCoordinates(const Vec3T<T>& d, CubeFace f, CubeConvention convention) {
+  const T x = d.x(), y = d.y(), z = d.z();
   if (convention == CubeConvention::Direct) {
     switch (faceAxis(f)) {
       case 0: return {y, z};
@@ -153,10 +160,11 @@ inline Vec2 cubeFaceCoordinates(const Vec3& d, CubeFace f, CubeConvention conven
 }
 
 // s = (sc/|ma| + 1)/2, t = (tc/|ma| + 1)/2 for a direction d that selects face f.
-inline Vec2 cubeFaceSt(const Vec3& d, CubeFace f, CubeConvention convention) {
-  const double ma = std::fabs(d[faceAxis(f)]);
-  const Vec2 c = cubeFaceCoordinates(d, f, convention);
-  return {(c.x() / ma + 1.0) * 0.5, (c.y() / ma + 1.0) * 0.5};
+template <class T>
+Vec2T<T> cubeFaceSt(const Vec3T<T>& d, CubeFace f, CubeConvention convention) {
+  const T ma = std::fabs(d[faceAxis(f)]);
+  const Vec2T<T> c = cubeFaceCoordinates(d, f, convention);
+  return {(c.x() / ma + T(1)) * T(0.5), (c.y() / ma + T(1)) * T(0.5)};
 }
 
 enum class CubeLayout {
@@ -169,6 +177,29 @@ enum class CubeLayout {
 // Places face coordinates (s, t) in an atlas. In the atlases every face reads unmirrored seen
 // from outside the cube with the image's top at v = 1 (GL's t runs down, so v = 1 - t there;
 // the direct convention mirrors s on -X, +Y and -Z, so those are flipped back).
-Vec2 cubeAtlasUv(const Vec2& st, CubeFace f, CubeConvention convention, CubeLayout layout);
+template <class T>
+Vec2T<T> cubeAtlasUv(const Vec2T<T>& st, CubeFace f, CubeConvention convention, CubeLayout layout) {
+  if (layout == CubeLayout::Faces) return st;
+  Vec2T<T> oriented = st;
+  if (convention == CubeConvention::Gl) {
+    oriented.y() = T(1) - st.y();
+  } else if (f == CubeFace::NegX || f == CubeFace::PosY || f == CubeFace::NegZ) {
+    oriented.x() = T(1) - st.x();
+  }
+  const int face = static_cast<int>(f);
+  int column = 0, row = 0, columns = 1, rows = 1;
+  switch (layout) {
+    case CubeLayout::Faces: break;
+    case CubeLayout::Strip: column = face, columns = 6; break;
+    case CubeLayout::ThreeByTwo: column = face % 3, row = face < 3 ? 1 : 0, columns = 3, rows = 2; break;
+    case CubeLayout::Cross: {
+      // (column, row from the bottom) of +X -X +Y -Y +Z -Z
+      static constexpr int kCell[kCubeFaceCount][2] = {{2, 1}, {0, 1}, {1, 2}, {1, 0}, {1, 1}, {3, 1}};
+      column = kCell[face][0], row = kCell[face][1], columns = 4, rows = 3;
+      break;
+    }
+  }
+  return {(T(column) + oriented.x()) / T(columns), (T(row) + oriented.y()) / T(rows)};
+}
 
 }  // namespace uvtk::param

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/arithmetic.h"
 #include "core/mesh.h"
 #include "core/uv_map.h"
 #include "param/formulas.h"
@@ -58,6 +59,7 @@ struct ProjectorOptions {
   PoleMode pole = PoleMode::Fan;
   double poleEpsilon = 1e-6;  // a pole: hypot(x, y) <= eps |q|
   UvTransform uvTransform;
+  Arithmetic arithmetic;  // precision and math mode of the per-vertex evaluation (docs/precision.md)
 };
 
 // The state of one evaluated vertex or corner.
@@ -99,9 +101,9 @@ struct Projection {
 // S-mapping, no seam or pole repair and no UV transform. `normals` is read only by the normal
 // and reflection O-mappings (then it has one unit normal per position). `out` is resized, so a
 // caller that maps repeatedly reuses its memory. The cube chooses faces per triangle and is a
-// UsageError here.
+// UsageError here. `threads` (0: one per core) split the positions into contiguous ranges.
 void mapVertices(const ProjectorOptions& options, const Affine3& localFromObject, const std::vector<Vec3>& positions,
-                 const std::vector<Vec3>& normals, std::vector<VertexUv>& out);
+                 const std::vector<Vec3>& normals, std::vector<VertexUv>& out, int threads = 1);
 
 // The exact mapping at single object-space points, for evaluation at every pixel: placement,
 // O-mapping, surface, S-mapping and the UV transform, without seam or pole repair (u stays in its

@@ -1,12 +1,16 @@
 // The two stages of Bier & Sloan (1986) as types. A RayMapping (O-mapping) turns a vertex into
 // a Probe; a Surface (intermediate surface) resolves the probe to a hit point q and gives the
 // (u, v) of q (S-mapping). Every surface composes with every ray mapping (docs/conventions.md §4).
+// Each type is a template on the scalar T the mapping runs in (float, double, or long double for
+// the references that measure the others); the names without a suffix are the double ones.
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <variant>
 
 #include "core/math.h"
@@ -15,217 +19,289 @@
 namespace uvtk::param {
 
 // What an O-mapping sends to the surface, in the surface's local frame.
-struct Probe {
+template <class T>
+struct ProbeT {
   enum class Kind {
     Foot,     // the point itself; the surface takes the foot of its own normal through it
     Central,  // the ray from the local origin through `point` (a direction when at infinity)
     Ray,      // the ray point + t direction, first hit t >= 0 (planes: the line's crossing)
   };
   Kind kind = Kind::Foot;
-  Vec3 point = Vec3::Zero();
-  Vec3 direction = Vec3::Zero();
+  Vec3T<T> point = Vec3T<T>::Zero();
+  Vec3T<T> direction = Vec3T<T>::Zero();
 };
 
 // A vertex as the O-mappings see it: local position, unit local normal (zero when unused).
-struct Sample {
-  Vec3 p;
-  Vec3 n;
+template <class T>
+struct SampleT {
+  Vec3T<T> p;
+  Vec3T<T> n;
 };
 
 // ---- O-mappings ----
 
-struct SurfaceNormalRay {  // `isn`: along the intermediate surface's own normal
+template <class T>
+struct SurfaceNormalRayT {  // `isn`: along the intermediate surface's own normal
   static constexpr bool kNeedsNormal = false;
-  Probe probe(const Sample& s) const { return {Probe::Kind::Foot, s.p, Vec3::Zero()}; }
+  ProbeT<T> probe(const SampleT<T>& s) const { return {ProbeT<T>::Kind::Foot, s.p, Vec3T<T>::Zero()}; }
 };
 
-struct CentroidRay {  // `centroid`: from the local origin through the point
+template <class T>
+struct CentroidRayT {  // `centroid`: from the local origin through the point
   static constexpr bool kNeedsNormal = false;
-  Probe probe(const Sample& s) const { return {Probe::Kind::Central, s.p, Vec3::Zero()}; }
+  ProbeT<T> probe(const SampleT<T>& s) const { return {ProbeT<T>::Kind::Central, s.p, Vec3T<T>::Zero()}; }
 };
 
-struct ObjectNormalRay {  // `normal`: from the point along its normal
+template <class T>
+struct ObjectNormalRayT {  // `normal`: from the point along its normal
   static constexpr bool kNeedsNormal = true;
-  Probe probe(const Sample& s) const { return {Probe::Kind::Ray, s.p, s.n}; }
+  ProbeT<T> probe(const SampleT<T>& s) const { return {ProbeT<T>::Kind::Ray, s.p, s.n}; }
 };
 
-struct ReflectionRay {  // `reflection`: the view ray from the eye, mirrored about the normal
+template <class T>
+struct ReflectionRayT {  // `reflection`: the view ray from the eye, mirrored about the normal
   static constexpr bool kNeedsNormal = true;
-  Vec3 eye;                 // local frame
+  Vec3T<T> eye;             // local frame
   bool atInfinity = false;  // look up by direction only, as from the surface's centre
-  Probe probe(const Sample& s) const {
-    const Vec3 view = (s.p - eye).normalized();
-    const Vec3 r = view - 2.0 * s.n.dot(view) * s.n;  // R = V - 2 (N.V) N
-    return atInfinity ? Probe{Probe::Kind::Central, r, Vec3::Zero()} : Probe{Probe::Kind::Ray, s.p, r};
+  ProbeT<T> probe(const SampleT<T>& s) const {
+    const Vec3T<T> view = (s.p - eye).normalized();
+    const Vec3T<T> r = view - T(2) * s.n.dot(view) * s.n;  // R = V - 2 (N.V) N
+    return atInfinity ? ProbeT<T>{ProbeT<T>::Kind::Central, r, Vec3T<T>::Zero()}
+                      : ProbeT<T>{ProbeT<T>::Kind::Ray, s.p, r};
   }
 };
 
-using RayMapping = std::variant<SurfaceNormalRay, CentroidRay, ObjectNormalRay, ReflectionRay>;
+template <class T>
+using RayMappingT = std::variant<SurfaceNormalRayT<T>, CentroidRayT<T>, ObjectNormalRayT<T>, ReflectionRayT<T>>;
 
 // ---- Intermediate surfaces ----
 // resolve() returns the hit point q (local frame; radial surfaces may return any positive
 // multiple of it, since their (u, v) and pole tests are scale-invariant) or nothing on a miss.
+//
+// The S-mapping of a surface runs in two steps, so that the arctangents of a whole block of points
+// can be taken at once by a vectorised library (--math fast): angleArguments(q) gives the (y, x)
+// pairs whose atan2 the surface needs (kAngles of them), uvFromAngles(q, angles) the (u, v).
+// uvAt(q) composes the two with libm's atan2.
+
+// An arctangent's arguments: the angle is atan2(y, x).
+template <class T>
+struct AtanArguments {
+  T y, x;
+};
 
 // The smallest t >= 0 with a t^2 + b t + c = 0, computed without cancellation. c is the
 // implicit function at the ray's origin; where |c| <= 64 eps cScale the origin counts as on the
 // surface and t = 0, so that a vertex of a mesh fitted to the surface hits itself whichever way
 // rounding went.
-inline std::optional<double> firstNonNegativeRoot(double a, double b, double c, double cScale);
+template <class T>
+std::optional<T> firstNonNegativeRoot(T a, T b, T c, T cScale);
 
-struct PlaneSurface {  // z = 0, (u, v) = (x, y)
+template <class T>
+struct PlaneSurfaceT {  // z = 0, (u, v) = (x, y)
   static constexpr bool kWraps = false;
-  std::optional<Vec3> resolve(const Probe& probe) const;
-  Vec2 uvAt(const Vec3& q) const { return {q.x(), q.y()}; }
+  static constexpr int kAngles = 0;
+  std::optional<Vec3T<T>> resolve(const ProbeT<T>& probe) const;
+  std::array<AtanArguments<T>, 0> angleArguments(const Vec3T<T>&) const { return {}; }
+  Vec2T<T> uvFromAngles(const Vec3T<T>& q, const T*) const { return {q.x(), q.y()}; }
+  Vec2T<T> uvAt(const Vec3T<T>& q) const { return uvFromAngles(q, nullptr); }
 };
 
 // Two planes E1, E2 in object space: u, v are true signed distances to them. Rays meet the
 // plane a.x = 0 (Central: a.x = 1) with a = n1 x n2 / |n1 x n2|, so that the planes
 // x = 0 and y = 0 reproduce PlaneSurface.
-struct TwoPlaneSurface {
+template <class T>
+struct TwoPlaneSurfaceT {
   static constexpr bool kWraps = false;
-  Vec4 planeU;  // normalised so that (a, b, c) has unit length
-  Vec4 planeV;
-  Vec3 axis;    // a
-  // Throws UsageError for a zero normal or parallel planes.
-  TwoPlaneSurface(const Vec4& e1, const Vec4& e2);
-  std::optional<Vec3> resolve(const Probe& probe) const;
-  Vec2 uvAt(const Vec3& q) const {
-    return {planeU.head<3>().dot(q) + planeU[3], planeV.head<3>().dot(q) + planeV[3]};
+  static constexpr int kAngles = 0;
+  Vec4T<T> planeU;  // normalised so that (a, b, c) has unit length
+  Vec4T<T> planeV;
+  Vec3T<T> axis;    // a
+  // Normalises in double, then rounds to T. Throws UsageError for a zero normal or parallel planes.
+  TwoPlaneSurfaceT(const Vec4& e1, const Vec4& e2);
+  std::optional<Vec3T<T>> resolve(const ProbeT<T>& probe) const;
+  std::array<AtanArguments<T>, 0> angleArguments(const Vec3T<T>&) const { return {}; }
+  Vec2T<T> uvFromAngles(const Vec3T<T>& q, const T*) const {
+    return {planeU.template head<3>().dot(q) + planeU[3], planeV.template head<3>().dot(q) + planeV[3]};
   }
+  Vec2T<T> uvAt(const Vec3T<T>& q) const { return uvFromAngles(q, nullptr); }
 };
 
-struct CylinderSurface {  // radius 1 about the z axis
+template <class T>
+struct CylinderSurfaceT {  // radius 1 about the z axis
   static constexpr bool kWraps = true;
-  std::optional<Vec3> resolve(const Probe& probe) const;
-  Vec2 uvAt(const Vec3& q) const { return cylinderUv(q); }
-  double vAt(const Vec3& q) const { return q.z(); }
+  static constexpr int kAngles = 1;
+  std::optional<Vec3T<T>> resolve(const ProbeT<T>& probe) const;
+  std::array<AtanArguments<T>, 1> angleArguments(const Vec3T<T>& q) const { return {{{q.y(), q.x()}}}; }
+  // (u, v) = (turn fraction, z) (§3)
+  Vec2T<T> uvFromAngles(const Vec3T<T>& q, const T* angles) const { return {turnFromAngle(angles[0]), q.z()}; }
+  Vec2T<T> uvAt(const Vec3T<T>& q) const { return cylinderUv(q); }
   double uStart() const { return 0.0; }
   double uPerTurn() const { return 1.0; }  // u grows counter-clockwise seen from +z
 };
 
-struct SphereSurface {  // radius 1 about the origin
+template <class T>
+struct SphereSurfaceT {  // radius 1 about the origin
   static constexpr bool kWraps = true;
+  static constexpr int kAngles = 2;
   SpherePreset preset = SpherePreset::Default;
-  std::optional<Vec3> resolve(const Probe& probe) const;
-  Vec2 uvAt(const Vec3& q) const { return sphereUv(q, preset); }
-  double vAt(const Vec3& q) const { return sphereV(q, preset); }
+  std::optional<Vec3T<T>> resolve(const ProbeT<T>& probe) const;
+  // The azimuth's arguments for the preset, then those of the angle from the nearer pole (§3).
+  std::array<AtanArguments<T>, 2> angleArguments(const Vec3T<T>& q) const {
+    const auto [y, x] = sphereAzimuthArguments(q, preset);
+    return {{{y, x}, {radialDistance(q.x(), q.y()), std::fabs(q.z())}}};
+  }
+  Vec2T<T> uvFromAngles(const Vec3T<T>& q, const T* angles) const {
+    return {sphereUFromAngle(angles[0], preset), sphereVFromPoleAngle(angles[1], std::signbit(q.z()), preset)};
+  }
+  Vec2T<T> uvAt(const Vec3T<T>& q) const { return sphereUv(q, preset); }
   double uStart() const { return uPeriodStart(preset); }
   double uPerTurn() const { return preset == SpherePreset::Glu ? -1.0 : 1.0; }  // gluSphere's s runs clockwise
 };
 
 // The box [-1, 1]^3. Faces are chosen per triangle (chooseFace); each corner is then projected
 // onto that face's plane by its own probe (projectOnFace).
-struct CubeSurface {
+template <class T>
+struct CubeSurfaceT {
   static constexpr bool kWraps = false;
   CubeConvention convention = CubeConvention::Gl;
   CubeLayout layout = CubeLayout::Faces;
   // `faceNormal` is the triangle's normal, used by Foot probes (box mapping).
-  std::optional<CubeFace> chooseFace(const Probe& probe, const Vec3& faceNormal) const;
+  std::optional<CubeFace> chooseFace(const ProbeT<T>& probe, const Vec3T<T>& faceNormal) const;
   // The face a corner alone would choose (Foot probes: the major axis of its position).
-  std::optional<CubeFace> cornerFace(const Probe& probe) const;
+  std::optional<CubeFace> cornerFace(const ProbeT<T>& probe) const;
   // Face coordinates (s, t) of the probe on face f's plane, before the layout.
-  std::optional<Vec2> projectOnFace(const Probe& probe, CubeFace f) const;
-  Vec2 uvAt(const Vec2& st, CubeFace f) const { return cubeAtlasUv(st, f, convention, layout); }
+  std::optional<Vec2T<T>> projectOnFace(const ProbeT<T>& probe, CubeFace f) const;
+  Vec2T<T> uvAt(const Vec2T<T>& st, CubeFace f) const { return cubeAtlasUv(st, f, convention, layout); }
 };
 
-using Surface = std::variant<PlaneSurface, TwoPlaneSurface, CylinderSurface, SphereSurface, CubeSurface>;
+template <class T>
+using SurfaceT =
+    std::variant<PlaneSurfaceT<T>, TwoPlaneSurfaceT<T>, CylinderSurfaceT<T>, SphereSurfaceT<T>, CubeSurfaceT<T>>;
 
+using Probe = ProbeT<double>;
+using Sample = SampleT<double>;
+using SurfaceNormalRay = SurfaceNormalRayT<double>;
+using CentroidRay = CentroidRayT<double>;
+using ObjectNormalRay = ObjectNormalRayT<double>;
+using ReflectionRay = ReflectionRayT<double>;
+using RayMapping = RayMappingT<double>;
+using PlaneSurface = PlaneSurfaceT<double>;
+using TwoPlaneSurface = TwoPlaneSurfaceT<double>;
+using CylinderSurface = CylinderSurfaceT<double>;
+using SphereSurface = SphereSurfaceT<double>;
+using CubeSurface = CubeSurfaceT<double>;
+using Surface = SurfaceT<double>;
 
 // ---- Inline definitions: the per-vertex hot path ----
 
-inline std::optional<double> firstNonNegativeRoot(double a, double b, double c, double cScale) {
-  if (std::fabs(c) <= 64.0 * std::numeric_limits<double>::epsilon() * cScale) return 0.0;
-  if (a == 0.0) {  // the ray runs parallel to the surface's axis: on it everywhere or nowhere
-    if (b != 0.0) {
-      const double t = -c / b;
-      return t >= 0.0 ? std::optional<double>(t) : std::nullopt;
+template <class T>
+std::optional<T> firstNonNegativeRoot(T a, T b, T c, T cScale) {
+  if (std::fabs(c) <= T(64) * std::numeric_limits<T>::epsilon() * cScale) return T(0);
+  if (a == T(0)) {  // the ray runs parallel to the surface's axis: on it everywhere or nowhere
+    if (b != T(0)) {
+      const T t = -c / b;
+      return t >= T(0) ? std::optional<T>(t) : std::nullopt;
     }
-    return c == 0.0 ? std::optional<double>(0.0) : std::nullopt;
+    return c == T(0) ? std::optional<T>(T(0)) : std::nullopt;
   }
-  const double discriminant = b * b - 4.0 * a * c;
-  if (!(discriminant >= 0.0)) return std::nullopt;
+  const T discriminant = b * b - T(4) * a * c;
+  if (!(discriminant >= T(0))) return std::nullopt;
   // Numerical Recipes' form: q = -(b + sign(b) sqrt(D)) / 2, roots q/a and c/q.
-  const double q = -0.5 * (b + std::copysign(std::sqrt(discriminant), b));
-  double t0 = q / a;
-  double t1 = q != 0.0 ? c / q : t0;
+  const T q = T(-0.5) * (b + std::copysign(std::sqrt(discriminant), b));
+  T t0 = q / a;
+  T t1 = q != T(0) ? c / q : t0;
   if (t0 > t1) std::swap(t0, t1);
-  if (t0 >= 0.0) return t0;
-  if (t1 >= 0.0) return t1;
+  if (t0 >= T(0)) return t0;
+  if (t1 >= T(0)) return t1;
   return std::nullopt;
 }
 
-inline bool isZero(const Vec3& v) { return v.x() == 0.0 && v.y() == 0.0 && v.z() == 0.0; }
-
-// The crossing of the ray's line with the plane n.x = 0; nothing when they are parallel.
-inline std::optional<Vec3> lineMeetsPlane(const Probe& probe, const Vec3& n) {
-  const double along = n.dot(probe.direction);
-  if (along == 0.0) return std::nullopt;
-  return Vec3(probe.point - (n.dot(probe.point) / along) * probe.direction);
+template <class T>
+bool isZero(const Vec3T<T>& v) {
+  return v.x() == T(0) && v.y() == T(0) && v.z() == T(0);
 }
 
-inline std::optional<Vec3> PlaneSurface::resolve(const Probe& probe) const {
-  const Vec3& p = probe.point;
+// The crossing of the ray's line with the plane n.x = 0; nothing when they are parallel.
+template <class T>
+std::optional<Vec3T<T>> lineMeetsPlane(const ProbeT<T>& probe, const Vec3T<T>& n) {
+  const T along = n.dot(probe.direction);
+  if (along == T(0)) return std::nullopt;
+  return Vec3T<T>(probe.point - (n.dot(probe.point) / along) * probe.direction);
+}
+
+template <class T>
+std::optional<Vec3T<T>> PlaneSurfaceT<T>::resolve(const ProbeT<T>& probe) const {
+  using Kind = typename ProbeT<T>::Kind;
+  const Vec3T<T>& p = probe.point;
   switch (probe.kind) {
-    case Probe::Kind::Foot: return Vec3(p.x(), p.y(), 0.0);
-    case Probe::Kind::Central:  // central projection onto z = 1
-      if (!(p.z() > 0.0)) return std::nullopt;
-      return Vec3(p.x() / p.z(), p.y() / p.z(), 1.0);
-    case Probe::Kind::Ray: {
-      std::optional<Vec3> hit = lineMeetsPlane(probe, Vec3::UnitZ());
-      if (hit) hit->z() = 0.0;
+    case Kind::Foot: return Vec3T<T>(p.x(), p.y(), T(0));
+    case Kind::Central:  // central projection onto z = 1
+      if (!(p.z() > T(0))) return std::nullopt;
+      return Vec3T<T>(p.x() / p.z(), p.y() / p.z(), T(1));
+    case Kind::Ray: {
+      std::optional<Vec3T<T>> hit = lineMeetsPlane(probe, Vec3T<T>(Vec3T<T>::UnitZ()));
+      if (hit) hit->z() = T(0);
       return hit;
     }
   }
   return std::nullopt;
 }
 
-inline std::optional<Vec3> TwoPlaneSurface::resolve(const Probe& probe) const {
-  const Vec3& p = probe.point;
+template <class T>
+std::optional<Vec3T<T>> TwoPlaneSurfaceT<T>::resolve(const ProbeT<T>& probe) const {
+  using Kind = typename ProbeT<T>::Kind;
+  const Vec3T<T>& p = probe.point;
   switch (probe.kind) {
-    case Probe::Kind::Foot: return p;
-    case Probe::Kind::Central: {  // central projection onto a.x = 1
-      const double along = axis.dot(p);
-      if (!(along > 0.0)) return std::nullopt;
-      return Vec3(p / along);
+    case Kind::Foot: return p;
+    case Kind::Central: {  // central projection onto a.x = 1
+      const T along = axis.dot(p);
+      if (!(along > T(0))) return std::nullopt;
+      return Vec3T<T>(p / along);
     }
-    case Probe::Kind::Ray: return lineMeetsPlane(probe, axis);
+    case Kind::Ray: return lineMeetsPlane(probe, axis);
   }
   return std::nullopt;
 }
 
-inline std::optional<Vec3> CylinderSurface::resolve(const Probe& probe) const {
-  const Vec3& p = probe.point;
+template <class T>
+std::optional<Vec3T<T>> CylinderSurfaceT<T>::resolve(const ProbeT<T>& probe) const {
+  using Kind = typename ProbeT<T>::Kind;
+  const Vec3T<T>& p = probe.point;
   switch (probe.kind) {
-    case Probe::Kind::Foot: return p;  // same azimuth and height as (x/rho, y/rho, z)
-    case Probe::Kind::Central: {
-      const double rho = radialDistance(p.x(), p.y());
-      if (!(rho > 0.0)) return std::nullopt;  // along the axis the ray never meets the side
-      return Vec3(p / rho);
+    case Kind::Foot: return p;  // same azimuth and height as (x/rho, y/rho, z)
+    case Kind::Central: {
+      const T rho = radialDistance(p.x(), p.y());
+      if (!(rho > T(0))) return std::nullopt;  // along the axis the ray never meets the side
+      return Vec3T<T>(p / rho);
     }
-    case Probe::Kind::Ray: {
-      const Vec3& d = probe.direction;
-      const std::optional<double> t =
-          firstNonNegativeRoot(d.x() * d.x() + d.y() * d.y(), 2.0 * (p.x() * d.x() + p.y() * d.y()),
-                               p.x() * p.x() + p.y() * p.y() - 1.0, std::max(1.0, p.x() * p.x() + p.y() * p.y()));
+    case Kind::Ray: {
+      const Vec3T<T>& d = probe.direction;
+      const T radial2 = p.x() * p.x() + p.y() * p.y();
+      const std::optional<T> t = firstNonNegativeRoot(d.x() * d.x() + d.y() * d.y(),
+                                                      T(2) * (p.x() * d.x() + p.y() * d.y()), radial2 - T(1),
+                                                      std::max(T(1), radial2));
       if (!t) return std::nullopt;
-      return Vec3(p + *t * d);
+      return Vec3T<T>(p + *t * d);
     }
   }
   return std::nullopt;
 }
 
-inline std::optional<Vec3> SphereSurface::resolve(const Probe& probe) const {
-  const Vec3& p = probe.point;
+template <class T>
+std::optional<Vec3T<T>> SphereSurfaceT<T>::resolve(const ProbeT<T>& probe) const {
+  using Kind = typename ProbeT<T>::Kind;
+  const Vec3T<T>& p = probe.point;
   switch (probe.kind) {
-    case Probe::Kind::Foot:
-    case Probe::Kind::Central:  // radial: the hit point is p/|p|, and (u, v) ignore the scale
+    case Kind::Foot:
+    case Kind::Central:  // radial: the hit point is p/|p|, and (u, v) ignore the scale
       if (isZero(p)) return std::nullopt;
       return p;
-    case Probe::Kind::Ray: {
-      const Vec3& d = probe.direction;
-      const std::optional<double> t = firstNonNegativeRoot(d.squaredNorm(), 2.0 * p.dot(d), p.squaredNorm() - 1.0, std::max(1.0, p.squaredNorm()));
+    case Kind::Ray: {
+      const Vec3T<T>& d = probe.direction;
+      const T p2 = p.squaredNorm();
+      const std::optional<T> t = firstNonNegativeRoot(d.squaredNorm(), T(2) * p.dot(d), p2 - T(1), std::max(T(1), p2));
       if (!t) return std::nullopt;
-      return Vec3(p + *t * d);
+      return Vec3T<T>(p + *t * d);
     }
   }
   return std::nullopt;

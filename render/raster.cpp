@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "core/error.h"
-#include "render/parallel.h"
+#include "core/parallel.h"
 
 namespace uvtk::render {
 
@@ -18,7 +18,6 @@ constexpr int kSubpixelBits = 8;  // vertices snap to 1/256 pixel, as GL hardwar
 constexpr std::int64_t kSubpixel = std::int64_t(1) << kSubpixelBits;
 constexpr std::int64_t kHalfPixel = kSubpixel / 2;
 constexpr int kTileSize = 64;
-constexpr int kMaxViewport = 16384;
 
 struct Point {
   std::int64_t x, y;
@@ -39,24 +38,42 @@ struct ClipPlanes {
   double guard;
   double distance(int plane, const Vec4& p) const {
     switch (plane) {
-      case 0: return p.w() + p.z();  // near
-      case 1: return p.w() - p.z();  // far
-      case 2: return guard * p.w() - p.x();
-      case 3: return guard * p.w() + p.x();
-      case 4: return guard * p.w() - p.y();
-      default: return guard * p.w() + p.y();
+      case 0:
+        return p.w() + p.z();  // near
+      case 1:
+        return p.w() - p.z();  // far
+      case 2:
+        return guard * p.w() - p.x();
+      case 3:
+        return guard * p.w() + p.x();
+      case 4:
+        return guard * p.w() - p.y();
+      default:
+        return guard * p.w() + p.y();
     }
   }
   // Sets the clipped coordinate so that the point lies exactly on the plane: with huge corners
   // the interpolated coordinate alone would carry their rounding error.
   void putOn(int plane, Vec4& p) const {
     switch (plane) {
-      case 0: p.z() = -p.w(); break;
-      case 1: p.z() = p.w(); break;
-      case 2: p.x() = guard * p.w(); break;
-      case 3: p.x() = -guard * p.w(); break;
-      case 4: p.y() = guard * p.w(); break;
-      default: p.y() = -guard * p.w(); break;
+      case 0:
+        p.z() = -p.w();
+        break;
+      case 1:
+        p.z() = p.w();
+        break;
+      case 2:
+        p.x() = guard * p.w();
+        break;
+      case 3:
+        p.x() = -guard * p.w();
+        break;
+      case 4:
+        p.y() = guard * p.w();
+        break;
+      default:
+        p.y() = -guard * p.w();
+        break;
     }
   }
 };
@@ -167,7 +184,7 @@ class Setup {
     }
     ++out.stats.drawn;
     const Vec3 depthPlane = 0.5 * interpolator.ndcDepthPlane() + Vec3(0, 0, 0.5);  // glDepthRange(0, 1)
-    for (int i = 1; i + 1 < n; ++i) {  // a fan over the convex polygon
+    for (int i = 1; i + 1 < n; ++i) {                                              // a fan over the convex polygon
       SetupTriangle t;
       t.v[0] = p[0];
       t.v[1] = front ? p[i] : p[i + 1];
@@ -241,11 +258,11 @@ void drawInTile(const SetupTriangle& t, int tileX0, int tileX1, int tileY0, int 
 TriangleInterpolator::TriangleInterpolator(const Vec4& c0, const Vec4& c1, const Vec4& c2, int width, int height) {
   Mat3 m;
   m << c0.x(), c1.x(), c2.x(),  //
-      c0.y(), c1.y(), c2.y(),    //
+      c0.y(), c1.y(), c2.y(),   //
       c0.w(), c1.w(), c2.w();
   const double det = m.determinant();
   if (!(det != 0.0) || !std::isfinite(det)) return;
-  Mat3 ndcFromWindow;  // X = 2 x / W - 1, Y = 2 y / H - 1
+  Mat3 ndcFromWindow;                   // X = 2 x / W - 1, Y = 2 y / H - 1
   ndcFromWindow << 2.0 / width, 0, -1,  //
       0, 2.0 / height, -1,              //
       0, 0, 1;
@@ -299,7 +316,8 @@ VisibilityBuffer rasterize(const std::vector<Vec4>& clip, const std::vector<Tria
     const int x0 = tx * kTileSize, x1 = std::min(width, x0 + kTileSize) - 1;
     const int y0 = ty * kTileSize, y1 = std::min(height, y0 + kTileSize) - 1;
     for (const Binned& chunk : chunks)
-      for (std::uint32_t index : chunk.tiles[std::size_t(tile)]) drawInTile(chunk.triangles[index], x0, x1, y0, y1, buffer);
+      for (std::uint32_t index : chunk.tiles[std::size_t(tile)])
+        drawInTile(chunk.triangles[index], x0, x1, y0, y1, buffer);
   });
 
   if (stats) {

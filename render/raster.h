@@ -31,13 +31,15 @@ struct VisibilityBuffer {
 };
 
 struct RasterStats {
-  std::size_t culled = 0;    // triangles removed by face culling
-  std::size_t clipped = 0;   // triangles entirely outside the near-far range or the guard band
-  std::size_t drawn = 0;     // triangles that reached the edge tests
+  std::size_t culled = 0;   // triangles removed by face culling
+  std::size_t clipped = 0;  // triangles entirely outside the near-far range or the guard band
+  std::size_t drawn = 0;    // triangles that reached the edge tests
 };
 
+constexpr int kMaxViewport = 16384;  // pixels a side
+
 // `clip`: clip-space positions, indexed by `triangles`. Throws UsageError for an empty or too
-// large viewport (more than 16384 pixels a side).
+// large viewport (more than kMaxViewport pixels a side).
 VisibilityBuffer rasterize(const std::vector<Vec4>& clip, const std::vector<Triangle>& triangles, int width, int height,
                            const RasterOptions& options, RasterStats* stats = nullptr);
 

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <string>
 
 #include "core/error.h"
-#include "render/parallel.h"
+#include "core/parallel.h"
 
 namespace uvtk::render {
 
@@ -33,7 +35,7 @@ struct FrameData {
   const Mesh& mesh;
   const TexcoordSource& source;
   const RenderOptions& options;
-  const std::vector<Vec4>& clip;  // per vertex
+  const std::vector<Vec4>& clip;   // per vertex
   std::vector<Vec3> normals;       // object space, per corner: for lighting or the pixel mapping
   std::vector<Vec4> cornerColour;  // lit colour per corner when the environment reads it
 };
@@ -47,8 +49,8 @@ class Shader {
     const RenderOptions& o = f_.options;
     if (face != cachedFace_) {
       const Triangle& t = f_.mesh.triangles[std::size_t(face)];
-      interpolator_ = TriangleInterpolator(f_.clip[std::size_t(t[0])], f_.clip[std::size_t(t[1])], f_.clip[std::size_t(t[2])],
-                                           o.camera.width, o.camera.height);
+      interpolator_ = TriangleInterpolator(f_.clip[std::size_t(t[0])], f_.clip[std::size_t(t[1])],
+                                           f_.clip[std::size_t(t[2])], o.camera.width, o.camera.height);
       cachedFace_ = face;
     }
     const double wx = x + 0.5, wy = o.camera.height - row - 0.5;  // window coordinates, y up
@@ -108,7 +110,8 @@ class Shader {
 
   Vec2 exactAt(std::int32_t face, const Vec3& b) const {
     const Triangle& t = f_.mesh.triangles[std::size_t(face)];
-    const Vec3 position = b[0] * f_.mesh.positions[t[0]] + b[1] * f_.mesh.positions[t[1]] + b[2] * f_.mesh.positions[t[2]];
+    const Vec3 position =
+        b[0] * f_.mesh.positions[t[0]] + b[1] * f_.mesh.positions[t[1]] + b[2] * f_.mesh.positions[t[2]];
     Vec3 normal = Vec3::Zero();
     if (!f_.normals.empty()) {
       for (int k = 0; k < 3; ++k) normal += b[k] * f_.normals[3 * std::size_t(face) + std::size_t(k)];
@@ -129,25 +132,23 @@ std::vector<Vec4> clipPositions(const Mesh& mesh, const Mat4& clipFromObject, in
   constexpr int kChunk = 1 << 16;
   parallelFor(int((clip.size() + kChunk - 1) / kChunk), threads, [&](int chunk) {
     const std::size_t end = std::min(clip.size(), std::size_t(chunk + 1) * kChunk);
-    for (std::size_t v = std::size_t(chunk) * kChunk; v < end; ++v) clip[v] = clipFromObject * mesh.positions[v].homogeneous();
+    for (std::size_t v = std::size_t(chunk) * kChunk; v < end; ++v)
+      clip[v] = clipFromObject * mesh.positions[v].homogeneous();
   });
   return clip;
 }
 
-}  // namespace
-
-Rendering render(const Mesh& mesh, const TexcoordSource& source, const RenderOptions& o) {
-  if (!o.texture) throw UsageError("render: no texture is bound");
-  if (!source.pixelMapping && source.corners.size() != 3 * mesh.triangles.size())
-    throw UsageError("render: expected 3 texture coordinates per triangle");
-  UVTK_CHECK(!needsMipmaps(o.sampler.minFilter) || o.texture->hasMipmaps());
+// One sample at the centre of each pixel of the camera's viewport; `visible` receives the
+// visibility buffer. The arguments are valid.
+Rendering renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOptions& o,
+                      VisibilityBuffer& visible) {
   const int width = o.camera.width, height = o.camera.height;
   Rendering out;
 
   const auto rasterStart = std::chrono::steady_clock::now();
   const Mat4 eyeFromObject = o.camera.viewFromWorld * o.worldFromObject;
   const std::vector<Vec4> clip = clipPositions(mesh, o.camera.clipFromView * eyeFromObject, o.raster.threads);
-  const VisibilityBuffer visible = rasterize(clip, mesh.triangles, width, height, o.raster, &out.raster);
+  visible = rasterize(clip, mesh.triangles, width, height, o.raster, &out.raster);
   out.rasterMs = millisecondsSince(rasterStart);
 
   const auto shadeStart = std::chrono::steady_clock::now();
@@ -195,6 +196,80 @@ Rendering render(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
   });
   for (std::size_t n : covered) out.coveredPixels += n;
   out.shadeMs = millisecondsSince(shadeStart);
+  return out;
+}
+
+// n for n x n samples per pixel.
+int sampleGridSize(int samplesPerPixel) {
+  const int n = int(std::lround(std::sqrt(double(std::clamp(samplesPerPixel, 1, 256)))));
+  if (samplesPerPixel < 1 || samplesPerPixel > 256 || n * n != samplesPerPixel)
+    throw UsageError("--spp: expected a square number of samples per pixel in [1, 256] (1, 4, 9, 16, 64, ...), found " +
+                     std::to_string(samplesPerPixel));
+  return n;
+}
+
+// The supersampled frame down to width x height: each n x n block's mean colour (in double, so
+// that a block of equal samples keeps their value exactly), its sample (n/2, n/2)'s AOVs, covered
+// when any of its samples is.
+Rendering resolve(const Rendering& samples, const VisibilityBuffer& visible, int n, int width, int height,
+                  int threads) {
+  Rendering out;
+  out.colour = Image(width, height, 3);
+  const bool aovs = !samples.aovs.pixels.empty();
+  if (aovs) {
+    out.aovs = Image(width, height, samples.aovs.channels);
+    out.aovs.channelNames = samples.aovs.channelNames;
+  }
+  const int bands = (height + kRowsPerBand - 1) / kRowsPerBand;
+  std::vector<std::size_t> covered(std::size_t(bands), 0);
+  parallelFor(bands, threads, [&](int band) {
+    for (int row = band * kRowsPerBand; row < std::min(height, (band + 1) * kRowsPerBand); ++row)
+      for (int x = 0; x < width; ++x) {
+        double sum[3] = {0.0, 0.0, 0.0};
+        bool any = false;
+        for (int j = row * n; j < (row + 1) * n; ++j)
+          for (int i = x * n; i < (x + 1) * n; ++i) {
+            for (int c = 0; c < 3; ++c) sum[c] += samples.colour.at(i, j, c);
+            any = any || visible.face[visible.index(i, j)] >= 0;
+          }
+        for (int c = 0; c < 3; ++c) out.colour.at(x, row, c) = float(sum[c] / double(n * n));
+        covered[std::size_t(band)] += any;
+        if (aovs)
+          for (int c = 0; c < out.aovs.channels; ++c)
+            out.aovs.at(x, row, c) = samples.aovs.at(x * n + n / 2, row * n + n / 2, c);
+      }
+  });
+  for (std::size_t b : covered) out.coveredPixels += b;
+  out.raster = samples.raster;
+  out.rasterMs = samples.rasterMs;
+  out.shadeMs = samples.shadeMs;
+  return out;
+}
+
+}  // namespace
+
+Rendering render(const Mesh& mesh, const TexcoordSource& source, const RenderOptions& o) {
+  if (!o.texture) throw UsageError("render: no texture is bound");
+  if (!source.pixelMapping && source.corners.size() != 3 * mesh.triangles.size())
+    throw UsageError("render: expected 3 texture coordinates per triangle");
+  UVTK_CHECK(!needsMipmaps(o.sampler.minFilter) || o.texture->hasMipmaps());
+  const int n = sampleGridSize(o.samplesPerPixel);
+  VisibilityBuffer visible;
+  if (n == 1) return renderFrame(mesh, source, o, visible);
+
+  const int width = o.camera.width, height = o.camera.height;
+  if (std::int64_t(width) * n > kMaxViewport || std::int64_t(height) * n > kMaxViewport)
+    throw UsageError("--spp: " + std::to_string(o.samplesPerPixel) + " samples per pixel need a " +
+                     std::to_string(std::int64_t(width) * n) + " x " + std::to_string(std::int64_t(height) * n) +
+                     " frame, larger than the rasterizer's " + std::to_string(kMaxViewport) + " pixels a side");
+  // The same projection onto an n times larger viewport puts each sample at a pixel centre.
+  RenderOptions big = o;
+  big.camera.width = width * n;
+  big.camera.height = height * n;
+  const Rendering samples = renderFrame(mesh, source, big, visible);
+  const auto resolveStart = std::chrono::steady_clock::now();
+  Rendering out = resolve(samples, visible, n, width, height, o.raster.threads);
+  out.shadeMs += millisecondsSince(resolveStart);
   return out;
 }
 

@@ -2,7 +2,8 @@
 // projector, texgen) drawn as OpenGL's fixed-function pipeline draws it, or with the mapping
 // evaluated exactly at every pixel. Visibility first (render/raster.h), then each visible pixel is
 // shaded once: perspective-correct texture coordinates and their analytic derivatives, GL's level
-// of detail and filters, the texture environment. docs/conventions.md §7 and §9.
+// of detail and filters, the texture environment. docs/conventions.md §7 and §9. Supersampling
+// draws the same frame at n times the width and height and box-filters each n x n block.
 #pragma once
 
 #include <cstdint>
@@ -24,7 +25,7 @@ namespace uvtk::render {
 struct PixelMapping {
   // (s, t, r, q) at a point of triangle `face`; non-finite where the mapping has no value.
   std::function<Vec4(const Vec3& position, const Vec3& normal, std::int32_t face)> texcoordAt;
-  bool wrapsS = false;      // s has period 1: its derivatives take the nearest difference
+  bool wrapsS = false;  // s has period 1: its derivatives take the nearest difference
   bool needsNormal = false;
 };
 
@@ -45,21 +46,30 @@ struct RenderOptions {
   Lighting lighting;
   Vec3 background = Vec3::Zero();
   bool aovs = false;  // also fill Rendering::aovs
+  // n^2 for an n x n grid of samples in each pixel, at offsets ((i + 0.5) / n, (j + 0.5) / n):
+  // the frame is drawn at n times the width and height (same projection, each sample the centre
+  // of a pixel of that frame, its level of detail from that pixel's footprint) and each pixel's
+  // colour is the mean of its samples. One of 1, 4, 9, ..., 256.
+  int samplesPerPixel = 1;
 };
 
 struct Rendering {
   Image colour;  // RGB, row 0 at the top
   // With RenderOptions::aovs: channels u, v (s/q, t/q as interpolated, before wrapping), depth
   // (window depth), face (triangle index, -1 for the background) and lod (lambda); the background
-  // has u = v = lod = 0 and depth 1.
+  // has u = v = lod = 0 and depth 1. With n x n samples per pixel, every channel is that of the
+  // single sample (n/2, n/2) (integer division; column, row from the top left): the pixel's centre
+  // for odd n, half a sample right of and below it for even n; lod is then that of the sample's
+  // smaller footprint, log2(n) below the pixel's.
   Image aovs;
-  RasterStats raster;
-  std::size_t coveredPixels = 0;
-  double rasterMs = 0.0, shadeMs = 0.0;
+  RasterStats raster;                    // of the frame drawn, n times larger a side with supersampling
+  std::size_t coveredPixels = 0;         // pixels where the mesh covers at least one sample
+  double rasterMs = 0.0, shadeMs = 0.0;  // shadeMs includes the box filter
 };
 
 // Throws UsageError when the texture coordinates do not match the mesh (3 per triangle) and
-// there is no pixel mapping, or when there is no texture.
+// there is no pixel mapping, when there is no texture, when samplesPerPixel is not one of the
+// allowed squares, or when the supersampled frame exceeds kMaxViewport pixels a side.
 Rendering render(const Mesh& mesh, const TexcoordSource& texcoords, const RenderOptions& options);
 
 }  // namespace uvtk::render

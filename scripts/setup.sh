@@ -8,7 +8,7 @@ build_dir=${1:-build}
 packages=(cmake ninja-build g++ pkg-config
           libeigen3-dev libopenmesh-dev libcgal-dev libgmp-dev libmpfr-dev
           libopenimageio-dev openimageio-tools
-          libssl-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+          libssl-dev libsleef-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
           libosmesa6-dev)  # Mesa's software OpenGL: the reference the texgen tests compare with
 missing=()
 for p in "${packages[@]}"; do

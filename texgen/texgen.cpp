@@ -12,13 +12,18 @@ namespace {
 
 const char* const kCoordinateNames[4] = {"s", "t", "r", "q"};
 
-// Everything that does not depend on the vertex, computed once per call.
+// Everything that does not depend on the vertex, computed once per call in double; T is the
+// scalar the vertices are evaluated in (float: these values rounded once, see roundedToFloat).
+template <class T>
 struct Prepared {
+  using V4 = Eigen::Matrix<T, 4, 1>;
+  using M3 = Eigen::Matrix<T, 3, 3>;
+  using M4 = Eigen::Matrix<T, 4, 4>;
   std::array<TexgenMode, 4> modes{};
-  std::array<Vec4, 4> planes;  // ObjectLinear: the plane; EyeLinear: p' = p M_plane^-1 (as a column)
-  Mat4 draw = Mat4::Identity();
-  Mat3 normalMatrix = Mat3::Identity();  // (upper 3x3 of M_draw)^-T
-  Mat4 texture = Mat4::Identity();
+  std::array<V4, 4> planes;  // ObjectLinear: the plane; EyeLinear: p' = p M_plane^-1 (as a column)
+  M4 draw = M4::Identity();
+  M3 normalMatrix = M3::Identity();  // (upper 3x3 of M_draw)^-T
+  M4 texture = M4::Identity();
   bool textureIsIdentity = true;
   bool needsEye = false, needsNormal = false, needsReflection = false, normalize = true;
 };
@@ -42,8 +47,8 @@ Matrix inverseOf(const Matrix& m, const char* what) {
   return lu.inverse();
 }
 
-Prepared prepare(const TexgenOptions& o) {
-  Prepared p;
+Prepared<double> prepare(const TexgenOptions& o) {
+  Prepared<double> p;
   requireFinite(o.modelviewAtPlanes, "modelview at the planes");
   requireFinite(o.modelviewAtDraw, "modelview at draw time");
   requireFinite(o.textureMatrix, "texture matrix");
@@ -52,8 +57,9 @@ Prepared prepare(const TexgenOptions& o) {
     const TexgenMode m = o.coordinates[i].mode;
     if ((m == TexgenMode::SphereMap && i >= 2) ||
         ((m == TexgenMode::NormalMap || m == TexgenMode::ReflectionMap) && i == 3))
-      throw UsageError(std::string("texgen: coordinate ") + kCoordinateNames[i] + " cannot take " +
-                       (m == TexgenMode::SphereMap ? "sphere_map (s, t only)" : "normal_map or reflection_map (s, t, r only)"));
+      throw UsageError(
+          std::string("texgen: coordinate ") + kCoordinateNames[i] + " cannot take " +
+          (m == TexgenMode::SphereMap ? "sphere_map (s, t only)" : "normal_map or reflection_map (s, t, r only)"));
     if (m == TexgenMode::ObjectLinear || m == TexgenMode::EyeLinear)
       requireFinite(o.coordinates[i].plane, "texgen plane");
     p.modes[i] = m;
@@ -71,87 +77,124 @@ Prepared prepare(const TexgenOptions& o) {
   }
   p.draw = o.modelviewAtDraw;
   if (p.needsNormal)  // GL 4.6 compat §12.1.2: n_e = n M_u^-1 (a row vector), M_u the upper 3x3
-    p.normalMatrix = inverseOf<Mat3>(o.modelviewAtDraw.topLeftCorner<3, 3>(), "modelview at draw time (upper 3x3)")
-                         .transpose();
+    p.normalMatrix =
+        inverseOf<Mat3>(o.modelviewAtDraw.topLeftCorner<3, 3>(), "modelview at draw time (upper 3x3)").transpose();
   p.texture = o.textureMatrix;
   p.textureIsIdentity = o.textureMatrix == Mat4::Identity();
   p.normalize = o.normalize;
   return p;
 }
 
+// The prepared values rounded to binary32 once, as a GL with float shaders receives its uniforms.
+// A value that rounds to infinity is a UsageError, as a non-finite one is in double.
+Prepared<float> roundedToFloat(const Prepared<double>& d) {
+  Prepared<float> f;
+  f.modes = d.modes;
+  for (int i = 0; i < 4; ++i) {
+    f.planes[i] = d.planes[i].cast<float>();
+    if (f.modes[i] == TexgenMode::ObjectLinear || f.modes[i] == TexgenMode::EyeLinear)
+      requireFinite(f.planes[i], "texgen plane (rounded to float)");
+  }
+  f.draw = d.draw.cast<float>();
+  f.normalMatrix = d.normalMatrix.cast<float>();
+  f.texture = d.texture.cast<float>();
+  if (d.needsEye) requireFinite(f.draw, "modelview at draw time (rounded to float)");
+  if (d.needsNormal) requireFinite(f.normalMatrix, "inverse transpose of the modelview (rounded to float)");
+  if (!d.textureIsIdentity) requireFinite(f.texture, "texture matrix (rounded to float)");
+  f.textureIsIdentity = d.textureIsIdentity;
+  f.needsEye = d.needsEye;
+  f.needsNormal = d.needsNormal;
+  f.needsReflection = d.needsReflection;
+  f.normalize = d.normalize;
+  return f;
+}
+
+// Lengths whose square neither overflows nor underflows in T.
+template <class T>
+struct SafeLength;
+template <>
+struct SafeLength<double> {
+  static constexpr double kMin = 1e-150, kMax = 1e150;
+};
+template <>
+struct SafeLength<float> {
+  static constexpr float kMin = 1e-18f, kMax = 1e18f;
+};
+
 // Unit vector along v; the zero vector stays zero (as Mesa's NORMALIZE_3FV). Scales first when
 // the squared length would overflow or underflow.
-Vec3 normalised(const Vec3& v) {
-  const double length = v.norm();
-  if (length > 1e-150 && length < 1e150) return v / length;
-  const double largest = v.cwiseAbs().maxCoeff();
-  if (!(largest > 0.0) || !std::isfinite(largest)) return largest > 0.0 ? v : Vec3::Zero();
-  const Vec3 scaled = v / largest;
+template <class T>
+Eigen::Matrix<T, 3, 1> normalised(const Eigen::Matrix<T, 3, 1>& v) {
+  const T length = v.norm();
+  if (length > SafeLength<T>::kMin && length < SafeLength<T>::kMax) return v / length;
+  const T largest = v.cwiseAbs().maxCoeff();
+  if (!(largest > T(0)) || !std::isfinite(largest)) return largest > T(0) ? v : Eigen::Matrix<T, 3, 1>::Zero();
+  const Eigen::Matrix<T, 3, 1> scaled = v / largest;
   return scaled / scaled.norm();
 }
 
 // g = p1 x + p2 y + p3 z + p4 w, summed left to right (GL 4.6 compat §12.1.3, OBJECT_ and EYE_LINEAR).
-inline double planeValue(const Vec4& p, double x, double y, double z, double w) {
+template <class T>
+inline T planeValue(const Eigen::Matrix<T, 4, 1>& p, T x, T y, T z, T w) {
   return p[0] * x + p[1] * y + p[2] * z + p[3] * w;
 }
 
-Vec4 evaluate(const Prepared& p, const Vec3& xo, const Vec3& no, bool& singular) {
+// (s, t, r, q) of one vertex, every operation in T (the inputs rounded to T first), widened to double.
+template <class T>
+Vec4 evaluate(const Prepared<T>& p, const Vec3& objectPosition, const Vec3& objectNormal, bool& singular) {
+  using V3 = Eigen::Matrix<T, 3, 1>;
+  using V4 = Eigen::Matrix<T, 4, 1>;
   singular = false;
-  Vec4 eye = Vec4::Zero();
-  Vec3 normal = Vec3::Zero(), reflection = Vec3::Zero();
-  if (p.needsEye) eye = p.draw * Vec4(xo.x(), xo.y(), xo.z(), 1.0);
+  const V3 xo = objectPosition.cast<T>();
+  V4 eye = V4::Zero();
+  V3 normal = V3::Zero(), reflection = V3::Zero();
+  if (p.needsEye) eye = p.draw * V4(xo.x(), xo.y(), xo.z(), T(1));
   if (p.needsNormal) {
-    normal = p.normalMatrix * no;
+    normal = p.normalMatrix * objectNormal.cast<T>();
     if (p.normalize) normal = normalised(normal);  // GL_NORMALIZE
   }
   if (p.needsReflection) {  // GL 4.6 compat §12.1.3: r = u - 2 n (n . u), u the unit eye position
-    const Vec3 u = normalised(eye.head<3>());
-    reflection = u - 2.0 * normal.dot(u) * normal;
+    const V3 u = normalised<T>(eye.template head<3>());
+    reflection = u - T(2) * normal.dot(u) * normal;
   }
-  Vec4 g(0.0, 0.0, 0.0, 1.0);  // GL's current texture coordinate where generation is off
+  V4 g(T(0), T(0), T(0), T(1));  // GL's current texture coordinate where generation is off
   for (int i = 0; i < 4; ++i) {
     switch (p.modes[i]) {
-      case TexgenMode::Off: break;
-      case TexgenMode::ObjectLinear: g[i] = planeValue(p.planes[i], xo.x(), xo.y(), xo.z(), 1.0); break;
-      case TexgenMode::EyeLinear: g[i] = planeValue(p.planes[i], eye[0], eye[1], eye[2], eye[3]); break;
+      case TexgenMode::Off:
+        break;
+      case TexgenMode::ObjectLinear:
+        g[i] = planeValue(p.planes[i], xo.x(), xo.y(), xo.z(), T(1));
+        break;
+      case TexgenMode::EyeLinear:
+        g[i] = planeValue(p.planes[i], eye[0], eye[1], eye[2], eye[3]);
+        break;
       case TexgenMode::SphereMap: {
         // GL 4.6 compat §12.1.3: m = 2 sqrt(rx^2 + ry^2 + (rz + 1)^2), s = rx/m + 1/2, t = ry/m + 1/2
-        const double rz1 = reflection.z() + 1.0;
-        const double m = 2.0 * std::sqrt(reflection.x() * reflection.x() + reflection.y() * reflection.y() + rz1 * rz1);
-        if (m > 0.0) {
-          g[i] = reflection[i] / m + 0.5;
+        const T rz1 = reflection.z() + T(1);
+        const T m = T(2) * std::sqrt(reflection.x() * reflection.x() + reflection.y() * reflection.y() + rz1 * rz1);
+        if (m > T(0)) {
+          g[i] = reflection[i] / m + T(0.5);
         } else {  // r = (0, 0, -1): Mesa's 1/2, flagged
-          g[i] = 0.5;
+          g[i] = T(0.5);
           singular = true;
         }
         break;
       }
-      case TexgenMode::NormalMap: g[i] = normal[i]; break;  // GL 4.6 compat §12.1.3: (s, t, r) = n_e
-      case TexgenMode::ReflectionMap: g[i] = reflection[i]; break;  // (s, t, r) = r
+      case TexgenMode::NormalMap:  // GL 4.6 compat §12.1.3: (s, t, r) = n_e
+        g[i] = normal[i];
+        break;
+      case TexgenMode::ReflectionMap:  // GL 4.6 compat §12.1.3: (s, t, r) = r
+        g[i] = reflection[i];
+        break;
     }
   }
-  return p.textureIsIdentity ? g : Vec4(p.texture * g);
+  // Then the texture matrix (GL 4.6 compat §12.1) on (s, t, r, q), in T as well.
+  return (p.textureIsIdentity ? g : V4(p.texture * g)).template cast<double>();
 }
 
-}  // namespace
-
-std::array<TexgenCoordinate, 4> defaultCoordinates() {
-  std::array<TexgenCoordinate, 4> c;
-  c[0].plane = Vec4(1, 0, 0, 0);
-  c[1].plane = Vec4(0, 1, 0, 0);
-  return c;
-}
-
-Vec4 texgenAt(const Vec3& objectPosition, const Vec3& objectNormal, const TexgenOptions& options, bool* singular) {
-  const Prepared p = prepare(options);
-  bool isSingular = false;
-  const Vec4 g = evaluate(p, objectPosition, objectNormal, isSingular);
-  if (singular) *singular = isSingular;
-  return g;
-}
-
-TexgenResult generateTexcoords(const Mesh& mesh, const TexgenOptions& options) {
-  const Prepared p = prepare(options);
+// Every corner of the mesh (3 per triangle), evaluated in T; non-finite corners written as 0.
+template <class T>
+TexgenResult generateAll(const Prepared<T>& p, const Mesh& mesh) {
   const std::size_t faces = mesh.faceCount(), corners = 3 * faces;
   std::vector<Vec3> normals;
   if (p.needsNormal) normals = cornerNormals(mesh);
@@ -184,6 +227,30 @@ TexgenResult generateTexcoords(const Mesh& mesh, const TexgenOptions& options) {
     }
   }
   return out;
+}
+
+}  // namespace
+
+std::array<TexgenCoordinate, 4> defaultCoordinates() {
+  std::array<TexgenCoordinate, 4> c;
+  c[0].plane = Vec4(1, 0, 0, 0);
+  c[1].plane = Vec4(0, 1, 0, 0);
+  return c;
+}
+
+Vec4 texgenAt(const Vec3& objectPosition, const Vec3& objectNormal, const TexgenOptions& options, bool* singular) {
+  const Prepared<double> p = prepare(options);
+  bool isSingular = false;
+  const Vec4 g = options.precision == Precision::Float
+                     ? evaluate(roundedToFloat(p), objectPosition, objectNormal, isSingular)
+                     : evaluate(p, objectPosition, objectNormal, isSingular);
+  if (singular) *singular = isSingular;
+  return g;
+}
+
+TexgenResult generateTexcoords(const Mesh& mesh, const TexgenOptions& options) {
+  const Prepared<double> p = prepare(options);
+  return options.precision == Precision::Float ? generateAll(roundedToFloat(p), mesh) : generateAll(p, mesh);
 }
 
 }  // namespace uvtk::texgen

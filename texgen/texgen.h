@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/arithmetic.h"
 #include "core/gl_matrices.h"
 #include "core/math.h"
 #include "core/mesh.h"
@@ -36,20 +37,24 @@ struct TexgenOptions {
   Mat4 modelviewAtPlanes = Mat4::Identity();  // the modelview when the EYE_LINEAR planes were given
   Mat4 modelviewAtDraw = Mat4::Identity();    // the modelview the vertices are drawn under
   Mat4 textureMatrix = Mat4::Identity();      // applied to (s, t, r, q) after generation
-  bool normalize = true;  // renormalise the eye normal after the inverse transpose (GL_NORMALIZE)
+  bool normalize = true;                      // renormalise the eye normal after the inverse transpose (GL_NORMALIZE)
+  // Double: binary64 throughout. Float: the matrices, planes and inverses are prepared in double,
+  // rounded to binary32 once, and every per-vertex operation is binary32 (a GL with float shaders);
+  // the results are widened to double. A prepared value beyond float range is a UsageError.
+  Precision precision = Precision::Double;
 };
 
 struct TexgenResult {
-  UvMap uv;                        // uv = (s, t) and w = r per corner (3 per triangle)
-  std::vector<double> q;           // per corner; never divided out (projective lookup divides)
+  UvMap uv;                           // uv = (s, t) and w = r per corner (3 per triangle)
+  std::vector<double> q;              // per corner; never divided out (projective lookup divides)
   std::size_t sphereMapSingular = 0;  // corners with m = 0 (reflection (0, 0, -1)): s = t = 1/2
   std::size_t invalidCorners = 0;     // corners with a non-finite result: written as 0
 };
 
 // (s, t, r, q) of one vertex after the texture matrix. `singular`, if not null, is set to true
 // when a SPHERE_MAP coordinate met m = 0, else false. Throws UsageError for a mode a coordinate
-// cannot take (sphere map on r or q, normal or reflection map on q), or a singular matrix whose
-// inverse a mode needs.
+// cannot take (sphere map on r or q, normal or reflection map on q), a singular matrix whose
+// inverse a mode needs, or (Precision::Float) a matrix, inverse or plane beyond float range.
 Vec4 texgenAt(const Vec3& objectPosition, const Vec3& objectNormal, const TexgenOptions& options,
               bool* singular = nullptr);
 

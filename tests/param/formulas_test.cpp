@@ -4,44 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 
 namespace uvtk::param {
 namespace {
-
-// The error of `value` in units in the last place of the exact result `reference`.
-double ulpsOff(double value, long double reference) {
-  const double rounded = static_cast<double>(reference);
-  const double ulp = std::nextafter(std::fabs(rounded), INFINITY) - std::fabs(rounded);
-  return static_cast<double>(std::fabs(static_cast<long double>(value) - reference) / ulp);
-}
-
-TEST(ArcTangent2, IsWithinTwoUlpOfTheExactAngleEverywhere) {
-  std::mt19937_64 random(2026);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  std::uniform_int_distribution<int> exponent(-600, 600);
-  double worst = 0.0;
-  for (int i = 0; i < 2000000; ++i) {
-    double y = unit(random), x = unit(random);
-    if (i % 3 == 1) y = std::ldexp(y, exponent(random)), x = std::ldexp(x, exponent(random));
-    if (i % 3 == 2) x = y * (1.0 + 1e-9 * unit(random));  // near the diagonals, where the ranges meet
-    worst = std::max(worst, ulpsOff(arcTangent2(y, x), std::atan2(static_cast<long double>(y), static_cast<long double>(x))));
-  }
-  EXPECT_LE(worst, 2.0);
-  EXPECT_GT(worst, 0.5);  // it is not libm: this pins the test to the fast path
-}
-
-TEST(ArcTangent2, FollowsStdAtan2OnZerosAxesAndExtremes) {
-  for (double y : {0.0, -0.0, 1.0, -1.0, 1e-310, -1e308, 1.7e308})
-    for (double x : {0.0, -0.0, 1.0, -1.0, 1e-310, 1.5e308, -1.7e308}) {
-      const double expected = std::atan2(y, x);
-      EXPECT_NEAR(arcTangent2(y, x), expected, 2.5e-16 * std::fabs(expected)) << y << " " << x;
-      EXPECT_EQ(std::signbit(arcTangent2(y, x)), std::signbit(expected)) << y << " " << x;
-    }
-  EXPECT_EQ(arcTangent2(0.0, 1.0), 0.0);
-  EXPECT_EQ(arcTangent2(1.0, 0.0), std::atan2(1.0, 0.0));  // pi/2 rounded: exact on the axes
-  EXPECT_EQ(arcTangent2(0.0, -1.0), std::atan2(0.0, -1.0));
-}
 
 TEST(PoleTest, MatchesTheHypotFormOfTheDefinition) {
   const PoleTest isPole(1e-6);
@@ -76,12 +41,18 @@ TEST(TurnFraction, MapsAnglesThatRoundToOneToZero) {
   EXPECT_GT(turnFraction(-1e-10, 1.0), 0.999);
 }
 
-TEST(PolarAngle, KeepsFullPrecisionNearThePole) {
-  // At 1e-9 rad from +z, acos(z) would return 0 or an error of ~1e-8 relative; atan2 is exact.
-  const double phi = polarAngle(1e-9, 0.0, 1.0);
-  EXPECT_NEAR(phi, 1e-9, 1e-24);
-  EXPECT_EQ(polarAngle(0.0, 0.0, 1.0), 0.0);
-  EXPECT_EQ(polarAngle(0.0, 0.0, -1.0), kPi);
+TEST(SphereV, KeepsFullPrecisionNearBothPoles) {
+  // At 1e-9 rad from a pole, acos(z) would return 0 or an error of ~1e-8 relative; atan2 is exact.
+  EXPECT_NEAR(angleFromNearerPole(1e-9, 0.0, 1.0), 1e-9, 1e-24);
+  EXPECT_NEAR(angleFromNearerPole(1e-9, 0.0, -1.0), 1e-9, 1e-24);
+  // Near the south pole v = psi/pi is small: 1 - phi/pi would leave it an absolute error of
+  // 1e-16, a relative one of 1e-7; measured from the south pole it is exact to an ulp.
+  EXPECT_NEAR(sphereV(Vec3(1e-9, 0.0, -1.0), SpherePreset::Default), 1e-9 / kPi, 2e-16 * 1e-9 / kPi);
+  EXPECT_NEAR(sphereV(Vec3(1e-9, 0.0, 1.0), SpherePreset::Seed004), 1e-9 / kPi, 2e-16 * 1e-9 / kPi);
+  EXPECT_EQ(sphereV(Vec3(0.0, 0.0, 1.0), SpherePreset::Seed004), 0.0);
+  EXPECT_EQ(sphereV(Vec3(0.0, 0.0, -1.0), SpherePreset::Seed004), 1.0);
+  EXPECT_EQ(sphereV(Vec3(1.0, 0.0, 0.0), SpherePreset::Default), 0.5);
+  EXPECT_EQ(sphereV(Vec3(1.0, 0.0, -0.0), SpherePreset::Default), 0.5);  // -0: the southern formula, same value
 }
 
 TEST(SphereUv, DefaultPresetHasVOneAtPlusZAndZeroAtMinusZ) {

@@ -14,21 +14,21 @@ Probe ray(const Vec3& p, const Vec3& d) { return {Probe::Kind::Ray, p, d}; }
 
 TEST(FirstNonNegativeRoot, ReturnsTheNearestHitInFront) {
   // t^2 - 3t + 2 = (t - 1)(t - 2)
-  EXPECT_DOUBLE_EQ(*firstNonNegativeRoot(1, -3, 2, 1), 1.0);
+  EXPECT_DOUBLE_EQ(*firstNonNegativeRoot<double>(1, -3, 2, 1), 1.0);
   // (t + 1)(t - 2): the root behind is skipped
-  EXPECT_DOUBLE_EQ(*firstNonNegativeRoot(1, -1, -2, 1), 2.0);
+  EXPECT_DOUBLE_EQ(*firstNonNegativeRoot<double>(1, -1, -2, 1), 2.0);
   // (t + 1)(t + 2): both behind
-  EXPECT_FALSE(firstNonNegativeRoot(1, 3, 2, 1));
+  EXPECT_FALSE(firstNonNegativeRoot<double>(1, 3, 2, 1));
   // no real root
-  EXPECT_FALSE(firstNonNegativeRoot(1, 0, 1, 1));
+  EXPECT_FALSE(firstNonNegativeRoot<double>(1, 0, 1, 1));
   // a = 0: linear, or parallel
-  EXPECT_DOUBLE_EQ(*firstNonNegativeRoot(0, 2, -4, 1), 2.0);
-  EXPECT_FALSE(firstNonNegativeRoot(0, 0, 1, 1));
+  EXPECT_DOUBLE_EQ(*firstNonNegativeRoot<double>(0, 2, -4, 1), 2.0);
+  EXPECT_FALSE(firstNonNegativeRoot<double>(0, 0, 1, 1));
 }
 
 TEST(FirstNonNegativeRoot, TreatsAnOriginOnTheSurfaceAsTheHit) {
   // c = -1e-17: just inside by rounding, the ray heading inwards; the hit is the origin itself.
-  EXPECT_EQ(*firstNonNegativeRoot(1, -2, -1e-17, 1), 0.0);
+  EXPECT_EQ(*firstNonNegativeRoot<double>(1, -2, -1e-17, 1), 0.0);
 }
 
 TEST(PlaneSurface, ResolvesEveryProbeKind) {

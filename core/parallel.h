@@ -7,7 +7,7 @@
 #include <thread>
 #include <vector>
 
-namespace uvtk::render {
+namespace uvtk {
 
 inline int threadCount(int requested) {
   if (requested > 0) return requested;
@@ -31,4 +31,4 @@ void parallelFor(int count, int threads, F&& work) {
   for (std::thread& t : pool) t.join();
 }
 
-}  // namespace uvtk::render
+}  // namespace uvtk

@@ -1,0 +1,143 @@
+// Inside param: the two-stage mapping of many samples in a chosen precision T and math mode, in
+// blocks, so that the arctangents of a block go to batch_atan2 at once. Shared by projector.cpp
+// (float and double) and reference.cpp (long double).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <type_traits>
+#include <variant>
+
+#include "core/error.h"
+#include "param/batch_atan2.h"
+#include "param/projector.h"
+#include "param/surfaces.h"
+
+namespace uvtk::param {
+
+// Object-space points and normals carried into the projector's frame. The move is computed in
+// double (long double for T = long double) and only then rounded to T: the local origin keeps
+// float exact for meshes far from the object origin (docs/precision.md).
+template <class T>
+struct LocalFrameT {
+  using Wide = std::conditional_t<(sizeof(T) > sizeof(double)), T, double>;
+  Eigen::Matrix<Wide, 3, 3> linear, normalMatrix;  // normalMatrix: inverse transpose of `linear`
+  Vec3T<Wide> translation;
+
+  explicit LocalFrameT(const Affine3& localFromObject)
+      : linear(localFromObject.linear().cast<Wide>()),
+        normalMatrix(localFromObject.linear().inverse().transpose().cast<Wide>()),
+        translation(localFromObject.translation().cast<Wide>()) {}
+
+  Vec3T<T> point(const Vec3& p) const { return (linear * p.cast<Wide>() + translation).template cast<T>(); }
+  Vec3T<T> normal(const Vec3& n) const {
+    const Vec3T<Wide> m = normalMatrix * n.cast<Wide>();
+    const Wide length = m.norm();
+    return length > Wide(0) && std::isfinite(length) ? Vec3T<T>((m / length).template cast<T>()) : Vec3T<T>::Zero();
+  }
+};
+
+template <class T>
+SurfaceT<T> makeSurface(const ProjectorOptions& o) {
+  switch (o.surface) {
+    case SurfaceKind::Plane: return PlaneSurfaceT<T>{};
+    case SurfaceKind::TwoPlane: return TwoPlaneSurfaceT<T>(o.planeU, o.planeV);
+    case SurfaceKind::Cylinder: return CylinderSurfaceT<T>{};
+    case SurfaceKind::Sphere: return SphereSurfaceT<T>{o.spherePreset};
+    case SurfaceKind::Cube: return CubeSurfaceT<T>{o.cubeConvention, o.cubeLayout};
+  }
+  return PlaneSurfaceT<T>{};
+}
+
+template <class T>
+RayMappingT<T> makeRayMapping(const ProjectorOptions& o, const LocalFrameT<T>& frame) {
+  switch (o.ray) {
+    case RayKind::SurfaceNormal: return SurfaceNormalRayT<T>{};
+    case RayKind::Centroid: return CentroidRayT<T>{};
+    case RayKind::ObjectNormal: return ObjectNormalRayT<T>{};
+    case RayKind::Reflection:
+      if (!o.eye) throw UsageError("the reflection mapping needs an eye position (--eye x,y,z)");
+      return ReflectionRayT<T>{frame.point(*o.eye), o.atInfinity};
+  }
+  return SurfaceNormalRayT<T>{};
+}
+
+// Calls f(surface, mapping) with the concrete surface and O-mapping types the options name.
+template <class T, class F>
+decltype(auto) visitProjector(const ProjectorOptions& o, const LocalFrameT<T>& frame, F&& f) {
+  return std::visit(std::forward<F>(f), makeSurface<T>(o), makeRayMapping<T>(o, frame));
+}
+
+// The whole two-stage mapping of samples of a non-cube surface: O-mapping, resolve, pole test,
+// S-mapping. Per block: every sample to its hit point, the block's arctangents at once, then (u, v).
+// Out is VertexUv, or a record with the same members in another precision (ReferenceUv).
+template <class T, class S, class M, class Out = VertexUv>
+class SampleEvaluator {
+ public:
+  SampleEvaluator(const S& surface, const M& mapping, const LocalFrameT<T>& frame, PoleTest isPole, MathMode math)
+      : surface_(surface), mapping_(mapping), frame_(frame), isPole_(isPole), math_(math) {}
+
+  // Samples i < count at object-space position(i) with normal(i) (read only when the O-mapping
+  // needs normals) into out[i].
+  template <class PositionOf, class NormalOf>
+  void operator()(std::size_t count, PositionOf position, NormalOf normal, Out* out) const {
+    for (std::size_t start = 0; start < count; start += kBlock)
+      block(std::min(kBlock, count - start), [&](std::size_t i) -> decltype(auto) { return position(start + i); },
+            [&](std::size_t i) -> decltype(auto) { return normal(start + i); }, out + start);
+  }
+
+  Out at(const Vec3& position, const Vec3& normal) const {
+    Out out;
+    block(1, [&](std::size_t) -> const Vec3& { return position; }, [&](std::size_t) -> const Vec3& { return normal; },
+          &out);
+    return out;
+  }
+
+ private:
+  static constexpr std::size_t kBlock = 256;
+  static constexpr std::size_t kAngles = std::max(S::kAngles, 1);
+  using OutVec2 = decltype(Out::uv);
+  using R = typename OutVec2::Scalar;
+
+  template <class PositionOf, class NormalOf>
+  void block(std::size_t n, PositionOf position, NormalOf normal, Out* out) const {
+    std::array<Vec3T<T>, kBlock> q;
+    std::array<T, kBlock * kAngles> y, x, angles;
+    for (std::size_t i = 0; i < n; ++i) {
+      SampleT<T> sample{frame_.point(position(i)), Vec3T<T>::Zero()};
+      if constexpr (M::kNeedsNormal) sample.n = frame_.normal(normal(i));
+      const std::optional<Vec3T<T>> hit = surface_.resolve(mapping_.probe(sample));
+      out[i] = Out{};
+      if (!hit || !hit->allFinite()) {
+        for (std::size_t a = 0; a < kAngles; ++a) y[i * kAngles + a] = T(0), x[i * kAngles + a] = T(1);
+        continue;
+      }
+      q[i] = *hit;
+      out[i].axial = OutVec2(R(q[i].x()), R(q[i].y()));
+      out[i].state = CornerState::Ok;
+      if constexpr (S::kWraps)
+        if (isPole_(radialDistance(q[i].x(), q[i].y()), q[i].z())) out[i].state = CornerState::Pole;
+      if constexpr (S::kAngles > 0) {
+        const auto arguments = surface_.angleArguments(q[i]);
+        for (std::size_t a = 0; a < kAngles; ++a) y[i * kAngles + a] = arguments[a].y, x[i * kAngles + a] = arguments[a].x;
+      }
+    }
+    if constexpr (S::kAngles > 0) atan2Block(math_, y.data(), x.data(), angles.data(), n * kAngles);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (out[i].state == CornerState::Invalid) continue;
+      const Vec2T<T> uv = surface_.uvFromAngles(q[i], angles.data() + i * kAngles);
+      // u is undefined at a pole (§5); v is defined there.
+      out[i].uv = OutVec2(out[i].state == CornerState::Pole ? R(0) : R(uv.x()), R(uv.y()));
+      if (!out[i].uv.allFinite()) out[i].uv = OutVec2::Zero(), out[i].state = CornerState::Invalid;
+    }
+  }
+
+  S surface_;
+  M mapping_;
+  LocalFrameT<T> frame_;
+  PoleTest isPole_;
+  MathMode math_;
+};
+
+}  // namespace uvtk::param
