@@ -28,6 +28,5 @@ endforeach()
 if(UVTK_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()
-if(UVTK_BUILD_BENCH)
-  find_package(benchmark REQUIRED)
-endif()
+# Google Benchmark times `uvtk bench` as well as the programs under bench/.
+find_package(benchmark REQUIRED)

@@ -51,6 +51,9 @@ Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface,
     if (!((f.refDir - f.refDir.dot(f.axisDir.normalized()) * f.axisDir.normalized()).norm() > 1e-12 * f.refDir.norm()))
       throw UsageError("--ref-dir: expected a direction not parallel to --axis-dir");
     if (!(f.scale > 0.0) || !std::isfinite(f.scale)) throw UsageError("--scale: expected a positive number");
+    // A subnormal scale's 1/scale overflows: the frame would send every vertex to inf or NaN.
+    if (!std::isfinite(1.0 / f.scale))
+      throw UsageError("--scale: expected a positive number whose reciprocal is finite");
     localFromObject.linear() = frameRows(f.axisDir, f.refDir) / f.scale;
     localFromObject.translation() = -(localFromObject.linear() * f.center);
     return localFromObject;

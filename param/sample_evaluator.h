@@ -23,14 +23,23 @@ template <class T>
 struct LocalFrameT {
   using Wide = std::conditional_t<(sizeof(T) > sizeof(double)), T, double>;
   Eigen::Matrix<Wide, 3, 3> linear, normalMatrix;  // normalMatrix: inverse transpose of `linear`
-  Vec3T<Wide> translation;
+  Vec3T<Wide> origin;   // the object-space point at (about) the local origin
+  Vec3T<Wide> residue;  // its exact local coordinates, the rounding error of `origin`
 
-  explicit LocalFrameT(const Affine3& localFromObject)
-      : linear(localFromObject.linear().cast<Wide>()),
-        normalMatrix(localFromObject.linear().inverse().transpose().cast<Wide>()),
-        translation(localFromObject.translation().cast<Wide>()) {}
+  explicit LocalFrameT(const Affine3& localFromObject) : linear(localFromObject.linear().cast<Wide>()) {
+    const Mat3 inverse = localFromObject.linear().inverse();
+    normalMatrix = inverse.transpose().cast<Wide>();
+    // local = linear (p - origin) + residue: p - origin cancels exactly near the mesh, where
+    // linear p + translation would lose the digits of |p| (1e-8 absolute at 1e8 from the origin).
+    const Vec3 o = -(inverse * localFromObject.translation());
+    origin = (o.allFinite() ? o : Vec3::Zero()).cast<Wide>();
+    using Long = long double;
+    residue = (localFromObject.linear().cast<Long>() * origin.template cast<Long>() +
+               localFromObject.translation().cast<Long>())
+                  .template cast<Wide>();
+  }
 
-  Vec3T<T> point(const Vec3& p) const { return (linear * p.cast<Wide>() + translation).template cast<T>(); }
+  Vec3T<T> point(const Vec3& p) const { return (linear * (p.cast<Wide>() - origin) + residue).template cast<T>(); }
   Vec3T<T> normal(const Vec3& n) const {
     const Vec3T<Wide> m = normalMatrix * n.cast<Wide>();
     const Wide length = m.norm();

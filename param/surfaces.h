@@ -65,7 +65,8 @@ struct ReflectionRayT {  // `reflection`: the view ray from the eye, mirrored ab
   bool atInfinity = false;  // look up by direction only, as from the surface's centre
   ProbeT<T> probe(const SampleT<T>& s) const {
     const Vec3T<T> view = (s.p - eye).normalized();
-    const Vec3T<T> r = view - T(2) * s.n.dot(view) * s.n;  // R = V - 2 (N.V) N
+    // Without a normal there is no mirror: a zero direction, which every surface misses.
+    const Vec3T<T> r = s.n == Vec3T<T>::Zero() ? s.n : Vec3T<T>(view - T(2) * s.n.dot(view) * s.n);  // V - 2 (N.V) N
     return atInfinity ? ProbeT<T>{ProbeT<T>::Kind::Central, r, Vec3T<T>::Zero()}
                       : ProbeT<T>{ProbeT<T>::Kind::Ray, s.p, r};
   }
@@ -196,7 +197,8 @@ using Surface = SurfaceT<double>;
 
 template <class T>
 std::optional<T> firstNonNegativeRoot(T a, T b, T c, T cScale) {
-  if (std::fabs(c) <= T(64) * std::numeric_limits<T>::epsilon() * cScale) return T(0);
+  // An overflowed c (|p|^2 = inf far out) would pass as "on the surface": there it is a miss.
+  if (std::isfinite(c) && std::fabs(c) <= T(64) * std::numeric_limits<T>::epsilon() * cScale) return T(0);
   if (a == T(0)) {  // the ray runs parallel to the surface's axis: on it everywhere or nowhere
     if (b != T(0)) {
       const T t = -c / b;
@@ -276,6 +278,7 @@ std::optional<Vec3T<T>> CylinderSurfaceT<T>::resolve(const ProbeT<T>& probe) con
     }
     case Kind::Ray: {
       const Vec3T<T>& d = probe.direction;
+      if (isZero(d)) return std::nullopt;  // no direction (a zero normal): not a ray, even from the side
       const T radial2 = p.x() * p.x() + p.y() * p.y();
       const std::optional<T> t = firstNonNegativeRoot(d.x() * d.x() + d.y() * d.y(),
                                                       T(2) * (p.x() * d.x() + p.y() * d.y()), radial2 - T(1),
@@ -298,6 +301,7 @@ std::optional<Vec3T<T>> SphereSurfaceT<T>::resolve(const ProbeT<T>& probe) const
       return p;
     case Kind::Ray: {
       const Vec3T<T>& d = probe.direction;
+      if (isZero(d)) return std::nullopt;  // no direction (a zero normal): not a ray, even from the surface
       const T p2 = p.squaredNorm();
       const std::optional<T> t = firstNonNegativeRoot(d.squaredNorm(), T(2) * p.dot(d), p2 - T(1), std::max(T(1), p2));
       if (!t) return std::nullopt;

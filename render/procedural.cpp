@@ -73,6 +73,7 @@ Texture checkerTexture(int n, int c) {
   if (!(1 <= n && n <= kCheckerMax && 1 <= c && c <= kCheckerMax))
     throw UsageError("checker texture: expected 1 <= N, C <= 16384, got N = " + std::to_string(n) +
                      ", C = " + std::to_string(c));
+  checkTextureSize(n, n);  // before allocating: from N = 11586 on, N x N float RGBA exceeds 2 GiB
   TexelLevel base;
   base.width = base.height = n;
   base.texels.resize(std::size_t(n) * std::size_t(n));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 
 #include "core/error.h"
@@ -112,7 +113,18 @@ SamplerState samplerFor(Filter filter, Wrap wrap) {
 
 bool needsMipmaps(Filter minFilter) { return isMipmapFilter(minFilter); }
 
+void checkTextureSize(int width, int height) {
+  const std::int64_t texels = std::int64_t(width) * std::int64_t(height);
+  if (texels <= kMaxTexels) return;
+  const double gib = double(texels) * double(sizeof(Rgba)) / double(std::int64_t(1) << 30);
+  std::ostringstream message;
+  message << "texture: " << width << " x " << height << " texels would take " << gib
+          << " GiB as float RGBA, more than the 2 GiB limit (" << kMaxTexels << " texels, e.g. 16384 x 8192)";
+  throw UsageError(message.str());
+}
+
 Texture::Texture(TexelLevel base, bool eightBit) : eightBit_(eightBit) {
+  checkTextureSize(base.width, base.height);
   if (base.width < 1 || base.height < 1 ||
       base.texels.size() != std::size_t(base.width) * std::size_t(base.height))
     throw UsageError("texture: expected width, height >= 1 and width * height texels, got " +
@@ -124,6 +136,7 @@ Texture::Texture(TexelLevel base, bool eightBit) : eightBit_(eightBit) {
 Texture Texture::fromImage(const Image& image, bool eightBit) {
   if (image.channels < 1 || image.channels > 4)
     throw UsageError("texture: expected an image of 1 to 4 channels, got " + std::to_string(image.channels));
+  checkTextureSize(image.width, image.height);
   TexelLevel base;
   base.width = image.width;
   base.height = image.height;

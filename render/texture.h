@@ -46,13 +46,23 @@ struct TexelLevel {
   Rgba& at(int i, int j) { return texels[std::size_t(j) * std::size_t(width) + std::size_t(i)]; }
 };
 
+// The most texels a texture's base level may hold: 2^27, 2 GiB as float RGBA (16 bytes a texel),
+// e.g. 16384 x 8192; mipmaps add a third. A 16384 x 16384 texture would take 4 GiB.
+constexpr std::int64_t kMaxTexels = std::int64_t(1) << 27;
+
+// Throws UsageError naming the size and the limit when width x height exceeds kMaxTexels. Called
+// before any texel is allocated.
+void checkTextureSize(int width, int height);
+
 class Texture {
  public:
   // `base` in GL order. `eightBit`: the texels are multiples of 1/255 and every mipmap level is
-  // rounded back to 8 bits, as a GL texture of internal format RGBA8 stores it.
+  // rounded back to 8 bits, as a GL texture of internal format RGBA8 stores it. Throws UsageError
+  // for an empty size, a texel count that does not match it, or more than kMaxTexels texels.
   Texture(TexelLevel base, bool eightBit);
 
   // An image whose top row lands at t = 1. Grey images are spread to RGB, a missing alpha is 1.
+  // Throws UsageError for more than kMaxTexels pixels.
   static Texture fromImage(const Image& image, bool eightBit);
 
   // Levels 1..n down to 1 x 1; level k is max(1, floor(w / 2^k)) x max(1, floor(h / 2^k)).

@@ -127,8 +127,9 @@ template <class T>
 Eigen::Matrix<T, 3, 1> normalised(const Eigen::Matrix<T, 3, 1>& v) {
   const T length = v.norm();
   if (length > SafeLength<T>::kMin && length < SafeLength<T>::kMax) return v / length;
+  if (!v.allFinite()) return v;  // an overflowed vertex stays non-finite (an invalid corner), not "at the eye"
   const T largest = v.cwiseAbs().maxCoeff();
-  if (!(largest > T(0)) || !std::isfinite(largest)) return largest > T(0) ? v : Eigen::Matrix<T, 3, 1>::Zero();
+  if (!(largest > T(0))) return Eigen::Matrix<T, 3, 1>::Zero();
   const Eigen::Matrix<T, 3, 1> scaled = v / largest;
   return scaled / scaled.norm();
 }
@@ -174,9 +175,11 @@ Vec4 evaluate(const Prepared<T>& p, const Vec3& objectPosition, const Vec3& obje
         const T m = T(2) * std::sqrt(reflection.x() * reflection.x() + reflection.y() * reflection.y() + rz1 * rz1);
         if (m > T(0)) {
           g[i] = reflection[i] / m + T(0.5);
-        } else {  // r = (0, 0, -1): Mesa's 1/2, flagged
+        } else if (m == T(0)) {  // r = (0, 0, -1): Mesa's 1/2, flagged
           g[i] = T(0.5);
           singular = true;
+        } else {  // NaN (an overflowed vertex) is no reflection: the corner becomes invalid, not singular
+          g[i] = m;
         }
         break;
       }

@@ -51,4 +51,19 @@ std::pair<int, int> parseImageSize(const std::string& text, const std::string& o
   return {w, h};
 }
 
+std::vector<std::string> splitList(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) items.push_back(item);
+  return items;
+}
+
+const std::vector<std::pair<std::string, render::Filter>> kFilterNames = {
+    {"nearest", render::Filter::Nearest},
+    {"linear", render::Filter::Linear},
+    {"nearest_mipmap_nearest", render::Filter::NearestMipmapNearest},
+    {"linear_mipmap_nearest", render::Filter::LinearMipmapNearest},
+    {"nearest_mipmap_linear", render::Filter::NearestMipmapLinear},
+    {"linear_mipmap_linear", render::Filter::LinearMipmapLinear}};
+
 }  // namespace uvtk::cli

@@ -2,11 +2,15 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/error.h"
 #include "core/math.h"
+#include "render/texture.h"
 
 namespace uvtk::cli {
 
@@ -27,6 +31,39 @@ inline CLI::Option* addChoice(CLI::App& app, const std::string& name, Enum& targ
       ->transform(CLI::CheckedTransformer(table, CLI::ignore_case).description(""))
       ->type_name(names);
 }
+
+// The name `table` gives `value`.
+template <class Enum>
+const std::string& nameOf(const std::vector<std::pair<std::string, Enum>>& table, Enum value) {
+  for (const auto& [name, v] : table)
+    if (v == value) return name;
+  throw std::logic_error("a choice without a name");
+}
+
+// The items of a comma-separated list.
+std::vector<std::string> splitList(const std::string& text);
+
+// The items of a comma-separated list of names, each looked up in `table`; throws UsageError
+// naming `option` for an unknown name or an empty list.
+template <class Enum>
+std::vector<Enum> parseNameList(const std::string& text, const std::vector<std::pair<std::string, Enum>>& table,
+                                const std::string& option) {
+  std::vector<Enum> values;
+  for (const std::string& item : splitList(text)) {
+    const auto found = std::find_if(table.begin(), table.end(), [&](const auto& entry) { return entry.first == item; });
+    if (found == table.end()) {
+      std::string names;
+      for (const auto& entry : table) names += (names.empty() ? "" : ", ") + entry.first;
+      throw UsageError(option + ": expected a list of " + names + ", found \"" + item + "\"");
+    }
+    values.push_back(found->second);
+  }
+  if (values.empty()) throw UsageError(option + ": expected at least one value");
+  return values;
+}
+
+// The minification filters by their GL names in lower case.
+extern const std::vector<std::pair<std::string, render::Filter>> kFilterNames;
 
 // Whether the user typed option `name` (rather than leaving its default).
 inline bool given(const CLI::App* app, const char* name) { return app->get_option(name)->count() > 0; }

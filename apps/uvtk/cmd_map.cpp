@@ -50,6 +50,7 @@ void runMap(const MapArguments& a) {
     nlohmann::json j = summaryJson(s);
     j["input"] = inputSummary;
     j["output"] = a.output;
+    j["options"] = projectorOptionsJson(options);
     if (mapped.seamPlacement) j["seam_placement"] = seamPlacementJson(*mapped.seamPlacement);
     j["milliseconds"] = {{"read", readMs}, {"map", mapMs}, {"write", writeMs}};
     io::writeFileAtomically(a.json, j.dump(2) + "\n");

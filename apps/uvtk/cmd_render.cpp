@@ -11,6 +11,7 @@
 #include <string>
 
 #include "analysis/summary.h"
+#include "arithmetic_cli.h"
 #include "cli_values.h"
 #include "commands.h"
 #include "core/error.h"
@@ -43,6 +44,7 @@ struct RenderArguments {
   std::optional<double> zNear, zFar;
   render::Cull cull = render::Cull::Back;
   int threads = 0;
+  int samplesPerPixel = 1;
   // texture
   std::string texture = "checker:64:8";
   render::Filter filter = render::Filter::Nearest;
@@ -194,6 +196,7 @@ void runRender(RenderArguments& a) {
   options.camera = makeCamera(a, input.mesh, worldFromObject);
   options.worldFromObject = worldFromObject;
   options.raster = {a.cull, a.threads};
+  options.samplesPerPixel = a.samplesPerPixel;
   options.sampler = render::samplerFor(a.filter, a.wrap);
   options.env = a.env;
   options.envColour = parseVec4(a.envColour, "--env-color");
@@ -207,6 +210,7 @@ void runRender(RenderArguments& a) {
     a.projector.options.eye = (objectFromWorld * options.camera.eye().homogeneous()).head<3>();
     mapped = mapByProjector(std::move(input.mesh), a.projector.resolve(), a.projector.seamPlaceAuto());
   } else if (a.texgen.given()) {
+    a.texgen.arithmetic = a.projector.options.arithmetic;  // render's --precision serves both
     mapped = mapByTexgen(std::move(input.mesh), a.texgen.resolve(options.camera.viewFromWorld, worldFromObject));
   } else {
     if (perPixel) throw UsageError("--uv per-pixel evaluates a mapping: give --projector or --texgen");
@@ -249,6 +253,8 @@ void runRender(RenderArguments& a) {
                         {"output", a.output},
                         {"texcoords", mapped.source},
                         {"uv", perPixel ? "per-pixel" : "per-vertex"},
+                        {"spp", options.samplesPerPixel},
+                        {"arithmetic", arithmeticJson(a.projector.options.arithmetic)},
                         {"width", options.camera.width},
                         {"height", options.camera.height},
                         {"faces", mapped.mesh.faceCount()},
@@ -312,18 +318,15 @@ void addRenderCommand(CLI::App& root) {
       ->default_str("back");
   cmd->add_option("--threads", a->threads, "Threads (0: one per hardware thread); the image does not depend on it")
       ->capture_default_str();
+  cmd->add_option("--spp", a->samplesPerPixel,
+                  "Supersampling: samples per pixel on a regular n x n grid (1, 4, 9, 16, ..., 256), box-filtered")
+      ->capture_default_str();
   // texture
   cmd->add_option("--texture", a->texture,
                   "checker:N[:C] (N x N texels, C x C squares, white at texel 0,0), uvgrid[:N], or an image file "
                   "(top row at v = 1)")
       ->capture_default_str();
-  addChoice<render::Filter>(*cmd, "--filter", a->filter,
-                            {{"nearest", render::Filter::Nearest},
-                             {"linear", render::Filter::Linear},
-                             {"nearest_mipmap_nearest", render::Filter::NearestMipmapNearest},
-                             {"linear_mipmap_nearest", render::Filter::LinearMipmapNearest},
-                             {"nearest_mipmap_linear", render::Filter::NearestMipmapLinear},
-                             {"linear_mipmap_linear", render::Filter::LinearMipmapLinear}},
+  addChoice<render::Filter>(*cmd, "--filter", a->filter, kFilterNames,
                             "Minification filter; magnification is nearest for nearest*, else linear")
       ->default_str("nearest");
   addChoice<render::Wrap>(*cmd, "--wrap", a->wrap,

@@ -7,9 +7,10 @@
 #include <string>
 #include <utility>
 
+#include "arithmetic_cli.h"
 #include "cli_values.h"
-#include "run_report.h"
 #include "commands.h"
+#include "run_report.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
@@ -68,6 +69,7 @@ void runTexgen(const TexgenCommandArguments& a) {
                         {"sphere_map_singular_corners", result.sphereMapSingular},
                         {"invalid_corners", result.invalidCorners},
                         {"normalize", options.normalize},
+                        {"precision", precisionName(options.precision)},
                         {"coordinates", modes},
                         {"input", inputJson(a.input, input)},
                         {"output", a.output},

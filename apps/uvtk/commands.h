@@ -10,5 +10,6 @@ void addTexgenCommand(CLI::App& root);
 void addRenderCommand(CLI::App& root);
 void addReportCommand(CLI::App& root);
 void addCompareCommand(CLI::App& root);
+void addBenchCommand(CLI::App& root);
 
 }  // namespace uvtk::cli

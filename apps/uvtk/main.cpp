@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   uvtk::cli::addRenderCommand(app);
   uvtk::cli::addReportCommand(app);
   uvtk::cli::addCompareCommand(app);
+  uvtk::cli::addBenchCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

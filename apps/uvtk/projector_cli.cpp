@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "arithmetic_cli.h"
 #include "cli_values.h"
 #include "core/error.h"
 
@@ -35,14 +36,6 @@ const std::vector<std::pair<std::string, CubeLayout>> kCubeLayoutNames = {{"face
 const std::vector<std::pair<std::string, SeamMode>> kSeamNames = {
     {"none", SeamMode::None}, {"shift", SeamMode::Shift}, {"cut", SeamMode::Cut}};
 const std::vector<std::pair<std::string, PoleMode>> kPoleNames = {{"none", PoleMode::None}, {"fan", PoleMode::Fan}};
-
-// The name `table` gives `value`.
-template <class Enum>
-const std::string& nameOf(const std::vector<std::pair<std::string, Enum>>& table, Enum value) {
-  for (const auto& [name, v] : table)
-    if (v == value) return name;
-  throw std::logic_error("a choice without a name");
-}
 
 }  // namespace
 
@@ -107,6 +100,7 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEy
   app.add_option("--uv-rotate", o.uvTransform.rotateDegrees, "UV transform: degrees about (0.5,0.5)")->default_str("0");
   app.add_flag("--flip-u", o.uvTransform.flipU, "UV transform: u -> 1 - u (first)");
   app.add_flag("--flip-v", o.uvTransform.flipV, "UV transform: v -> 1 - v (first)");
+  addArithmeticOptions(app, o.arithmetic);
 }
 
 ProjectorOptions ProjectorArguments::resolve() const {
@@ -142,6 +136,13 @@ ProjectorOptions ProjectorArguments::resolve() const {
   return o;
 }
 
+ProjectorOptions projectorNamed(const std::string& projector, const std::string& omap) {
+  ProjectorOptions o;
+  o.surface = parseNameList(projector, kSurfaceNames, "--projector").at(0);
+  o.ray = parseNameList(omap, kRayNames, "--omap").at(0);
+  return o;
+}
+
 nlohmann::json projectorOptionsJson(const ProjectorOptions& o) {
   nlohmann::json j = {{"projector", nameOf(kSurfaceNames, o.surface)},
                       {"omap", nameOf(kRayNames, o.ray)},
@@ -162,7 +163,9 @@ nlohmann::json projectorOptionsJson(const ProjectorOptions& o) {
                       {"uv_offset", {o.uvTransform.offset.x(), o.uvTransform.offset.y()}},
                       {"uv_rotate", o.uvTransform.rotateDegrees},
                       {"flip_u", o.uvTransform.flipU},
-                      {"flip_v", o.uvTransform.flipV}};
+                      {"flip_v", o.uvTransform.flipV},
+                      {"precision", precisionName(o.arithmetic.precision)},
+                      {"math", mathName(o.arithmetic.math)}};
   if (const auto& f = o.placement.frame)
     j["frame"] = {{"center", {f->center.x(), f->center.y(), f->center.z()}},
                   {"axis_dir", {f->axisDir.x(), f->axisDir.y(), f->axisDir.z()}},

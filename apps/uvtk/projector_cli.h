@@ -28,6 +28,10 @@ struct ProjectorArguments {
   bool seamPlaceAuto() const { return seamPlace == "auto"; }
 };
 
+// Default options for the projector and O-mapping of these names (as --projector and --omap take
+// them); throws UsageError for an unknown name.
+param::ProjectorOptions projectorNamed(const std::string& projector, const std::string& omap);
+
 // Every option as a JSON object, named as on the command line.
 nlohmann::json projectorOptionsJson(const param::ProjectorOptions& options);
 

@@ -3,6 +3,7 @@
 #include <utility>
 #include <vector>
 
+#include "arithmetic_cli.h"
 #include "cli_values.h"
 #include "core/error.h"
 
@@ -85,6 +86,7 @@ texgen::TexgenOptions TexgenArguments::resolve(const Mat4& view, const Mat4& mod
   o.modelviewAtDraw = view * model;
   if (!textureMatrix.empty()) o.textureMatrix = parseMatrix(textureMatrix, "--texmatrix");
   o.normalize = !noNormalize;
+  o.precision = arithmetic.precision;
   return o;
 }
 
@@ -99,6 +101,7 @@ void addTexgenOptions(CLI::App& app, TexgenArguments& a, const std::string& shor
     app.add_option(kCoordinateOptions[i], a.coordinates[i],
                    std::string("Generation of ") + (kCoordinateOptions[i] + 2) + (i == 0 ? planeHelp : ", as --s"))
         ->type_name(modes);
+  if (shortcut == "--mode") addArithmeticOptions(app, a.arithmetic, false);
   if (shortcut == "--mode")
     app.add_option("--mode", a.mode,
                    "Shortcut: s, t (and r for normal_map, reflection_map) in this mode; --s/--t/--r override it")

@@ -16,6 +16,7 @@ struct TexgenArguments {
   std::string mode;                        // the shortcut option's value, empty when absent
   std::string textureMatrix;
   bool noNormalize = false;
+  Arithmetic arithmetic;  // --precision in `uvtk texgen` (no --math: no transcendental function); render sets it
   std::string shortcutOption;  // the shortcut's name as registered, for messages
 
   bool given() const;  // any coordinate option or the shortcut

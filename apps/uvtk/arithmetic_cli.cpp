@@ -1,0 +1,30 @@
+#include "arithmetic_cli.h"
+
+#include "cli_values.h"
+
+namespace uvtk::cli {
+
+const std::vector<std::pair<std::string, Precision>> kPrecisionNames = {{"double", Precision::Double},
+                                                                        {"float", Precision::Float}};
+const std::vector<std::pair<std::string, MathMode>> kMathNames = {
+    {"exact", MathMode::Exact}, {"fast", MathMode::Fast}, {"fast-u10", MathMode::FastU10}};
+
+const std::string& precisionName(Precision precision) { return nameOf(kPrecisionNames, precision); }
+const std::string& mathName(MathMode math) { return nameOf(kMathNames, math); }
+
+void addArithmeticOptions(CLI::App& app, Arithmetic& arithmetic, bool withMath) {
+  addChoice<Precision>(app, "--precision", arithmetic.precision, kPrecisionNames,
+                       "Arithmetic of the per-vertex evaluation: double, or float after the move to the local frame")
+      ->default_str("double");
+  if (withMath)
+    addChoice<MathMode>(app, "--math", arithmetic.math, kMathNames,
+                        "atan2 from libm (exact), or SLEEF's vectorised functions within 3.5 ULP (fast) or 1.0 ULP "
+                        "(fast-u10)")
+        ->default_str("exact");
+}
+
+nlohmann::json arithmeticJson(const Arithmetic& arithmetic) {
+  return {{"precision", precisionName(arithmetic.precision)}, {"math", mathName(arithmetic.math)}};
+}
+
+}  // namespace uvtk::cli
