@@ -29,7 +29,7 @@ TriangleAreas triangleAreas(const Vec3& p0, const Vec3& p1, const Vec3& p2, cons
                             const Vec2& t2) {
   TriangleAreas a;
   a.normal = triangleAreaNormal(p0, p1, p2);
-  a.area3d = 0.5 * a.normal.norm();
+  a.area3d = 0.5 * a.normal.stableNorm();  // norm() would square to 0 or inf for edges below 1e-154 or above 1e154
   const Vec2 e1 = t1 - t0, e2 = t2 - t0;
   a.signedAreaUv = 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
   a.longestEdge3d = longestSquared(p0, p1, p2);
@@ -42,8 +42,9 @@ TriangleAreas triangleAreas(const Vec3& p0, const Vec3& p1, const Vec3& p2, cons
 // run counter-clockwise in that frame, so det J has the sign of the UV triangle's area.
 Eigen::Matrix2d jacobian(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec2& t0, const Vec2& t1,
                          const Vec2& t2) {
-  const Vec3 e1 = (p1 - p0).normalized();
-  const Vec3 e2 = triangleAreaNormal(p0, p1, p2).normalized().cross(e1);
+  // Scaled normalisation: the squares of tiny or huge edges and normals would underflow or overflow.
+  const Vec3 e1 = (p1 - p0).stableNormalized();
+  const Vec3 e2 = triangleAreaNormal(p0, p1, p2).stableNormalized().cross(e1);
   Eigen::Matrix2d edges3d, edgesUv;
   edges3d << (p1 - p0).dot(e1), (p2 - p0).dot(e1), 0.0, (p2 - p0).dot(e2);
   edgesUv << t1 - t0, t2 - t0;

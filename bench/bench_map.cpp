@@ -25,8 +25,8 @@ const Mesh& sphere() {
 }
 
 void setPerVertex(benchmark::State& state, std::size_t vertices) {
-  state.counters["per_vertex"] = benchmark::Counter(static_cast<double>(vertices),
-                                                    benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["per_vertex"] = benchmark::Counter(
+      static_cast<double>(vertices), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void project(benchmark::State& state, SurfaceKind surface, RayKind ray) {

@@ -48,7 +48,8 @@ void sleefAtan2(const T* y, const T* x, T* out, std::size_t n, F atan2) {
 
 void atan2Block(MathMode math, const float* y, const float* x, float* out, std::size_t n) {
   switch (math) {
-    case MathMode::Exact: return libmAtan2(y, x, out, n);
+    case MathMode::Exact:
+      return libmAtan2(y, x, out, n);
     case MathMode::Fast:
       if (hasAvx2()) return atan2FloatAvx2(y, x, out, n, false);
       return sleefAtan2<float, __m128>(y, x, out, n, Sleef_atan2f4_u35);
@@ -60,7 +61,8 @@ void atan2Block(MathMode math, const float* y, const float* x, float* out, std::
 
 void atan2Block(MathMode math, const double* y, const double* x, double* out, std::size_t n) {
   switch (math) {
-    case MathMode::Exact: return libmAtan2(y, x, out, n);
+    case MathMode::Exact:
+      return libmAtan2(y, x, out, n);
     case MathMode::Fast:
       if (hasAvx2()) return atan2DoubleAvx2(y, x, out, n, false);
       return sleefAtan2<double, __m128d>(y, x, out, n, Sleef_atan2d2_u35);

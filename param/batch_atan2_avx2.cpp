@@ -1,8 +1,8 @@
 // SLEEF's AVX2 atan2 over arrays: whole vectors, then the tail through a zero-padded vector.
+#include "param/batch_atan2_avx2.h"
+
 #include <immintrin.h>
 #include <sleef.h>
-
-#include "param/batch_atan2_avx2.h"
 
 namespace uvtk::param {
 

@@ -143,18 +143,27 @@ Vec2T<T> cubeFaceCoordinates(const Vec3T<T>& d, CubeFace f, CubeConvention conve
   const T x = d.x(), y = d.y(), z = d.z();
   if (convention == CubeConvention::Direct) {
     switch (faceAxis(f)) {
-      case 0: return {y, z};
-      case 1: return {x, z};
-      default: return {x, y};
+      case 0:
+        return {y, z};
+      case 1:
+        return {x, z};
+      default:
+        return {x, y};
     }
   }
   switch (f) {
-    case CubeFace::PosX: return {-z, -y};
-    case CubeFace::NegX: return {z, -y};
-    case CubeFace::PosY: return {x, z};
-    case CubeFace::NegY: return {x, -z};
-    case CubeFace::PosZ: return {x, -y};
-    case CubeFace::NegZ: return {-x, -y};
+    case CubeFace::PosX:
+      return {-z, -y};
+    case CubeFace::NegX:
+      return {z, -y};
+    case CubeFace::PosY:
+      return {x, z};
+    case CubeFace::NegY:
+      return {x, -z};
+    case CubeFace::PosZ:
+      return {x, -y};
+    case CubeFace::NegZ:
+      return {-x, -y};
   }
   return {};
 }
@@ -189,9 +198,14 @@ Vec2T<T> cubeAtlasUv(const Vec2T<T>& st, CubeFace f, CubeConvention convention, 
   const int face = static_cast<int>(f);
   int column = 0, row = 0, columns = 1, rows = 1;
   switch (layout) {
-    case CubeLayout::Faces: break;
-    case CubeLayout::Strip: column = face, columns = 6; break;
-    case CubeLayout::ThreeByTwo: column = face % 3, row = face < 3 ? 1 : 0, columns = 3, rows = 2; break;
+    case CubeLayout::Faces:
+      break;
+    case CubeLayout::Strip:
+      column = face, columns = 6;
+      break;
+    case CubeLayout::ThreeByTwo:
+      column = face % 3, row = face < 3 ? 1 : 0, columns = 3, rows = 2;
+      break;
     case CubeLayout::Cross: {
       // (column, row from the bottom) of +X -X +Y -Y +Z -Z
       static constexpr int kCell[kCubeFaceCount][2] = {{2, 1}, {0, 1}, {1, 2}, {1, 0}, {1, 1}, {3, 1}};

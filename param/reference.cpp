@@ -8,9 +8,8 @@
 
 namespace uvtk::param {
 
-void mapVerticesReference(const ProjectorOptions& o, const Affine3& localFromObject,
-                          const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
-                          std::vector<ReferenceUv>& out) {
+void mapVerticesReference(const ProjectorOptions& o, const Affine3& localFromObject, const std::vector<Vec3>& positions,
+                          const std::vector<Vec3>& normals, std::vector<ReferenceUv>& out) {
   using T = long double;
   if (!(o.poleEpsilon >= 0.0 && o.poleEpsilon < 1.0)) throw UsageError("--pole-eps: expected a number in [0, 1)");
   out.resize(positions.size());

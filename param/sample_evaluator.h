@@ -23,8 +23,8 @@ template <class T>
 struct LocalFrameT {
   using Wide = std::conditional_t<(sizeof(T) > sizeof(double)), T, double>;
   Eigen::Matrix<Wide, 3, 3> linear, normalMatrix;  // normalMatrix: inverse transpose of `linear`
-  Vec3T<Wide> origin;   // the object-space point at (about) the local origin
-  Vec3T<Wide> residue;  // its exact local coordinates, the rounding error of `origin`
+  Vec3T<Wide> origin;                              // the object-space point at (about) the local origin
+  Vec3T<Wide> residue;                             // its exact local coordinates, the rounding error of `origin`
 
   explicit LocalFrameT(const Affine3& localFromObject) : linear(localFromObject.linear().cast<Wide>()) {
     const Mat3 inverse = localFromObject.linear().inverse();
@@ -50,11 +50,16 @@ struct LocalFrameT {
 template <class T>
 SurfaceT<T> makeSurface(const ProjectorOptions& o) {
   switch (o.surface) {
-    case SurfaceKind::Plane: return PlaneSurfaceT<T>{};
-    case SurfaceKind::TwoPlane: return TwoPlaneSurfaceT<T>(o.planeU, o.planeV);
-    case SurfaceKind::Cylinder: return CylinderSurfaceT<T>{};
-    case SurfaceKind::Sphere: return SphereSurfaceT<T>{o.spherePreset};
-    case SurfaceKind::Cube: return CubeSurfaceT<T>{o.cubeConvention, o.cubeLayout};
+    case SurfaceKind::Plane:
+      return PlaneSurfaceT<T>{};
+    case SurfaceKind::TwoPlane:
+      return TwoPlaneSurfaceT<T>(o.planeU, o.planeV);
+    case SurfaceKind::Cylinder:
+      return CylinderSurfaceT<T>{};
+    case SurfaceKind::Sphere:
+      return SphereSurfaceT<T>{o.spherePreset};
+    case SurfaceKind::Cube:
+      return CubeSurfaceT<T>{o.cubeConvention, o.cubeLayout};
   }
   return PlaneSurfaceT<T>{};
 }
@@ -62,9 +67,12 @@ SurfaceT<T> makeSurface(const ProjectorOptions& o) {
 template <class T>
 RayMappingT<T> makeRayMapping(const ProjectorOptions& o, const LocalFrameT<T>& frame) {
   switch (o.ray) {
-    case RayKind::SurfaceNormal: return SurfaceNormalRayT<T>{};
-    case RayKind::Centroid: return CentroidRayT<T>{};
-    case RayKind::ObjectNormal: return ObjectNormalRayT<T>{};
+    case RayKind::SurfaceNormal:
+      return SurfaceNormalRayT<T>{};
+    case RayKind::Centroid:
+      return CentroidRayT<T>{};
+    case RayKind::ObjectNormal:
+      return ObjectNormalRayT<T>{};
     case RayKind::Reflection:
       if (!o.eye) throw UsageError("the reflection mapping needs an eye position (--eye x,y,z)");
       return ReflectionRayT<T>{frame.point(*o.eye), o.atInfinity};
@@ -92,14 +100,16 @@ class SampleEvaluator {
   template <class PositionOf, class NormalOf>
   void operator()(std::size_t count, PositionOf position, NormalOf normal, Out* out) const {
     for (std::size_t start = 0; start < count; start += kBlock)
-      block(std::min(kBlock, count - start), [&](std::size_t i) -> decltype(auto) { return position(start + i); },
-            [&](std::size_t i) -> decltype(auto) { return normal(start + i); }, out + start);
+      block(
+          std::min(kBlock, count - start), [&](std::size_t i) -> decltype(auto) { return position(start + i); },
+          [&](std::size_t i) -> decltype(auto) { return normal(start + i); }, out + start);
   }
 
   Out at(const Vec3& position, const Vec3& normal) const {
     Out out;
-    block(1, [&](std::size_t) -> const Vec3& { return position; }, [&](std::size_t) -> const Vec3& { return normal; },
-          &out);
+    block(
+        1, [&](std::size_t) -> const Vec3& { return position; }, [&](std::size_t) -> const Vec3& { return normal; },
+        &out);
     return out;
   }
 
@@ -129,7 +139,8 @@ class SampleEvaluator {
         if (isPole_(radialDistance(q[i].x(), q[i].y()), q[i].z())) out[i].state = CornerState::Pole;
       if constexpr (S::kAngles > 0) {
         const auto arguments = surface_.angleArguments(q[i]);
-        for (std::size_t a = 0; a < kAngles; ++a) y[i * kAngles + a] = arguments[a].y, x[i * kAngles + a] = arguments[a].x;
+        for (std::size_t a = 0; a < kAngles; ++a)
+          y[i * kAngles + a] = arguments[a].y, x[i * kAngles + a] = arguments[a].x;
       }
     }
     if constexpr (S::kAngles > 0) atan2Block(math_, y.data(), x.data(), angles.data(), n * kAngles);

@@ -15,8 +15,7 @@ TwoPlaneSurfaceT<T>::TwoPlaneSurfaceT(const Vec4& e1, const Vec4& e2) {
   const Vec4 unitU = e1 / n1, unitV = e2 / n2;
   const Vec3 a = unitU.head<3>().cross(unitV.head<3>());
   const double sine = a.norm();  // |n1 x n2| of the unit normals: the sine of their angle
-  if (!(sine > 1e-12))
-    throw UsageError("two-plane: the planes are parallel (the sine of their angle is below 1e-12)");
+  if (!(sine > 1e-12)) throw UsageError("two-plane: the planes are parallel (the sine of their angle is below 1e-12)");
   planeU = unitU.cast<T>();
   planeV = unitV.cast<T>();
   axis = (a / sine).cast<T>();
@@ -61,8 +60,10 @@ std::optional<CubeFace> CubeSurfaceT<T>::chooseFace(const ProbeT<T>& probe, cons
   switch (probe.kind) {
     case Kind::Foot:  // box mapping; a degenerate triangle falls back to its centroid
       return faceOfDirection(isZero(faceNormal) ? probe.point : faceNormal);
-    case Kind::Central: return faceOfDirection(probe.point);
-    case Kind::Ray: return boxFaceHit(probe.point, probe.direction);
+    case Kind::Central:
+      return faceOfDirection(probe.point);
+    case Kind::Ray:
+      return boxFaceHit(probe.point, probe.direction);
   }
   return std::nullopt;
 }

@@ -116,7 +116,7 @@ struct TwoPlaneSurfaceT {
   static constexpr int kAngles = 0;
   Vec4T<T> planeU;  // normalised so that (a, b, c) has unit length
   Vec4T<T> planeV;
-  Vec3T<T> axis;    // a
+  Vec3T<T> axis;  // a
   // Normalises in double, then rounds to T. Throws UsageError for a zero normal or parallel planes.
   TwoPlaneSurfaceT(const Vec4& e1, const Vec4& e2);
   std::optional<Vec3T<T>> resolve(const ProbeT<T>& probe) const;
@@ -236,7 +236,8 @@ std::optional<Vec3T<T>> PlaneSurfaceT<T>::resolve(const ProbeT<T>& probe) const 
   using Kind = typename ProbeT<T>::Kind;
   const Vec3T<T>& p = probe.point;
   switch (probe.kind) {
-    case Kind::Foot: return Vec3T<T>(p.x(), p.y(), T(0));
+    case Kind::Foot:
+      return Vec3T<T>(p.x(), p.y(), T(0));
     case Kind::Central:  // central projection onto z = 1
       if (!(p.z() > T(0))) return std::nullopt;
       return Vec3T<T>(p.x() / p.z(), p.y() / p.z(), T(1));
@@ -254,13 +255,15 @@ std::optional<Vec3T<T>> TwoPlaneSurfaceT<T>::resolve(const ProbeT<T>& probe) con
   using Kind = typename ProbeT<T>::Kind;
   const Vec3T<T>& p = probe.point;
   switch (probe.kind) {
-    case Kind::Foot: return p;
+    case Kind::Foot:
+      return p;
     case Kind::Central: {  // central projection onto a.x = 1
       const T along = axis.dot(p);
       if (!(along > T(0))) return std::nullopt;
       return Vec3T<T>(p / along);
     }
-    case Kind::Ray: return lineMeetsPlane(probe, axis);
+    case Kind::Ray:
+      return lineMeetsPlane(probe, axis);
   }
   return std::nullopt;
 }
@@ -270,7 +273,8 @@ std::optional<Vec3T<T>> CylinderSurfaceT<T>::resolve(const ProbeT<T>& probe) con
   using Kind = typename ProbeT<T>::Kind;
   const Vec3T<T>& p = probe.point;
   switch (probe.kind) {
-    case Kind::Foot: return p;  // same azimuth and height as (x/rho, y/rho, z)
+    case Kind::Foot:
+      return p;  // same azimuth and height as (x/rho, y/rho, z)
     case Kind::Central: {
       const T rho = radialDistance(p.x(), p.y());
       if (!(rho > T(0))) return std::nullopt;  // along the axis the ray never meets the side
@@ -280,9 +284,9 @@ std::optional<Vec3T<T>> CylinderSurfaceT<T>::resolve(const ProbeT<T>& probe) con
       const Vec3T<T>& d = probe.direction;
       if (isZero(d)) return std::nullopt;  // no direction (a zero normal): not a ray, even from the side
       const T radial2 = p.x() * p.x() + p.y() * p.y();
-      const std::optional<T> t = firstNonNegativeRoot(d.x() * d.x() + d.y() * d.y(),
-                                                      T(2) * (p.x() * d.x() + p.y() * d.y()), radial2 - T(1),
-                                                      std::max(T(1), radial2));
+      const std::optional<T> t =
+          firstNonNegativeRoot(d.x() * d.x() + d.y() * d.y(), T(2) * (p.x() * d.x() + p.y() * d.y()), radial2 - T(1),
+                               std::max(T(1), radial2));
       if (!t) return std::nullopt;
       return Vec3T<T>(p + *t * d);
     }

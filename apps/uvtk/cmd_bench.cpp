@@ -46,7 +46,8 @@ struct BenchArguments {
   // rendering
   bool render = false;
   std::string renderProjector = "sphere", size = "512x512", texture = "checker:512:16";
-  std::string filters = "nearest,linear,nearest_mipmap_nearest,linear_mipmap_nearest,nearest_mipmap_linear,linear_mipmap_linear";
+  std::string filters =
+      "nearest,linear,nearest_mipmap_nearest,linear_mipmap_nearest,nearest_mipmap_linear,linear_mipmap_linear";
   std::string samples = "1,4,16";
   ViewCamera camera;
 };
@@ -56,7 +57,8 @@ std::vector<int> parseCounts(const std::string& text, const std::string& option,
   std::vector<int> values;
   for (double v : parseNumbers(text, int(std::count(text.begin(), text.end(), ',')) + 1, option)) {
     if (v != std::floor(v) || v < low || v > high)
-      throw UsageError(option + ": expected whole numbers in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
+      throw UsageError(option + ": expected whole numbers in [" + std::to_string(low) + ", " + std::to_string(high) +
+                       "]");
     values.push_back(int(v));
   }
   return values;
@@ -108,7 +110,8 @@ std::vector<nlohmann::json> benchMapping(const BenchArguments& a, const Mesh& me
   for (const std::string& projector : splitList(a.projectors)) {
     const param::ProjectorOptions base = projectorNamed(projector, a.omap);
     if (base.surface == param::SurfaceKind::Cube)
-      throw UsageError("--projector cube: the cube chooses its face per triangle; `uvtk bench` times per-vertex mappings");
+      throw UsageError(
+          "--projector cube: the cube chooses its face per triangle; `uvtk bench` times per-vertex mappings");
     const Affine3 frame = param::fitPlacement(mesh.positions, base.surface, base.placement);
     const std::vector<Vec3> normals = base.ray == param::RayKind::ObjectNormal || base.ray == param::RayKind::Reflection
                                           ? areaWeightedVertexNormals(mesh)
@@ -132,7 +135,8 @@ std::vector<nlohmann::json> benchMapping(const BenchArguments& a, const Mesh& me
           benchmark::RegisterBenchmark(c.name.c_str(),
                                        [&mesh, options, frame, normals, threads, buffer](benchmark::State& state) {
                                          for (auto _ : state) {
-                                           param::mapVertices(options, frame, mesh.positions, normals, *buffer, threads);
+                                           param::mapVertices(options, frame, mesh.positions, normals, *buffer,
+                                                              threads);
                                            benchmark::DoNotOptimize(buffer->data());
                                          }
                                        })
@@ -172,8 +176,8 @@ std::vector<nlohmann::json> benchPeers(const BenchArguments& a, const Mesh& mesh
   std::vector<nlohmann::json> records;
   if (a.noPeers || !peers::assimpAvailable()) return records;
   const std::pair<const char*, peers::AssimpMapping> mappings[] = {{"plane", peers::AssimpMapping::Plane},
-                                                                    {"cylinder", peers::AssimpMapping::Cylinder},
-                                                                    {"sphere", peers::AssimpMapping::Sphere}};
+                                                                   {"cylinder", peers::AssimpMapping::Cylinder},
+                                                                   {"sphere", peers::AssimpMapping::Sphere}};
   for (const auto& [name, mapping] : mappings) {
     std::fprintf(stderr, "uvtk bench: assimp %s ...\n", name);
     const std::optional<peers::PeerTiming> t = peers::measureAssimpGenUvCoords(mesh, mapping, 5);
@@ -189,8 +193,9 @@ std::vector<nlohmann::json> benchPeers(const BenchArguments& a, const Mesh& mesh
                        {"ns_per_corner", t->nsPerVertex},
                        {"max_err_ulp", nullptr},
                        {"max_err_texels", nullptr},
-                       {"note", "aiProcess_GenUVCoords on one vertex per corner (assimp's layout); per vertex of "
-                                "the mesh for comparison; its own conventions, so no error is measured"}});
+                       {"note",
+                        "aiProcess_GenUVCoords on one vertex per corner (assimp's layout); per vertex of "
+                        "the mesh for comparison; its own conventions, so no error is measured"}});
   }
   return records;
 }
@@ -203,7 +208,8 @@ std::vector<nlohmann::json> benchRendering(const BenchArguments& a, const Mesh& 
   const std::vector<int> sampleCounts = parseCounts(a.samples, "--spp", 1, 256);
   const std::vector<render::Filter> filters = parseNameList(a.filters, kFilterNames, "--filters");
   std::optional<render::Texture> proceduralTexture = render::proceduralTexture(a.texture);
-  if (!proceduralTexture) throw UsageError("--texture: expected checker:N[:C] or uvgrid[:N], found \"" + a.texture + "\"");
+  if (!proceduralTexture)
+    throw UsageError("--texture: expected checker:N[:C] or uvgrid[:N], found \"" + a.texture + "\"");
   render::Texture texture = std::move(*proceduralTexture);
   texture.buildMipmaps();
 
@@ -234,7 +240,8 @@ std::vector<nlohmann::json> benchRendering(const BenchArguments& a, const Mesh& 
     optionStore.push_back(std::move(options));
     benchmark::RegisterBenchmark(cases.back().name.c_str(),
                                  [&mapped, source, o](benchmark::State& state) {
-                                   for (auto _ : state) benchmark::DoNotOptimize(render::render(mapped.mesh, *source, *o));
+                                   for (auto _ : state)
+                                     benchmark::DoNotOptimize(render::render(mapped.mesh, *source, *o));
                                  })
         ->MinTime(a.minTime)
         ->UseRealTime()
@@ -242,7 +249,8 @@ std::vector<nlohmann::json> benchRendering(const BenchArguments& a, const Mesh& 
   };
   for (int threads : threadCounts) {
     for (const char* uv : {"per-vertex", "per-pixel"}) add(uv, render::Filter::LinearMipmapLinear, 1, threads);
-    for (render::Filter filter : filters) add("per-vertex", filter, 1, threads);
+    for (render::Filter filter : filters)
+      if (filter != render::Filter::LinearMipmapLinear) add("per-vertex", filter, 1, threads);  // the row above
     for (int spp : sampleCounts)
       if (spp > 1) add("per-vertex", render::Filter::LinearMipmapLinear, spp, threads);
   }
@@ -308,19 +316,23 @@ std::string markdownTables(const std::vector<nlohmann::json>& records, int textu
   for (const nlohmann::json& r : records) {
     if (r["section"] != "rendering") {
       if (!mappingHeader)
-        md += "| projector | omap | precision | math | threads | ns/vertex | max err (ulp) | p99 err (ulp) | max err "
-              "(texels @" + std::to_string(textureWidth) + ") | p99 err (texels) |\n|---|---|---|---|---|---|---|---|---|---|\n",
+        md +=
+            "| projector | omap | precision | math | threads | ns/vertex | max err (ulp) | p99 err (ulp) | max err "
+            "(texels @" +
+            std::to_string(textureWidth) + ") | p99 err (texels) |\n|---|---|---|---|---|---|---|---|---|---|\n",
             mappingHeader = true;
       md += "| " + r["projector"].get<std::string>() + " | " + r["omap"].get<std::string>() + " | " +
             r["precision"].get<std::string>() + " | " + r["math"].get<std::string>() + " | " +
             std::to_string(r["threads"].get<int>()) + " | " + formatNumber(r["ns_per_vertex"], "%.2f") + " | " +
-            formatNumber(r["max_err_ulp"], "%.3g") + " | " + formatNumber(r.value("p99_err_ulp", nlohmann::json()), "%.3g") +
-            " | " + formatNumber(r["max_err_texels"], "%.3g") + " | " +
+            formatNumber(r["max_err_ulp"], "%.3g") + " | " +
+            formatNumber(r.value("p99_err_ulp", nlohmann::json()), "%.3g") + " | " +
+            formatNumber(r["max_err_texels"], "%.3g") + " | " +
             formatNumber(r.value("p99_err_texels", nlohmann::json()), "%.3g") + " |\n";
     } else {
       if (!renderHeader)
-        md += "\n| triangles | size | uv | filter | spp | threads | ms/frame | RMSE vs 64 spp | max err | UV err max "
-              "(texels) | UV err mean (texels) |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
+        md +=
+            "\n| triangles | size | uv | filter | spp | threads | ms/frame | RMSE vs 64 spp | max err | UV err max "
+            "(texels) | UV err mean (texels) |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
             renderHeader = true;
       md += "| " + std::to_string(r["triangles"].get<std::size_t>()) + " | " + std::to_string(r["width"].get<int>()) +
             "x" + std::to_string(r["height"].get<int>()) + " | " + r["uv"].get<std::string>() + " | " +
@@ -403,8 +415,9 @@ void runBench(const BenchArguments& a) {
     for (nlohmann::json& r : benchRendering(a, renderMesh)) records.push_back(std::move(r));
   }
 
-  const std::string md = "Mesh: " + meshName + " (" + std::to_string(mesh.vertexCount()) + " vertices). atan2: " +
-                         param::fastMathInstructionSet() + " for fast modes.\n\n" + markdownTables(records, a.textureWidth);
+  const std::string md = "Mesh: " + meshName + " (" + std::to_string(mesh.vertexCount()) +
+                         " vertices). atan2: " + param::fastMathInstructionSet() + " for fast modes.\n\n" +
+                         markdownTables(records, a.textureWidth);
   if (a.markdown.empty())
     std::fputs(md.c_str(), stdout);
   else
@@ -418,7 +431,8 @@ void runBench(const BenchArguments& a) {
   }
   if (!a.plot.empty()) {
     io::writeImage(a.plot, chartOf(records, false, a.textureWidth), io::PixelType::UInt8);
-    if (a.render) io::writeImage(withSuffix(a.plot, "-render"), chartOf(records, true, a.textureWidth), io::PixelType::UInt8);
+    if (a.render)
+      io::writeImage(withSuffix(a.plot, "-render"), chartOf(records, true, a.textureWidth), io::PixelType::UInt8);
   }
 }
 

@@ -42,7 +42,8 @@ double worstUlps(MathMode math) {
   atan2Block(math, y.data(), x.data(), angle.data(), n);
   double worst = 0.0;
   for (std::size_t i = 0; i < n; ++i)
-    worst = std::max(worst, ulpsOff(angle[i], std::atan2(static_cast<long double>(y[i]), static_cast<long double>(x[i]))));
+    worst =
+        std::max(worst, ulpsOff(angle[i], std::atan2(static_cast<long double>(y[i]), static_cast<long double>(x[i]))));
   return worst;
 }
 

@@ -41,6 +41,11 @@ struct TexgenRow {
   Outcome inDouble, inFloat;
 };
 
+TexgenRow row(const std::string& expected, const TexgenOptions& options, const Vec3& position, const Vec3& normal,
+              const Outcome& inDouble, const Outcome& inFloat) {
+  return {expected, options, position, normal, inDouble, inFloat};
+}
+
 TexgenOptions sOnly(TexgenMode mode, const Vec4& plane) {
   TexgenOptions o;
   o.coordinates[0] = {mode, plane};
@@ -60,8 +65,8 @@ Outcome sWithin(double s, double tolerance) { return {Vec4(s, 0, 0, 1), toleranc
 TexgenRow objectLinear(const std::string& expected, const Vec4& plane, const Vec3& x, double ulps) {
   const LongVec4 p = plane.cast<long double>(), xh(x.x(), x.y(), x.z(), 1.0L);
   const double exact = double(p.dot(xh)), magnitude = double(p.cwiseAbs().dot(xh.cwiseAbs()));
-  return {expected, sOnly(TexgenMode::ObjectLinear, plane), x, Vec3::UnitZ(),
-          sWithin(exact, ulps * kDoubleU * magnitude), sWithin(exact, ulps * kFloatU * magnitude)};
+  return {expected,      sOnly(TexgenMode::ObjectLinear, plane),      x,
+          Vec3::UnitZ(), sWithin(exact, ulps * kDoubleU * magnitude), sWithin(exact, ulps * kFloatU * magnitude)};
 }
 
 // An EYE_LINEAR row: s = (p M_plane^-1) . (M_draw x), computed in long double (the inverse by LU in
@@ -72,10 +77,15 @@ TexgenRow eyeLinear(const std::string& expected, const Vec4& plane, const Mat4& 
   TexgenOptions o = sOnly(TexgenMode::EyeLinear, plane);
   o.modelviewAtPlanes = atPlanes;
   o.modelviewAtDraw = atDraw;
-  const Eigen::Matrix<long double, 1, 4> p = plane.cast<long double>().transpose() * LongMat4(atPlanes.cast<long double>()).inverse();
+  const Eigen::Matrix<long double, 1, 4> p =
+      plane.cast<long double>().transpose() * LongMat4(atPlanes.cast<long double>()).inverse();
   const LongVec4 e = atDraw.cast<long double>() * LongVec4(x.x(), x.y(), x.z(), 1.0L);
   const double exact = double(p.dot(e.transpose())), magnitude = double(p.cwiseAbs().dot(e.cwiseAbs().transpose()));
-  return {expected, o, x, Vec3::UnitZ(), sWithin(exact, doubleTolerance * magnitude),
+  return {expected,
+          o,
+          x,
+          Vec3::UnitZ(),
+          sWithin(exact, doubleTolerance * magnitude),
           sWithin(exact, (doubleTolerance + 8 * kFloatU) * magnitude)};
 }
 
@@ -108,25 +118,25 @@ const std::vector<TexgenRow>& rows() {
         objectLinear("OBJECT_LINEAR, plane 1e-30 (1, -2, 3, 0.5) at (1, 2, 3): s = 6.5e-30 within 4 u of "
                      "sum |p_i x_i| (float: 1e-30 is a normal float, same bound in float's u)",
                      tinyPlane, Vec3(1, 2, 3), 4),
-        {"OBJECT_LINEAR, plane 1e-30 x at x = 3: s = 3e-30 exactly as GL's formula rounds it (the correctly "
-         "rounded product); float within an ulp",
-         sOnly(TexgenMode::ObjectLinear, Vec4(1e-30, 0, 0, 0)), Vec3(3, 0, 0), Vec3::UnitZ(),
-         sWithin(1e-30 * 3.0, 0.0), sWithin(3e-30, kFloatU * 3e-30)},
-        {"OBJECT_LINEAR, plane 1e-30 x at x = 1e-20: double s = 1e-50 (the rounded product); float: 1e-50 "
-         "underflows below float's subnormals, s = +0 exactly",
-         sOnly(TexgenMode::ObjectLinear, Vec4(1e-30, 0, 0, 0)), Vec3(1e-20, 0, 0), Vec3::UnitZ(),
-         sWithin(1e-30 * 1e-20, 0.0), sWithin(0.0, 0.0)},
-        {"OBJECT_LINEAR, plane 1e-50 x: float rounds the plane to 0 when prepared (finite: no UsageError), s = 0; "
-         "double s = 2e-50",
-         sOnly(TexgenMode::ObjectLinear, Vec4(1e-50, 0, 0, 0)), Vec3(2, 0, 0), Vec3::UnitZ(),
-         sWithin(1e-50 * 2.0, 0.0), sWithin(0.0, 0.0)},
-        {"OBJECT_LINEAR, plane 1e-40 x at x = 1: double exact; float keeps 1e-40 as a subnormal, s within 1e-5 "
-         "relative (subnormal precision)",
-         sOnly(TexgenMode::ObjectLinear, Vec4(1e-40, 0, 0, 0)), Vec3(1, 0, 0), Vec3::UnitZ(), sWithin(1e-40, 0.0),
-         sWithin(1e-40, 1e-45)},
-        {"OBJECT_LINEAR, plane 1e-30 x at the subnormal x = 5e-324: the product underflows, s = +0 in both",
-         sOnly(TexgenMode::ObjectLinear, Vec4(1e-30, 0, 0, 0)), Vec3(kDenormMin, 0, 0), Vec3::UnitZ(),
-         sWithin(0.0, 0.0), sWithin(0.0, 0.0)},
+        row("OBJECT_LINEAR, plane 1e-30 x at x = 3: s = 3e-30 exactly as GL's formula rounds it (the correctly "
+            "rounded product); float within an ulp",
+            sOnly(TexgenMode::ObjectLinear, Vec4(1e-30, 0, 0, 0)), Vec3(3, 0, 0), Vec3::UnitZ(),
+            sWithin(1e-30 * 3.0, 0.0), sWithin(3e-30, kFloatU * 3e-30)),
+        row("OBJECT_LINEAR, plane 1e-30 x at x = 1e-20: double s = 1e-50 (the rounded product); float: 1e-50 "
+            "underflows below float's subnormals, s = +0 exactly",
+            sOnly(TexgenMode::ObjectLinear, Vec4(1e-30, 0, 0, 0)), Vec3(1e-20, 0, 0), Vec3::UnitZ(),
+            sWithin(1e-30 * 1e-20, 0.0), sWithin(0.0, 0.0)),
+        row("OBJECT_LINEAR, plane 1e-50 x: float rounds the plane to 0 when prepared (finite: no UsageError), s = 0; "
+            "double s = 2e-50",
+            sOnly(TexgenMode::ObjectLinear, Vec4(1e-50, 0, 0, 0)), Vec3(2, 0, 0), Vec3::UnitZ(),
+            sWithin(1e-50 * 2.0, 0.0), sWithin(0.0, 0.0)),
+        row("OBJECT_LINEAR, plane 1e-40 x at x = 1: double exact; float keeps 1e-40 as a subnormal, s within 1e-5 "
+            "relative (subnormal precision)",
+            sOnly(TexgenMode::ObjectLinear, Vec4(1e-40, 0, 0, 0)), Vec3(1, 0, 0), Vec3::UnitZ(), sWithin(1e-40, 0.0),
+            sWithin(1e-40, 1e-45)),
+        row("OBJECT_LINEAR, plane 1e-30 x at the subnormal x = 5e-324: the product underflows, s = +0 in both",
+            sOnly(TexgenMode::ObjectLinear, Vec4(1e-30, 0, 0, 0)), Vec3(kDenormMin, 0, 0), Vec3::UnitZ(),
+            sWithin(0.0, 0.0), sWithin(0.0, 0.0)),
         eyeLinear("EYE_LINEAR, plane 1e-30 (1, -2, 3, 0.5) under gluLookAt((1, 2, 3), 0, +y): finite, within "
                   "16 u of sum |p'_i e_i| of the long-double value",
                   tinyPlane, view, view, Vec3(0.3, -0.7, 0.2), 16 * kDoubleU),
@@ -146,20 +156,20 @@ const std::vector<TexgenRow>& rows() {
                   Vec4(1, -2, 3, 0.5), rotatedIllConditioned(), rotatedIllConditioned(), Vec3(-2, 5, 1), 1e-10),
 
         // ---- SPHERE_MAP at and near the singular reflection r = (0, 0, -1) ----
-        {"SPHERE_MAP, vertex on the view axis, normal (1, 0, 0): r = (0, 0, -1), m = 0: s = t = 1/2, flagged "
-         "singular",
-         sphereMap(), Vec3(0, 0, -5), Vec3(1, 0, 0), half, half},
-        {"SPHERE_MAP, zero normal on the view axis: r = u = (0, 0, -1): singular, s = t = 1/2, flagged", sphereMap(),
-         Vec3(0, 0, -5), Vec3::Zero(), half, half},
-        {"SPHERE_MAP, normal 1e-9 off the singular one: rz + 1 rounds to 0, m = 4e-9: s = 1 (the rim), t = 1/2, "
-         "finite, not flagged",
-         sphereMap(), Vec3(0, 0, -5), Vec3(1, 0, rimZ).normalized(), {Vec4(1, 0.5, 0, 1), 1e-12},
-         {Vec4(1, 0.5, 0, 1), 1e-6}},
-        {"SPHERE_MAP, vertex at the eye: u = 0 (as Mesa), r = 0, m = 2: s = t = 1/2, not flagged", sphereMap(),
-         Vec3::Zero(), Vec3(0, 0, 1), {Vec4(0.5, 0.5, 0, 1)}, {Vec4(0.5, 0.5, 0, 1)}},
-        {"SPHERE_MAP, vertex at (0, 0, -1e300): u scaled before normalising, singular 1/2; float: the vertex "
-         "overflows (0 inf = NaN): Invalid, not singular",
-         sphereMap(), Vec3(0, 0, -1e300), Vec3(1, 0, 0), half, {Vec4::Zero(), 0.0, false, true}},
+        row("SPHERE_MAP, vertex on the view axis, normal (1, 0, 0): r = (0, 0, -1), m = 0: s = t = 1/2, flagged "
+            "singular",
+            sphereMap(), Vec3(0, 0, -5), Vec3(1, 0, 0), half, half),
+        row("SPHERE_MAP, zero normal on the view axis: r = u = (0, 0, -1): singular, s = t = 1/2, flagged", sphereMap(),
+            Vec3(0, 0, -5), Vec3::Zero(), half, half),
+        row("SPHERE_MAP, normal 1e-9 off the singular one: rz + 1 rounds to 0, m = 4e-9: s = 1 (the rim), t = 1/2, "
+            "finite, not flagged",
+            sphereMap(), Vec3(0, 0, -5), Vec3(1, 0, rimZ).normalized(), {Vec4(1, 0.5, 0, 1), 1e-12},
+            {Vec4(1, 0.5, 0, 1), 1e-6}),
+        row("SPHERE_MAP, vertex at the eye: u = 0 (as Mesa), r = 0, m = 2: s = t = 1/2, not flagged", sphereMap(),
+            Vec3::Zero(), Vec3(0, 0, 1), {Vec4(0.5, 0.5, 0, 1)}, {Vec4(0.5, 0.5, 0, 1)}),
+        row("SPHERE_MAP, vertex at (0, 0, -1e300): u scaled before normalising, singular 1/2; float: the vertex "
+            "overflows (0 inf = NaN): Invalid, not singular",
+            sphereMap(), Vec3(0, 0, -1e300), Vec3(1, 0, 0), half, {Vec4::Zero(), 0.0, false, true}),
     };
     return t;
   }();
@@ -240,7 +250,8 @@ TEST(TexgenExtremes, AModelviewSingularToWorkingPrecisionIsAUsageError) {
         texgenAt(Vec3(1, 2, 3), Vec3::UnitZ(), o);
         ADD_FAILURE() << row.expected << " [" << nameOf(precision) << "]: accepted";
       } catch (const UsageError& e) {
-        EXPECT_EQ(std::string(e.what()), "texgen: the modelview at the planes is singular, so its inverse does not exist")
+        EXPECT_EQ(std::string(e.what()),
+                  "texgen: the modelview at the planes is singular, so its inverse does not exist")
             << row.expected << " [" << nameOf(precision) << "]";
       }
     }

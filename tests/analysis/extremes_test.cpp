@@ -1,0 +1,146 @@
+// Issue 6, numerical extremes of the distortion measures: slivers with angles of 1e-8, in 3D, in
+// UV or both, at unit, tiny and huge scales. One row per case, each row stating the documented
+// behaviour that its failure messages repeat (docs/extremes.md lists every row): a status ok (or
+// flipped) with finite measures, or zero_area_3d / zero_area_uv with measures 0; never NaN.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "analysis/distortion.h"
+#include "analysis/layout.h"
+
+namespace uvtk::analysis {
+namespace {
+
+constexpr double kAngle = 1e-8;
+constexpr double kAny = NAN;  // a measure whose value the row does not fix (still finite)
+
+// Expected measures of the row's first face, within `tolerance` relative (0 exactly).
+struct Expected {
+  FaceStatus status;
+  double sigmaMax = kAny, sigmaMin = kAny, l2 = kAny, linf = kAny, angle = kAny, areaRatio = kAny;
+  double tolerance = 1e-6;
+};
+
+struct SliverRow {
+  std::string expected;
+  std::vector<Vec3> positions;  // 3 per face
+  std::vector<Vec2> uvs;        // 3 per face
+  Expected first;
+};
+
+SliverRow row(const std::string& expected, const std::vector<Vec3>& positions, const std::vector<Vec2>& uvs,
+              const Expected& first) {
+  return {expected, positions, uvs, first};
+}
+
+std::vector<Vec3> scaled(std::vector<Vec3> points, double s) {
+  for (Vec3& p : points) p *= s;
+  return points;
+}
+
+std::vector<Vec2> planar(const std::vector<Vec3>& points) {
+  std::vector<Vec2> uvs;
+  for (const Vec3& p : points) uvs.push_back(p.head<2>());
+  return uvs;
+}
+
+const std::vector<SliverRow>& rows() {
+  static const std::vector<SliverRow> table = [] {
+    const double c = std::cos(kAngle), s = std::sin(kAngle);
+    // A needle: the angle 1e-8 at the first corner between edges of length 1.
+    const std::vector<Vec3> needle = {{0, 0, 0}, {1, 0, 0}, {c, s, 0}};
+    // A cap: one angle pi - 2e-8, two of 1e-8.
+    const std::vector<Vec3> cap = {{0, 0, 0}, {1, 0, 0}, {0.5, 0.5 * std::tan(kAngle), 0}};
+    const std::vector<Vec3> right = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    const std::vector<Vec2> rightUv = {{0, 0}, {1, 0}, {0, 1}};
+    std::vector<SliverRow> t = {
+        row("needle (angle 1e-8) mapped isometrically: ok, s1 = s2 = L2 = Linf = angle = area ratio = 1 within 1e-6",
+            needle, planar(needle), {FaceStatus::Ok, 1, 1, 1, 1, 1, 1}),
+        row("cap (angle pi - 2e-8) mapped isometrically: ok, every measure 1 within 1e-6", cap, planar(cap),
+            {FaceStatus::Ok, 1, 1, 1, 1, 1, 1}),
+        row("needle in 3D onto the right UV triangle: ok, s1 = 1.414e8, s2 = 0.7071, L2 = 1, Linf = 1.414, "
+            "angle 2e8, area ratio 1e8",
+            needle, rightUv,
+            {FaceStatus::Ok, std::sqrt(2.0) / s, std::sqrt(0.5), 1.0, std::sqrt(2.0), 2.0 / s, 1.0 / s}),
+        row("right triangle onto a UV needle: ok, s1 = 1.414, s2 = 7.07e-9, L2 = 1e8, Linf = 1.414e8, angle 2e8, "
+            "area ratio 1e-8",
+            right, planar(needle),
+            {FaceStatus::Ok, std::sqrt(2.0), s / std::sqrt(2.0), 1.0 / s, std::sqrt(2.0) / s, 2.0 / s, s}),
+        row("needle mapped onto itself turned 90 degrees (a rotation): ok, every measure 1 within 1e-6", needle,
+            {{0, 0}, {0, 1}, {-s, c}}, {FaceStatus::Ok, 1, 1, 1, 1, 1, 1}),
+        row("needle collapsed to a segment in UV: zero_area_uv, measures 0", needle, {{0, 0}, {1, 0}, {2, 0}},
+            {FaceStatus::ZeroAreaUv, 0, 0, 0, 0, 0, 0}),
+        row("needle whose UV is a point: zero_area_uv, measures 0", needle, {{0.5, 0.5}, {0.5, 0.5}, {0.5, 0.5}},
+            {FaceStatus::ZeroAreaUv, 0, 0, 0, 0, 0, 0}),
+        row("needle of angle 1e-16 (area below 1e-14 of the longest edge squared): zero_area_3d, measures 0",
+            {{0, 0, 0}, {1, 0, 0}, {1, 1e-16, 0}}, rightUv, {FaceStatus::ZeroArea3d, 0, 0, 0, 0, 0, 0}),
+        row("needle with edges of 1e-150 (area 5e-309, subnormal) mapped onto the unit needle: ok, s1 = s2 = 1e150, "
+            "stretch 1e-150, finite",
+            scaled(needle, 1e-150), planar(needle), {FaceStatus::Ok, 1e150, 1e150, 1e-150, 1e-150, 1, 1e300}),
+        row("needle with edges of 1e150 (area 5e291) mapped onto the unit needle: ok, s1 = s2 = 1e-150, stretch 1e150",
+            scaled(needle, 1e150), planar(needle), {FaceStatus::Ok, 1e-150, 1e-150, 1e150, 1e150, 1, 1e-300}),
+        row("needle of angle 1.5e-8 (2^-26, the coordinates' ulp) 1e8 from the origin, isometric: edges are exact "
+            "differences, ok, every measure 1 within 1e-6",
+            {Vec3(1e8, 1e8, 1e8), Vec3(1e8 + 1, 1e8, 1e8), Vec3(1e8 + 1, 1e8 + 0x1p-26, 1e8)},
+            {{0, 0}, {1, 0}, {1, 0x1p-26}}, {FaceStatus::Ok, 1, 1, 1, 1, 1, 1}),
+    };
+    // A mirrored needle among two ok right triangles: outvoted, so flipped, with finite measures.
+    std::vector<Vec3> mixed = {{0, 0, 0}, {1, 0, 0}, {c, s, 0}};
+    std::vector<Vec2> mixedUv = {{0, 0}, {1, 0}, {c, -s}};
+    for (double dz : {2.0, 4.0}) {
+      for (const Vec3& p : right) mixed.push_back(p + Vec3(0, 0, dz));
+      for (const Vec2& uv : rightUv) mixedUv.push_back(uv + Vec2(dz, 0));
+    }
+    t.push_back(row("a mirrored needle among two ok faces: flipped (outvoted), s2 = -1, finite measures", mixed,
+                    mixedUv, {FaceStatus::Flipped, 1, -1, 1, 1, 1, 1}));
+    return t;
+  }();
+  return table;
+}
+
+bool near(double got, double want, double tolerance) { return std::fabs(got - want) <= tolerance * std::fabs(want); }
+
+class SliverExtremes : public testing::TestWithParam<std::size_t> {};
+
+TEST_P(SliverExtremes, FiniteMeasuresOrAZeroAreaStatus) {
+  const SliverRow& row = rows()[GetParam()];
+  SCOPED_TRACE(row.expected);
+  std::vector<Triangle> triangles;
+  for (int f = 0; 3 * f < int(row.positions.size()); ++f) triangles.push_back({3 * f, 3 * f + 1, 3 * f + 2});
+  const Layout layout = makeLayout(row.positions, triangles, row.uvs);
+  const std::vector<FaceDistortion> faces = measureFaces(layout.mesh, layout.uv);
+  for (const FaceDistortion& f : faces)
+    for (double x : {f.area3d, f.areaUv, f.sigmaMax, f.sigmaMin, f.l2Stretch, f.linfStretch, f.angleDistortion,
+                     f.areaRatio, f.areaDistortion})
+      ASSERT_TRUE(std::isfinite(x)) << "a measure is " << x;
+  const FaceDistortion& f = faces[0];
+  const Expected& want = row.first;
+  EXPECT_STREQ(toString(f.status), toString(want.status));
+  const struct {
+    const char* name;
+    double got, want;
+  } measures[] = {{"s1", f.sigmaMax, want.sigmaMax},
+                  {"s2", f.sigmaMin, want.sigmaMin},
+                  {"L2", f.l2Stretch, want.l2},
+                  {"Linf", f.linfStretch, want.linf},
+                  {"angle", f.angleDistortion, want.angle},
+                  {"area ratio", f.areaRatio, want.areaRatio}};
+  for (const auto& m : measures) {
+    if (std::isnan(m.want)) continue;
+    EXPECT_TRUE(near(m.got, m.want, want.tolerance)) << m.name << " " << m.got << " instead of " << m.want;
+  }
+  if (isMeasured(f.status)) {
+    EXPECT_GT(f.sigmaMax, 0.0);
+    EXPECT_GT(f.l2Stretch, 0.0);
+  }
+  const AreaTotals totals = okAreaTotals(faces);
+  EXPECT_TRUE(std::isfinite(totals.surface) && std::isfinite(totals.uv) && std::isfinite(totals.surfacePerUv()));
+}
+
+INSTANTIATE_TEST_SUITE_P(Rows, SliverExtremes, testing::Range<std::size_t>(0, rows().size()));
+
+}  // namespace
+}  // namespace uvtk::analysis
