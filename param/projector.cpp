@@ -5,7 +5,6 @@
 #include <functional>
 
 #include "core/error.h"
-#include "core/parallel.h"
 #include "param/sample_evaluator.h"
 #include "param/seams.h"
 
@@ -191,29 +190,7 @@ void mapVertices(const ProjectorOptions& o, const Affine3& localFromObject, cons
   checkOptions(o);
   out.resize(positions.size());
   withPrecision(o.arithmetic.precision, [&](auto zero) {
-    using T = decltype(zero);
-    const LocalFrameT<T> frame(localFromObject);
-    visitProjector<T>(o, frame, [&](const auto& s, const auto& m) {
-      using S = std::decay_t<decltype(s)>;
-      using M = std::decay_t<decltype(m)>;
-      if constexpr (std::is_same_v<S, CubeSurfaceT<T>>) {
-        throw UsageError("the cube projector chooses a face per triangle: map a mesh with project()");
-      } else {
-        if (M::kNeedsNormal && normals.size() != positions.size())
-          throw UsageError("this O-mapping needs one normal per position");
-        const SampleEvaluator<T, S, M> evaluate(s, m, frame, PoleTest(o.poleEpsilon), o.arithmetic.math);
-        // Contiguous ranges, one per thread, each a whole number of the evaluator's blocks.
-        const int chunks = threadCount(threads);
-        const std::size_t size = (positions.size() / std::size_t(chunks) + 255) / 256 * 256;
-        parallelFor(chunks, chunks, [&](int chunk) {
-          const std::size_t begin = std::min(positions.size(), std::size_t(chunk) * size);
-          const std::size_t end = std::min(positions.size(), begin + size);
-          evaluate(
-              end - begin, [&](std::size_t i) -> const Vec3& { return positions[begin + i]; },
-              [&](std::size_t i) -> const Vec3& { return normals[begin + i]; }, out.data() + begin);
-        });
-      }
-    });
+    evaluatePositions<decltype(zero)>(o, localFromObject, positions, normals, out.data(), o.arithmetic.math, threads);
   });
 }
 

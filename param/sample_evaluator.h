@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "core/error.h"
+#include "core/parallel.h"
 #include "param/batch_atan2.h"
 #include "param/projector.h"
 #include "param/surfaces.h"
@@ -159,5 +160,34 @@ class SampleEvaluator {
   PoleTest isPole_;
   MathMode math_;
 };
+
+// mapVertices in precision T into `out` (positions.size() records): the surface and O-mapping
+// the options name, `threads` contiguous ranges of whole blocks. Throws UsageError for the cube
+// (its face is chosen per triangle) and for missing normals.
+template <class T, class Out>
+void evaluatePositions(const ProjectorOptions& o, const Affine3& localFromObject, const std::vector<Vec3>& positions,
+                       const std::vector<Vec3>& normals, Out* out, MathMode math, int threads) {
+  const LocalFrameT<T> frame(localFromObject);
+  visitProjector<T>(o, frame, [&](const auto& s, const auto& m) {
+    using S = std::decay_t<decltype(s)>;
+    using M = std::decay_t<decltype(m)>;
+    if constexpr (std::is_same_v<S, CubeSurfaceT<T>>) {
+      throw UsageError("the cube projector chooses a face per triangle: map a mesh with project()");
+    } else {
+      if (M::kNeedsNormal && normals.size() != positions.size())
+        throw UsageError("this O-mapping needs one normal per position");
+      const SampleEvaluator<T, S, M, Out> evaluate(s, m, frame, PoleTest(o.poleEpsilon), math);
+      const int chunks = threadCount(threads);
+      const std::size_t size = (positions.size() / std::size_t(chunks) + 255) / 256 * 256;
+      parallelFor(chunks, chunks, [&](int chunk) {
+        const std::size_t begin = std::min(positions.size(), std::size_t(chunk) * size);
+        const std::size_t end = std::min(positions.size(), begin + size);
+        evaluate(
+            end - begin, [&](std::size_t i) -> const Vec3& { return positions[begin + i]; },
+            [&](std::size_t i) -> const Vec3& { return normals[begin + i]; }, out + begin);
+      });
+    }
+  });
+}
 
 }  // namespace uvtk::param
