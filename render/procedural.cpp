@@ -13,7 +13,7 @@ namespace uvtk::render {
 
 namespace {
 
-constexpr int kCheckerMax = 11585;  // the largest N with N x N <= kMaxTexels
+constexpr int kCheckerMax = 16384;
 constexpr int kCheckerDefaultSquare = 8;
 constexpr int kGridMin = 64, kGridMax = 8192, kGridDefault = 1024;
 constexpr int kCells = 8;  // cells per side of the uv grid
@@ -71,7 +71,7 @@ std::vector<std::string> splitColons(const std::string& text) {
 
 Texture checkerTexture(int n, int c) {
   if (!(1 <= n && n <= kCheckerMax && 1 <= c && c <= kCheckerMax))
-    throw UsageError("checker texture: expected 1 <= N, C <= " + std::to_string(kCheckerMax) + ", got N = " + std::to_string(n) +
+    throw UsageError("checker texture: expected 1 <= N, C <= 16384, got N = " + std::to_string(n) +
                      ", C = " + std::to_string(c));
   checkTextureSize(n, n);  // before allocating: from N = 11586 on, N x N float RGBA exceeds 2 GiB
   TexelLevel base;
@@ -147,8 +147,7 @@ std::optional<Texture> proceduralTexture(const std::string& name) {
     const int n = fields.size() >= 2 ? parseCount(fields[1]) : -1;
     const int c = fields.size() == 3 ? parseCount(fields[2]) : kCheckerDefaultSquare;
     if (fields.size() < 2 || fields.size() > 3 || !(1 <= n && n <= kCheckerMax && 1 <= c && c <= kCheckerMax))
-      throw UsageError("texture '" + name + "': expected checker:N[:C] with 1 <= N, C <= " +
-                       std::to_string(kCheckerMax));
+      throw UsageError("texture '" + name + "': expected checker:N[:C] with 1 <= N, C <= 16384");
     return checkerTexture(n, c);
   }
   if (names(uvgrid)) {

@@ -12,7 +12,7 @@ namespace uvtk::render {
 // checker:N[:C]: N x N texels in squares of C x C texels; the square holding texel (0, 0) (at
 // s = 0, t = 0) is white (1,1,1,1), its neighbours black (0,0,0,1): texel (i, j) is white when
 // (i / C + j / C) is even (integer division); C > N gives one white square. 8-bit. Throws
-// UsageError unless 1 <= N, C <= 11585 (N x N <= kMaxTexels).
+// UsageError unless 1 <= N, C <= 16384 and N x N <= kMaxTexels (N <= 11585).
 Texture checkerTexture(int n, int c);
 
 // uvgrid[:N] (N = 1024 by default, 64 <= N <= 8192): an N x N image of 8 x 8 cells, each a
