@@ -120,6 +120,10 @@ class SampleEvaluator {
   using OutVec2 = decltype(Out::uv);
   using R = typename OutVec2::Scalar;
 
+// The block's scratch is left uninitialised on purpose (it is written per valid sample and read
+// only for those); GCC cannot follow the states and warns.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
   template <class PositionOf, class NormalOf>
   void block(std::size_t n, PositionOf position, NormalOf normal, Out* out) const {
     std::array<Vec3T<T>, kBlock> q;
@@ -153,6 +157,7 @@ class SampleEvaluator {
       if (!out[i].uv.allFinite()) out[i].uv = OutVec2::Zero(), out[i].state = CornerState::Invalid;
     }
   }
+#pragma GCC diagnostic pop
 
   S surface_;
   M mapping_;
