@@ -108,15 +108,17 @@ std::vector<nlohmann::json> benchMapping(const BenchArguments& a, const Mesh& me
   std::vector<MappingCase> cases;
   // One output buffer for every configuration (they run one after another), paged in before timing.
   std::vector<param::VertexUv> buffer(mesh.vertexCount());
+  // Normals once, for the O-mappings that read them (one --omap for every projector).
+  const param::RayKind ray = projectorNamed("plane", a.omap).ray;
+  const std::vector<Vec3> normals = ray == param::RayKind::ObjectNormal || ray == param::RayKind::Reflection
+                                        ? areaWeightedVertexNormals(mesh)
+                                        : std::vector<Vec3>();
   for (const std::string& projector : splitList(a.projectors)) {
     const param::ProjectorOptions base = projectorNamed(projector, a.omap);
     if (base.surface == param::SurfaceKind::Cube)
       throw UsageError(
           "--projector cube: the cube chooses its face per triangle; `uvtk bench` times per-vertex mappings");
     const Affine3 frame = param::fitPlacement(mesh.positions, base.surface, base.placement);
-    const std::vector<Vec3> normals = base.ray == param::RayKind::ObjectNormal || base.ray == param::RayKind::Reflection
-                                          ? areaWeightedVertexNormals(mesh)
-                                          : std::vector<Vec3>();
     std::fprintf(stderr, "uvtk bench: %s: the long-double reference ...\n", projector.c_str());
     std::vector<param::ReferenceUv> reference;
     param::mapVerticesReference(base, frame, mesh.positions, normals, reference);
@@ -133,10 +135,9 @@ std::vector<nlohmann::json> benchMapping(const BenchArguments& a, const Mesh& me
           MappingCase c{options, threads, "map/" + std::to_string(cases.size()), error};
           cases.push_back(c);
           benchmark::RegisterBenchmark(c.name.c_str(),
-                                       [&mesh, &buffer, options, frame, normals, threads](benchmark::State& state) {
+                                       [&mesh, &buffer, &normals, options, frame, threads](benchmark::State& state) {
                                          for (auto _ : state) {
-                                           param::mapVertices(options, frame, mesh.positions, normals, buffer,
-                                                              threads);
+                                           param::mapVertices(options, frame, mesh.positions, normals, buffer, threads);
                                            benchmark::DoNotOptimize(buffer.data());
                                          }
                                        })

@@ -6,28 +6,16 @@
 
 #include "core/gl_matrices.h"
 #include "render/procedural.h"
+#include "render/quad_fixture.h"
 
 namespace uvtk::render {
 namespace {
 
-// A quad p00 + u a + v b, (u, v) in [0, 1]^2, as two counter-clockwise triangles with per-corner
-// texture coordinates (u, v, 0, 1).
-struct Quad {
-  Mesh mesh;
-  TexcoordSource texcoords;
-  Quad(const Vec3& p00, const Vec3& a, const Vec3& b) {
-    mesh.positions = {p00, p00 + a, p00 + a + b, p00 + b};
-    mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
-    const Vec4 uv[4] = {Vec4(0, 0, 0, 1), Vec4(1, 0, 0, 1), Vec4(1, 1, 0, 1), Vec4(0, 1, 0, 1)};
-    for (const Triangle& t : mesh.triangles)
-      for (int v : t) texcoords.corners.push_back(uv[v]);
-  }
-};
-
 Texture rampTexture(int width, int height) {  // every texel a distinct colour
   TexelLevel level{width, height, {}};
   for (int j = 0; j < height; ++j)
-    for (int i = 0; i < width; ++i) level.texels.push_back(Rgba(i / 255.0f, j / 255.0f, float((i + j) % 7) / 255.0f, 1.0f));
+    for (int i = 0; i < width; ++i)
+      level.texels.push_back(Rgba(i / 255.0f, j / 255.0f, float((i + j) % 7) / 255.0f, 1.0f));
   return Texture(level, true);
 }
 
@@ -99,7 +87,8 @@ TEST(Render, TextureCoordinatesArePerspectiveCorrectAtEveryPixel) {
       const int face = int(r.aovs.at(x, row, 3));
       Vec2 p[3], uv[3];
       for (int k = 0; k < 3; ++k) {
-        const Vec4 c = clipFromWorld * s.quad.mesh.positions[std::size_t(s.quad.mesh.triangles[std::size_t(face)][k])].homogeneous();
+        const Vec4 c = clipFromWorld *
+                       s.quad.mesh.positions[std::size_t(s.quad.mesh.triangles[std::size_t(face)][k])].homogeneous();
         p[k] = Vec2((c.x() / c.w() + 1) * 0.5 * s.size, (c.y() / c.w() + 1) * 0.5 * s.size);
         uv[k] = s.quad.texcoords.corners[std::size_t(3 * face + k)].head<2>();
       }
@@ -167,10 +156,11 @@ TEST(Render, AnExactPixelMappingOfALinearMapEqualsPerVertexInterpolation) {
   const Texture texture = checkerTexture(64, 8);
   TexcoordSource exact;
   const Vec3 a = s.a, b = s.b, origin = s.origin;
-  exact.pixelMapping = PixelMapping{[a, b, origin](const Vec3& p, const Vec3&, std::int32_t) {
-                                      return Vec4((p - origin).dot(a) / a.squaredNorm(), (p - origin).dot(b) / b.squaredNorm(), 0, 1);
-                                    },
-                                    false, false};
+  exact.pixelMapping =
+      PixelMapping{[a, b, origin](const Vec3& p, const Vec3&, std::int32_t) {
+                     return Vec4((p - origin).dot(a) / a.squaredNorm(), (p - origin).dot(b) / b.squaredNorm(), 0, 1);
+                   },
+                   false, false};
   const Rendering perVertex = render(s.quad.mesh, s.quad.texcoords, s.options(texture));
   const Rendering perPixel = render(s.quad.mesh, exact, s.options(texture));
   for (std::size_t i = 0; i < perVertex.aovs.pixels.size(); i += 5) {
@@ -196,7 +186,7 @@ TEST(Render, TheImageDoesNotDependOnTheThreadCount) {
 
 TEST(Render, TheBackgroundFillsUncoveredPixelsAndTheAovsMarkThem) {
   const Quad quad(Vec3(-0.5, -0.5, 0), Vec3(1, 0, 0), Vec3(0, 1, 0));  // the middle half of the view
-  const Texture texture = checkerTexture(8, 8);  // all white
+  const Texture texture = checkerTexture(8, 8);                        // all white
   RenderOptions o;
   o.camera.width = o.camera.height = 8;
   o.camera.clipFromView = orthographic(-1, 1, -1, 1, -1, 1);

@@ -176,27 +176,6 @@ TEST(TexgenFloat, EyeLinearEqualsObjectLinearUnderIdentityModelview) {
   EXPECT_GT(differsFromDouble, a.uv.uv.size() / 2);  // the float path was taken
 }
 
-TEST(TexgenFloat, SphereMapSingularCaseIsFlagged) {
-  TexgenOptions o = inFloat(withModes(TexgenMode::SphereMap, TexgenMode::SphereMap));
-  bool singular = false;
-  // u = (0,0,-1), n = (1,0,0): r = (0,0,-1) exactly in float too, m = 0.
-  EXPECT_EQ(texgenAt(Vec3(0, 0, -5), Vec3(1, 0, 0), o, &singular), Vec4(0.5, 0.5, 0, 1));
-  EXPECT_TRUE(singular);
-  texgenAt(Vec3(0, 0, -5), Vec3(0, 0, 1), o, &singular);
-  EXPECT_FALSE(singular);
-
-  Mesh mesh;  // in the plane x = 0, normal (-1,0,0): the corners on the view axis reflect to (0,0,-1)
-  mesh.positions = {Vec3(0, 0, -5), Vec3(0, 1, -5), Vec3(0, 0, -6)};
-  mesh.triangles = {{0, 1, 2}};
-  const TexgenResult r = generateTexcoords(mesh, o);
-  EXPECT_EQ(r.sphereMapSingular, 2u);
-  EXPECT_TRUE(r.uv.faceHas(0, kFaceSphereMapSingular));
-  EXPECT_EQ(r.uv.uv[0], Vec2(0.5, 0.5));
-  EXPECT_EQ(r.uv.uv[2], Vec2(0.5, 0.5));
-  EXPECT_TRUE(r.uv.uv.at(1).allFinite());
-  EXPECT_EQ(r.invalidCorners, 0u);
-}
-
 TEST(TexgenFloat, OverflowToInfinityIsAnInvalidCornerWrittenAsZero) {
   Mesh mesh;
   mesh.positions = {Vec3(1e10, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};

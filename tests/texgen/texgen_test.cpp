@@ -71,7 +71,7 @@ TEST(TexgenDefaults, GlInitialStateIsEveryCoordinateOffWithPlanesSAndT) {
 
 TEST(ObjectLinear, EvaluatesTheUnnormalisedPlaneOnObjectCoordinates) {
   TexgenOptions o = withModes(TexgenMode::ObjectLinear, TexgenMode::ObjectLinear);
-  o.coordinates[0].plane = Vec4(2, -3, 0.5, 4);  // 2 - 6 + 1.5 + 4 at (1, 2, 3)
+  o.coordinates[0].plane = Vec4(2, -3, 0.5, 4);               // 2 - 6 + 1.5 + 4 at (1, 2, 3)
   o.modelviewAtDraw = quarterTurnZ() * translation(7, 8, 9);  // ignored by object linear
   const Vec4 g = texgenAt(Vec3(1, 2, 3), Vec3::UnitZ(), o);
   EXPECT_EQ(g, Vec4(1.5, 2.0, 0.0, 1.0));  // t: default plane (0,1,0,0); r, q off
@@ -89,7 +89,8 @@ TEST(EyeLinear, TransformsThePlaneByTheInverseOfTheModelviewAtPlaneTime) {
 
 TEST(EyeLinear, EqualsObjectLinearWhenViewAndModelAreIdentity) {
   const Mesh mesh = meshes::icosphere(2);
-  TexgenOptions eye = withModes(TexgenMode::EyeLinear, TexgenMode::EyeLinear, TexgenMode::EyeLinear, TexgenMode::EyeLinear);
+  TexgenOptions eye =
+      withModes(TexgenMode::EyeLinear, TexgenMode::EyeLinear, TexgenMode::EyeLinear, TexgenMode::EyeLinear);
   const Vec4 planes[4] = {{0.3, -2, 5, 1}, {1, 1, 1, -0.5}, {0, 0, 7, 2}, {0.1, 0.2, 0.3, 4}};
   for (int i = 0; i < 4; ++i) eye.coordinates[i].plane = planes[i];
   TexgenOptions object = eye;
@@ -157,35 +158,43 @@ TEST(SphereMap, MatchesHandWorkedEyePositionsAndNormals) {
   EXPECT_TRUE(isNear(texgenAt(Vec3(0, 0, -5), Vec3(0, 0, 1), o), Vec4(0.5, 0.5, 0, 1), kTight));
   // n = (1,0,1)/sqrt2: r = (1,0,0), m = 2 sqrt2, s = 1/(2 sqrt2) + 1/2.
   EXPECT_TRUE(isNear(texgenAt(Vec3(0, 0, -5), Vec3(1, 0, 1) / std::sqrt(2.0), o),
-             Vec4(0.5 + 1.0 / (2.0 * std::sqrt(2.0)), 0.5, 0, 1), kTight));
+                     Vec4(0.5 + 1.0 / (2.0 * std::sqrt(2.0)), 0.5, 0, 1), kTight));
   // u = (0.6, 0, -0.8), n = (0,0,1): r = (0.6, 0, 0.8), m = 2 sqrt(3.6), s = 1/2 + 1/sqrt(40).
   EXPECT_TRUE(isNear(texgenAt(Vec3(3, 0, -4), Vec3(0, 0, 1), o), Vec4(0.5 + 1.0 / std::sqrt(40.0), 0.5, 0, 1), kTight));
   // u = (0, 0.8, -0.6), n = (0,1,0): r = (0, -0.8, -0.6), m = 2 sqrt(0.8), t = 1/2 - sqrt(0.8)/2.
   EXPECT_TRUE(isNear(texgenAt(Vec3(0, 4, -3), Vec3(0, 1, 0), o), Vec4(0.5, 0.5 - std::sqrt(0.8) / 2.0, 0, 1), kTight));
 }
 
+// In both precisions: r = (0,0,-1) is exact in float too.
 TEST(SphereMap, ReflectionStraightAwayGivesOneHalfAndReportsTheSingularity) {
-  const TexgenOptions o = withModes(TexgenMode::SphereMap, TexgenMode::SphereMap);
-  bool singular = false;
-  // n perpendicular to u = (0,0,-1): r = (0,0,-1), m = 0.
-  const Vec4 g = texgenAt(Vec3(0, 0, -5), Vec3(1, 0, 0), o, &singular);
-  EXPECT_EQ(g, Vec4(0.5, 0.5, 0, 1));
-  EXPECT_TRUE(singular);
-  texgenAt(Vec3(0, 0, -5), Vec3(0, 0, 1), o, &singular);
-  EXPECT_FALSE(singular);
+  for (Precision precision : {Precision::Double, Precision::Float}) {
+    TexgenOptions o = withModes(TexgenMode::SphereMap, TexgenMode::SphereMap);
+    o.precision = precision;
+    bool singular = false;
+    // n perpendicular to u = (0,0,-1): r = (0,0,-1), m = 0.
+    const Vec4 g = texgenAt(Vec3(0, 0, -5), Vec3(1, 0, 0), o, &singular);
+    EXPECT_EQ(g, Vec4(0.5, 0.5, 0, 1));
+    EXPECT_TRUE(singular);
+    texgenAt(Vec3(0, 0, -5), Vec3(0, 0, 1), o, &singular);
+    EXPECT_FALSE(singular);
+  }
 }
 
 TEST(SphereMap, FlagsFacesAndCountsCornersWhereMIsZero) {
   Mesh mesh;  // in the plane x = 0, normal (-1,0,0): the corners on the view axis reflect to (0,0,-1)
   mesh.positions = {Vec3(0, 0, -5), Vec3(0, 1, -5), Vec3(0, 0, -6)};
   mesh.triangles = {{0, 1, 2}};
-  const TexgenResult r = generateTexcoords(mesh, withModes(TexgenMode::SphereMap, TexgenMode::SphereMap));
-  EXPECT_EQ(r.sphereMapSingular, 2u);
-  EXPECT_TRUE(r.uv.faceHas(0, kFaceSphereMapSingular));
-  EXPECT_EQ(r.uv.uv[0], Vec2(0.5, 0.5));
-  EXPECT_EQ(r.uv.uv[2], Vec2(0.5, 0.5));
-  EXPECT_TRUE(r.uv.uv.at(1).allFinite());
-  EXPECT_EQ(r.invalidCorners, 0u);
+  for (Precision precision : {Precision::Double, Precision::Float}) {
+    TexgenOptions o = withModes(TexgenMode::SphereMap, TexgenMode::SphereMap);
+    o.precision = precision;
+    const TexgenResult r = generateTexcoords(mesh, o);
+    EXPECT_EQ(r.sphereMapSingular, 2u);
+    EXPECT_TRUE(r.uv.faceHas(0, kFaceSphereMapSingular));
+    EXPECT_EQ(r.uv.uv[0], Vec2(0.5, 0.5));
+    EXPECT_EQ(r.uv.uv[2], Vec2(0.5, 0.5));
+    EXPECT_TRUE(r.uv.uv.at(1).allFinite());
+    EXPECT_EQ(r.invalidCorners, 0u);
+  }
 }
 
 TEST(NormalMap, GivesTheEyeNormal) {
@@ -263,8 +272,8 @@ TEST(TwoPlaneProjector, EqualsObjectLinearWithNormalisedPlanes) {
 TEST(Extremes, TinyAndHugePlaneCoefficientsGiveFiniteValues) {
   const Mesh mesh = meshes::icosphere(1);
   for (double scale : {1e-30, 1e30}) {
-    TexgenOptions o = withModes(TexgenMode::ObjectLinear, TexgenMode::EyeLinear, TexgenMode::ObjectLinear,
-                                TexgenMode::EyeLinear);
+    TexgenOptions o =
+        withModes(TexgenMode::ObjectLinear, TexgenMode::EyeLinear, TexgenMode::ObjectLinear, TexgenMode::EyeLinear);
     for (auto& c : o.coordinates) c.plane = scale * Vec4(1, -2, 3, 0.5);
     o.modelviewAtPlanes = lookAt(Vec3(1, 2, 3), Vec3::Zero(), Vec3::UnitY());
     const TexgenResult r = generateTexcoords(mesh, o);
@@ -297,8 +306,8 @@ TEST(Extremes, AModelviewWithConditionNumberOneE12StillGivesFiniteValues) {
   const Mat4 illConditioned = rotationX(0.7) * scaling(1e6, 1.0, 1e-6) * rotationX(-0.3);
   const Eigen::JacobiSVD<Mat3> svd(illConditioned.topLeftCorner<3, 3>());
   EXPECT_NEAR(svd.singularValues()[0] / svd.singularValues()[2], 1e12, 1e-2 * 1e12);
-  for (TexgenMode mode : {TexgenMode::EyeLinear, TexgenMode::SphereMap, TexgenMode::NormalMap,
-                          TexgenMode::ReflectionMap}) {
+  for (TexgenMode mode :
+       {TexgenMode::EyeLinear, TexgenMode::SphereMap, TexgenMode::NormalMap, TexgenMode::ReflectionMap}) {
     for (bool normalize : {true, false}) {
       TexgenOptions o = withModes(mode, mode);
       o.modelviewAtPlanes = illConditioned;
@@ -325,20 +334,18 @@ TEST(Extremes, ASingularModelviewIsAUsageErrorWhereItsInverseIsNeeded) {
 }
 
 TEST(Modes, SphereMapOnROrQAndNormalOrReflectionOnQAreUsageErrors) {
-  EXPECT_THROW(texgenAt(Vec3::Zero(), Vec3::UnitZ(), withModes(TexgenMode::Off, TexgenMode::Off, TexgenMode::SphereMap)),
+  EXPECT_THROW(
+      texgenAt(Vec3::Zero(), Vec3::UnitZ(), withModes(TexgenMode::Off, TexgenMode::Off, TexgenMode::SphereMap)),
+      UsageError);
+  EXPECT_THROW(texgenAt(Vec3::Zero(), Vec3::UnitZ(),
+                        withModes(TexgenMode::Off, TexgenMode::Off, TexgenMode::Off, TexgenMode::SphereMap)),
                UsageError);
-  EXPECT_THROW(
-      texgenAt(Vec3::Zero(), Vec3::UnitZ(),
-               withModes(TexgenMode::Off, TexgenMode::Off, TexgenMode::Off, TexgenMode::SphereMap)),
-      UsageError);
-  EXPECT_THROW(
-      texgenAt(Vec3::Zero(), Vec3::UnitZ(),
-               withModes(TexgenMode::Off, TexgenMode::Off, TexgenMode::Off, TexgenMode::NormalMap)),
-      UsageError);
-  EXPECT_THROW(
-      texgenAt(Vec3::Zero(), Vec3::UnitZ(),
-               withModes(TexgenMode::Off, TexgenMode::Off, TexgenMode::Off, TexgenMode::ReflectionMap)),
-      UsageError);
+  EXPECT_THROW(texgenAt(Vec3::Zero(), Vec3::UnitZ(),
+                        withModes(TexgenMode::Off, TexgenMode::Off, TexgenMode::Off, TexgenMode::NormalMap)),
+               UsageError);
+  EXPECT_THROW(texgenAt(Vec3::Zero(), Vec3::UnitZ(),
+                        withModes(TexgenMode::Off, TexgenMode::Off, TexgenMode::Off, TexgenMode::ReflectionMap)),
+               UsageError);
   EXPECT_NO_THROW(texgenAt(Vec3(0, 0, -1), Vec3::UnitZ(),
                            withModes(TexgenMode::NormalMap, TexgenMode::ReflectionMap, TexgenMode::ReflectionMap)));
 }
