@@ -12,6 +12,8 @@
 // - Numbers are decimal (no hex floats); a leading '+' is accepted, as strtod does. A value too
 //   small to represent becomes 0; one too large is "not finite", like nan and inf.
 // - Counts and indices must fit an int: triangles store int indices.
+// readMesh shows its progress over the file's bytes (core/progress.h), reported every few
+// thousand lines so that the count costs nothing per line but an addition.
 #include "io/mesh_reader.h"
 
 #include <algorithm>
@@ -26,6 +28,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "core/progress.h"
 
 namespace uvtk::io {
 namespace {
@@ -36,6 +39,8 @@ constexpr std::size_t kMaxReserve = std::size_t{1} << 20;
 // Tokens quoted in messages are cut to this length, so a megabyte of junk makes a readable error.
 constexpr std::size_t kMaxQuoted = 40;
 constexpr Triangle kNoCorners = {-1, -1, -1};
+// Lines read between two progress reports (a power of two).
+constexpr std::size_t kLinesPerReport = 4096;
 
 std::string quote(std::string_view token) {
   if (token.size() > kMaxQuoted) return "'" + std::string(token.substr(0, kMaxQuoted)) + "...'";
@@ -108,10 +113,12 @@ bool parseInteger(std::string_view token, long long& value) {
 }
 
 // Reads a stream line by line and hands out the whitespace-separated tokens of the current line.
-// It knows the file name and line number, so the errors about the input are raised here.
+// It knows the file name and line number, so the errors about the input are raised here. With a
+// Progress it reports the bytes read (the line ending counted as one).
 class LineReader {
  public:
-  LineReader(std::istream& in, const std::string& name) : in_(in), name_(name) {}
+  LineReader(std::istream& in, const std::string& name, Progress* progress = nullptr)
+      : in_(in), name_(name), progress_(progress) {}
 
   // Advances to the next line, with its line ending and comment removed. False at end of file.
   bool nextLine() {
@@ -120,6 +127,11 @@ class LineReader {
       return false;
     }
     ++lineNumber_;
+    unreportedBytes_ += line_.size() + 1;
+    if (progress_ && lineNumber_ % kLinesPerReport == 0) {
+      progress_->advance(unreportedBytes_);
+      unreportedBytes_ = 0;
+    }
     std::size_t begin = 0;
     std::size_t end = line_.size();
     if (lineNumber_ == 1) {
@@ -228,6 +240,8 @@ class LineReader {
   const std::string& name_;
   std::string line_;
   std::size_t lineNumber_ = 0;
+  Progress* progress_;
+  std::uint64_t unreportedBytes_ = 0;
   const char* position_ = nullptr;
   const char* end_ = nullptr;
 };
@@ -421,14 +435,11 @@ void readOffFace(LineReader& reader, std::vector<int>& corners, Mesh& mesh) {
     mesh.triangles.push_back({corners[0], corners[i], corners[i + 1]});
 }
 
-}  // namespace
-
 // OBJ: `v x y z [w]` (w, a rational weight, means nothing for a polygon mesh: checked as a
 // number, then ignored); `vt u [v [w]]`; `vn x y z`; `f` with corners v, v/vt, v//vn or v/vt/vn,
 // one form per face. A line ending in '\' (a continuation, which few writers emit) is an error
 // rather than joined, so every message names one physical line.
-ReadMeshResult readObj(std::istream& in, const std::string& name) {
-  LineReader reader(in, name);
+ReadMeshResult readObjLines(LineReader& reader) {
   Mesh mesh;
   std::vector<ObjCorner> corners;  // reused by every face
   while (reader.nextLine()) {
@@ -465,8 +476,7 @@ ReadMeshResult readObj(std::istream& in, const std::string& name) {
 // `nv nf ne`, else the counts on the next line; nv vertex lines; nf face lines
 // `n i0 .. i(n-1) [colour]` with 0-based indices and up to four colour values; then only blank
 // and comment lines. Blank and comment lines may appear anywhere.
-ReadMeshResult readOff(std::istream& in, const std::string& name) {
-  LineReader reader(in, name);
+ReadMeshResult readOffLines(LineReader& reader) {
   const std::string kHeaders = "OFF, NOFF or COFF header";
   if (!reader.nextContentLine()) reader.failAtEndOfFile(kHeaders);
   OffLayout layout;
@@ -499,6 +509,18 @@ ReadMeshResult readOff(std::istream& in, const std::string& name) {
   return withWarnings(std::move(mesh));
 }
 
+}  // namespace
+
+ReadMeshResult readObj(std::istream& in, const std::string& name) {
+  LineReader reader(in, name);
+  return readObjLines(reader);
+}
+
+ReadMeshResult readOff(std::istream& in, const std::string& name) {
+  LineReader reader(in, name);
+  return readOffLines(reader);
+}
+
 ReadMeshResult readMesh(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
@@ -517,7 +539,10 @@ ReadMeshResult readMesh(const std::string& path) {
     const int error = errno;
     throw inputError(path, 0, "cannot open: " + (error ? std::generic_category().message(error) : "unknown error"));
   }
-  return obj ? readObj(in, path) : readOff(in, path);
+  const std::uintmax_t size = std::filesystem::file_size(path, ignored);
+  Progress progress("reading " + path, size == std::uintmax_t(-1) ? 0 : size, "MB", 1'000'000);
+  LineReader reader(in, path, &progress);
+  return obj ? readObjLines(reader) : readOffLines(reader);
 }
 
 }  // namespace uvtk::io

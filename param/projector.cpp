@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "core/error.h"
+#include "core/progress.h"
 #include "param/sample_evaluator.h"
 #include "param/seams.h"
 
@@ -27,6 +28,10 @@ Vec2 UvTransform::apply(const Vec2& uv) const {
 
 namespace {
 
+// Progress is reported per this many samples (whole blocks of the evaluator) or faces: a cost
+// nobody can measure, often enough for a bar.
+constexpr std::size_t kSamplesPerReport = std::size_t{1} << 16;
+
 // Evaluates a sample at an object-space point and normal (the seam cut's new vertices).
 using PointEvaluator = std::function<VertexUv(const Vec3& position, const Vec3& normal)>;
 
@@ -41,7 +46,9 @@ void evaluateCube(const CubeSurfaceT<T>& surface, const M& mapping, const Mesh& 
                   const std::vector<Vec3>& normals, bool perCorner, CornerField& c) {
   const std::size_t faceCount = mesh.triangles.size();
   c.w.resize(3 * faceCount);
+  Progress progress("mapping", faceCount, "faces");
   for (std::size_t f = 0; f < faceCount; ++f) {
+    if (f != 0 && f % kSamplesPerReport == 0) progress.advance(kSamplesPerReport);
     const Triangle& t = mesh.triangles[f];
     ProbeT<T> probes[3];
     ProbeT<T> mean{};
@@ -94,15 +101,20 @@ Evaluated evaluateCorners(const S& surface, const M& mapping, const Mesh& mesh, 
     result.evaluateAt = [evaluate](const Vec3& position, const Vec3& normal) { return evaluate.at(position, normal); };
     const auto& triangles = mesh.triangles;
     std::vector<VertexUv> samples(perCorner ? 3 * faceCount : mesh.positions.size());
-    if (perCorner) {
-      evaluate(
-          samples.size(), [&](std::size_t i) -> const Vec3& { return mesh.positions[triangles[i / 3][i % 3]]; },
-          [&](std::size_t i) -> const Vec3& { return normals[i]; }, samples.data());
-    } else {
-      evaluate(
-          samples.size(), [&](std::size_t i) -> const Vec3& { return mesh.positions[i]; },
-          [&](std::size_t i) -> const Vec3& { return normals[i]; }, samples.data());
-    }
+    Progress progress("mapping", samples.size(), perCorner ? "corners" : "vertices");
+    const auto evaluateAll = [&](auto positionOf) {
+      for (std::size_t start = 0; start < samples.size(); start += kSamplesPerReport) {
+        const std::size_t count = std::min(kSamplesPerReport, samples.size() - start);
+        evaluate(
+            count, [&](std::size_t i) -> const Vec3& { return positionOf(start + i); },
+            [&](std::size_t i) -> const Vec3& { return normals[start + i]; }, samples.data() + start);
+        progress.advance(count);
+      }
+    };
+    if (perCorner)
+      evaluateAll([&](std::size_t i) -> const Vec3& { return mesh.positions[triangles[i / 3][i % 3]]; });
+    else
+      evaluateAll([&](std::size_t i) -> const Vec3& { return mesh.positions[i]; });
     // Spread the samples over the corners and mark invalid and pole faces on the way.
     for (std::size_t f = 0; f < faceCount; ++f) {
       const VertexUv* s[3];

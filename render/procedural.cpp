@@ -28,12 +28,18 @@ std::array<double, 3> hsvToRgb(double hue, double saturation) {
   const double f = h - std::floor(h);
   const double p = 1.0 - saturation, q = 1.0 - saturation * f, t = 1.0 - saturation * (1.0 - f);
   switch (sector) {
-    case 0: return {1.0, t, p};
-    case 1: return {q, 1.0, p};
-    case 2: return {p, 1.0, t};
-    case 3: return {p, q, 1.0};
-    case 4: return {t, p, 1.0};
-    default: return {1.0, p, q};
+    case 0:
+      return {1.0, t, p};
+    case 1:
+      return {q, 1.0, p};
+    case 2:
+      return {p, 1.0, t};
+    case 3:
+      return {p, q, 1.0};
+    case 4:
+      return {t, p, 1.0};
+    default:
+      return {1.0, p, q};
   }
 }
 
@@ -138,26 +144,47 @@ Image uvGridImage(int n) {
   return image;
 }
 
-std::optional<Texture> proceduralTexture(const std::string& name) {
-  const std::string checker = "checker", uvgrid = "uvgrid";
-  // A name is procedural when it is the bare word or the word and a colon: "checker.png" is a file.
-  const auto names = [&](const std::string& word) { return name == word || name.compare(0, word.size() + 1, word + ":") == 0; };
-  if (names(checker)) {
+namespace {
+
+// A procedural texture's name parsed: checker:N[:C] or uvgrid[:N].
+struct ProceduralName {
+  bool checker = true;
+  int n = 0, c = 0;
+};
+
+// A name is procedural when it is the bare word or the word and a colon: "checker.png" is a file.
+bool names(const std::string& name, const std::string& word) {
+  return name == word || name.compare(0, word.size() + 1, word + ":") == 0;
+}
+
+std::optional<ProceduralName> parseProceduralName(const std::string& name) {
+  if (names(name, "checker")) {
     const std::vector<std::string> fields = splitColons(name);
     const int n = fields.size() >= 2 ? parseCount(fields[1]) : -1;
     const int c = fields.size() == 3 ? parseCount(fields[2]) : kCheckerDefaultSquare;
     if (fields.size() < 2 || fields.size() > 3 || !(1 <= n && n <= kCheckerMax && 1 <= c && c <= kCheckerMax))
       throw UsageError("texture '" + name + "': expected checker:N[:C] with 1 <= N, C <= 16384");
-    return checkerTexture(n, c);
+    return ProceduralName{true, n, c};
   }
-  if (names(uvgrid)) {
+  if (names(name, "uvgrid")) {
     const std::vector<std::string> fields = splitColons(name);
     const int n = fields.size() == 2 ? parseCount(fields[1]) : kGridDefault;
     if (fields.size() > 2 || !(kGridMin <= n && n <= kGridMax))
       throw UsageError("texture '" + name + "': expected uvgrid[:N] with 64 <= N <= 8192");
-    return Texture::fromImage(uvGridImage(n), true);
+    return ProceduralName{false, n, 0};
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+bool isProceduralName(const std::string& name) { return parseProceduralName(name).has_value(); }
+
+std::optional<Texture> proceduralTexture(const std::string& name) {
+  const std::optional<ProceduralName> parsed = parseProceduralName(name);
+  if (!parsed) return std::nullopt;
+  if (parsed->checker) return checkerTexture(parsed->n, parsed->c);
+  return Texture::fromImage(uvGridImage(parsed->n), true);
 }
 
 }  // namespace uvtk::render

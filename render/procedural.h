@@ -22,6 +22,10 @@ Texture checkerTexture(int n, int c);
 // The image's top row is at v = 1. 8-bit.
 Image uvGridImage(int n);
 
+// Whether `name` denotes a procedural texture ("checker", "uvgrid", or either with a colon), not a
+// file; throws UsageError, as proceduralTexture does, when such a name is malformed.
+bool isProceduralName(const std::string& name);
+
 // The texture a name denotes when it is procedural ("checker:N[:C]", "uvgrid[:N]"), else
 // nullopt (the name is then a file, even "checker.png"). Throws UsageError for a malformed procedural name.
 std::optional<Texture> proceduralTexture(const std::string& name);

@@ -4,9 +4,11 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "core/error.h"
 #include "core/parallel.h"
+#include "core/progress.h"
 
 namespace uvtk::render {
 
@@ -311,6 +313,8 @@ VisibilityBuffer rasterize(const std::vector<Vec4>& clip, const std::vector<Tria
     for (std::int64_t f = begin; f < end; ++f) setup.triangle(clip, triangles[std::size_t(f)], std::int32_t(f), chunk);
   });
 
+  Progress progress("rasterizing " + std::to_string(width) + "x" + std::to_string(height), std::uint64_t(tileCount),
+                    "tiles");
   parallelFor(tileCount, threads, [&](int tile) {
     const int tx = tile % tilesX, ty = tile / tilesX;
     const int x0 = tx * kTileSize, x1 = std::min(width, x0 + kTileSize) - 1;
@@ -318,6 +322,7 @@ VisibilityBuffer rasterize(const std::vector<Vec4>& clip, const std::vector<Tria
     for (const Binned& chunk : chunks)
       for (std::uint32_t index : chunk.tiles[std::size_t(tile)])
         drawInTile(chunk.triangles[index], x0, x1, y0, y1, buffer);
+    progress.advance();
   });
 
   if (stats) {

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/parallel.h"
+#include "core/progress.h"
 
 namespace uvtk::render {
 
@@ -173,9 +174,11 @@ Rendering renderFrame(const Mesh& mesh, const TexcoordSource& source, const Rend
   }
   const int bands = (height + kRowsPerBand - 1) / kRowsPerBand;
   std::vector<std::size_t> covered(std::size_t(bands), 0);
+  Progress progress("rendering " + std::to_string(width) + "x" + std::to_string(height), std::uint64_t(height), "rows");
   parallelFor(bands, o.raster.threads, [&](int band) {
     Shader shader(frame);
-    for (int row = band * kRowsPerBand; row < std::min(height, (band + 1) * kRowsPerBand); ++row)
+    const int end = std::min(height, (band + 1) * kRowsPerBand);
+    for (int row = band * kRowsPerBand; row < end; ++row)
       for (int x = 0; x < width; ++x) {
         const std::size_t i = visible.index(x, row);
         const std::int32_t face = visible.face[i];
@@ -193,6 +196,7 @@ Rendering renderFrame(const Mesh& mesh, const TexcoordSource& source, const Rend
         }
         for (int c = 0; c < 3; ++c) out.colour.at(x, row, c) = float(rgb[c]);
       }
+    progress.advance(std::uint64_t(end - band * kRowsPerBand));
   });
   for (std::size_t n : covered) out.coveredPixels += n;
   out.shadeMs = millisecondsSince(shadeStart);

@@ -1,325 +1,45 @@
 // `uvtk compare`: every projector x O-mapping x placement fit on one mesh, ranked by a measure,
 // with CGAL's LSCM and ARAP as non-projector baselines where the mesh is (or can be cut into) a
 // topological disk; a Markdown table, a JSON record and a contact sheet of the best ones.
-#include <algorithm>
 #include <cstdio>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <string>
 
-#include "analysis/distortion.h"
-#include "analysis/summary.h"
-#include "cli_values.h"
 #include "commands.h"
-#include "core/error.h"
-#include "io/atomic_file.h"
-#include "io/image_io.h"
+#include "compare_cli.h"
 #include "io/mesh_reader.h"
-#include "mapped_mesh.h"
-#include "measures_json.h"
-#include "param/baseline.h"
-#include "projector_cli.h"
-#include "render/camera.h"
 #include "run_report.h"
-#include "views/views.h"
 
 namespace uvtk::cli {
 
 namespace {
 
-enum class RankBy { StretchL2, StretchLinf, Angle, SeamLength };
-
-struct CompareArguments {
-  std::string input, json, markdown, sheet;
-  RankBy by = RankBy::StretchL2;
-  int top = 8, tileSize = 256, overlapResolution = 512, baselineMaxFaces = 200000, threads = 0;
-  bool seamPlaceAuto = false, baselines = true;
-  ViewCamera camera;
+struct CompareCommandArguments {
+  std::string input;
+  CompareArguments compare;
 };
 
-// One ranked candidate: a projector configuration or a baseline, with its measures.
-struct Candidate {
-  std::string name;
-  MappedMesh mapped;
-  MappedMesh::Measures measures;
-  double problemArea = 0.0;  // fraction of the 3D area on flipped, backfacing, zero-UV-area or invalid faces
-  double key = 0.0;          // the ranking measure
-
-  bool usable = false;  // problemArea and the overlap fraction at most kTolerated
-  nlohmann::json record;
-
-  const analysis::Summary& summary() const { return measures.summary; }
-  // How much of the mapping is wrong: the problem area plus the overlap fraction.
-  double badness() const { return problemArea + summary().overlap.fraction(); }
-};
-
-// A candidate is usable when at most this fraction of its area is mapped wrongly or overlapped.
-constexpr double kTolerated = 0.01;
-
-double rankKey(const analysis::Summary& s, RankBy by) {
-  switch (by) {
-    case RankBy::StretchL2:
-      return s.l2Stretch;
-    case RankBy::StretchLinf:
-      return s.linfStretch;
-    case RankBy::Angle:
-      return s.angleDistortion.mean;
-    case RankBy::SeamLength:
-      return s.seams.length();
-  }
-  return 0.0;
-}
-
-Candidate measure(std::string name, MappedMesh mapped, const CompareArguments& a) {
-  Candidate c;
-  c.name = std::move(name);
-  c.mapped = std::move(mapped);
-  c.measures = c.mapped.measure(a.overlapResolution);
-  double total = 0.0, problem = 0.0;
-  for (const analysis::FaceDistortion& face : c.measures.faces) {
-    total += face.area3d;
-    using analysis::FaceStatus;
-    if (face.status != FaceStatus::Ok && face.status != FaceStatus::PoleFace && face.status != FaceStatus::ZeroArea3d)
-      problem += face.area3d;
-  }
-  c.problemArea = total > 0.0 ? problem / total : 0.0;
-  c.key = rankKey(c.summary(), a.by);
-
-  c.usable = c.problemArea <= kTolerated && c.summary().overlap.fraction() <= kTolerated && c.summary().l2Stretch > 0.0;
-  c.record = measuresJson(c.mapped, c.summary());
-  c.record["name"] = c.name;
-  c.record["problem_area_fraction"] = c.problemArea;
-  c.record["usable"] = c.usable;
-  if (c.mapped.projector) c.record["options"] = projectorOptionsJson(*c.mapped.projector);
-  if (c.mapped.seamPlacement) c.record["seam_placement"] = seamPlacementJson(*c.mapped.seamPlacement);
-  return c;
-}
-
-// Usable candidates first, by the measure, then by seam length; the others by their problem area
-// plus their overlap fraction.
-bool ranksBefore(const Candidate& x, const Candidate& y) {
-  if (x.usable != y.usable) return x.usable;
-  if (!x.usable) {
-    return x.badness() < y.badness() || (x.badness() == y.badness() && x.key < y.key);
-  }
-  return x.key < y.key || (x.key == y.key && x.summary().seams.length() < y.summary().seams.length());
-}
-
-// The projector configurations compare runs: every surface x O-mapping (the reflection needs an
-// eye, which compare does not have) x fit (bbox about each axis, PCA, oriented box; the two-plane
-// projector works in object space, so one fit). The cube is laid out as a cross, so that its faces
-// do not overlap in UV.
-std::vector<std::pair<std::string, param::ProjectorOptions>> configurations(const Mesh& mesh) {
-  using namespace param;
-  const std::pair<const char*, SurfaceKind> surfaces[] = {{"plane", SurfaceKind::Plane},
-                                                          {"two-plane", SurfaceKind::TwoPlane},
-                                                          {"cylinder", SurfaceKind::Cylinder},
-                                                          {"sphere", SurfaceKind::Sphere},
-                                                          {"cube", SurfaceKind::Cube}};
-  const std::pair<const char*, RayKind> rays[] = {
-      {"isn", RayKind::SurfaceNormal}, {"centroid", RayKind::Centroid}, {"normal", RayKind::ObjectNormal}};
-  const auto fitted = [&mesh](Fit fit, int axis) {
-    PlacementOptions placement;
-    placement.fit = fit;
-    placement.axis = axis;
-    if (fit == Fit::Pca && !mesh.positions.empty()) placement.spreadAxes = principalAxes(mesh.positions);
-    if (fit == Fit::Obb && !mesh.positions.empty()) placement.spreadAxes = orientedBoxAxes(mesh.positions);
-    return placement;
-  };
-  // The spread axes are fitted once for all the surfaces and O-mappings.
-  const std::pair<const char*, PlacementOptions> fits[] = {{"bbox-x", fitted(Fit::BBox, 0)},
-                                                           {"bbox-y", fitted(Fit::BBox, 1)},
-                                                           {"bbox-z", fitted(Fit::BBox, 2)},
-                                                           {"pca", fitted(Fit::Pca, 2)},
-                                                           {"obb", fitted(Fit::Obb, 2)}};
-  std::vector<std::pair<std::string, ProjectorOptions>> out;
-  for (const auto& [surfaceName, surface] : surfaces)
-    for (const auto& [rayName, ray] : rays)
-      for (const auto& [fitName, fit] : fits) {
-        if (surface == SurfaceKind::TwoPlane && fitName != std::string("bbox-z")) continue;
-        ProjectorOptions o;
-        o.surface = surface;
-        o.ray = ray;
-        o.placement = fit;
-        o.cubeLayout = CubeLayout::Cross;
-        const std::string fitLabel = surface == SurfaceKind::TwoPlane ? "object" : fitName;
-        out.emplace_back(std::string(surfaceName) + "/" + rayName + "/" + fitLabel, o);
-      }
-  return out;
-}
-
-// LSCM and ARAP of the mesh if it is a disk, else of the mesh cut open along the UV seams of the
-// best-ranked usable projector whose seams cut it into a disk (a sphere's or a cylinder's seam
-// opens a closed mesh into one piece; a cube's cuts it into six); skipped records say why not.
-void addBaselines(const Mesh& mesh, const std::vector<Candidate>& ranked, const CompareArguments& a,
-                  std::vector<Candidate>& baselines, nlohmann::json& skipped) {
-  const auto skip = [&](const std::string& reason) {
-    for (const char* name : {"lscm", "arap"}) skipped.push_back({{"name", name}, {"reason", reason}});
-  };
-  if (mesh.faceCount() > std::size_t(a.baselineMaxFaces))
-    return skip("more than --baseline-max-faces " + std::to_string(a.baselineMaxFaces) + " faces");
-  const Candidate* seams = nullptr;
-  Mesh disk = mesh;
-  if (!param::analyzeTopology(mesh).isDisk()) {
-    for (const Candidate& c : ranked) {
-      if (!c.usable || !c.mapped.projector) continue;
-      // Cut without fanning the poles: a fanned pole splits into a vertex per face, and ARAP then
-      // folds those slivers over each other.
-      param::ProjectorOptions unfanned = *c.mapped.projector;
-      unfanned.pole = param::PoleMode::None;
-      const MappedMesh mapped = mapByProjector(mesh, unfanned, false);
-      param::CutMesh cut = param::cutAlongUvSeams(mapped.mesh, mapped.uv);
-      if (!param::analyzeTopology(cut.mesh).isDisk()) continue;
-      disk = std::move(cut.mesh);
-      seams = &c;
-      break;
-    }
-    if (!seams) return skip("the mesh is not a topological disk, and no usable projector's seams cut it into one");
-  }
-  const std::string cutFrom = seams ? seams->name : "";
-  for (const param::Baseline baseline : {param::Baseline::Lscm, param::Baseline::Arap}) {
-    const std::string name =
-        std::string(param::toString(baseline)) + (cutFrom.empty() ? "" : " (cut: " + cutFrom + ")");
-    try {
-      MappedMesh mapped;
-      mapped.uv = param::parameterizeDisk(disk, baseline);
-      // Measured on the uncut mesh (same triangles in the same order), so that the cut shows as seams.
-      mapped.mesh = cutFrom.empty() ? disk : seams->mapped.mesh;
-      mapped.source = param::toString(baseline);
-      baselines.push_back(measure(name, std::move(mapped), a));
-      if (!cutFrom.empty()) baselines.back().record["cut_along"] = cutFrom;
-    } catch (const UsageError& e) {
-      skipped.push_back({{"name", name}, {"reason", e.what()}});
-    }
-  }
-}
-
-std::string markdownTable(const std::vector<Candidate>& ranked) {
-  std::string table =
-      "| rank | mapping | L2 stretch | Linf stretch | angle (mean) | seam length | problem area | overlap | usable |\n"
-      "|---:|---|---:|---:|---:|---:|---:|---:|---|\n";
-  char row[512];
-  for (std::size_t i = 0; i < ranked.size(); ++i) {
-    const Candidate& c = ranked[i];
-    std::snprintf(row, sizeof row, "| %zu | %s | %.5g | %.5g | %.5g | %.5g | %.3g%% | %.3g%% | %s |\n", i + 1,
-                  c.name.c_str(), c.summary().l2Stretch, c.summary().linfStretch, c.summary().angleDistortion.mean,
-                  c.summary().seams.length(), 100.0 * c.problemArea, 100.0 * c.summary().overlap.fraction(),
-                  c.usable ? "yes" : "no");
-    table += row;
-  }
-  return table;
-}
-
-// The checker and stretch views of the first `top` candidates, two candidates per row.
-Image contactSheetOf(const std::vector<Candidate>& ranked, const CompareArguments& a) {
-  const std::size_t count = std::min(ranked.size(), std::size_t(std::max(a.top, 1)));
-  std::vector<std::pair<std::string, Image>> tiles;
-  for (std::size_t i = 0; i < count; ++i) {
-    const Candidate& c = ranked[i];
-    const views::ViewInput in = c.mapped.viewInput(c.measures);
-    views::ViewOptions options;
-    options.render.camera = a.camera.frame(c.mapped.mesh, a.tileSize, a.tileSize);
-    options.render.raster = {render::Cull::None, a.threads};
-    for (const views::View view : {views::View::Checker, views::View::Stretch})
-      tiles.emplace_back("#" + std::to_string(i + 1) + " " + c.name + " " + views::toString(view),
-                         views::drawView(view, in, options));
-  }
-  return views::contactSheet(tiles, 4);
-}
-
-void runCompare(const CompareArguments& a) {
-  if (a.top < 1) throw UsageError("--top: expected at least 1");
-  if (a.tileSize < 16 || a.tileSize > 4096) throw UsageError("--tile-size: expected 16 to 4096 pixels");
-  if (a.overlapResolution < 1 || a.overlapResolution > 16384)
-    throw UsageError("--overlap-resolution: expected 1 to 16384 pixels");
-  if (!a.sheet.empty()) io::checkImageType(a.sheet, io::PixelType::UInt8);
-    a.camera.check();
-
+void runCompare(const CompareCommandArguments& a) {
+  a.compare.check();
   StageClock clock("uvtk compare");
   clock.start("reading", a.input);
-  io::ReadMeshResult input = io::readMesh(a.input);
-  nlohmann::json inputSummary = inputJson(a.input, input);
+  const io::ReadMeshResult input = io::readMesh(a.input);
   clock.stop();
-
-  std::vector<Candidate> ranked;
-  nlohmann::json skipped = nlohmann::json::array();
-  const auto all = configurations(input.mesh);
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    const auto& [name, options] = all[i];
-    clock.start("mapping", name + " (" + std::to_string(i + 1) + "/" + std::to_string(all.size()) + ")");
-    const bool wraps = options.surface == param::SurfaceKind::Cylinder || options.surface == param::SurfaceKind::Sphere;
-    try {
-      ranked.push_back(measure(name, mapByProjector(input.mesh, options, a.seamPlaceAuto && wraps), a));
-    } catch (const UsageError& e) {
-      skipped.push_back({{"name", name}, {"reason", e.what()}});
-    }
-    clock.stop();
-  }
-  std::stable_sort(ranked.begin(), ranked.end(), ranksBefore);
-  if (a.baselines) {
-    clock.start("baselines", "LSCM, ARAP");
-    std::vector<Candidate> baselines;
-    addBaselines(input.mesh, ranked, a, baselines, skipped);
-    for (Candidate& b : baselines) ranked.push_back(std::move(b));
-    std::stable_sort(ranked.begin(), ranked.end(), ranksBefore);
-    clock.stop();
-  }
-
-  const std::string table = markdownTable(ranked);
-  std::fputs(table.c_str(), stdout);
-  if (!a.markdown.empty()) io::writeFileAtomically(a.markdown, table);
-  if (!a.sheet.empty()) {
-    clock.start("drawing", a.sheet);
-    io::writeImage(a.sheet, contactSheetOf(ranked, a), io::PixelType::UInt8);
-    clock.stop();
-  }
-  if (!a.json.empty()) {
-    static const char* kRankNames[] = {"stretch_l2", "stretch_linf", "angle", "seam_length"};
-    nlohmann::json j = {{"tool", {{"name", "uvtk"}, {"version", UVTK_VERSION}}},
-                        {"input", inputSummary},
-                        {"rank_by", kRankNames[int(a.by)]},
-                        {"ranking", nlohmann::json::array()},
-                        {"skipped", skipped}};
-    for (std::size_t i = 0; i < ranked.size(); ++i) {
-      nlohmann::json record = ranked[i].record;
-      record["rank"] = i + 1;
-      j["ranking"].push_back(std::move(record));
-    }
-    io::writeFileAtomically(a.json, j.dump(2) + "\n");
-  }
+  const Comparison comparison = compareMappings(a.compare, input.mesh, inputJson(a.input, input));
+  std::fputs(comparison.table.c_str(), stdout);
   printInputWarnings(a.input, input.warnings);
-  std::fprintf(stderr, "uvtk compare: %zu mappings ranked, %zu skipped; best: %s\n", ranked.size(), skipped.size(),
-               ranked.empty() ? "none" : ranked.front().name.c_str());
+  std::fprintf(stderr, "uvtk compare: %zu mappings ranked, %zu skipped; best: %s\n",
+               comparison.record["ranking"].size(), comparison.skipped, comparison.best.c_str());
 }
 
 }  // namespace
 
 void addCompareCommand(CLI::App& root) {
-  auto a = std::make_shared<CompareArguments>();
+  auto a = std::make_shared<CompareCommandArguments>();
   CLI::App* cmd = root.add_subcommand(
       "compare", "Rank every projector x O-mapping x fit (and CGAL's LSCM and ARAP) on a mesh by a distortion measure");
   cmd->add_option("input", a->input, "Input mesh (.obj or .off)")->required();
-  addChoice<RankBy>(*cmd, "--by", a->by,
-                    {{"stretch_l2", RankBy::StretchL2},
-                     {"stretch_linf", RankBy::StretchLinf},
-                     {"angle", RankBy::Angle},
-                     {"seam_length", RankBy::SeamLength}},
-                    "The measure that ranks (ties: the shorter seam)")
-      ->default_str("stretch_l2");
-  cmd->add_option("--json", a->json, "Write the ranking with every measure as JSON");
-  cmd->add_option("--markdown", a->markdown, "Also write the table (printed on stdout) to this file");
-  cmd->add_option("--sheet", a->sheet, "Write a contact sheet of the checker and stretch views of the best ones");
-  cmd->add_option("--top", a->top, "How many of the best the contact sheet shows")->capture_default_str();
-  cmd->add_option("--tile-size", a->tileSize, "Pixels across each picture of the sheet")->capture_default_str();
-  a->camera.addOptions(*cmd);
-  cmd->add_option("--overlap-resolution", a->overlapResolution, "Pixels across the layout raster that measures overlap")
-      ->capture_default_str();
-  cmd->add_flag("--seam-place-auto", a->seamPlaceAuto, "Place the seam of cylinder and sphere (as --seam-place auto)");
-  cmd->add_flag("!--no-baselines", a->baselines, "Leave out CGAL's LSCM and ARAP");
-  cmd->add_option("--baseline-max-faces", a->baselineMaxFaces, "Run LSCM and ARAP only on meshes up to this size")
-      ->capture_default_str();
-  cmd->add_option("--threads", a->threads, "Threads for the pictures (0: one per hardware thread)")
-      ->capture_default_str();
+  addCompareOptions(*cmd, a->compare);
   cmd->callback([a] { runCompare(*a); });
 }
 

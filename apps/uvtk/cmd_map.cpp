@@ -1,10 +1,23 @@
-// `uvtk map`: assign UVs to a mesh with a projector and write an OBJ with per-corner UVs.
+// `uvtk map`: assign UVs to a mesh with a projector and write an OBJ with per-corner UVs; or do
+// so for every mesh of a folder or a list, several meshes at once, into an output folder
+// (docs/scale-out.md).
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
+#include <stdexcept>
+#include <vector>
 
 #include "cli_values.h"
 #include "commands.h"
+#include "core/error.h"
+#include "core/parallel.h"
+#include "core/progress.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
 #include "io/obj_writer.h"
@@ -18,48 +31,249 @@ namespace uvtk::cli {
 
 namespace {
 
+namespace fs = std::filesystem;
+
 struct MapArguments {
-  std::string input, output, json;
+  std::string input, list, output, json;
   bool writeW = false;
   bool floatDigits = false;
+  bool quiet = false;
+  int jobs = 0;
   ProjectorArguments projector;
 };
 
-void runMap(const MapArguments& a) {
-  const param::ProjectorOptions options = a.projector.resolve();
-  StageClock clock("uvtk map");
-  clock.start("reading", a.input);
-  io::ReadMeshResult input = io::readMesh(a.input);
+// Where one mesh is read and written; no JSON summary when `json` is empty.
+struct MeshPaths {
+  std::string input, output, json;
+};
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Reads, maps and writes one mesh (and its JSON summary), prints the input's notes, and returns
+// the numbers of its summary line. The stages are shown on a terminal only with `showStages`.
+std::string mapMesh(const MeshPaths& paths, const MapArguments& a, const param::ProjectorOptions& options,
+                    bool showStages) {
+  StageClock clock("uvtk map", showStages);
+  clock.start("reading", paths.input);
+  io::ReadMeshResult input = io::readMesh(paths.input);
   const double readMs = clock.stop();
-  const nlohmann::json inputSummary = inputJson(a.input, input);
+  const nlohmann::json inputSummary = inputJson(paths.input, input);
 
   clock.start("mapping", std::to_string(input.mesh.faceCount()) + " faces");
   const MappedMesh mapped = mapByProjector(std::move(input.mesh), options, a.projector.seamPlaceAuto());
   const double mapMs = clock.stop();
   const param::MappingSummary& s = mapped.projection->summary;
 
-  clock.start("writing", a.output);
+  clock.start("writing", paths.output);
   io::ObjWriteOptions write;
   write.writeW = a.writeW;
   write.floatPrecision = a.floatDigits;
-  write.header = "uvtk map " + a.input;
-  io::writeObj(a.output, mapped.mesh, &mapped.uv, write);
+  write.header = "uvtk map " + paths.input;
+  io::writeObj(paths.output, mapped.mesh, &mapped.uv, write);
   const double writeMs = clock.stop();
 
-  if (!a.json.empty()) {
+  if (!paths.json.empty()) {
     nlohmann::json j = summaryJson(s);
     j["input"] = inputSummary;
-    j["output"] = a.output;
+    j["output"] = paths.output;
     j["options"] = projectorOptionsJson(options);
     if (mapped.seamPlacement) j["seam_placement"] = seamPlacementJson(*mapped.seamPlacement);
     j["milliseconds"] = {{"read", readMs}, {"map", mapMs}, {"write", writeMs}};
-    io::writeFileAtomically(a.json, j.dump(2) + "\n");
+    io::writeFileAtomically(paths.json, j.dump(2) + "\n");
   }
-  printMappingNotes(a.input, input.warnings, mapped);
-  std::fprintf(stderr,
-               "uvtk map: %zu vertices, %zu faces, %zu seam edges, %zu pole vertices, %zu pole faces, "
-               "%zu invalid vertices, %.1f ms\n",
-               s.vertices, s.faces, s.seamEdges, s.poleVertices, s.poleFaces, s.invalidVertices, mapMs);
+  printMappingNotes(paths.input, input.warnings, mapped);
+  char numbers[256];
+  std::snprintf(numbers, sizeof numbers,
+                "%zu vertices, %zu faces, %zu seam edges, %zu pole vertices, %zu pole faces, %zu invalid vertices, "
+                "%.1f ms",
+                s.vertices, s.faces, s.seamEdges, s.poleVertices, s.poleFaces, s.invalidVertices, mapMs);
+  return numbers;
+}
+
+std::string lowercaseExtension(const fs::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](char c) { return c >= 'A' && c <= 'Z' ? char(c - 'A' + 'a') : c; });
+  return extension;
+}
+
+// Every .obj and .off file directly in `folder`, sorted by name.
+std::vector<std::string> meshesInFolder(const std::string& folder) {
+  std::vector<fs::path> found;
+  try {
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+      const std::string extension = lowercaseExtension(entry.path());
+      if (entry.is_regular_file() && (extension == ".obj" || extension == ".off")) found.push_back(entry.path());
+    }
+  } catch (const fs::filesystem_error& e) {
+    throw InputError(folder + ": error: cannot read the folder: " + e.code().message());
+  }
+  std::sort(found.begin(), found.end(),
+            [](const fs::path& x, const fs::path& y) { return x.filename() < y.filename(); });
+  std::vector<std::string> meshes;
+  for (const fs::path& path : found) meshes.push_back(path.string());
+  if (meshes.empty()) throw InputError(folder + ": error: expected .obj or .off files in the folder, found none");
+  return meshes;
+}
+
+// The paths of a list file, one a line, relative to the list's folder; blank lines and lines whose
+// first non-blank character is '#' are skipped (a '#' later on a line belongs to the file name).
+std::vector<std::string> meshesInList(const std::string& list) {
+  std::error_code ignored;
+  std::ifstream in(list);
+  if (fs::is_directory(list, ignored) || !in) throw InputError(list + ": error: cannot open the list of meshes");
+  const fs::path folder = fs::path(list).parent_path();
+  std::vector<std::string> meshes;
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    const fs::path path = line.substr(first, line.find_last_not_of(" \t\r") + 1 - first);
+    meshes.push_back((path.is_absolute() ? path : folder / path).string());
+  }
+  if (meshes.empty()) throw InputError(list + ": error: expected mesh paths in the list, found none");
+  return meshes;
+}
+
+// The paths of every mesh of a batch: OUTDIR/STEM.obj and JSONDIR/STEM.json. Throws UsageError
+// before any work when two inputs share a stem, when an output would replace an input, or when a
+// summary would be named like the batch's own batch.json.
+std::vector<MeshPaths> batchPaths(const std::vector<std::string>& inputs, const MapArguments& a) {
+  std::map<std::string, std::string> inputOfStem;
+  std::set<fs::path> inputFiles;
+  std::error_code ignored;
+  for (const std::string& input : inputs) inputFiles.insert(fs::weakly_canonical(input, ignored));
+  std::vector<MeshPaths> paths;
+  for (const std::string& input : inputs) {
+    const std::string stem = fs::path(input).stem().string();
+    MeshPaths p{input, (fs::path(a.output) / (stem + ".obj")).string(), ""};
+    const auto [other, fresh] = inputOfStem.emplace(stem, input);
+    if (!fresh) throw UsageError("two meshes would be written to " + p.output + ": " + other->second + " and " + input);
+    if (inputFiles.count(fs::weakly_canonical(p.output, ignored)))
+      throw UsageError(p.output + " would replace an input mesh: choose another output folder");
+    if (!a.json.empty()) {
+      if (stem == "batch") throw UsageError(input + ": its summary would replace batch.json in " + a.json);
+      p.json = (fs::path(a.json) / (stem + ".json")).string();
+    }
+    paths.push_back(std::move(p));
+  }
+  return paths;
+}
+
+void createFolder(const std::string& folder) {
+  std::error_code error;
+  fs::create_directories(folder, error);
+  if (error || !fs::is_directory(folder))
+    throw OutputError(folder + ": error: cannot create the folder: " +
+                      (error ? error.message() : std::string("a file has that name")));
+}
+
+// How one mesh of a batch ended: its exit status (0, or that of its error's class as main maps
+// them), the error's one-line message, and its time.
+struct MeshOutcome {
+  int status = 0;
+  std::string error;
+  double milliseconds = 0.0;
+};
+
+// Maps one mesh of a batch; a failure is recorded and printed, never thrown.
+MeshOutcome mapBatchMesh(const MeshPaths& paths, const MapArguments& a, const param::ProjectorOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  MeshOutcome outcome;
+  try {
+    const std::string numbers = mapMesh(paths, a, options, false);
+    if (!a.quiet) printProgressMessage("uvtk map: " + paths.input + ": " + numbers);
+  } catch (const InputError& e) {
+    outcome = {3, e.what()};
+  } catch (const OutputError& e) {
+    outcome = {4, e.what()};
+  } catch (const UsageError& e) {  // a check of the options that only mapping the mesh makes
+    outcome = {2, paths.input + ": error: " + e.what()};
+  } catch (const std::exception& e) {
+    outcome = {1, paths.input + ": internal error: " + e.what()};
+  }
+  if (outcome.status != 0) printProgressMessage(outcome.error);
+  outcome.milliseconds = millisecondsSince(start);
+  return outcome;
+}
+
+// The record of a batch: every mesh with its status, error and time (the per-mesh numbers are in
+// the summaries beside it, so that merging the folder whole counts each once).
+nlohmann::json batchJson(const std::vector<MeshPaths>& paths, const std::vector<MeshOutcome>& outcomes,
+                         const param::ProjectorOptions& options, int threads, double wallMs) {
+  nlohmann::json meshes = nlohmann::json::array();
+  std::size_t failed = 0;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const bool ok = outcomes[i].status == 0;
+    nlohmann::json mesh = {{"input", paths[i].input},
+                           {"output", paths[i].output},
+                           {"status", ok ? "ok" : "failed"},
+                           {"milliseconds", outcomes[i].milliseconds}};
+    if (ok)
+      mesh["summary"] = paths[i].json;
+    else
+      mesh["error"] = outcomes[i].error;
+    failed += !ok;
+    meshes.push_back(std::move(mesh));
+  }
+  return {{"tool", {{"name", "uvtk"}, {"version", UVTK_VERSION}}},
+          {"options", projectorOptionsJson(options)},
+          {"jobs", threads},
+          {"meshes", std::move(meshes)},
+          {"mapped", paths.size() - failed},
+          {"failed", failed},
+          {"milliseconds", {{"wall", wallMs}}}};
+}
+
+// main maps an error's class to the exit status and prints its message: here the batch's last line.
+[[noreturn]] void throwForStatus(int status, const std::string& line) {
+  if (status == 4) throw OutputError(line);
+  if (status == 3) throw InputError(line);
+  if (status == 2) throw UsageError(line);
+  throw std::runtime_error(line);
+}
+
+// Every mesh of `inputs`, `--jobs` at a time, each mapped on one thread; a failing mesh does not
+// stop the others. The exit status is the highest of the failures'.
+void mapBatch(const std::vector<std::string>& inputs, const MapArguments& a, const param::ProjectorOptions& options) {
+  const std::vector<MeshPaths> paths = batchPaths(inputs, a);
+  createFolder(a.output);
+  if (!a.json.empty()) createFolder(a.json);
+  const auto start = std::chrono::steady_clock::now();
+  const int threads = std::min(threadCount(a.jobs), int(paths.size()));
+  std::vector<MeshOutcome> outcomes(paths.size());
+  {
+    Progress progress("mapping", paths.size(), "meshes");
+    parallelFor(int(paths.size()), threads, [&](int i) {
+      outcomes[std::size_t(i)] = mapBatchMesh(paths[std::size_t(i)], a, options);
+      progress.advance();
+    });
+  }
+  int status = 0;
+  std::size_t failed = 0;
+  for (const MeshOutcome& o : outcomes) {
+    status = std::max(status, o.status);
+    failed += o.status != 0;
+  }
+  if (!a.json.empty())
+    io::writeFileAtomically((fs::path(a.json) / "batch.json").string(),
+                            batchJson(paths, outcomes, options, threads, millisecondsSince(start)).dump(2) + "\n");
+  const std::string line =
+      "uvtk map: " + std::to_string(paths.size() - failed) + " meshes mapped, " + std::to_string(failed) + " failed";
+  if (status != 0) throwForStatus(status, line);
+  std::fprintf(stderr, "%s\n", line.c_str());
+}
+
+void runMap(const MapArguments& a) {
+  if (a.quiet) setProgressEnabled(false);
+  if (a.input.empty() == a.list.empty()) throw UsageError("expected a mesh, a folder of meshes or --list FILE");
+  const param::ProjectorOptions options = a.projector.resolve();
+  std::error_code ignored;
+  if (!a.list.empty()) return mapBatch(meshesInList(a.list), a, options);
+  if (fs::is_directory(a.input, ignored)) return mapBatch(meshesInFolder(a.input), a, options);
+  const std::string numbers = mapMesh({a.input, a.output, a.json}, a, options, true);
+  if (!a.quiet) std::fprintf(stderr, "uvtk map: %s\n", numbers.c_str());
 }
 
 }  // namespace
@@ -67,9 +281,19 @@ void runMap(const MapArguments& a) {
 void addMapCommand(CLI::App& root) {
   auto arguments = std::make_shared<MapArguments>();
   CLI::App* map = root.add_subcommand("map", "Assign UVs with a projector (Bier & Sloan two-stage mapping)");
-  map->add_option("input", arguments->input, "Input mesh (.obj or .off)")->required();
-  map->add_option("-o,--output", arguments->output, "Output OBJ with per-corner UVs")->required();
-  map->add_option("--json", arguments->json, "Also write the summary as JSON");
+  CLI::Option* input = map->add_option(
+      "input", arguments->input, "Input mesh (.obj or .off), or a folder: every .obj and .off in it, into -o's folder");
+  map->add_option("--list", arguments->list,
+                  "A file of mesh paths, one a line (relative to its folder; # comments), into -o's folder")
+      ->excludes(input);
+  map->add_option("-o,--output", arguments->output, "Output OBJ with per-corner UVs (a folder for many meshes)")
+      ->required();
+  map->add_option("--json", arguments->json,
+                  "Also write the summary as JSON (for many meshes: a folder, with STEM.json each and batch.json)");
+  map->add_option("-j,--jobs", arguments->jobs, "Meshes mapped at once when there are many; 0: one per hardware thread")
+      ->check(CLI::NonNegativeNumber)
+      ->default_str("0");
+  map->add_flag("-q,--quiet", arguments->quiet, "No progress and no summary lines; errors are still printed");
   map->add_flag("--write-w", arguments->writeW, "Write the third UV component (the cube face id)");
   addChoice<bool>(*map, "--uv-digits", arguments->floatDigits, {{"double", false}, {"float", true}},
                   "UV text that round-trips a double (up to 17 digits) or a float (up to 9)")

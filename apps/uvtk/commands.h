@@ -11,5 +11,8 @@ void addRenderCommand(CLI::App& root);
 void addReportCommand(CLI::App& root);
 void addCompareCommand(CLI::App& root);
 void addBenchCommand(CLI::App& root);
+void addRunCommand(CLI::App& root);
+void addSchemaCommand(CLI::App& root);
+void addMergeReportsCommand(CLI::App& root);
 
 }  // namespace uvtk::cli

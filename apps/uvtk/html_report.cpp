@@ -1,6 +1,8 @@
 #include "html_report.h"
 
 #include <cstdio>
+#include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "io/image_io.h"
@@ -85,14 +87,126 @@ void tableRows(std::ostringstream& html, const nlohmann::json& object, const std
 
 }  // namespace
 
+namespace {
+
+constexpr const char* kStyle =
+    "<style>body{font-family:sans-serif;margin:2em;max-width:80em}table{border-collapse:collapse}"
+    "th,td{border:1px solid #ccc;padding:2px 8px;text-align:left}td{font-family:monospace}"
+    "figure{display:inline-block;margin:0 1em 1em 0;vertical-align:top}img{max-width:36em}"
+    ".failed{color:#b00}</style>";
+
+std::string pageStart(const std::string& title) {
+  return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + escaped(title) + "</title>\n" +
+         kStyle + "</head><body>\n<h1>" + escaped(title) + "</h1>\n";
+}
+
+// The files of the gallery's page: their links relative to the page, and only those that exist.
+class PageFiles {
+ public:
+  explicit PageFiles(const std::string& pagePath)
+      : folder_(std::filesystem::weakly_canonical(std::filesystem::absolute(pagePath)).parent_path()) {}
+  std::optional<std::string> link(const std::string& file) const {
+    std::error_code error;
+    const std::filesystem::path target = std::filesystem::weakly_canonical(std::filesystem::absolute(file), error);
+    if (error || !std::filesystem::is_regular_file(target, error)) return std::nullopt;
+    return target.lexically_relative(folder_).generic_string();
+  }
+  // Links to those of `files` that exist.
+  std::string links(const nlohmann::json& files) const {
+    std::string html;
+    for (const nlohmann::json& file : files)
+      if (const std::optional<std::string> href = link(file.get<std::string>()))
+        html += "<a href=\"" + escaped(*href) + "\">" + escaped(*href) + "</a> ";
+    return html;
+  }
+
+ private:
+  std::filesystem::path folder_;
+};
+
+bool isPicture(const std::string& file) {
+  const std::string extension = std::filesystem::path(file).extension().string();
+  return extension == ".png" || extension == ".jpg" || extension == ".jpeg";
+}
+
+}  // namespace
+
+std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath) {
+  const PageFiles files(pagePath);
+  std::ostringstream html;
+  html << pageStart(run.at("title").get<std::string>());
+  html << "<p>Scene <code>" << escaped(run.at("scene").get<std::string>()) << "</code>, written by uvtk "
+       << UVTK_VERSION << " (<code>uvtk run</code>).</p>\n";
+  if (!run.at("failures").empty()) {
+    html << "<h2 class=\"failed\">Failures</h2>\n<ul>\n";
+    for (const nlohmann::json& failure : run.at("failures"))
+      html << "<li class=\"failed\">" << escaped(failure.at("message").get<std::string>()) << "</li>\n";
+    html << "</ul>\n";
+  }
+  const nlohmann::json& outputs = run.at("outputs");
+  const auto kind = [](const nlohmann::json& o) { return o.at("kind").get<std::string>(); };
+
+  html << "<h2>Pictures</h2>\n";
+  for (const nlohmann::json& o : outputs)
+    for (const nlohmann::json& file : o.at("files")) {
+      const std::optional<std::string> src = files.link(file.get<std::string>());
+      if (!src || !isPicture(*src)) continue;
+      std::string caption =
+          kind(o) == "compare" ? "ranking of " + o.value("mesh", std::string()) : o.value("mapping", std::string());
+      if (o.contains("views")) caption += ": " + o.at("views").dump();
+      html << "<figure><a href=\"" << escaped(*src) << "\"><img alt=\"" << escaped(caption) << "\" src=\""
+           << escaped(*src) << "\"></a><figcaption>" << escaped(caption) << "<br><code>" << escaped(*src)
+           << "</code></figcaption></figure>\n";
+    }
+
+  html << "<h2>Measures</h2>\n<table>\n<tr><th>mesh</th><th>mapping</th><th>L2 stretch</th><th>Linf stretch</th>"
+          "<th>angle (mean)</th><th>seam length</th><th>overlap</th><th>files</th></tr>\n";
+  for (const nlohmann::json& o : outputs)
+    if (kind(o) == "report" && o.contains("stretch_l2"))
+      html << "<tr><td>" << cell(o.at("mesh")) << "</td><td>" << cell(o.at("mapping")) << "</td><td>"
+           << cell(o.at("stretch_l2")) << "</td><td>" << cell(o.at("stretch_linf")) << "</td><td>"
+           << cell(o.at("angle_mean")) << "</td><td>" << cell(o.at("seam_length")) << "</td><td>"
+           << cell(o.at("overlap_fraction")) << "</td><td>" << files.links(o.at("files")) << "</td></tr>\n";
+  html << "</table>\n";
+
+  html << "<h2>Rankings</h2>\n";
+  for (const nlohmann::json& o : outputs)
+    if (kind(o) == "compare" && o.contains("top")) {
+      html << "<h3>" << cell(o.at("mesh")) << "</h3>\n<p>" << files.links(o.at("files"))
+           << "</p>\n<table>\n<tr><th>rank</th><th>mapping</th><th>L2 stretch</th><th>usable</th></tr>\n";
+      for (const nlohmann::json& r : o.at("top"))
+        html << "<tr><td>" << cell(r.at("rank")) << "</td><td>" << cell(r.at("name")) << "</td><td>"
+             << cell(r.at("stretch_l2")) << "</td><td>" << cell(r.at("usable")) << "</td></tr>\n";
+      html << "</table>\n";
+    }
+
+  html << "<h2>Meshes with UVs</h2>\n<table>\n<tr><th>mapping</th><th>seam edges</th><th>pole faces</th>"
+          "<th>invalid vertices</th><th>files</th></tr>\n";
+  for (const nlohmann::json& o : outputs)
+    if (kind(o) == "obj") {
+      const nlohmann::json summary = o.value("summary", nlohmann::json::object());
+      html << "<tr><td>" << cell(o.value("mapping", nlohmann::json())) << "</td><td>"
+           << cell(summary.value("seam_edges", nlohmann::json())) << "</td><td>"
+           << cell(summary.value("pole_faces", nlohmann::json())) << "</td><td>"
+           << cell(summary.value("invalid_vertices", nlohmann::json())) << "</td><td>" << files.links(o.at("files"))
+           << "</td></tr>\n";
+    }
+  html << "</table>\n";
+
+  html << "<h2>Stages</h2>\n<p>Only what the outputs need was computed.</p>\n<table>\n<tr><th>stage</th>"
+          "<th>subject</th><th>computes</th><th>ms</th><th>status</th></tr>\n";
+  for (const nlohmann::json& stage : run.at("stages"))
+    html << "<tr><td>" << cell(stage.at("stage")) << "</td><td>" << cell(stage.at("subject")) << "</td><td>"
+         << cell(stage.at("computes")) << "</td><td>" << cell(stage.value("milliseconds", nlohmann::json()))
+         << "</td><td>" << cell(stage.at("status")) << "</td></tr>\n";
+  html << "</table>\n</body></html>\n";
+  return html.str();
+}
+
 std::string htmlReport(const nlohmann::json& report, const std::vector<std::pair<std::string, Image>>& views) {
   const std::string title = "uvtk report: " + report.at("input").at("path").get<std::string>();
   std::ostringstream html;
-  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << escaped(title) << "</title>\n"
-       << "<style>body{font-family:sans-serif;margin:2em;max-width:80em}table{border-collapse:collapse}"
-          "th,td{border:1px solid #ccc;padding:2px 8px;text-align:left}td{font-family:monospace}"
-          "figure{display:inline-block;margin:0 1em 1em 0;vertical-align:top}</style></head><body>\n"
-       << "<h1>" << escaped(title) << "</h1>\n";
+  html << pageStart(title);
   html << "<h2>Views</h2>\n";
   for (const auto& [name, image] : views)
     html << "<figure><img alt=\"" << escaped(name) << " view\" src=\"" << io::pngDataUri(image) << "\" width=\""

@@ -1,5 +1,6 @@
-// `uvtk report --html`: one self-contained page (pictures embedded as data URIs, histograms as
-// inline SVG, no external file), readable offline in any browser.
+// HTML pages: `uvtk report --html`, one self-contained page (pictures embedded as data URIs,
+// histograms as inline SVG, no external file), and the gallery of a scene run, which links the
+// files the run wrote next to it. Both read offline in any browser.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -13,5 +14,10 @@ namespace uvtk::cli {
 
 // The page for `report` (the JSON `uvtk report` writes) and the named view pictures.
 std::string htmlReport(const nlohmann::json& report, const std::vector<std::pair<std::string, Image>>& views);
+
+// The gallery page of a scene run: `run` holds the title, the scene, the stages with their times,
+// the outputs (each with its kind and files) and the failures. Pictures and links are relative to
+// the page at `pagePath`, and only to files that exist.
+std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath);
 
 }  // namespace uvtk::cli

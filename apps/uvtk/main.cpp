@@ -5,6 +5,7 @@
 
 #include "commands.h"
 #include "core/error.h"
+#include "core/progress.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"uvtk: texture coordinates for triangle meshes, and proof that they are right"};
@@ -15,6 +16,10 @@ int main(int argc, char** argv) {
   uvtk::cli::addReportCommand(app);
   uvtk::cli::addCompareCommand(app);
   uvtk::cli::addBenchCommand(app);
+  uvtk::cli::addRunCommand(app);
+  uvtk::cli::addSchemaCommand(app);
+  uvtk::cli::addMergeReportsCommand(app);
+  uvtk::setProgressEnabled(true);  // a command with --quiet turns it off
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

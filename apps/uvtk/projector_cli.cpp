@@ -5,6 +5,7 @@
 #include "arithmetic_cli.h"
 #include "cli_values.h"
 #include "core/error.h"
+#include "core/progress.h"
 
 namespace uvtk::cli {
 
@@ -177,9 +178,11 @@ nlohmann::json projectorOptionsJson(const ProjectorOptions& o) {
 }
 
 void printSeamPlacement(const SeamPlacement& p) {
-  std::fprintf(stderr,
-               "uvtk: seam placed at %.6g degrees: it crosses %zu faces (%zu before), seam length %.6g (%.6g before)\n",
-               p.turnDegrees, p.facesCrossed, p.facesCrossedBefore, p.seamLength, p.seamLengthBefore);
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "uvtk: seam placed at %.6g degrees: it crosses %zu faces (%zu before), seam length %.6g (%.6g before)",
+                p.turnDegrees, p.facesCrossed, p.facesCrossedBefore, p.seamLength, p.seamLengthBefore);
+  printProgressMessage(line);  // above a progress bar, not through it
 }
 
 nlohmann::json seamPlacementJson(const SeamPlacement& p) {

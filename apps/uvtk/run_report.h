@@ -9,15 +9,18 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "core/progress.h"
 #include "io/mesh_reader.h"
 
 namespace uvtk::cli {
 
 // Times stages one after another. On a terminal, where a person waits for a large mesh, the stage
-// under way is shown on one line that the next one overwrites; never in logs.
+// under way is shown on one line that the next one overwrites; never in logs, never without
+// progress (--quiet), and not when `showStages` is false (a mesh among many under one bar).
 class StageClock {
  public:
-  explicit StageClock(std::string command) : command_(std::move(command)), terminal_(::isatty(STDERR_FILENO) != 0) {}
+  explicit StageClock(std::string command, bool showStages = true)
+      : command_(std::move(command)), terminal_(showStages && progressEnabled() && ::isatty(STDERR_FILENO) != 0) {}
   void start(const char* what, const std::string& subject) {
     if (terminal_) std::fprintf(stderr, "\r\033[K%s: %s %s ...", command_.c_str(), what, subject.c_str());
     start_ = std::chrono::steady_clock::now();
@@ -46,8 +49,8 @@ inline nlohmann::json inputJson(const std::string& path, const io::ReadMeshResul
 // One warning line on stderr when the reader counted anything.
 inline void printInputWarnings(const std::string& path, const MeshWarnings& w) {
   if (w.degenerateFaces || w.unreferencedVertices)
-    std::fprintf(stderr, "%s: warning: %zu degenerate faces, %zu unreferenced vertices\n", path.c_str(),
-                 w.degenerateFaces, w.unreferencedVertices);
+    printProgressMessage(path + ": warning: " + std::to_string(w.degenerateFaces) + " degenerate faces, " +
+                         std::to_string(w.unreferencedVertices) + " unreferenced vertices");
 }
 
 }  // namespace uvtk::cli

@@ -1,0 +1,308 @@
+#include "render_cli.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <sstream>
+
+#include "arithmetic_cli.h"
+#include "cli_values.h"
+#include "core/error.h"
+#include "core/gl_matrices.h"
+#include "io/image_io.h"
+#include "render/procedural.h"
+
+namespace uvtk::cli {
+
+namespace {
+
+// The AOV channels `list` names ("uv,depth,face,lod" in any order and subset), by their names in
+// Rendering::aovs; throws UsageError for anything else.
+std::vector<std::string> aovChannels(const std::string& list) {
+  std::vector<std::string> channels;
+  for (const std::string& name : splitList(list)) {
+    if (name == "uv") {
+      channels.push_back("u"), channels.push_back("v");
+    } else if (name == "depth" || name == "face" || name == "lod") {
+      channels.push_back(name);
+    } else {
+      throw UsageError("--aov: expected a list of uv, depth, face, lod, found '" + name + "'");
+    }
+  }
+  return channels;
+}
+
+Image selectChannels(const Image& all, const std::vector<std::string>& names) {
+  std::vector<int> source;
+  for (const std::string& name : names)
+    source.push_back(int(std::find(all.channelNames.begin(), all.channelNames.end(), name) - all.channelNames.begin()));
+  Image out(all.width, all.height, int(names.size()));
+  out.channelNames = names;
+  for (int y = 0; y < all.height; ++y)
+    for (int x = 0; x < all.width; ++x)
+      for (std::size_t k = 0; k < source.size(); ++k) out.at(x, y, int(k)) = all.at(x, y, source[k]);
+  return out;
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The named inspection views: one picture, or a contact sheet of several.
+nlohmann::json drawViews(const FrameArguments& frame, const std::string& output, const MappedMesh& mapped,
+                         const render::RenderOptions& renderOptions,
+                         const std::function<const MappedMesh::Measures&()>& measures) {
+  const std::vector<views::View> list = frame.views();
+  static const MappedMesh::Measures kNone;
+  const views::ViewInput in = mapped.viewInput(frame.showsMeasures() ? measures() : kNone);
+  views::ViewOptions options;
+  options.render = renderOptions;
+  options.layoutFill = frame.layoutFill;
+  options.layoutSize = frame.layoutSize;
+
+  nlohmann::json j = {{"output", output}, {"texcoords", mapped.source}, {"views", nlohmann::json::array()}};
+  std::vector<std::pair<std::string, Image>> tiles;
+  for (const views::View view : list) {
+    tiles.emplace_back(views::toString(view), views::drawView(view, in, options));
+    j["views"].push_back(views::toString(view));
+    if (view == views::View::UvError) {
+      const views::UvErrorMap error = views::uvErrorMap(in, options);
+      j["uverror_texels"] = {
+          {"max", error.max}, {"mean", error.mean}, {"pixels", error.pixels}, {"invalid_pixels", error.invalidPixels}};
+    }
+  }
+  const Image picture =
+      tiles.size() == 1 ? tiles.front().second : views::contactSheet(tiles, std::min<int>(3, int(tiles.size())));
+  io::writeImage(output, picture, io::PixelType::UInt8);
+  j["width"] = picture.width;
+  j["height"] = picture.height;
+  return j;
+}
+
+}  // namespace
+
+void addCameraOptions(CLI::App& app, CameraArguments& a) {
+  a.app = &app;
+  addChoice<CameraArguments::Mode>(
+      app, "--camera", a.mode, {{"auto", CameraArguments::Mode::Auto}, {"explicit", CameraArguments::Mode::Explicit}},
+      "auto frames the mesh's bounding sphere (along --view-dir, or eye - center when --eye is given); explicit uses "
+      "--eye, --center, --up as given. Default: explicit when --eye is given");
+  app.add_option("--eye", a.eye, "Camera: gluLookAt eye (x,y,z); without it the camera frames the mesh")
+      ->type_name("X,Y,Z");
+  app.add_option("--center", a.center, "Camera: gluLookAt center")->type_name("X,Y,Z")->capture_default_str();
+  app.add_option("--up", a.up, "Camera: gluLookAt up")->type_name("X,Y,Z")->capture_default_str();
+  app.add_option("--view-dir", a.viewDir, "Automatic camera: direction from the mesh to the eye")
+      ->type_name("X,Y,Z")
+      ->capture_default_str();
+  app.add_option("--fovy", a.fovy, "Camera: gluPerspective vertical field of view in degrees")->capture_default_str();
+  app.add_option("--near", a.zNear, "Camera: near plane distance (explicit camera; default 0.1)");
+  app.add_option("--far", a.zFar, "Camera: far plane distance (explicit camera; default 100)");
+  app.add_option("--ortho", a.ortho, "Orthographic camera: glOrtho left,right,bottom,top, or auto to frame the mesh")
+      ->type_name("L,R,B,T|auto");
+}
+
+bool CameraArguments::explicitCamera() const {
+  // Explicit when asked for, or when --eye is given without --camera.
+  return app && given(app, "--camera") ? mode == Mode::Explicit : !eye.empty();
+}
+
+void CameraArguments::check() const {
+  const bool manual = explicitCamera();
+  if (manual && eye.empty()) throw UsageError("--camera explicit: expected --eye x,y,z");
+  if (manual && ortho == "auto") throw UsageError("--ortho auto goes with the automatic camera");
+  if (!manual && (zNear || zFar)) throw UsageError("--near and --far go with an explicit camera (--eye)");
+  parseVec3(up, "--up");
+  parseVec3(center, "--center");
+  parseVec3(viewDir, "--view-dir");
+  if (!eye.empty()) parseVec3(eye, "--eye");
+  if (!ortho.empty() && ortho != "auto") parseVec4(ortho, "--ortho");
+}
+
+render::Camera CameraArguments::make(const Mesh& mesh, const Mat4& worldFromObject, int width, int height) const {
+  check();
+  const Vec3 upDir = parseVec3(up, "--up");
+  const bool manual = explicitCamera();
+  render::Camera camera;
+  if (!manual) {
+    std::vector<Vec3> world(mesh.positions.size());
+    for (std::size_t v = 0; v < world.size(); ++v)
+      world[v] = (worldFromObject * mesh.positions[v].homogeneous()).head<3>();
+    const Vec3 direction =
+        eye.empty() ? parseVec3(viewDir, "--view-dir") : Vec3(parseVec3(eye, "--eye") - parseVec3(center, "--center"));
+    return render::frameSphere(render::boundingSphere(world), direction, upDir, {ortho == "auto", fovy}, width, height);
+  }
+  camera.width = width;
+  camera.height = height;
+  camera.viewFromWorld = lookAt(parseVec3(eye, "--eye"), parseVec3(center, "--center"), upDir);
+  const double n = zNear.value_or(0.1), f = zFar.value_or(100.0);
+  if (!ortho.empty()) {
+    const Vec4 box = parseVec4(ortho, "--ortho");
+    camera.clipFromView = orthographic(box[0], box[1], box[2], box[3], n, f);
+  } else {
+    camera.clipFromView = perspective(fovy, double(width) / double(height), n, f);
+  }
+  return camera;
+}
+
+void addTextureOptions(CLI::App& app, TextureArguments& a, const std::string& sourceOption) {
+  app.add_option(sourceOption, a.source,
+                 "checker:N[:C] (N x N texels, C x C squares, white at texel 0,0), uvgrid[:N], or an image file "
+                 "(top row at v = 1)")
+      ->capture_default_str();
+  addChoice<render::Filter>(app, "--filter", a.filter, kFilterNames,
+                            "Minification filter; magnification is nearest for nearest*, else linear")
+      ->default_str("nearest");
+  addChoice<render::Wrap>(app, "--wrap", a.wrap,
+                          {{"repeat", render::Wrap::Repeat},
+                           {"clamp_to_edge", render::Wrap::ClampToEdge},
+                           {"mirrored_repeat", render::Wrap::MirroredRepeat}},
+                          "Wrap mode of s and t")
+      ->default_str("repeat");
+  addChoice<render::EnvMode>(app, "--env", a.env,
+                             {{"replace", render::EnvMode::Replace},
+                              {"modulate", render::EnvMode::Modulate},
+                              {"decal", render::EnvMode::Decal},
+                              {"blend", render::EnvMode::Blend}},
+                             "Texture environment; modulate, decal and blend use Blinn-Phong lighting by a head-light")
+      ->default_str("replace");
+  app.add_option("--env-color", a.envColour, "GL_TEXTURE_ENV_COLOR for blend (r,g,b,a)")->capture_default_str();
+}
+
+bool TextureArguments::procedural() const { return render::isProceduralName(source); }
+
+render::Texture TextureArguments::load() const {
+  parseVec4(envColour, "--env-color");
+  render::Texture texture = [&] {
+    if (std::optional<render::Texture> made = render::proceduralTexture(source)) return std::move(*made);
+    const io::ImageFile file = io::readImage(source);
+    return render::Texture::fromImage(file.image, file.eightBit);
+  }();
+  if (render::needsMipmaps(filter)) texture.buildMipmaps();
+  return texture;
+}
+
+void addFrameOptions(CLI::App& app, FrameArguments& a) {
+  app.add_option("--size", a.size, "Image size WxH")->capture_default_str();
+  addChoice<render::Cull>(app, "--cull", a.cull,
+                          {{"back", render::Cull::Back}, {"front", render::Cull::Front}, {"none", render::Cull::None}},
+                          "Face culling; front faces are counter-clockwise")
+      ->default_str("back");
+  app.add_option("--threads", a.threads, "Threads (0: one per hardware thread); the image does not depend on it")
+      ->capture_default_str();
+  app.add_option("--spp", a.samplesPerPixel,
+                 "Supersampling: samples per pixel on a regular n x n grid (1, 4, 9, 16, ..., 256), box-filtered")
+      ->capture_default_str();
+  app.add_option("--background", a.background, "Background colour r,g,b in [0, 1]")->capture_default_str();
+  addChoice<FrameArguments::Uv>(
+      app, "--uv", a.uv, {{"per-vertex", FrameArguments::Uv::PerVertex}, {"per-pixel", FrameArguments::Uv::PerPixel}},
+      "Interpolate per-vertex texture coordinates, or evaluate the mapping at every pixel")
+      ->default_str("per-vertex");
+  app.add_option("--aov", a.aov, "Also write float AOVs: a list of uv, depth, face, lod")
+      ->type_name("uv,depth,face,lod");
+  app.add_option("--aov-output", a.aovOutput, "The AOV file (.exr or .tif; default: the output with .exr)");
+  app.add_option("--view", a.view,
+                 "Draw inspection views instead: checker, uvgrid, stretch, linf, angle, area, seams, uverror, layout "
+                 "(several: a contact sheet)")
+      ->type_name("NAME[,NAME...]");
+  addChoice<views::View>(app, "--layout-fill", a.layoutFill,
+                         {{"stretch", views::View::Stretch},
+                          {"linf", views::View::Linf},
+                          {"angle", views::View::Angle},
+                          {"area", views::View::Area}},
+                         "The measure that fills the triangles of the layout view")
+      ->default_str("stretch");
+  app.add_option("--layout-size", a.layoutSize, "Pixels across the layout view's UV square")->capture_default_str();
+}
+
+void FrameArguments::check(const std::string& output) {
+  imageSize();
+  parseVec3(background, "--background");
+  if (!aov.empty()) aovChannels(aov);
+  if (!aov.empty() && aovOutput.empty()) aovOutput = std::filesystem::path(output).replace_extension(".exr").string();
+  if (!aov.empty() && aovOutput == output) throw UsageError("--aov-output must differ from --output");
+  if (!view.empty() && !aov.empty()) throw UsageError("--view and --aov exclude each other");
+  views();
+  if (layoutSize < 16 || layoutSize > 16384) throw UsageError("--layout-size: expected 16 to 16384 pixels");
+  io::checkImageType(output, io::PixelType::UInt8);
+  if (!aov.empty()) io::checkImageType(aovOutput, io::PixelType::Float);
+}
+
+std::pair<int, int> FrameArguments::imageSize() const { return parseImageSize(size, "--size"); }
+
+std::vector<views::View> FrameArguments::views() const {
+  return view.empty() ? std::vector<views::View>() : views::parseViewList(view);
+}
+
+bool FrameArguments::showsMeasures() const {
+  const std::vector<views::View> list = views();
+  return std::any_of(list.begin(), list.end(), [](views::View v) {
+    return v != views::View::Checker && v != views::View::Uvgrid && v != views::View::UvError;
+  });
+}
+
+bool FrameArguments::needsExact() const {
+  const std::vector<views::View> list = views();
+  return uv == Uv::PerPixel || std::any_of(list.begin(), list.end(), views::needsExactMapping);
+}
+
+render::RenderOptions renderOptions(const FrameArguments& frame, const TextureArguments& texture,
+                                    const render::Texture* image, const render::Camera& camera,
+                                    const Mat4& worldFromObject) {
+  render::RenderOptions options;
+  options.camera = camera;
+  options.worldFromObject = worldFromObject;
+  options.raster = {frame.cull, frame.threads};
+  options.samplesPerPixel = frame.samplesPerPixel;
+  options.sampler = render::samplerFor(texture.filter, texture.wrap);
+  options.env = texture.env;
+  options.envColour = parseVec4(texture.envColour, "--env-color");
+  options.background = parseVec3(frame.background, "--background");
+  options.texture = image;
+  return options;
+}
+
+nlohmann::json drawFrame(const FrameArguments& frame, const std::string& output, const MappedMesh& mapped,
+                         const render::RenderOptions& options,
+                         const std::function<const MappedMesh::Measures&()>& measures) {
+  if (frame.needsExact() && !mapped.exact)
+    throw UsageError(frame.uv == FrameArguments::Uv::PerPixel
+                         ? "--uv per-pixel evaluates a mapping: give --projector or --texgen"
+                         : "--view uverror compares with the exact mapping: give --projector or --texgen");
+  if (!frame.view.empty()) return drawViews(frame, output, mapped, options, measures);
+
+  render::TexcoordSource texcoords;
+  if (frame.uv == FrameArguments::Uv::PerPixel) {
+    texcoords.pixelMapping = mapped.exact;
+  } else {
+    texcoords.corners = mapped.corners();
+  }
+  render::RenderOptions withAovs = options;
+  withAovs.aovs = !frame.aov.empty();
+  const render::Rendering rendering = render::render(mapped.mesh, texcoords, withAovs);
+  const auto writeStart = std::chrono::steady_clock::now();
+  io::writeImage(output, rendering.colour, io::PixelType::UInt8);
+  if (!frame.aov.empty())
+    io::writeImage(frame.aovOutput, selectChannels(rendering.aovs, aovChannels(frame.aov)), io::PixelType::Float);
+  nlohmann::json j = {
+      {"output", output},
+      {"texcoords", mapped.source},
+      {"uv", frame.uv == FrameArguments::Uv::PerPixel ? "per-pixel" : "per-vertex"},
+      {"spp", options.samplesPerPixel},
+      {"width", options.camera.width},
+      {"height", options.camera.height},
+      {"faces", mapped.mesh.faceCount()},
+      {"faces_drawn", rendering.raster.drawn},
+      {"faces_culled", rendering.raster.culled},
+      {"faces_clipped", rendering.raster.clipped},
+      {"covered_pixels", rendering.coveredPixels},
+      {"milliseconds",
+       {{"raster", rendering.rasterMs}, {"shade", rendering.shadeMs}, {"write", millisecondsSince(writeStart)}}}};
+  if (options.texture)
+    j["texture"] = {{"width", options.texture->width()},
+                    {"height", options.texture->height()},
+                    {"levels", options.texture->levelCount()}};
+  if (!frame.aov.empty()) j["aov_output"] = frame.aovOutput;
+  return j;
+}
+
+}  // namespace uvtk::cli

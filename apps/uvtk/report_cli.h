@@ -1,0 +1,29 @@
+// The report of one mapping (`uvtk report`, and a scene's report output): every measure as JSON,
+// and one self-contained HTML page with the views.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "mapped_mesh.h"
+
+namespace uvtk::cli {
+
+struct ReportArguments {
+  std::string json, html;
+  std::string views = "checker,uvgrid,stretch,linf,angle,area,seams,layout";
+  std::string size = "384x384";
+  ViewCamera camera;
+  int overlapResolution = 1024, textureSize = 1024, threads = 0;
+
+  void check() const;  // throws UsageError before any work
+};
+void addReportOptions(CLI::App& app, ReportArguments& arguments);
+
+// Writes the report of `mapped` with its `measures` (taken at arguments.overlapResolution);
+// `input` is the "input" record. Returns the report.
+nlohmann::json writeReport(const ReportArguments& arguments, const MappedMesh& mapped,
+                           const MappedMesh::Measures& measures, const nlohmann::json& input);
+
+}  // namespace uvtk::cli

@@ -1,0 +1,91 @@
+// A scene file (schema/scene.schema.json): meshes with their mappings, cameras, textures and the
+// outputs to write, read and checked completely before any work starts. Every option object is
+// parsed by the very option parser of the subcommand it mirrors (key "axis_dir" is --axis-dir),
+// so a scene can say exactly what the command line can, and is checked the same way.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compare_cli.h"
+#include "core/math.h"
+#include "param/projector.h"
+#include "render_cli.h"
+#include "report_cli.h"
+#include "texgen_cli.h"
+
+namespace uvtk::cli {
+
+// The scene schema, as shipped in schema/scene.schema.json (embedded at build time).
+const char* sceneSchemaText();
+
+struct SceneMesh {
+  std::string name, path, pointer;  // path resolved against the scene's folder; pointer: JSON Pointer
+  Mat4 model = Mat4::Identity();
+};
+
+struct SceneMapping {
+  enum class Kind { Projector, Texgen, File };
+  std::string name, pointer;
+  std::size_t mesh = 0;
+  Kind kind = Kind::File;
+  param::ProjectorOptions projector;
+  bool seamPlaceAuto = false;
+  TexgenArguments texgen;             // resolved with the view when it runs
+  std::optional<std::size_t> camera;  // texgen: the view of this camera, else viewFromWorld
+  Mat4 viewFromWorld = Mat4::Identity();
+  std::shared_ptr<CLI::App> parser;  // owns what the texgen arguments refer to
+
+  // Whether computing the mapping reads vertex normals (an O-mapping or texgen mode that needs them).
+  bool needsNormals() const;
+};
+
+struct SceneCamera {
+  std::string name, pointer;
+  CameraArguments arguments;
+  std::shared_ptr<CLI::App> parser;
+};
+
+struct SceneTexture {
+  std::string name, pointer;
+  TextureArguments arguments;
+  std::shared_ptr<CLI::App> parser;
+};
+
+struct SceneOutput {
+  enum class Kind { Obj, Render, Report, Compare, Gallery };
+  Kind kind = Kind::Obj;
+  std::string pointer;
+  std::optional<std::size_t> mapping, mesh, camera, texture;
+  std::string path, json;                    // obj, render, gallery: the file; obj, render: the summary JSON
+  bool writeW = false, floatDigits = false;  // obj
+  FrameArguments frame;                      // render
+  ReportArguments report;                    // report
+  CompareArguments compare;                  // compare
+  std::string title;                         // gallery
+  std::shared_ptr<CLI::App> parser;
+
+  std::vector<std::string> files() const;  // every file it writes
+};
+
+struct Scene {
+  std::string path, title;
+  std::vector<SceneMesh> meshes;
+  std::vector<SceneMapping> mappings;
+  std::vector<SceneCamera> cameras;
+  std::vector<SceneTexture> textures;
+  std::vector<SceneOutput> outputs;
+  TextureArguments defaultTexture;  // for render outputs that name none
+  std::shared_ptr<CLI::App> defaultTextureParser;
+};
+
+// Reads and checks the scene at `path`: against the schema, then names and references, input
+// files, and every option as its subcommand checks it. Output paths are taken relative to
+// `outputDir` (empty: the scene's folder). Throws InputError "SCENE: /json/pointer: problem".
+Scene loadScene(const std::string& path, const std::string& outputDir);
+
+}  // namespace uvtk::cli

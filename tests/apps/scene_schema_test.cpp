@@ -1,0 +1,99 @@
+// The scene schema and the command line agree: every option group a scene mirrors has exactly the
+// schema's keys (besides the scene's own), with the same choices, so that a scene can say all the
+// command line can and nothing it cannot.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "arithmetic_cli.h"
+#include "compare_cli.h"
+#include "projector_cli.h"
+#include "render_cli.h"
+#include "report_cli.h"
+#include "scene.h"
+#include "texgen_cli.h"
+
+namespace uvtk::cli {
+namespace {
+
+using nlohmann::json;
+
+const json& schema() {
+  static const json parsed = json::parse(sceneSchemaText());
+  return parsed;
+}
+
+std::set<std::string> names(const std::string& text, char separator) {
+  std::set<std::string> out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, separator);) out.insert(item);
+  return out;
+}
+
+// The options of `app` as scene keys ("--axis-dir" is "axis_dir").
+std::map<std::string, const CLI::Option*> keysOf(const CLI::App& app) {
+  std::map<std::string, const CLI::Option*> out;
+  for (const CLI::Option* option : app.get_options()) {
+    if (option->get_lnames().empty() || option->get_lnames().front() == "help") continue;
+    std::string key = option->get_lnames().front();
+    std::replace(key.begin(), key.end(), '-', '_');
+    out[key] = option;
+  }
+  return out;
+}
+
+void expectSameOptions(const std::string& definition, const CLI::App& app, const std::set<std::string>& sceneKeys) {
+  SCOPED_TRACE(definition);
+  const json& properties = schema().at("$defs").at(definition).at("properties");
+  const std::map<std::string, const CLI::Option*> options = keysOf(app);
+  std::set<std::string> schemaKeys, optionKeys;
+  for (const auto& [key, value] : properties.items())
+    if (!sceneKeys.count(key)) schemaKeys.insert(key);
+  for (const auto& [key, option] : options) optionKeys.insert(key);
+  EXPECT_EQ(schemaKeys, optionKeys);
+  for (const auto& [key, value] : properties.items()) {
+    if (!value.contains("enum") || !options.count(key)) continue;
+    SCOPED_TRACE(key);
+    const std::set<std::string> choices = value["enum"].get<std::set<std::string>>();
+    EXPECT_EQ(names(options.at(key)->get_type_name(), '|'), choices);
+  }
+}
+
+TEST(SceneSchema, ProjectorMappingHasEveryMapOption) {
+  CLI::App app;
+  ProjectorArguments arguments;
+  addProjectorOptions(app, arguments);
+  expectSameOptions("projectorMapping", app, {"kind", "name"});
+}
+
+TEST(SceneSchema, TexgenMappingHasEveryTexgenOption) {
+  CLI::App app;
+  TexgenArguments arguments;
+  addTexgenOptions(app, arguments, "--texgen");
+  addArithmeticOptions(app, arguments.arithmetic, false);
+  expectSameOptions("texgenMapping", app, {"kind", "name", "camera", "eye", "center", "up"});
+}
+
+TEST(SceneSchema, CameraTextureAndOutputsHaveTheRenderReportAndCompareOptions) {
+  CLI::App camera, texture, frame, report, compare;
+  CameraArguments cameraArguments;
+  TextureArguments textureArguments;
+  FrameArguments frameArguments;
+  ReportArguments reportArguments;
+  CompareArguments compareArguments;
+  addCameraOptions(camera, cameraArguments);
+  addTextureOptions(texture, textureArguments, "--source");
+  addFrameOptions(frame, frameArguments);
+  addReportOptions(report, reportArguments);
+  addCompareOptions(compare, compareArguments);
+  expectSameOptions("camera", camera, {"name"});
+  expectSameOptions("texture", texture, {"name"});
+  expectSameOptions("renderOutput", frame, {"kind", "mapping", "camera", "texture", "path", "json"});
+  expectSameOptions("reportOutput", report, {"kind", "mapping"});
+  expectSameOptions("compareOutput", compare, {"kind", "mesh"});
+}
+
+}  // namespace
+}  // namespace uvtk::cli
