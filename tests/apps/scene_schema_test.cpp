@@ -65,6 +65,7 @@ TEST(SceneSchema, ProjectorMappingHasEveryMapOption) {
   CLI::App app;
   ProjectorArguments arguments;
   addProjectorOptions(app, arguments);
+  ASSERT_TRUE(keysOf(app).count("seam_place"));
   expectSameOptions("projectorMapping", app, {"kind", "name"});
 }
 
@@ -73,6 +74,7 @@ TEST(SceneSchema, TexgenMappingHasEveryTexgenOption) {
   TexgenArguments arguments;
   addTexgenOptions(app, arguments, "--texgen");
   addArithmeticOptions(app, arguments.arithmetic, false);
+  ASSERT_TRUE(keysOf(app).count("no_normalize"));
   expectSameOptions("texgenMapping", app, {"kind", "name", "camera", "eye", "center", "up"});
 }
 
@@ -88,6 +90,7 @@ TEST(SceneSchema, CameraTextureAndOutputsHaveTheRenderReportAndCompareOptions) {
   addFrameOptions(frame, frameArguments);
   addReportOptions(report, reportArguments);
   addCompareOptions(compare, compareArguments);
+  ASSERT_TRUE(keysOf(compare).count("no_baselines")) << "a negated flag is named as typed";
   expectSameOptions("camera", camera, {"name"});
   expectSameOptions("texture", texture, {"name"});
   expectSameOptions("renderOutput", frame, {"kind", "mapping", "camera", "texture", "path", "json"});
