@@ -21,6 +21,13 @@ struct OutputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The exit status an error stands for, as above; 1 for any other exception (a bug).
+int exitStatus(const std::exception& error);
+
+// Throws the error class whose exit status is `status` (1: std::runtime_error) with `message`: how
+// a command that carried on past failures ends with the worst one's status.
+[[noreturn]] void throwWithStatus(int status, const std::string& message);
+
 // Always-on check of a programmer's invariant; failing means a bug in uvtk, not bad input.
 [[noreturn]] void checkFailed(const char* expression, const char* file, int line);
 

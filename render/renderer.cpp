@@ -9,16 +9,13 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/progress.h"
+#include "core/stopwatch.h"
 
 namespace uvtk::render {
 
 namespace {
 
 constexpr int kRowsPerBand = 8;
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 // Texture coordinates of one fragment and their screen-space derivatives, after the division by q.
 struct FragmentTexcoords {

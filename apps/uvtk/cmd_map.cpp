@@ -18,6 +18,7 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/progress.h"
+#include "core/stopwatch.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
 #include "io/obj_writer.h"
@@ -25,7 +26,6 @@
 #include "param/projector.h"
 #include "projector_cli.h"
 #include "run_report.h"
-#include "summary_json.h"
 
 namespace uvtk::cli {
 
@@ -46,10 +46,6 @@ struct MapArguments {
 struct MeshPaths {
   std::string input, output, json;
 };
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 // Reads, maps and writes one mesh (and its JSON summary), prints the input's notes, and returns
 // the numbers of its summary line. The stages are shown on a terminal only with `showStages`.
@@ -75,11 +71,7 @@ std::string mapMesh(const MeshPaths& paths, const MapArguments& a, const param::
   const double writeMs = clock.stop();
 
   if (!paths.json.empty()) {
-    nlohmann::json j = summaryJson(s);
-    j["input"] = inputSummary;
-    j["output"] = paths.output;
-    j["options"] = projectorOptionsJson(options);
-    if (mapped.seamPlacement) j["seam_placement"] = seamPlacementJson(*mapped.seamPlacement);
+    nlohmann::json j = mapSummaryJson(mapped, inputSummary, paths.output);
     j["milliseconds"] = {{"read", readMs}, {"map", mapMs}, {"write", writeMs}};
     io::writeFileAtomically(paths.json, j.dump(2) + "\n");
   }
@@ -184,14 +176,12 @@ MeshOutcome mapBatchMesh(const MeshPaths& paths, const MapArguments& a, const pa
   try {
     const std::string numbers = mapMesh(paths, a, options, false);
     if (!a.quiet) printProgressMessage("uvtk map: " + paths.input + ": " + numbers);
-  } catch (const InputError& e) {
-    outcome = {3, e.what()};
-  } catch (const OutputError& e) {
-    outcome = {4, e.what()};
-  } catch (const UsageError& e) {  // a check of the options that only mapping the mesh makes
-    outcome = {2, paths.input + ": error: " + e.what()};
   } catch (const std::exception& e) {
-    outcome = {1, paths.input + ": internal error: " + e.what()};
+    // A usage error here is a check of the options that only mapping the mesh makes.
+    const int status = exitStatus(e);
+    outcome = {status, status == 3 || status == 4
+                           ? std::string(e.what())
+                           : paths.input + (status == 2 ? ": error: " : ": internal error: ") + e.what()};
   }
   if (outcome.status != 0) printProgressMessage(outcome.error);
   outcome.milliseconds = millisecondsSince(start);
@@ -226,14 +216,6 @@ nlohmann::json batchJson(const std::vector<MeshPaths>& paths, const std::vector<
           {"milliseconds", {{"wall", wallMs}}}};
 }
 
-// main maps an error's class to the exit status and prints its message: here the batch's last line.
-[[noreturn]] void throwForStatus(int status, const std::string& line) {
-  if (status == 4) throw OutputError(line);
-  if (status == 3) throw InputError(line);
-  if (status == 2) throw UsageError(line);
-  throw std::runtime_error(line);
-}
-
 // Every mesh of `inputs`, `--jobs` at a time, each mapped on one thread; a failing mesh does not
 // stop the others. The exit status is the highest of the failures'.
 void mapBatch(const std::vector<std::string>& inputs, const MapArguments& a, const param::ProjectorOptions& options) {
@@ -261,7 +243,7 @@ void mapBatch(const std::vector<std::string>& inputs, const MapArguments& a, con
                             batchJson(paths, outcomes, options, threads, millisecondsSince(start)).dump(2) + "\n");
   const std::string line =
       "uvtk map: " + std::to_string(paths.size() - failed) + " meshes mapped, " + std::to_string(failed) + " failed";
-  if (status != 0) throwForStatus(status, line);
+  if (status != 0) throwWithStatus(status, line);  // main prints the line
   std::fprintf(stderr, "%s\n", line.c_str());
 }
 

@@ -7,7 +7,6 @@
 
 #include "cli_values.h"
 #include "commands.h"
-#include "io/atomic_file.h"
 #include "io/checksum.h"
 #include "io/mesh_reader.h"
 #include "mapped_mesh.h"
@@ -48,12 +47,9 @@ void runReport(const ReportCommandArguments& a) {
   const double measureMs = clock.stop();
 
   clock.start("writing", a.report.html.empty() ? a.report.json : a.report.html);
-  ReportArguments report = a.report;
-  const std::string json = report.json;
-  report.json.clear();  // written below, with the times
-  nlohmann::json j = writeReport(report, mapped, measures, inputSummary);
-  j["milliseconds"] = {{"read", readMs}, {"texcoords", mapMs}, {"measure", measureMs}, {"write", clock.stop()}};
-  if (!json.empty()) io::writeFileAtomically(json, j.dump(2) + "\n");
+  writeReport(a.report, mapped, measures, inputSummary,
+              {{"read", readMs}, {"texcoords", mapMs}, {"measure", measureMs}});
+  clock.stop();
   printMappingNotes(a.input, input.warnings, mapped);
   const analysis::Summary& summary = measures.summary;
   std::fprintf(stderr, "uvtk report: %zu faces, L2 stretch %.6g, Linf stretch %.6g, %zu seam edges, overlap %.4g%%\n",

@@ -2,7 +2,6 @@
 // its outputs need run. `--plan` prints them without running anything.
 #include <cstdio>
 #include <memory>
-#include <stdexcept>
 #include <string>
 
 #include "commands.h"
@@ -39,9 +38,7 @@ void runRun(const RunArguments& a) {
     std::fprintf(stderr, "uvtk run: %zu stages, %zu outputs, %zu failed, %.1f ms\n", plan.size(), scene.outputs.size(),
                  failed, result.report["milliseconds"]["total"].get<double>());
   const std::string summary = "uvtk run: " + std::to_string(failed) + " stages failed (see above)";
-  if (result.status == 3) throw InputError(summary);
-  if (result.status == 4) throw OutputError(summary);
-  if (result.status != 0) throw std::runtime_error(summary);
+  if (result.status != 0) throwWithStatus(result.status, summary);
 }
 
 }  // namespace

@@ -15,7 +15,6 @@
 #include "mapped_mesh.h"
 #include "measures_json.h"
 #include "param/baseline.h"
-#include "projector_cli.h"
 #include "render/camera.h"
 #include "run_report.h"
 #include "views/views.h"
@@ -77,8 +76,7 @@ Candidate measure(std::string name, MappedMesh mapped, const CompareArguments& a
   c.record["name"] = c.name;
   c.record["problem_area_fraction"] = c.problemArea;
   c.record["usable"] = c.usable;
-  if (c.mapped.projector) c.record["options"] = projectorOptionsJson(*c.mapped.projector);
-  if (c.mapped.seamPlacement) c.record["seam_placement"] = seamPlacementJson(*c.mapped.seamPlacement);
+  addMappingOrigin(c.record, c.mapped);
   return c;
 }
 

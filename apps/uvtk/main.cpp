@@ -25,18 +25,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int status = app.exit(e);
     return status == 0 ? 0 : 2;
-  } catch (const uvtk::UsageError& e) {
-    std::fprintf(stderr, "uvtk: error: %s\n", e.what());
-    return 2;
-  } catch (const uvtk::InputError& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 3;
-  } catch (const uvtk::OutputError& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 4;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "uvtk: internal error: %s\n", e.what());
-    return 1;
+    const int status = uvtk::exitStatus(e);
+    // Input and output errors name their file themselves.
+    if (status == 2) std::fprintf(stderr, "uvtk: error: %s\n", e.what());
+    if (status == 3 || status == 4) std::fprintf(stderr, "%s\n", e.what());
+    if (status == 1) std::fprintf(stderr, "uvtk: internal error: %s\n", e.what());
+    return status;
   }
   return 0;
 }

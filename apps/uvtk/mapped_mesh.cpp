@@ -8,6 +8,7 @@
 #include "param/projector.h"
 #include "projector_cli.h"
 #include "run_report.h"
+#include "summary_json.h"
 
 namespace uvtk::cli {
 
@@ -126,6 +127,20 @@ MappedMesh withFileUvs(Mesh mesh, const std::string& path) {
   out.mesh = std::move(mesh);
   out.source = "file";
   return out;
+}
+
+void addMappingOrigin(nlohmann::json& record, const MappedMesh& mapped) {
+  if (mapped.projector) record["options"] = projectorOptionsJson(*mapped.projector);
+  if (mapped.seamPlacement) record["seam_placement"] = seamPlacementJson(*mapped.seamPlacement);
+}
+
+nlohmann::json mapSummaryJson(const MappedMesh& mapped, const nlohmann::json& input, const std::string& output) {
+  nlohmann::json j = mapped.projection ? summaryJson(mapped.projection->summary) : nlohmann::json::object();
+  j["texcoords"] = mapped.source;
+  j["input"] = input;
+  j["output"] = output;
+  addMappingOrigin(j, mapped);
+  return j;
 }
 
 void printMappingNotes(const std::string& inputPath, const MeshWarnings& warnings, const MappedMesh& mapped) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
@@ -44,6 +45,14 @@ struct MappedMesh {
   views::ViewInput viewInput(const Measures& measures) const;
 };
 
+// Where UVs made by a projector came from, added to a JSON record: "options" and, after
+// --seam-place auto, "seam_placement". Nothing for the file's UVs or texgen.
+void addMappingOrigin(nlohmann::json& record, const MappedMesh& mapped);
+
+// The summary `uvtk map --json` writes (without the times): the projector's mapping summary, or
+// for other sources only "texcoords", with the "input" record and the output file.
+nlohmann::json mapSummaryJson(const MappedMesh& mapped, const nlohmann::json& input, const std::string& output);
+
 // On stderr: the input's warnings, and where --seam-place auto put the seam.
 void printMappingNotes(const std::string& inputPath, const MeshWarnings& warnings, const MappedMesh& mapped);
 
@@ -51,7 +60,7 @@ void printMappingNotes(const std::string& inputPath, const MeshWarnings& warning
 // `viewDir` with `up` ("x,y,z" texts, checked when parsed).
 struct ViewCamera {
   std::string viewDir = "1,-1.5,0.8", up = "0,0,1";
-    void addOptions(CLI::App& app);
+  void addOptions(CLI::App& app);
   void check() const;  // throws UsageError for a malformed direction
   render::Camera frame(const Mesh& mesh, int width, int height) const;
 };

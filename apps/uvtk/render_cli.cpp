@@ -9,6 +9,7 @@
 #include "cli_values.h"
 #include "core/error.h"
 #include "core/gl_matrices.h"
+#include "core/stopwatch.h"
 #include "io/image_io.h"
 #include "render/procedural.h"
 
@@ -42,10 +43,6 @@ Image selectChannels(const Image& all, const std::vector<std::string>& names) {
     for (int x = 0; x < all.width; ++x)
       for (std::size_t k = 0; k < source.size(); ++k) out.at(x, y, int(k)) = all.at(x, y, source[k]);
   return out;
-}
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 // The named inspection views: one picture, or a contact sheet of several.
@@ -171,7 +168,6 @@ void addTextureOptions(CLI::App& app, TextureArguments& a, const std::string& so
 bool TextureArguments::procedural() const { return render::isProceduralName(source); }
 
 render::Texture TextureArguments::load() const {
-  parseVec4(envColour, "--env-color");
   render::Texture texture = [&] {
     if (std::optional<render::Texture> made = render::proceduralTexture(source)) return std::move(*made);
     const io::ImageFile file = io::readImage(source);
@@ -264,10 +260,7 @@ render::RenderOptions renderOptions(const FrameArguments& frame, const TextureAr
 nlohmann::json drawFrame(const FrameArguments& frame, const std::string& output, const MappedMesh& mapped,
                          const render::RenderOptions& options,
                          const std::function<const MappedMesh::Measures&()>& measures) {
-  if (frame.needsExact() && !mapped.exact)
-    throw UsageError(frame.uv == FrameArguments::Uv::PerPixel
-                         ? "--uv per-pixel evaluates a mapping: give --projector or --texgen"
-                         : "--view uverror compares with the exact mapping: give --projector or --texgen");
+  UVTK_CHECK(!frame.needsExact() || mapped.exact);  // the callers refuse the file's UVs before any work
   if (!frame.view.empty()) return drawViews(frame, output, mapped, options, measures);
 
   render::TexcoordSource texcoords;

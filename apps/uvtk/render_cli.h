@@ -78,6 +78,7 @@ render::RenderOptions renderOptions(const FrameArguments& frame, const TextureAr
 
 // Draws `mapped` into `output` as `frame` asks: the textured picture (and AOVs), or the inspection
 // views; `measures` is called only when a view shows distortion. Returns the JSON record of the frame.
+// A frame that needs the exact mapping (FrameArguments::needsExact) needs a mapped.exact.
 nlohmann::json drawFrame(const FrameArguments& frame, const std::string& output, const MappedMesh& mapped,
                          const render::RenderOptions& options,
                          const std::function<const MappedMesh::Measures&()>& measures);

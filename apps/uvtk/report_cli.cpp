@@ -36,16 +36,13 @@ void ReportArguments::check() const {
 }
 
 nlohmann::json writeReport(const ReportArguments& a, const MappedMesh& mapped, const MappedMesh::Measures& measures,
-                           const nlohmann::json& input) {
+                           const nlohmann::json& input, const nlohmann::json& milliseconds) {
   nlohmann::json report = measuresJson(mapped, measures.summary);
   report["tool"] = {{"name", "uvtk"}, {"version", UVTK_VERSION}};
   report["input"] = input;
   report["texcoords"] = mapped.source;
-  if (mapped.projector) {
-    report["options"] = projectorOptionsJson(*mapped.projector);
-    report["mapping"] = summaryJson(mapped.projection->summary);
-  }
-  if (mapped.seamPlacement) report["seam_placement"] = seamPlacementJson(*mapped.seamPlacement);
+  if (mapped.projection) report["mapping"] = summaryJson(mapped.projection->summary);
+  addMappingOrigin(report, mapped);
 
   std::vector<std::pair<std::string, Image>> pictures;
   if (!a.html.empty()) {
@@ -64,6 +61,7 @@ nlohmann::json writeReport(const ReportArguments& a, const MappedMesh& mapped, c
     report["views"] = nlohmann::json::array();
     for (const auto& picture : pictures) report["views"].push_back(picture.first);
   }
+  if (!milliseconds.is_null()) report["milliseconds"] = milliseconds;
   if (!a.json.empty()) io::writeFileAtomically(a.json, report.dump(2) + "\n");
   if (!a.html.empty()) io::writeFileAtomically(a.html, htmlReport(report, pictures));
   return report;

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/progress.h"
+#include "core/stopwatch.h"
 #include "io/mesh_reader.h"
 
 namespace uvtk::cli {
@@ -28,7 +29,7 @@ class StageClock {
   // Milliseconds since the last start(); clears the progress line.
   double stop() const {
     if (terminal_) std::fprintf(stderr, "\r\033[K");
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
+    return millisecondsSince(start_);
   }
 
  private:

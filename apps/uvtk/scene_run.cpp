@@ -11,15 +11,14 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/progress.h"
+#include "core/stopwatch.h"
 #include "html_report.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
 #include "io/obj_writer.h"
 #include "mapped_mesh.h"
-#include "projector_cli.h"
 #include "render/shading.h"
 #include "run_report.h"
-#include "summary_json.h"
 
 namespace uvtk::cli {
 
@@ -58,16 +57,8 @@ std::vector<std::string> renderComputes(const Scene& scene, const SceneOutput& o
   return computes;
 }
 
-// The exit status of an error, as `uvtk` maps them.
-int statusOf(const std::exception& e) {
-  if (dynamic_cast<const OutputError*>(&e)) return 4;
-  if (dynamic_cast<const InputError*>(&e) || dynamic_cast<const UsageError*>(&e)) return 3;
-  return 1;
-}
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
+// A usage error while running is a problem of the scene's content, so bad input.
+int statusOf(const std::exception& e) { return exitStatus(e) == 2 ? 3 : exitStatus(e); }
 
 // The state of one mesh's stages: the mesh as read, its mappings, their measures.
 struct MeshWork {
@@ -258,19 +249,9 @@ class SceneRunner {
     write.floatPrecision = o.floatDigits;
     write.header = "uvtk run " + scene_.path + ": mapping " + scene_.mappings[*o.mapping].name;
     io::writeObj(o.path, mapped.mesh, &mapped.uv, write);
-    json record = {{"mapping", scene_.mappings[*o.mapping].name}, {"texcoords", mapped.source}};
-    if (mapped.projection) {
-      record["summary"] = summaryJson(mapped.projection->summary);
-      record["options"] = projectorOptionsJson(*mapped.projector);
-    }
-    if (mapped.seamPlacement) record["seam_placement"] = seamPlacementJson(*mapped.seamPlacement);
-    if (!o.json.empty()) {
-      json j = record;
-      j["input"] = work.inputSummary;
-      j["output"] = o.path;
-      io::writeFileAtomically(o.json, j.dump(2) + "\n");
-    }
-    outputs_[index] = record;
+    const json summary = mapSummaryJson(mapped, work.inputSummary, o.path);  // as `uvtk map --json`
+    if (!o.json.empty()) io::writeFileAtomically(o.json, summary.dump(2) + "\n");
+    outputs_[index] = {{"mapping", scene_.mappings[*o.mapping].name}, {"summary", summary}};
   }
 
   void renderOutput(const SceneOutput& o, std::size_t index, MeshWork& work) {
