@@ -1,16 +1,17 @@
-// Output files appear whole or not at all: write to a temporary file in the target's folder,
-// then rename it over the target.
+// Output files appear whole or not at all: written through a stream to a TemporaryFile beside the
+// target, which commit() renames onto it.
 #pragma once
 
 #include <fstream>
 #include <string>
 
+#include "io/temporary_file.h"
+
 namespace uvtk::io {
 
 class AtomicFile {
  public:
-  explicit AtomicFile(std::string path);  // throws OutputError if the temporary cannot be created
-  ~AtomicFile();                          // removes the temporary unless commit() succeeded
+  explicit AtomicFile(const std::string& path);  // throws OutputError if the temporary cannot be created
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
 
@@ -18,10 +19,8 @@ class AtomicFile {
   void commit();  // flushes, checks the stream, renames; throws OutputError on any failure
 
  private:
-  std::string path_;
-  std::string temporaryPath_;
+  TemporaryFile temporary_;  // declared first: the stream closes before the temporary is removed
   std::ofstream stream_;
-  bool committed_ = false;
 };
 
 // Writes `text` to `path` atomically.

@@ -6,20 +6,21 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <memory>
-#include <filesystem>
 #include <sstream>
 #include <vector>
 
 #include "core/error.h"
+#include "io/temporary_file.h"
 
 namespace uvtk::io {
 
@@ -60,6 +61,44 @@ void checkReadable(const std::string& path) {
   if (isDirectory) throw readFailure(path, "cannot open: Is a directory");
 }
 
+// A PNG (by its signature, whatever the extension) is checked chunk by chunk before OpenImageIO
+// reads it: on a truncated or corrupted PNG, OpenImageIO 2.4's error handler returns to libpng,
+// which then prints "libpng error: ..." on stderr beside our message, and the read leaks. Checked:
+// each chunk's length fits the file, its CRC, IHDR first and IEND last. A deflate stream broken
+// under valid CRCs still reaches libpng.
+void checkPngChunks(const std::string& path) {
+  static constexpr char kSignature[8] = {'\x89', 'P', 'N', 'G', '\r', '\n', '\x1A', '\n'};
+  std::ifstream in(path, std::ios::binary);
+  char head[8];
+  if (!in.read(head, 8) || !std::equal(head, head + 8, kSignature)) return;
+  const auto bigEndian = [](const char* p) {
+    return std::uint32_t(std::uint8_t(p[0])) << 24 | std::uint32_t(std::uint8_t(p[1])) << 16 |
+           std::uint32_t(std::uint8_t(p[2])) << 8 | std::uint32_t(std::uint8_t(p[3]));
+  };
+  std::vector<char> block(1 << 16);
+  for (int chunk = 0;; ++chunk) {
+    const std::string which = "chunk " + std::to_string(chunk);
+    if (!in.read(head, 8)) throw readFailure(path, "cannot read: truncated PNG (" + which + " is cut off)");
+    const std::string type(head + 4, 4);
+    if (chunk == 0 && type != "IHDR")
+      throw readFailure(path, "cannot read: corrupted PNG (the first chunk is not IHDR)");
+    uLong crc = crc32(crc32(0, nullptr, 0), reinterpret_cast<const Bytef*>(head + 4), 4);
+    for (std::uint32_t left = bigEndian(head); left > 0;) {
+      const std::uint32_t n = std::min<std::uint32_t>(left, std::uint32_t(block.size()));
+      if (!in.read(block.data(), n))
+        throw readFailure(path, "cannot read: truncated PNG (" + which + ", " + type + ", is cut off)");
+      crc = crc32(crc, reinterpret_cast<const Bytef*>(block.data()), n);
+      left -= n;
+    }
+    char stored[4];
+    if (!in.read(stored, 4))
+      throw readFailure(path, "cannot read: truncated PNG (" + which + ", " + type + ", is cut off)");
+    if (crc != bigEndian(stored))
+      throw readFailure(path, "cannot read: corrupted PNG (" + which + ", " + type + ", fails its CRC)");
+    if (type == "IEND") return;
+  }
+}
+
 // Integer pixels divided by their maximum here rather than by OpenImageIO, whose conversion
 // multiplies by the reciprocal and so may differ from v / 255 in the last bit.
 template <typename T>
@@ -70,34 +109,10 @@ bool readScaled(OIIO::ImageInput& in, int channels, float maximum, std::vector<f
   return true;
 }
 
-// The mode a newly created file gets (0666 less the umask); mkstemps itself creates 0600.
-mode_t newFileMode() {
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
-  return 0666 & ~mask;
-}
-
 std::uint8_t toUInt8(float c) {
   if (!(c > 0.0f)) return 0;  // also NaN
   if (c >= 1.0f) return 255;
   return static_cast<std::uint8_t>(std::lround(static_cast<double>(c) * 255.0));
-}
-
-// A temporary beside the target, ".NAME.tmp.XXXXXX.EXT": the extension stays last for any
-// writer that looks at it, and the leading dot hides it from globs such as *.png.
-std::string createTemporary(const std::string& path) {
-  const std::filesystem::path target(path);
-  const std::string extension = target.extension().string();
-  const std::string name =
-      (target.parent_path() / ("." + target.filename().string() + ".tmp.XXXXXX" + extension)).string();
-  std::vector<char> buffer(name.begin(), name.end());
-  buffer.push_back('\0');
-  const int fd = ::mkstemps(buffer.data(), static_cast<int>(extension.size()));
-  if (fd < 0)
-    throw writeFailure(path, std::string("cannot create a temporary file beside it: ") + std::strerror(errno));
-  ::fchmod(fd, newFileMode());
-  ::close(fd);
-  return buffer.data();
 }
 
 // The writer for `path`'s format; throws UsageError when there is none or it cannot hold `type`.
@@ -110,15 +125,15 @@ std::unique_ptr<OIIO::ImageOutput> writerFor(const std::string& path, PixelType 
   // OpenImageIO has no query for float support; writers of other formats silently convert.
   const std::string format = out->format_name();
   if (type == PixelType::Float && format != "openexr" && format != "tiff")
-    throw UsageError(path + ": error: cannot write float pixels to a " + format +
-                     " file (use .exr, .tif or .tiff)");
+    throw UsageError(path + ": error: cannot write float pixels to a " + format + " file (use .exr, .tif or .tiff)");
   return out;
 }
 
 }  // namespace
 
-ImageFile readImage(const std::string& path) {
+ImageFile readImage(const std::string& path, std::int64_t maxValues) {
   checkReadable(path);
+  checkPngChunks(path);
   // Keep alpha as stored: by default PNG and TIFF readers premultiply colour by it.
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
@@ -132,11 +147,20 @@ ImageFile readImage(const std::string& path) {
                                 std::to_string(spec.nchannels) + " channels)");
   if (spec.width > kMaxSide || spec.height > kMaxSide)
     throw readFailure(path, "image is " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
-                                ", larger than the " + std::to_string(kMaxSide) + " x " +
-                                std::to_string(kMaxSide) + " limit");
+                                ", larger than the " + std::to_string(kMaxSide) + " x " + std::to_string(kMaxSide) +
+                                " limit");
+
+  const int channels = std::min(spec.nchannels, kMaxChannels);
+  const std::int64_t values = std::int64_t(spec.width) * spec.height * channels;
+  if (values > maxValues) {
+    std::ostringstream message;
+    message << "image is " << spec.width << " x " << spec.height << " x " << channels << " channels, "
+            << double(values) * sizeof(float) / double(1 << 30) << " GiB as float, more than the "
+            << double(maxValues) * sizeof(float) / double(1 << 30) << " GiB limit";
+    throw readFailure(path, message.str());
+  }
 
   ImageFile file;
-  const int channels = std::min(spec.nchannels, kMaxChannels);
   file.image = Image(spec.width, spec.height, channels);
   for (int c = 0; c < channels; ++c) file.image.channelNames.push_back(spec.channel_name(c));
   const auto storedAs = [&](OIIO::TypeDesc type) {
@@ -195,17 +219,12 @@ void writeImage(const std::string& path, const Image& image, PixelType type) {
   const void* pixels = type == PixelType::UInt8 ? static_cast<const void*>(rounded.data()) : image.pixels.data();
   const OIIO::TypeDesc pixelType = spec.format;
 
-  const std::string temporary = createTemporary(path);
-  const auto fail = [&](const std::string& reason) {
-    std::remove(temporary.c_str());
-    return writeFailure(path, reason);
-  };
-  if (!out->open(temporary, spec)) throw fail(oneLine(out->geterror()));
+  TemporaryFile temporary(path);
+  if (!out->open(temporary.path(), spec)) throw writeFailure(path, oneLine(out->geterror()));
   const bool written = out->write_image(pixelType, pixels);
   const bool closed = out->close();
-  if (!written || !closed) throw fail(oneLine(out->geterror()));
-  if (std::rename(temporary.c_str(), path.c_str()) != 0)
-    throw fail(std::string("cannot rename the temporary file onto it: ") + std::strerror(errno));
+  if (!written || !closed) throw writeFailure(path, oneLine(out->geterror()));
+  temporary.commit();
 }
 
 std::string encodePng(const Image& image) {

@@ -2,6 +2,7 @@
 // float EXR/TIFF written atomically.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "core/image.h"
@@ -13,12 +14,15 @@ struct ImageFile {
   bool eightBit = false;  // every channel was stored as 8-bit unsigned integers
 };
 
+// The most values (pixels x channels) readImage allocates by default: 2^29, 2 GiB as float.
+constexpr std::int64_t kMaxImageValues = std::int64_t(1) << 29;
+
 // Reads the first subimage with all its channels (up to 64) in OpenImageIO's order, which for
 // EXR is R, G, B, A, then the rest alphabetically: EXR files do not record the order channels
 // were written in, so find channels by name. Throws InputError "PATH: error: ..." for a missing,
-// unreadable or undecodable file, an empty image, and one larger than 16384 x 16384 pixels
-// (refused, never allocated).
-ImageFile readImage(const std::string& path);
+// unreadable or undecodable file, an empty image, and one wider or taller than 16384 pixels or of
+// more than `maxValues` values (refused from its header, never allocated).
+ImageFile readImage(const std::string& path, std::int64_t maxValues = kMaxImageValues);
 
 enum class PixelType { UInt8, Float };
 

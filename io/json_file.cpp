@@ -7,7 +7,8 @@
 // - nlohmann reports the position of the last byte it read, which is the last byte of an unexpected token; the
 //   message points at the token's first byte instead, and quotes the token. "found end of file" points just
 //   past the last byte.
-// - A UTF-8 byte-order mark is removed before parsing, so that it is not a column of line 1.
+// - A UTF-8 byte-order mark is removed before parsing, so that it is not a column of line 1. A UTF-16 one is named
+//   as such: nlohmann would only see a stray byte 0xFF or 0xFE, which does not tell the user what is wrong.
 #include "io/json_file.h"
 
 #include <algorithm>
@@ -34,6 +35,7 @@ constexpr std::size_t kMaxDepth = 512;
 // Tokens quoted in messages are cut to this many characters, so a megabyte of junk makes a readable error.
 constexpr std::size_t kMaxQuoted = 40;
 constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+constexpr std::string_view kUtf16ByteOrderMarks[] = {"\xFF\xFE", "\xFE\xFF"};  // little-, big-endian
 
 bool isContinuationByte(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
 
@@ -342,6 +344,9 @@ class StrictParser {
 nlohmann::json parseJsonText(const std::string& text, const std::string& name) {
   std::string_view body = text;
   if (body.substr(0, kByteOrderMark.size()) == kByteOrderMark) body.remove_prefix(kByteOrderMark.size());
+  for (const std::string_view mark : kUtf16ByteOrderMarks)
+    if (body.substr(0, mark.size()) == mark)
+      throw errorAt(name, body, 0, "expected UTF-8 text, found a UTF-16 byte-order mark");
   return StrictParser(body, name).parse();
 }
 

@@ -12,6 +12,7 @@
 // - Numbers are decimal (no hex floats); a leading '+' is accepted, as strtod does. A value too
 //   small to represent becomes 0; one too large is "not finite", like nan and inf.
 // - Counts and indices must fit an int: triangles store int indices.
+// - A line longer than 64 MiB is an error: no writer emits one, and it is never held whole.
 // readMesh shows its progress over the file's bytes (core/progress.h), reported every few
 // thousand lines so that the count costs nothing per line but an addition.
 #include "io/mesh_reader.h"
@@ -21,11 +22,13 @@
 #include <charconv>
 #include <climits>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <istream>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 #include "core/error.h"
 #include "core/progress.h"
@@ -39,6 +42,12 @@ constexpr std::size_t kMaxReserve = std::size_t{1} << 20;
 // Tokens quoted in messages are cut to this length, so a megabyte of junk makes a readable error.
 constexpr std::size_t kMaxQuoted = 40;
 constexpr Triangle kNoCorners = {-1, -1, -1};
+// The longest line accepted: no writer emits more (a face of a million corners takes about 10 MB),
+// and a file without line breaks must not be held in memory whole.
+constexpr std::size_t kMaxLineBytes = std::size_t{64} << 20;
+// Bytes read from the stream at a time, at first and at most.
+constexpr std::size_t kFirstReadBlock = std::size_t{1} << 16;
+constexpr std::size_t kReadBlock = std::size_t{1} << 20;
 // Lines read between two progress reports (a power of two).
 constexpr std::size_t kLinesPerReport = 4096;
 
@@ -122,10 +131,7 @@ class LineReader {
 
   // Advances to the next line, with its line ending and comment removed. False at end of file.
   bool nextLine() {
-    if (!std::getline(in_, line_)) {
-      if (in_.bad()) throw inputError(name_, 0, "cannot read: input/output error");
-      return false;
-    }
+    if (!readLine()) return false;
     ++lineNumber_;
     unreportedBytes_ += line_.size() + 1;
     if (progress_ && lineNumber_ % kLinesPerReport == 0) {
@@ -218,6 +224,40 @@ class LineReader {
   }
 
  private:
+  // Reads the next line into line_ without its '\n', from a buffer refilled in large blocks; a line
+  // may end at end of file without one. False at end of file. A line is never held longer than
+  // kMaxLineBytes, so a file without line breaks cannot exhaust memory.
+  bool readLine() {
+    line_.clear();
+    bool any = false;
+    for (;;) {
+      if (next_ == filled_ && !refill()) return any;
+      any = true;
+      const char* begin = buffer_.data() + next_;
+      const std::size_t available = filled_ - next_;
+      const char* newline = static_cast<const char*>(std::memchr(begin, '\n', available));
+      const std::size_t length = newline ? std::size_t(newline - begin) : available;
+      if (line_.size() + length > kMaxLineBytes)
+        throw expectedError(name_, lineNumber_ + 1, "a line of at most " + std::to_string(kMaxLineBytes >> 20) + " MiB",
+                            "a longer one");
+      line_.append(begin, length);
+      next_ += newline ? length + 1 : length;
+      if (newline) return true;
+    }
+  }
+
+  // Reads the next block into buffer_; false at end of file.
+  bool refill() {
+    next_ = filled_ = 0;
+    if (!in_.good()) return false;  // the previous block ended at end of file
+    // Small inputs take a small buffer: the first block is 64 KiB, each next one twice as large.
+    buffer_.resize(buffer_.empty() ? kFirstReadBlock : std::min(kReadBlock, 2 * buffer_.size()));
+    in_.read(buffer_.data(), std::streamsize(buffer_.size()));
+    if (in_.bad()) throw inputError(name_, 0, "cannot read: input/output error");
+    filled_ = std::size_t(in_.gcount());
+    return filled_ > 0;
+  }
+
   void skipBlanks() {
     while (position_ != end_ && (*position_ == ' ' || *position_ == '\t')) ++position_;
   }
@@ -238,6 +278,8 @@ class LineReader {
 
   std::istream& in_;
   const std::string& name_;
+  std::vector<char> buffer_;
+  std::size_t next_ = 0, filled_ = 0;  // the first unread byte of buffer_, and how many it holds
   std::string line_;
   std::size_t lineNumber_ = 0;
   Progress* progress_;

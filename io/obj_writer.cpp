@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/progress.h"
 #include "io/atomic_file.h"
 
 namespace uvtk::io {
@@ -72,8 +73,16 @@ void writeObj(std::ostream& stream, const Mesh& mesh, const UvMap* uvs, const Ob
   const std::size_t faceCount = mesh.triangles.size();
   UVTK_CHECK(!uvs || uvs->uv.size() == 3 * faceCount);
   TextBuffer out;
+  // Progress over the elements written (each vertex, corner, normal and face), reported per flush.
+  Progress progress("writing OBJ", mesh.positions.size() + (uvs ? 3 * faceCount : 0) + mesh.normals.size() + faceCount,
+                    "elements");
+  std::uint64_t unreported = 0;
   auto flushIfFull = [&] {
-    if (out.size() >= kFlushBytes) out.flushTo(stream);
+    ++unreported;
+    if (out.size() < kFlushBytes) return;
+    out.flushTo(stream);
+    progress.advance(unreported);
+    unreported = 0;
   };
   writeHeader(out, options.header);
 
@@ -104,12 +113,13 @@ void writeObj(std::ostream& stream, const Mesh& mesh, const UvMap* uvs, const Ob
       for (std::size_t i = begin; i < end; ++i) {
         const std::size_t c = byVertex[i];
         std::size_t same = begin;  // an earlier corner of this vertex with the same UV, if any
-        while (same < i && !(sameBits(uvs->uv[byVertex[same]].x(), uvs->uv[c].x()) &&
-                             sameBits(uvs->uv[byVertex[same]].y(), uvs->uv[c].y()) &&
-                             sameBits(w(byVertex[same]), w(c))))
+        while (same < i &&
+               !(sameBits(uvs->uv[byVertex[same]].x(), uvs->uv[c].x()) &&
+                 sameBits(uvs->uv[byVertex[same]].y(), uvs->uv[c].y()) && sameBits(w(byVertex[same]), w(c))))
           ++same;
         if (same < i) {
           cornerTexcoord[c] = cornerTexcoord[byVertex[same]];
+          ++unreported;
           continue;
         }
         cornerTexcoord[c] = ++written;
@@ -169,6 +179,7 @@ void writeObj(std::ostream& stream, const Mesh& mesh, const UvMap* uvs, const Ob
     flushIfFull();
   }
   out.flushTo(stream);
+  progress.advance(unreported);
 }
 
 void writeObj(const std::string& path, const Mesh& mesh, const UvMap* uvs, const ObjWriteOptions& options) {

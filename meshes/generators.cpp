@@ -147,7 +147,12 @@ Mesh cube(int subdivisions) {
       return vertex(lattice);
     };
     for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) addQuad(mesh, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+      for (int i = 0; i < n; ++i) {
+        // at() numbers new vertices, so the order of the calls is fixed here (the committed cube.obj's),
+        // not left to the order of argument evaluation, which differs between compilers.
+        const int d = at(i, j + 1), c = at(i + 1, j + 1), b = at(i + 1, j), a = at(i, j);
+        addQuad(mesh, a, b, c, d);
+      }
   }
   return mesh;
 }

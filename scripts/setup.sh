@@ -1,15 +1,24 @@
 #!/usr/bin/env bash
 # Installs the Debian packages uvtk needs (only those missing), then configures and builds.
-# Usage: scripts/setup.sh [build-dir]   (default: build)
+# Usage: scripts/setup.sh [build-dir]   the release build (default: build)
+#        scripts/setup.sh --fuzz        the fuzz preset (clang, ASan + UBSan + libFuzzer): build-fuzz
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build_dir=${1:-build}
 
 packages=(cmake ninja-build g++ pkg-config
           libeigen3-dev libopenmesh-dev libcgal-dev libgmp-dev libmpfr-dev
           libopenimageio-dev openimageio-tools
-          libssl-dev libsleef-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+          libssl-dev zlib1g-dev libsleef-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
           libosmesa6-dev)  # Mesa's software OpenGL: the reference the texgen tests compare with
+preset=""
+build_dir=${1:-build}
+if [ "${1:-}" = "--fuzz" ]; then
+  preset=fuzz
+  build_dir=build-fuzz
+  # clang with its sanitizer and libFuzzer runtimes; llvm-symbolizer makes the reports readable.
+  packages+=(clang libclang-rt-14-dev llvm)
+fi
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -23,6 +32,10 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 if [ ! -f "$build_dir/build.ninja" ]; then
-  cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release >&2
+  if [ -n "$preset" ]; then
+    cmake --preset "$preset" >&2
+  else
+    cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release >&2
+  fi
 fi
 cmake --build "$build_dir" -j "$(nproc)" >&2

@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "core/error.h"
 #include "core/progress.h"
+#include "io/temporary_file.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"uvtk: texture coordinates for triangle meshes, and proof that they are right"};
@@ -20,6 +21,7 @@ int main(int argc, char** argv) {
   uvtk::cli::addSchemaCommand(app);
   uvtk::cli::addMergeReportsCommand(app);
   uvtk::setProgressEnabled(true);  // a command with --quiet turns it off
+  uvtk::io::installInterruptHandlers();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

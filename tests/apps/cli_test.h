@@ -17,10 +17,12 @@ struct CliRun {
 
 class CliTest : public ScratchDirTest {
  protected:
-  CliRun uvtk(const std::string& arguments) const {
+  CliRun uvtk(const std::string& arguments) const { return shell(std::string(UVTK_BINARY) + " " + arguments); }
+
+  // Runs a shell command line (in a subshell, so `ulimit` stays inside it) with its stderr captured.
+  CliRun shell(const std::string& command) const {
     const std::string errFile = path("stderr.txt");
-    const std::string command = std::string(UVTK_BINARY) + " " + arguments + " 2> " + errFile + " > /dev/null";
-    const int raw = std::system(command.c_str());
+    const int raw = std::system(("(" + command + ") 2> " + errFile + " > /dev/null").c_str());
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, readText(errFile)};
   }
 };

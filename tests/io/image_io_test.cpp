@@ -75,8 +75,12 @@ TEST_F(ImageIoTest, PngRoundTripKeepsValuesAndRowOrder) {
 
 TEST_F(ImageIoTest, UInt8RoundsAndClamps) {
   Image image(6, 1, 1);
-  image.pixels = {0.5f / 255.0f + 1e-5f, -0.25f, 1.5f, std::numeric_limits<float>::quiet_NaN(),
-                  -std::numeric_limits<float>::infinity(), 0.4f / 255.0f};
+  image.pixels = {0.5f / 255.0f + 1e-5f,
+                  -0.25f,
+                  1.5f,
+                  std::numeric_limits<float>::quiet_NaN(),
+                  -std::numeric_limits<float>::infinity(),
+                  0.4f / 255.0f};
   writeImage(path("r.png"), image, PixelType::UInt8);
   const Image back = readImage(path("r.png")).image;
   const std::vector<float> expected = {1 / 255.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f};
@@ -103,7 +107,8 @@ TEST_F(ImageIoTest, ExrRoundTripIsBitExactWithNames) {
     for (int y = 0; y < 2; ++y)
       for (int x = 0; x < 3; ++x) {
         const float expected = image.at(x, y, source), actual = file.image.at(x, y, c);
-        EXPECT_EQ(std::memcmp(&expected, &actual, sizeof(float)), 0) << x << "," << y << " " << image.channelNames[source];
+        EXPECT_EQ(std::memcmp(&expected, &actual, sizeof(float)), 0)
+            << x << "," << y << " " << image.channelNames[source];
       }
   }
 }
@@ -136,14 +141,14 @@ TEST_F(ImageIoTest, UnreadableInputsAreInputErrors) {
     const std::string message = messageOf<InputError>([&] { readImage(file); });
     expectOneLineError(message, file);
   }
-  EXPECT_NE(messageOf<InputError>([&] { readImage(missing); }).find("No such file or directory"),
-            std::string::npos);
+  EXPECT_NE(messageOf<InputError>([&] { readImage(missing); }).find("No such file or directory"), std::string::npos);
 }
 
 TEST_F(ImageIoTest, RefusesImagesOverTheSizeLimit) {
   writeImage(path("wide.png"), Image(16385, 1, 1), PixelType::UInt8);
-  EXPECT_NE(messageOf<InputError>([&] { readImage(path("wide.png")); })
-                .find("image is 16385 x 1, larger than the 16384 x 16384 limit"),
+  EXPECT_NE(messageOf<InputError>([&] {
+              readImage(path("wide.png"));
+            }).find("image is 16385 x 1, larger than the 16384 x 16384 limit"),
             std::string::npos);
 }
 
@@ -157,9 +162,7 @@ std::uint32_t crc32(const std::string& bytes) {
   return ~crc;
 }
 
-std::string bigEndian(std::uint32_t v) {
-  return {char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
-}
+std::string bigEndian(std::uint32_t v) { return {char(v >> 24), char(v >> 16), char(v >> 8), char(v)}; }
 
 TEST_F(ImageIoTest, RefusesAHugeHeaderWithoutReadingPixels) {
   // A valid 1x1 PNG whose header then claims 20000 x 20000: refused before any allocation.
@@ -173,6 +176,52 @@ TEST_F(ImageIoTest, RefusesAHugeHeaderWithoutReadingPixels) {
   const std::string message = messageOf<InputError>([&] { readImage(file); });
   expectOneLineError(message, file);
   EXPECT_NE(message.find("20000 x 20000, larger than the 16384 x 16384 limit"), std::string::npos) << message;
+}
+
+TEST_F(ImageIoTest, RefusesMoreValuesThanTheLimitFromTheHeader) {
+  // A 16384 x 16384 RGB header without pixels: 3 GiB as float, refused before anything is read.
+  const std::string file = writeText("big.ppm", "P6\n16384 16384\n255\n");
+  const std::string message = messageOf<InputError>([&] { readImage(file); });
+  expectOneLineError(message, file);
+  EXPECT_NE(message.find("image is 16384 x 16384 x 3 channels, 3 GiB as float, more than the 2 GiB limit"),
+            std::string::npos)
+      << message;
+
+  writeImage(path("small.png"), gradient(4, 4, 3), PixelType::UInt8);
+  EXPECT_EQ(readImage(path("small.png"), 48).image.pixels.size(), 48u);
+  EXPECT_NE(messageOf<InputError>([&] { readImage(path("small.png"), 47); }).find("image is 4 x 4 x 3 channels"),
+            std::string::npos);
+}
+
+TEST_F(ImageIoTest, ChecksAPngsChunksBeforeLibpngReadsIt) {
+  writeImage(path("good.png"), gradient(8, 8, 3), PixelType::UInt8);
+  const std::string png = readText(path("good.png"));
+  const std::size_t idat = png.find("IDAT");
+  ASSERT_NE(idat, std::string::npos);
+  const auto messageFor = [&](const std::string& name, const std::string& bytes) {
+    const std::string file = writeText(name, bytes);
+    const std::string message = messageOf<InputError>([&] { readImage(file); });
+    expectOneLineError(message, file);
+    return message;
+  };
+  // The writer may put other chunks between IHDR and IDAT: the chunk's number is not asserted.
+  const auto expectMessage = [](const std::string& message, const std::string& begin, const std::string& end) {
+    EXPECT_EQ(message.rfind(begin, 0), 0u) << message;
+    EXPECT_EQ(message.substr(message.size() - std::min(message.size(), end.size())), end) << message;
+  };
+  expectMessage(messageFor("cut.png", png.substr(0, idat + 10)),
+                path("cut.png") + ": error: cannot read: truncated PNG (chunk ", ", IDAT, is cut off)");
+  std::string flipped = png;
+  flipped[idat + 6] = char(flipped[idat + 6] ^ 0x55);
+  expectMessage(messageFor("crc.png", flipped), path("crc.png") + ": error: cannot read: corrupted PNG (chunk ",
+                ", IDAT, fails its CRC)");
+  // The check goes by the signature, not the extension.
+  EXPECT_EQ(messageFor("cut.tif", png.substr(0, 30)),
+            path("cut.tif") + ": error: cannot read: truncated PNG (chunk 0, IHDR, is cut off)");
+  std::string noHeader = png;
+  noHeader.replace(12, 4, "IHDX");
+  EXPECT_EQ(messageFor("first.png", noHeader),
+            path("first.png") + ": error: cannot read: corrupted PNG (the first chunk is not IHDR)");
 }
 
 TEST_F(ImageIoTest, WriteErrors) {
@@ -190,8 +239,7 @@ TEST_F(ImageIoTest, WriteErrors) {
 TEST_F(ImageIoTest, FailedWriteLeavesTheTargetAlone) {
   const std::string target = writeText("keep.png", "old contents");
   // PNG holds at most four channels, so the writer fails after the temporary exists.
-  const std::string message =
-      messageOf<OutputError>([&] { writeImage(target, gradient(2, 2, 5), PixelType::UInt8); });
+  const std::string message = messageOf<OutputError>([&] { writeImage(target, gradient(2, 2, 5), PixelType::UInt8); });
   expectOneLineError(message, target);
   EXPECT_NE(message.find("cannot write:"), std::string::npos) << message;
   EXPECT_EQ(readText(target), "old contents");

@@ -391,6 +391,25 @@ TEST(ReadObj, ABomIsOnlySkippedAtTheStartOfTheFile) {
             "t.obj:4: error: expected a keyword (v, vt, vn, f, ...), found '" + bom + "f'");
 }
 
+TEST(ReadObj, RefusesALineLongerThan64MiB) {
+  // 64 MiB of blanks inside a vertex line on line 2: refused as soon as the limit is passed.
+  const std::string text = "v 0 0 0\nv 1 1 1" + std::string(std::size_t{64} << 20, ' ') + "\nf 1 1 1\n";
+  EXPECT_EQ(objError(text), "t.obj:2: error: expected a line of at most 64 MiB, found a longer one");
+}
+
+TEST(ReadObj, LinesSpanningReadBlocksAreWhole) {
+  // The reader's blocks (64 KiB doubling to 1 MiB) are powers of two, so 9-byte vertex lines cross
+  // their boundaries at every offset.
+  std::string text;
+  const int n = (3 << 20) / 9;
+  for (int i = 0; i < n; ++i) text += "v 1 2 30\n";
+  text += "f 1 2 3\nf -1 -2 -3";  // the last line without a newline
+  const Mesh m = obj(text).mesh;
+  ASSERT_EQ(m.positions.size(), std::size_t(n));
+  for (const Vec3& p : m.positions) ASSERT_EQ(p, Vec3(1, 2, 30));
+  EXPECT_EQ(m.triangles.back(), Triangle({n - 1, n - 2, n - 3}));
+}
+
 TEST(ReadObj, QuotesAtMostFortyCharactersOfALongToken) {
   EXPECT_EQ(objError("v 0 0 " + std::string(5000, '7') + "x\n"),
             "t.obj:1: error: expected a number, found '" + std::string(40, '7') + "...'");
