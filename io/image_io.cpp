@@ -29,8 +29,9 @@ namespace {
 constexpr int kMaxSide = 16384;
 constexpr int kMaxChannels = 64;
 
-// OpenImageIO's messages may span several lines; ours are one line each.
-std::string oneLine(const std::string& message) {
+// OpenImageIO's messages may span several lines; ours are one line each. Some of its readers fail
+// without a message: then `silent` says what failed.
+std::string oneLine(const std::string& message, const char* silent = "unknown OpenImageIO error") {
   std::istringstream lines(message);
   std::string line, joined;
   while (std::getline(lines, line)) {
@@ -40,7 +41,7 @@ std::string oneLine(const std::string& message) {
     if (!joined.empty()) joined += "; ";
     joined += line.substr(begin, end - begin + 1);
   }
-  return joined.empty() ? "unknown OpenImageIO error" : joined;
+  return joined.empty() ? silent : joined;
 }
 
 InputError readFailure(const std::string& path, const std::string& what) {
@@ -131,7 +132,7 @@ std::unique_ptr<OIIO::ImageOutput> writerFor(const std::string& path, PixelType 
 
 }  // namespace
 
-ImageFile readImage(const std::string& path, std::int64_t maxValues) {
+ImageFile readImage(const std::string& path, std::int64_t maxValues, std::int64_t maxPixels) {
   checkReadable(path);
   checkPngChunks(path);
   // Keep alpha as stored: by default PNG and TIFF readers premultiply colour by it.
@@ -151,7 +152,11 @@ ImageFile readImage(const std::string& path, std::int64_t maxValues) {
                                 " limit");
 
   const int channels = std::min(spec.nchannels, kMaxChannels);
-  const std::int64_t values = std::int64_t(spec.width) * spec.height * channels;
+  const std::int64_t pixelCount = std::int64_t(spec.width) * spec.height, values = pixelCount * channels;
+  if (pixelCount > maxPixels)
+    throw readFailure(path, "image is " + std::to_string(spec.width) + " x " + std::to_string(spec.height) + ", " +
+                                std::to_string(pixelCount) + " pixels, more than the limit of " +
+                                std::to_string(maxPixels));
   if (values > maxValues) {
     std::ostringstream message;
     message << "image is " << spec.width << " x " << spec.height << " x " << channels << " channels, "
@@ -177,7 +182,7 @@ ImageFile readImage(const std::string& path, std::int64_t maxValues) {
   } else {
     read = in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data());
   }
-  if (!read) throw readFailure(path, "cannot read: " + oneLine(in->geterror()));
+  if (!read) throw readFailure(path, "cannot read: " + oneLine(in->geterror(), "the pixels are missing or corrupt"));
   in->close();
   return file;
 }

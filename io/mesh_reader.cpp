@@ -519,7 +519,7 @@ ReadMeshResult readObjLines(LineReader& reader) {
 // `n i0 .. i(n-1) [colour]` with 0-based indices and up to four colour values; then only blank
 // and comment lines. Blank and comment lines may appear anywhere.
 ReadMeshResult readOffLines(LineReader& reader) {
-  const std::string kHeaders = "OFF, NOFF or COFF header";
+  const std::string kHeaders = "an OFF header (OFF, NOFF, COFF, CNOFF or NCOFF)";
   if (!reader.nextContentLine()) reader.failAtEndOfFile(kHeaders);
   OffLayout layout;
   const std::string_view header = reader.token();

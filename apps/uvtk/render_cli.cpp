@@ -170,7 +170,8 @@ bool TextureArguments::procedural() const { return render::isProceduralName(sour
 render::Texture TextureArguments::load() const {
   render::Texture texture = [&] {
     if (std::optional<render::Texture> made = render::proceduralTexture(source)) return std::move(*made);
-    const io::ImageFile file = io::readImage(source);
+    // A texture's texel limit is checked from the file's header, before its pixels are read.
+    const io::ImageFile file = io::readImage(source, io::kMaxImageValues, render::kMaxTexels);
     return render::Texture::fromImage(file.image, file.eightBit);
   }();
   if (render::needsMipmaps(filter)) texture.buildMipmaps();

@@ -1,4 +1,4 @@
-// The bad-input catalogue (tests/data/bad/, described in its README.md) run through the program as a user runs
+// The bad-input catalogue (tests/data/bad/, described in docs/robustness.md) run through the program as a user runs
 // it: every entry gives its exit status and its exact one-line message, writes nothing, and leaves an existing
 // output file as it was. The few valid entries (CRLF line endings) are accepted. Inputs too large to commit, or
 // that git cannot hold (a folder, an unreadable file), are generated in the scratch folder.
@@ -76,8 +76,10 @@ const Entry kEntries[] = {
     {Command::kRenderMesh, "obj/directory.obj", 3, "FILE: error: cannot open: Is a directory", Source::kDirectory},
     {Command::kMap, "obj/unreadable.obj", 3, "FILE: error: cannot open: Permission denied", Source::kUnreadable},
     // OFF
-    {Command::kMap, "off/empty.off", 3, "FILE:1: error: expected OFF, NOFF or COFF header, found end of file"},
-    {Command::kMap, "off/wrong-header.off", 3, "FILE:1: error: expected OFF, NOFF or COFF header, found 'ply'"},
+    {Command::kMap, "off/empty.off", 3,
+     "FILE:1: error: expected an OFF header (OFF, NOFF, COFF, CNOFF or NCOFF), found end of file"},
+    {Command::kMap, "off/wrong-header.off", 3,
+     "FILE:1: error: expected an OFF header (OFF, NOFF, COFF, CNOFF or NCOFF), found 'ply'"},
     {Command::kMap, "off/truncated-after-header.off", 3, "FILE:2: error: expected a vertex count, found end of file"},
     {Command::kMap, "off/truncated-mid-counts.off", 3,
      "FILE:2: error: expected an edge count (a non-negative integer), found end of line"},
@@ -139,10 +141,10 @@ const Entry kEntries[] = {
     {Command::kRenderTexture, "image/directory.png", 3, "FILE: error: cannot open: Is a directory", Source::kDirectory},
     // Headers only: the reader must refuse or fail from the header, never allocate its way into a crash.
     {Command::kRenderTexture, "image/16384x16384-rgb.ppm", 3,
-     "FILE: error: image is 16384 x 16384 x 3 channels, 3 GiB as float, more than the 2 GiB limit", Source::kText,
+     "FILE: error: image is 16384 x 16384, 268435456 pixels, more than the limit of 134217728", Source::kText,
      "P6\n16384 16384\n255\n"},
-    {Command::kRenderTexture, "image/16384x16384-gray.pgm", 3, "FILE: error: cannot read: unknown OpenImageIO error",
-     Source::kText, "P5\n16384 16384\n255\n"},
+    {Command::kRenderTexture, "image/16384x8192-gray.pgm", 3,
+     "FILE: error: cannot read: the pixels are missing or corrupt", Source::kText, "P5\n16384 8192\n255\n"},
 };
 
 std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
@@ -262,9 +264,9 @@ TEST_F(BadInput, UnreadableMeshes) {
     if (e.source == Source::kUnreadable) check(e);
 }
 
-// The catalogue, the table above and the README's table cannot drift apart: every committed file is an entry,
-// and every entry's file and exact message are in the README.
-TEST(BadInputCatalogue, EveryFileIsAnEntryAndEveryEntryIsInTheReadme) {
+// The catalogue, the table above and the tables of docs/robustness.md cannot drift apart: every committed file
+// is an entry, and every entry's file and exact message are on that page.
+TEST(BadInputCatalogue, EveryFileIsAnEntryAndEveryEntryIsDocumented) {
   std::set<std::string> committed, entries;
   for (const auto& entry : fs::recursive_directory_iterator(kCatalogueDir)) {
     const std::string relative = entry.path().lexically_relative(kCatalogueDir).string();
@@ -276,12 +278,13 @@ TEST(BadInputCatalogue, EveryFileIsAnEntryAndEveryEntryIsInTheReadme) {
     if (e.source == Source::kCatalogue) entries.insert(e.file);
   EXPECT_EQ(committed, entries);
 
-  std::ifstream in(kCatalogueDir + "/README.md");
-  const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::ifstream in(std::string(UVTK_SOURCE_DIR) + "/docs/robustness.md");
+  const std::string page((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_FALSE(page.empty());
   for (const Entry& e : kEntries) {
-    EXPECT_NE(readme.find(std::string("`") + e.file + "`"), std::string::npos) << e.file;
+    EXPECT_NE(page.find(std::string("`") + e.file + "`"), std::string::npos) << e.file;
     if (e.message) {
-      EXPECT_NE(readme.find(std::string("`") + e.message + "`"), std::string::npos) << e.message;
+      EXPECT_NE(page.find(std::string("`") + e.message + "`"), std::string::npos) << e.message;
     }
   }
 }

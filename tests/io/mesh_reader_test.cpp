@@ -498,16 +498,16 @@ TEST(ReadOff, AcceptsAndIgnoresFaceColours) {
 // OFF, rejected input
 
 TEST(ReadOff, RejectsAMissingOrWrongHeader) {
-  EXPECT_EQ(offError("PLY\n3 1 0\n"), "t.off:1: error: expected OFF, NOFF or COFF header, found 'PLY'");
-  EXPECT_EQ(offError("# comment\noff\n"), "t.off:2: error: expected OFF, NOFF or COFF header, found 'off'");
-  EXPECT_EQ(offError("3 1 0\n0 0 0\n"), "t.off:1: error: expected OFF, NOFF or COFF header, found '3'");
-  EXPECT_EQ(offError("OFF3 1 0\n"), "t.off:1: error: expected OFF, NOFF or COFF header, found 'OFF3'");
-  EXPECT_EQ(offError("STOFF\n"), "t.off:1: error: expected OFF, NOFF or COFF header, found 'STOFF'");
+  EXPECT_EQ(offError("PLY\n3 1 0\n"), "t.off:1: error: expected an OFF header (OFF, NOFF, COFF, CNOFF or NCOFF), found 'PLY'");
+  EXPECT_EQ(offError("# comment\noff\n"), "t.off:2: error: expected an OFF header (OFF, NOFF, COFF, CNOFF or NCOFF), found 'off'");
+  EXPECT_EQ(offError("3 1 0\n0 0 0\n"), "t.off:1: error: expected an OFF header (OFF, NOFF, COFF, CNOFF or NCOFF), found '3'");
+  EXPECT_EQ(offError("OFF3 1 0\n"), "t.off:1: error: expected an OFF header (OFF, NOFF, COFF, CNOFF or NCOFF), found 'OFF3'");
+  EXPECT_EQ(offError("STOFF\n"), "t.off:1: error: expected an OFF header (OFF, NOFF, COFF, CNOFF or NCOFF), found 'STOFF'");
 }
 
 TEST(ReadOff, RejectsAnEmptyFile) {
-  EXPECT_EQ(offError(""), "t.off:1: error: expected OFF, NOFF or COFF header, found end of file");
-  EXPECT_EQ(offError("# only\n\n"), "t.off:3: error: expected OFF, NOFF or COFF header, found end of file");
+  EXPECT_EQ(offError(""), "t.off:1: error: expected an OFF header (OFF, NOFF, COFF, CNOFF or NCOFF), found end of file");
+  EXPECT_EQ(offError("# only\n\n"), "t.off:3: error: expected an OFF header (OFF, NOFF, COFF, CNOFF or NCOFF), found end of file");
 }
 
 TEST(ReadOff, RejectsMissingCounts) {
