@@ -13,13 +13,20 @@
 
 namespace uvtk::fuzz {
 
-// The process's folder under the system's temporary folder, created on first use.
+// The process's folder under the system's temporary folder, created on first use and removed when
+// the fuzzer exits normally (after a crash it stays, beside the crashing input).
 inline const std::filesystem::path& scratchFolder() {
   static const std::filesystem::path folder = [] {
     const auto f = std::filesystem::temp_directory_path() / ("uvtk_fuzz_" + std::to_string(::getpid()));
     std::filesystem::create_directories(f);
     return f;
   }();
+  // Registered after `folder` is built, so it runs before `folder` is destroyed.
+  static const int removal = std::atexit([] {
+    std::error_code ignored;
+    std::filesystem::remove_all(folder, ignored);
+  });
+  (void)removal;
   return folder;
 }
 
