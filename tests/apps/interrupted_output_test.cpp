@@ -120,8 +120,8 @@ TEST_F(InterruptedOutput, AFileSizeLimitIsAWriteErrorThatLeavesNothing) {
   writeInput(false);
   const std::string before = "# the previous output\n";
   writeText("kept.obj", before);
-  const CliRun map = shell("ulimit -f 8; exec " +
-                           uvtkCommand("map " + path("in.obj") + " --projector sphere -o " + path("kept.obj")));
+  const CliRun map =
+      shell("ulimit -f 8; exec " + uvtkCommand("map " + path("in.obj") + " --projector sphere -o " + path("kept.obj")));
   EXPECT_EQ(map.status, 4) << map.err;
   EXPECT_EQ(map.err, path("kept.obj") + ": error: cannot write: writing the temporary file failed: File too large\n");
   EXPECT_EQ(readText(path("kept.obj")), before);
@@ -136,11 +136,12 @@ TEST_F(InterruptedOutput, AFileSizeLimitIsAWriteErrorThatLeavesNothing) {
 
 // A real full disk: a 256 KiB tmpfs mounted in a private mount namespace (needs root; skipped otherwise).
 TEST_F(InterruptedOutput, AFullDiskIsAWriteErrorThatLeavesNothing) {
-  if (::geteuid() != 0 || shell("unshare --mount true").status != 0)
-    GTEST_SKIP() << "mounting a small tmpfs needs root and unshare(1); the file-size limit test covers EFBIG";
-  writeInput(false);
   fs::create_directory(path("small"));
   const std::string small = path("small");
+  if (::geteuid() != 0 || shell("unshare --mount sh -c 'mount -t tmpfs -o size=256k tmpfs " + small + "'").status != 0)
+    GTEST_SKIP() << "mounting a small tmpfs needs root, unshare(1) and the right to mount; the file-size limit test "
+                    "covers EFBIG";
+  writeInput(false);
   const CliRun run = shell("unshare --mount sh -c 'mount -t tmpfs -o size=256k tmpfs " + small + " && " +
                            uvtkCommand("map " + path("in.obj") + " --projector sphere -o " + small + "/out.obj") +
                            "; status=$?; ls -A " + small + " > " + path("listing.txt") + "; exit $status'");
