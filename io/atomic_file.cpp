@@ -1,24 +1,15 @@
 #include "io/atomic_file.h"
 
 #include <cerrno>
-#include <cstring>
 
 #include "core/error.h"
 
 namespace uvtk::io {
 
-namespace {
-
-std::string failure(const std::string& path, const std::string& what, int error) {
-  return path + ": error: cannot write: " + what + (error ? std::string(": ") + std::strerror(error) : "");
-}
-
-}  // namespace
-
 AtomicFile::AtomicFile(const std::string& path) : temporary_(path) {
   errno = 0;
   stream_.open(temporary_.path(), std::ios::binary | std::ios::trunc);
-  if (!stream_) throw OutputError(failure(path, "cannot open the temporary file " + temporary_.path(), errno));
+  if (!stream_) throw writeError(path, "cannot open the temporary file " + temporary_.path(), errno);
 }
 
 void AtomicFile::commit() {
@@ -29,8 +20,7 @@ void AtomicFile::commit() {
   int error = errno;
   stream_.close();
   if (written) error = errno;
-  if (!written || stream_.fail())
-    throw OutputError(failure(temporary_.target(), "writing the temporary file failed", error));
+  if (!written || stream_.fail()) throw writeError(temporary_.target(), "writing the temporary file failed", error);
   temporary_.commit();
 }
 

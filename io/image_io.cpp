@@ -48,10 +48,6 @@ InputError readFailure(const std::string& path, const std::string& what) {
   return InputError(path + ": error: " + what);
 }
 
-OutputError writeFailure(const std::string& path, const std::string& what) {
-  return OutputError(path + ": error: cannot write: " + what);
-}
-
 // OpenImageIO reports a missing file or a folder vaguely; the system says it plainly.
 void checkReadable(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY);
@@ -225,10 +221,10 @@ void writeImage(const std::string& path, const Image& image, PixelType type) {
   const OIIO::TypeDesc pixelType = spec.format;
 
   TemporaryFile temporary(path);
-  if (!out->open(temporary.path(), spec)) throw writeFailure(path, oneLine(out->geterror()));
+  if (!out->open(temporary.path(), spec)) throw writeError(path, oneLine(out->geterror()));
   const bool written = out->write_image(pixelType, pixels);
   const bool closed = out->close();
-  if (!written || !closed) throw writeFailure(path, oneLine(out->geterror()));
+  if (!written || !closed) throw writeError(path, oneLine(out->geterror()));
   temporary.commit();
 }
 

@@ -55,10 +55,6 @@ extern "C" void removeTemporariesAndDie(int signal) {
   std::raise(signal);
 }
 
-std::string failure(const std::string& target, const std::string& what, int error) {
-  return target + ": error: cannot write: " + what + ": " + std::strerror(error);
-}
-
 // The mode a newly created file gets (0666 less the umask); mkstemps itself creates 0600.
 mode_t newFileMode() {
   const mode_t mask = ::umask(0);
@@ -67,6 +63,11 @@ mode_t newFileMode() {
 }
 
 }  // namespace
+
+OutputError writeError(const std::string& target, const std::string& what, int error) {
+  return OutputError(target + ": error: cannot write: " + what +
+                     (error ? std::string(": ") + std::strerror(error) : ""));
+}
 
 TemporaryFile::TemporaryFile(const std::string& target) : target_(target) {
   const std::filesystem::path t(target);
@@ -80,7 +81,7 @@ TemporaryFile::TemporaryFile(const std::string& target) : target_(target) {
   if (fd < 0) {
     const int error = errno;
     unregister(slot_);
-    throw OutputError(failure(target, "cannot create a temporary file beside it", error));
+    throw writeError(target, "cannot create a temporary file beside it", error);
   }
   path_ = buffer;
   ::fchmod(fd, newFileMode());
@@ -97,7 +98,7 @@ void TemporaryFile::commit() {
   if (std::rename(path_.c_str(), target_.c_str()) != 0) {
     const int error = errno;
     ::unlink(path_.c_str());
-    throw OutputError(failure(target_, "cannot rename the temporary file onto it", error));
+    throw writeError(target_, "cannot rename the temporary file onto it", error);
   }
   committed_ = true;
 }

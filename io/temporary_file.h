@@ -5,7 +5,12 @@
 
 #include <string>
 
+#include "core/error.h"
+
 namespace uvtk::io {
+
+// The one form of every output failure: "TARGET: error: cannot write: WHAT[: the reason errno gives]".
+OutputError writeError(const std::string& target, const std::string& what, int error = 0);
 
 class TemporaryFile {
  public:

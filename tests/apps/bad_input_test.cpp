@@ -184,10 +184,13 @@ std::string commandLine(const Entry& e, const std::string& file, const fs::path&
 // One test per reader rather than per entry: each test program start costs as much as the uvtk it runs.
 class BadInput : public CliTest {
  protected:
-  // Checks every entry under `folder` of the catalogue but the unreadable files, which have a test of their own.
-  void checkFolder(const std::string& folder) {
+  // Checks every entry under `folder` of the catalogue but the unreadable files, which have a test of their own;
+  // returns how many it checked.
+  int checkFolder(const std::string& folder) {
+    int count = 0;
     for (const Entry& e : kEntries)
-      if (std::string(e.file).rfind(folder, 0) == 0 && e.source != Source::kUnreadable) check(e);
+      if (std::string(e.file).rfind(folder, 0) == 0 && e.source != Source::kUnreadable) check(e), ++count;
+    return count;
   }
 
   // Runs the entry's command with an output folder holding only an earlier output file, and checks the status,
@@ -250,18 +253,20 @@ class BadInput : public CliTest {
   int checked_ = 0;
 };
 
-TEST_F(BadInput, ObjMeshes) { checkFolder("obj/"); }
+TEST_F(BadInput, ObjMeshes) { EXPECT_EQ(checkFolder("obj/"), 17); }
 
-TEST_F(BadInput, OffMeshes) { checkFolder("off/"); }
+TEST_F(BadInput, OffMeshes) { EXPECT_EQ(checkFolder("off/"), 23); }
 
-TEST_F(BadInput, Scenes) { checkFolder("scene/"); }
+TEST_F(BadInput, Scenes) { EXPECT_EQ(checkFolder("scene/"), 12); }
 
-TEST_F(BadInput, ImageTextures) { checkFolder("image/"); }
+TEST_F(BadInput, ImageTextures) { EXPECT_EQ(checkFolder("image/"), 8); }
 
 TEST_F(BadInput, UnreadableMeshes) {
   if (::geteuid() == 0) GTEST_SKIP() << "running as root, which reads a file whatever its permissions";
+  int count = 0;
   for (const Entry& e : kEntries)
-    if (e.source == Source::kUnreadable) check(e);
+    if (e.source == Source::kUnreadable) check(e), ++count;
+  EXPECT_EQ(count, 2);
 }
 
 // The catalogue, the table above and the tables of docs/robustness.md cannot drift apart: every committed file
