@@ -23,7 +23,7 @@ Mat3 frameRows(const Vec3& axis, const Vec3& reference) {
 
 // The frame rows of a fit, before scaling: which direction becomes local x, y and z.
 Mat3 fittedRotation(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options) {
-  if (options.fit == Fit::BBox) {
+  if (options.fit == Fit::BBox || options.fit == Fit::Center) {
     // A cyclic permutation keeps the frame right-handed: axis x gives local (y, z, x), etc.
     Mat3 rows = Mat3::Zero();
     for (int k = 0; k < 3; ++k) rows(k, (options.axis + 1 + k) % 3) = 1.0;
@@ -72,7 +72,7 @@ Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface,
 
   // local = scale (rotation p - origin), per axis
   Vec3 origin = center, scale = Vec3::Ones();
-  switch (surface) {
+  switch (options.fit == Fit::Center ? SurfaceKind::TwoPlane : surface) {  // Center: no surface-specific fit
     case SurfaceKind::Plane: {
       const double xy = positiveOr(std::max(extent.x(), extent.y()), 1.0);
       origin = Vec3(lo.x(), lo.y(), center.z());
@@ -114,9 +114,20 @@ Affine3 fitPlacement(const std::vector<Vec3>& positions, SurfaceKind surface, co
   const Affine3 frame = frameBeforeTurn(positions, surface, options);
   if (options.turnDegrees == 0.0 || surface == SurfaceKind::TwoPlane) return frame;
   if (!std::isfinite(options.turnDegrees)) throw UsageError("--seam-place: expected a finite angle in degrees");
-  // Turning the frame by +a puts the point at old azimuth a on the new local +x axis.
-  const double radians = options.turnDegrees * (kPi / 180.0);
-  return Affine3(Eigen::AngleAxisd(-radians, Vec3::UnitZ())) * frame;
+  // Turning the frame by +a puts the point at old azimuth a on the new local +x axis. Quarter
+  // turns are exact: a seam moved to -y (Blender's) must not leave 6e-17 of x in local y.
+  const double degrees = std::fmod(options.turnDegrees, 360.0);
+  double c = 0.0, s = 0.0;
+  if (degrees == std::trunc(degrees) && std::fmod(degrees, 90.0) == 0.0) {
+    static constexpr double kQuarterCos[4] = {1, 0, -1, 0}, kQuarterSin[4] = {0, 1, 0, -1};
+    const int quarter = (static_cast<int>(degrees / 90.0) + 4) % 4;
+    c = kQuarterCos[quarter], s = kQuarterSin[quarter];
+  } else {
+    c = std::cos(degrees * (kPi / 180.0)), s = std::sin(degrees * (kPi / 180.0));
+  }
+  Mat3 turn;  // rotation by -a about z
+  turn << c, s, 0, -s, c, 0, 0, 0, 1;
+  return Affine3(turn) * frame;
 }
 
 }  // namespace uvtk::param

@@ -14,6 +14,7 @@ enum class SurfaceKind { Plane, TwoPlane, Cylinder, Sphere, Cube };
 enum class Fit {
   None,  // local = object coordinates
   BBox,  // axis-aligned bounding box; --axis picks the object axis that becomes local z
+  Center,  // the bounding box's centre only: object axes (permuted by --axis) and object units
   Pca,   // principal axes (CGAL linear_least_squares_fitting_3)
   Obb,   // CGAL oriented_bounding_box
 };

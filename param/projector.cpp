@@ -227,6 +227,9 @@ PointMapping::PointMapping(const ProjectorOptions& o, const Affine3& localFromOb
           out.state = CornerState::Ok;
           return out;
         };
+        cubeFace_ = [s, m, frame](const Vec3& position, const Vec3& normal) {
+          return s.cornerFace(m.probe(SampleT<T>{frame.point(position), frame.normal(normal)}));
+        };
       } else {
         wrapsU_ = S::kWraps;
         const SampleEvaluator<T, S, M> evaluate(s, m, frame, PoleTest(o.poleEpsilon), o.arithmetic.math);
@@ -252,6 +255,10 @@ VertexUv PointMapping::at(const Vec3& position, const Vec3& normal, bool capFace
   if (!uvTransform_.isIdentity()) out.uv = uvTransform_.apply(out.uv);
   if (!out.uv.allFinite()) out = VertexUv{};
   return out;
+}
+
+std::optional<CubeFace> PointMapping::cubeFaceAt(const Vec3& position, const Vec3& normal) const {
+  return cubeFace_ ? cubeFace_(position, normal) : std::nullopt;
 }
 
 Projection project(Mesh mesh, const ProjectorOptions& o) {

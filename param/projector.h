@@ -115,12 +115,15 @@ class PointMapping {
   // Throws UsageError like project() for inconsistent options.
   PointMapping(const ProjectorOptions& options, const Affine3& localFromObject);
   VertexUv at(const Vec3& position, const Vec3& normal, bool capFace = false) const;
+  // The cube face at() projects onto; nothing where the probe misses or for other surfaces.
+  std::optional<CubeFace> cubeFaceAt(const Vec3& position, const Vec3& normal) const;
   bool wrapsU() const { return wrapsU_; }            // u has period 1 (cylinder, sphere)
   bool needsNormal() const { return needsNormal_; }  // the O-mapping reads the normal
 
  private:
   std::function<VertexUv(const Vec3&, const Vec3&)> evaluate_;
   std::function<Vec2(const Vec3&, const Vec3&)> cap_;
+  std::function<std::optional<CubeFace>(const Vec3&, const Vec3&)> cubeFace_;
   UvTransform uvTransform_;
   bool wrapsU_ = false, needsNormal_ = false;
 };

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "arithmetic_cli.h"
-#include "cli_values.h"
+#include "options/arithmetic_cli.h"
+#include "options/cli_values.h"
 #include "commands.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
@@ -27,7 +27,8 @@
 #include "param/batch_atan2.h"
 #include "param/reference.h"
 #include "peers/assimp_peer.h"
-#include "projector_cli.h"
+#include "render_cli.h"
+#include "options/projector_cli.h"
 #include "render/procedural.h"
 #include "views/pareto.h"
 

@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "cli_values.h"
+#include "options/cli_values.h"
 #include "commands.h"
 #include "core/error.h"
 #include "core/parallel.h"
@@ -24,7 +24,7 @@
 #include "io/obj_writer.h"
 #include "mapped_mesh.h"
 #include "param/projector.h"
-#include "projector_cli.h"
+#include "options/projector_cli.h"
 #include "run_report.h"
 
 namespace uvtk::cli {

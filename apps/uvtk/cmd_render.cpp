@@ -6,17 +6,17 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "arithmetic_cli.h"
-#include "cli_values.h"
+#include "options/arithmetic_cli.h"
+#include "options/cli_values.h"
 #include "commands.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
 #include "mapped_mesh.h"
-#include "projector_cli.h"
+#include "options/projector_cli.h"
 #include "render_cli.h"
 #include "run_report.h"
-#include "texgen_cli.h"
+#include "options/texgen_cli.h"
 
 namespace uvtk::cli {
 

@@ -5,12 +5,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "cli_values.h"
+#include "options/cli_values.h"
 #include "commands.h"
 #include "io/checksum.h"
 #include "io/mesh_reader.h"
 #include "mapped_mesh.h"
-#include "projector_cli.h"
+#include "options/projector_cli.h"
 #include "report_cli.h"
 #include "run_report.h"
 

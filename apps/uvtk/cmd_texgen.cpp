@@ -7,8 +7,8 @@
 #include <string>
 #include <utility>
 
-#include "arithmetic_cli.h"
-#include "cli_values.h"
+#include "options/arithmetic_cli.h"
+#include "options/cli_values.h"
 #include "commands.h"
 #include "run_report.h"
 #include "core/error.h"
@@ -16,7 +16,7 @@
 #include "io/mesh_reader.h"
 #include "io/obj_writer.h"
 #include "texgen/texgen.h"
-#include "texgen_cli.h"
+#include "options/texgen_cli.h"
 
 namespace uvtk::cli {
 

@@ -14,5 +14,7 @@ void addBenchCommand(CLI::App& root);
 void addRunCommand(CLI::App& root);
 void addSchemaCommand(CLI::App& root);
 void addMergeReportsCommand(CLI::App& root);
+void addEvalCommand(CLI::App& root);
+void addCheckCommand(CLI::App& root);
 
 }  // namespace uvtk::cli

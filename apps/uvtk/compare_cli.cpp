@@ -8,7 +8,7 @@
 
 #include "analysis/distortion.h"
 #include "analysis/summary.h"
-#include "cli_values.h"
+#include "options/cli_values.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/image_io.h"

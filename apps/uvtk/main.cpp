@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
   uvtk::cli::addRunCommand(app);
   uvtk::cli::addSchemaCommand(app);
   uvtk::cli::addMergeReportsCommand(app);
+  uvtk::cli::addEvalCommand(app);
+  uvtk::cli::addCheckCommand(app);
   uvtk::setProgressEnabled(true);  // a command with --quiet turns it off
   uvtk::io::installInterruptHandlers();
   try {

@@ -3,10 +3,10 @@
 #include <limits>
 #include <memory>
 
-#include "cli_values.h"
+#include "options/cli_values.h"
 #include "core/error.h"
 #include "param/projector.h"
-#include "projector_cli.h"
+#include "options/projector_cli.h"
 #include "run_report.h"
 #include "summary_json.h"
 

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <sstream>
 
-#include "arithmetic_cli.h"
-#include "cli_values.h"
+#include "options/arithmetic_cli.h"
+#include "options/cli_values.h"
 #include "core/error.h"
 #include "core/gl_matrices.h"
 #include "core/stopwatch.h"
@@ -14,6 +14,15 @@
 #include "render/procedural.h"
 
 namespace uvtk::cli {
+
+const std::vector<std::pair<std::string, render::Filter>> kFilterNames = {
+    {"nearest", render::Filter::Nearest},
+    {"linear", render::Filter::Linear},
+    {"nearest_mipmap_nearest", render::Filter::NearestMipmapNearest},
+    {"linear_mipmap_nearest", render::Filter::LinearMipmapNearest},
+    {"nearest_mipmap_linear", render::Filter::NearestMipmapLinear},
+    {"linear_mipmap_linear", render::Filter::LinearMipmapLinear}};
+
 
 namespace {
 

@@ -18,6 +18,9 @@
 
 namespace uvtk::cli {
 
+// The minification filters by their GL names in lower case.
+extern const std::vector<std::pair<std::string, render::Filter>> kFilterNames;
+
 struct CameraArguments {
   enum class Mode { Auto, Explicit };
   Mode mode = Mode::Auto;

@@ -1,11 +1,11 @@
 #include "report_cli.h"
 
-#include "cli_values.h"
+#include "options/cli_values.h"
 #include "core/error.h"
 #include "html_report.h"
 #include "io/atomic_file.h"
 #include "measures_json.h"
-#include "projector_cli.h"
+#include "options/projector_cli.h"
 #include "render/procedural.h"
 #include "summary_json.h"
 #include "views/views.h"

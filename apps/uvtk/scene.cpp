@@ -6,12 +6,12 @@
 #include <map>
 #include <set>
 
-#include "arithmetic_cli.h"
-#include "cli_values.h"
+#include "options/arithmetic_cli.h"
+#include "options/cli_values.h"
 #include "core/error.h"
 #include "io/json_file.h"
 #include "io/json_schema.h"
-#include "projector_cli.h"
+#include "options/projector_cli.h"
 #include "render/procedural.h"
 
 namespace uvtk::cli {

@@ -16,7 +16,7 @@
 #include "param/projector.h"
 #include "render_cli.h"
 #include "report_cli.h"
-#include "texgen_cli.h"
+#include "options/texgen_cli.h"
 
 namespace uvtk::cli {
 

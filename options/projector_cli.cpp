@@ -1,9 +1,9 @@
-#include "projector_cli.h"
+#include "options/projector_cli.h"
 
 #include <cstdio>
 
-#include "arithmetic_cli.h"
-#include "cli_values.h"
+#include "options/arithmetic_cli.h"
+#include "options/cli_values.h"
 #include "core/error.h"
 #include "core/progress.h"
 
@@ -24,7 +24,7 @@ const std::vector<std::pair<std::string, RayKind>> kRayNames = {{"isn", RayKind:
                                                                 {"normal", RayKind::ObjectNormal},
                                                                 {"reflection", RayKind::Reflection}};
 const std::vector<std::pair<std::string, Fit>> kFitNames = {
-    {"none", Fit::None}, {"bbox", Fit::BBox}, {"pca", Fit::Pca}, {"obb", Fit::Obb}};
+    {"none", Fit::None}, {"bbox", Fit::BBox}, {"center", Fit::Center}, {"pca", Fit::Pca}, {"obb", Fit::Obb}};
 const std::vector<std::pair<std::string, int>> kAxisNames = {{"x", 0}, {"y", 1}, {"z", 2}};
 const std::vector<std::pair<std::string, SpherePreset>> kSpherePresetNames = {
     {"default", SpherePreset::Default}, {"glu", SpherePreset::Glu}, {"seed004", SpherePreset::Seed004}};
@@ -37,6 +37,43 @@ const std::vector<std::pair<std::string, CubeLayout>> kCubeLayoutNames = {{"face
 const std::vector<std::pair<std::string, SeamMode>> kSeamNames = {
     {"none", SeamMode::None}, {"shift", SeamMode::Shift}, {"cut", SeamMode::Cut}};
 const std::vector<std::pair<std::string, PoleMode>> kPoleNames = {{"none", PoleMode::None}, {"fan", PoleMode::Fan}};
+const std::vector<std::pair<std::string, Convention>> kConventionNames = {
+    {"uvtk", Convention::Uvtk}, {"blender", Convention::Blender}, {"assimp", Convention::Assimp}};
+
+// The options a convention sets; giving one of them as well is a usage error.
+const char* const kConventionOwnedOptions[] = {"--fit",      "--axis",       "--axis-dir",   "--ref-dir",  "--scale",
+                                               "--seam-place", "--sphere-preset", "--uv-scale", "--uv-offset",
+                                               "--uv-rotate", "--flip-u",     "--flip-v"};
+
+// Another tool's projector as uvtk's placement, seam turn and UV transform (docs/conventions.md,
+// "Other tools"): each is one of our surfaces seen from a frame that tool uses.
+void applyConvention(Convention convention, ProjectorOptions& o) {
+  const bool wraps = o.surface == SurfaceKind::Sphere || o.surface == SurfaceKind::Cylinder;
+  switch (convention) {
+    case Convention::Uvtk:
+      return;
+    case Convention::Blender:
+      if (!wraps) throw UsageError("--convention blender: expected --projector sphere or cylinder");
+      // Origin at the bounding box's centre, object axes and units; u = (1 - atan2(x, y)/pi)/2 puts the
+      // seam on -y and u = 0.25 on +x: our turn fraction in the frame turned by 270 degrees.
+      o.placement.fit = Fit::Center;
+      o.placement.axis = 2;
+      o.placement.turnDegrees = 270.0;
+      if (o.surface == SurfaceKind::Cylinder) {  // v = (z + 1)/2 of the centred object z
+        o.uvTransform.scale = Vec2(1.0, 0.5);
+        o.uvTransform.offset = Vec2(0.0, 0.5);
+      }
+      return;
+    case Convention::Assimp:
+      if (!wraps) throw UsageError("--convention assimp: expected --projector sphere or cylinder");
+      // The bounding box fit about object y; u = (atan2(x, z) + pi)/(2 pi) puts the seam on -z, which
+      // is local -x of that frame: our turn fraction in the frame turned by 180 degrees.
+      o.placement.fit = Fit::BBox;
+      o.placement.axis = 1;
+      o.placement.turnDegrees = 180.0;
+      return;
+  }
+}
 
 }  // namespace
 
@@ -51,7 +88,9 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEy
   addChoice<RayKind>(app, "--omap", o.ray, kRayNames,
                      "Ray mapping (O-mapping): isn = along the intermediate surface's own normal")
       ->default_str("isn");
-  addChoice<Fit>(app, "--fit", o.placement.fit, kFitNames, "Placement fitted to the mesh; none = object coordinates")
+  addChoice<Fit>(app, "--fit", o.placement.fit, kFitNames,
+                 "Placement fitted to the mesh; none = object coordinates, center = the box's centre in object axes "
+                 "and units")
       ->default_str("bbox");
   addChoice<int>(app, "--axis", o.placement.axis, kAxisNames, "Object axis that becomes the local z of a bbox fit")
       ->default_str("z");
@@ -102,11 +141,23 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEy
   app.add_flag("--flip-u", o.uvTransform.flipU, "UV transform: u -> 1 - u (first)");
   app.add_flag("--flip-v", o.uvTransform.flipV, "UV transform: v -> 1 - v (first)");
   addArithmeticOptions(app, o.arithmetic);
+  addChoice<Convention>(app, "--convention", a.convention, kConventionNames,
+                        "Another tool's sphere or cylinder projector: blender (uv.sphere_project, cylinder_project, "
+                        "align to object), assimp (aiProcess_GenUVCoords); it sets the placement, seam and UV transform")
+      ->default_str("uvtk");
 }
 
 ProjectorOptions ProjectorArguments::resolve() const {
   ProjectorOptions o = options;
   const char* centerOption = cameraOwnsEye ? "--frame-center" : "--center";
+  if (convention != Convention::Uvtk) {
+    std::vector<const char*> owned(std::begin(kConventionOwnedOptions), std::end(kConventionOwnedOptions));
+    owned.push_back(centerOption);
+    for (const char* name : owned)
+      if (given(app, name))
+        throw UsageError("--convention " + conventionName(convention) + " sets the placement, the seam and the UV "
+                         "transform; " + name + " goes with --convention uvtk only");
+  }
   const bool explicitFrame =
       given(app, centerOption) || given(app, "--axis-dir") || given(app, "--ref-dir") || given(app, "--scale");
   if (explicitFrame) {
@@ -134,8 +185,11 @@ ProjectorOptions ProjectorArguments::resolve() const {
   o.uvTransform.scale = parseVec2(uvScale, "--uv-scale");
   o.uvTransform.offset = parseVec2(uvOffset, "--uv-offset");
   if (!std::isfinite(o.uvTransform.rotateDegrees)) throw UsageError("--uv-rotate: expected a finite number");
+  applyConvention(convention, o);
   return o;
 }
+
+const std::string& conventionName(Convention convention) { return nameOf(kConventionNames, convention); }
 
 ProjectorOptions projectorNamed(const std::string& projector, const std::string& omap) {
   ProjectorOptions o;

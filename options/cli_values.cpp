@@ -1,4 +1,4 @@
-#include "cli_values.h"
+#include "options/cli_values.h"
 
 #include <cerrno>
 #include <cmath>
@@ -57,13 +57,5 @@ std::vector<std::string> splitList(const std::string& text) {
   for (std::string item; std::getline(in, item, ',');) items.push_back(item);
   return items;
 }
-
-const std::vector<std::pair<std::string, render::Filter>> kFilterNames = {
-    {"nearest", render::Filter::Nearest},
-    {"linear", render::Filter::Linear},
-    {"nearest_mipmap_nearest", render::Filter::NearestMipmapNearest},
-    {"linear_mipmap_nearest", render::Filter::LinearMipmapNearest},
-    {"nearest_mipmap_linear", render::Filter::NearestMipmapLinear},
-    {"linear_mipmap_linear", render::Filter::LinearMipmapLinear}};
 
 }  // namespace uvtk::cli

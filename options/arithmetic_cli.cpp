@@ -1,6 +1,6 @@
-#include "arithmetic_cli.h"
+#include "options/arithmetic_cli.h"
 
-#include "cli_values.h"
+#include "options/cli_values.h"
 
 namespace uvtk::cli {
 

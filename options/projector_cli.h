@@ -10,6 +10,13 @@
 
 namespace uvtk::cli {
 
+// Other tools' projectors, expressed in uvtk's options (docs/conventions.md, "Other tools").
+enum class Convention {
+  Uvtk,
+  Blender,  // uv.sphere_project / uv.cylinder_project, ALIGN_TO_OBJECT, POLAR_ZX
+  Assimp,   // aiProcess_GenUVCoords with its default axis +y
+};
+
 // The raw option values as typed; resolve() turns them into ProjectorOptions.
 struct ProjectorArguments {
   param::ProjectorOptions options;
@@ -19,6 +26,7 @@ struct ProjectorArguments {
   std::string eye;
   std::string uvScale = "1,1", uvOffset = "0,0";
   std::string seamPlace;  // "auto" or degrees
+  Convention convention = Convention::Uvtk;
   CLI::App* app = nullptr;
   bool cameraOwnsEye = false;  // `uvtk render`: --eye and --center belong to the camera
 
@@ -31,6 +39,8 @@ struct ProjectorArguments {
 // Default options for the projector and O-mapping of these names (as --projector and --omap take
 // them); throws UsageError for an unknown name.
 param::ProjectorOptions projectorNamed(const std::string& projector, const std::string& omap);
+
+const std::string& conventionName(Convention convention);
 
 // Every option as a JSON object, named as on the command line.
 nlohmann::json projectorOptionsJson(const param::ProjectorOptions& options);

@@ -10,7 +10,6 @@
 
 #include "core/error.h"
 #include "core/math.h"
-#include "render/texture.h"
 
 namespace uvtk::cli {
 
@@ -61,9 +60,6 @@ std::vector<Enum> parseNameList(const std::string& text, const std::vector<std::
   if (values.empty()) throw UsageError(option + ": expected at least one value");
   return values;
 }
-
-// The minification filters by their GL names in lower case.
-extern const std::vector<std::pair<std::string, render::Filter>> kFilterNames;
 
 // Whether the user typed option `name` (rather than leaving its default).
 inline bool given(const CLI::App* app, const char* name) { return app->get_option(name)->count() > 0; }

@@ -1,10 +1,10 @@
-#include "texgen_cli.h"
+#include "options/texgen_cli.h"
 
 #include <utility>
 #include <vector>
 
-#include "arithmetic_cli.h"
-#include "cli_values.h"
+#include "options/arithmetic_cli.h"
+#include "options/cli_values.h"
 #include "core/error.h"
 
 namespace uvtk::cli {

@@ -1,0 +1,47 @@
+// The mapping of `uvtk eval`, `uvtk check` and the installed point API (uvtk/point.h): a projector
+// with every option of `uvtk map` (and --convention), or GL texgen with every option of `uvtk
+// texgen` (--texgen MODE, --s/--t/--r/--q, --texmatrix, --no-normalize) under its gluLookAt view.
+// --eye and --center are shared: the reflection eye and the explicit placement's origin for a
+// projector, the view's eye and centre for texgen.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "options/projector_cli.h"
+#include "options/texgen_cli.h"
+
+namespace uvtk::cli {
+
+struct MappingArguments {
+  ProjectorArguments projector;
+  TexgenArguments texgen;
+  std::string up, model;                          // texgen's view; eye and centre are the projector's strings
+  std::vector<std::string> projectorOnlyOptions;  // the options texgen does not take
+  CLI::App* app = nullptr;
+
+  bool isTexgen() const { return texgen.given(); }
+};
+
+// Exactly one of the two is set.
+struct ResolvedMapping {
+  std::optional<param::ProjectorOptions> projector;
+  std::optional<texgen::TexgenOptions> texgen;
+  bool seamPlaceAuto = false;  // --seam-place auto: the caller, which has the mesh, places the seam
+};
+
+// Adds the projector options, the texgen options and the view options (--up, --model) to `app`.
+// `defaultFit` is the projector's fit when --fit is not given (`uvtk eval`: none, since points have
+// no mesh to fit to unless one is named).
+void addMappingOptions(CLI::App& app, MappingArguments& arguments, param::Fit defaultFit);
+
+// Throws UsageError for options of the other kind (a projector option with --texgen, --up with a
+// projector) and for everything the projector or texgen options reject.
+ResolvedMapping resolveMapping(const MappingArguments& arguments);
+
+// Whether the placement is fitted to a mesh (a fit other than none and no explicit frame).
+bool fitsToMesh(const param::ProjectorOptions& options);
+
+}  // namespace uvtk::cli

@@ -1,0 +1,72 @@
+// uvtk's mappings at single points: the reference to test other mapping code against (a shader, an
+// exporter, a game engine's texgen). A Mapping is prepared once from the options `uvtk eval` takes
+// (any projector, O-mapping, preset, convention and placement of `uvtk map`, any texgen mode of
+// `uvtk texgen`); at() then evaluates one point without a mesh and without allocating. The numbers
+// are those of `uvtk eval` and `uvtk map` bit for bit (before seam and pole repair, which need a mesh).
+// Conventions: docs/conventions.md.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+// The library is built with hidden symbols; these are its interface.
+#define UVTK_POINT_API __attribute__((visibility("default")))
+
+namespace uvtk::point {
+
+using Vector3 = std::array<double, 3>;
+
+enum class Status {
+  Ok,
+  Pole,    // on the axis of a wrapping surface: v is exact, u is undefined (0); texgen: the sphere map's singular point
+  OnSeam,  // on a seam: u = 0 and u = 1 are the same point (or, on a cube, an edge: the tie rule picked the face)
+  Invalid,  // no value: the point or normal is not finite or zero, the ray misses the surface, or the result overflows
+};
+
+// "ok", "pole", "on-seam", "invalid": the names `uvtk eval` prints.
+UVTK_POINT_API const char* statusName(Status status);
+
+struct Result {
+  double u = 0.0, v = 0.0;  // a projector's (u, v), or texgen's (s, t); 0 when invalid
+  double w = 0.0;           // the cube face id (0..5: +X -X +Y -Y +Z -Z) in the faces layout, texgen's r; else 0
+  double q = 1.0;           // texgen's q, not divided out; else 1
+  Status status = Status::Invalid;
+  const char* reason = "";  // why the status is not ok, one sentence (static storage); empty when ok
+  // One turn about a wrapping surface's axis, in (u, v): (1, 0) unless a UV transform scales or turns
+  // it. Texture coordinates that differ by whole turns are the same point. Zero when nothing wraps.
+  std::array<double, 2> period{};
+  Vector3 position{};        // the point evaluated
+  const char* mapping = "";  // the options of the Mapping that evaluated it (valid while it lives)
+};
+
+class UVTK_POINT_API Mapping {
+ public:
+  // `options` as `uvtk eval` takes them, e.g. "--projector sphere --omap normal" or "--texgen
+  // sphere_map --eye 0,0,5". The placement is --fit none unless given; a fitted placement (--fit
+  // bbox, center, pca, obb, or a --convention) is fitted to `meshPositions` exactly as `uvtk map`
+  // fits it to that mesh. Throws std::invalid_argument with the command line's message.
+  explicit Mapping(const std::string& options, const std::vector<Vector3>& meshPositions = {});
+  ~Mapping();
+  Mapping(Mapping&&) noexcept;
+  Mapping& operator=(Mapping&&) noexcept;
+
+  // The mapping at an object-space point. `normal` is read by the normal and reflection
+  // O-mappings, by cylinder caps and by the texgen modes that use normals; it need not be unit.
+  Result at(const Vector3& position, const Vector3& normal = {0.0, 0.0, 0.0}) const noexcept;
+
+  bool needsNormal() const;  // whether at() reads the normal
+  const std::string& options() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// The distance in UV units between texture coordinates (u, v) and `expected`, with whole periods
+// removed (u compared modulo 1 on a wrapping surface) and, at a pole, only the component across
+// the period compared (u is undefined there).
+UVTK_POINT_API double uvError(double u, double v, const Result& expected);
+
+}  // namespace uvtk::point

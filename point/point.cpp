@@ -1,0 +1,89 @@
+// The installed point API (uvtk/point.h): options parsed as `uvtk eval` parses them, then the
+// PointEvaluator that `uvtk eval` uses.
+#include "uvtk/point.h"
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/error.h"
+#include "point/point_evaluator.h"
+
+namespace uvtk::point {
+
+struct Mapping::Impl {
+  PointEvaluator evaluator;
+};
+
+namespace {
+
+PointEvaluator prepare(const std::string& options, const std::vector<Vector3>& meshPositions) {
+  CLI::App app{"uvtk::point::Mapping"};
+  cli::MappingArguments arguments;
+  cli::addMappingOptions(app, arguments, param::Fit::None);
+  try {
+    app.parse(options, false);
+  } catch (const CLI::ParseError& e) {
+    throw std::invalid_argument("uvtk::point::Mapping(\"" + options + "\"): " + e.what());
+  }
+  try {
+    const cli::ResolvedMapping mapping = cli::resolveMapping(arguments);
+    if (mapping.seamPlaceAuto)
+      throw UsageError("--seam-place auto needs a mesh's faces; give the angle it chose (uvtk map prints it)");
+    Affine3 frame = Affine3::Identity();
+    if (mapping.projector) {
+      std::vector<Vec3> positions;
+      positions.reserve(meshPositions.size());
+      for (const Vector3& p : meshPositions) positions.emplace_back(p[0], p[1], p[2]);
+      frame = placementFor(*mapping.projector, positions);
+    }
+    return PointEvaluator(mapping, frame, options);
+  } catch (const UsageError& e) {
+    throw std::invalid_argument("uvtk::point::Mapping(\"" + options + "\"): " + e.what());
+  }
+}
+
+}  // namespace
+
+const char* statusName(Status status) {
+  switch (status) {
+    case Status::Ok:
+      return "ok";
+    case Status::Pole:
+      return "pole";
+    case Status::OnSeam:
+      return "on-seam";
+    case Status::Invalid:
+      return "invalid";
+  }
+  return "invalid";
+}
+
+Mapping::Mapping(const std::string& options, const std::vector<Vector3>& meshPositions)
+    : impl_(new Impl{prepare(options, meshPositions)}) {}
+Mapping::~Mapping() = default;
+Mapping::Mapping(Mapping&&) noexcept = default;
+Mapping& Mapping::operator=(Mapping&&) noexcept = default;
+
+Result Mapping::at(const Vector3& position, const Vector3& normal) const noexcept {
+  return impl_->evaluator.at(position, normal);
+}
+
+bool Mapping::needsNormal() const { return impl_->evaluator.needsNormal(); }
+const std::string& Mapping::options() const { return impl_->evaluator.description(); }
+
+double uvError(double u, double v, const Result& expected) {
+  double du = u - expected.u, dv = v - expected.v;
+  const double pu = expected.period[0], pv = expected.period[1];
+  const double length2 = pu * pu + pv * pv;
+  if (length2 > 0.0) {
+    // Remove whole periods; at a pole the whole component along the period (u is undefined there).
+    const double along = (du * pu + dv * pv) / length2;
+    const double turns = expected.status == Status::Pole ? along : std::nearbyint(along);
+    du -= turns * pu;
+    dv -= turns * pv;
+  }
+  return std::hypot(du, dv);
+}
+
+}  // namespace uvtk::point

@@ -1,0 +1,143 @@
+#include "point/point_evaluator.h"
+
+#include <cmath>
+#include <exception>
+
+#include "core/error.h"
+#include "param/formulas.h"
+#include "texgen/texgen.h"
+
+namespace uvtk::point {
+
+using param::CornerState;
+using param::SurfaceKind;
+
+namespace {
+
+Vec3 toVec3(const Vector3& v) { return {v[0], v[1], v[2]}; }
+
+// Why a projector found no value at a finite point (docs/conventions.md §4).
+const char* missReason(const param::ProjectorOptions& o) {
+  using param::RayKind;
+  if (o.ray == RayKind::Centroid || (o.ray == RayKind::Reflection && o.atInfinity))
+    return o.surface == SurfaceKind::Cylinder ? "the central ray runs along the cylinder's axis"
+           : o.surface == SurfaceKind::Sphere ? "the point is the sphere's centre"
+                                              : "the central ray points away from the surface";
+  if (o.ray == RayKind::SurfaceNormal)
+    return o.surface == SurfaceKind::Sphere ? "the point is the sphere's centre" : "the result is not finite";
+  switch (o.surface) {
+    case SurfaceKind::Plane:
+    case SurfaceKind::TwoPlane:
+      return "the ray is parallel to the plane";
+    case SurfaceKind::Cylinder:
+      return "the ray misses the cylinder";
+    case SurfaceKind::Sphere:
+      return "the ray misses the sphere";
+    case SurfaceKind::Cube:
+      return "the ray is parallel to the cube face's plane";
+  }
+  return "the ray misses the surface";
+}
+
+Result invalid(Result out, const char* reason) {
+  out.u = out.v = out.w = 0.0;
+  out.q = 1.0;
+  out.status = Status::Invalid;
+  out.reason = reason;
+  return out;
+}
+
+}  // namespace
+
+Affine3 placementFor(const param::ProjectorOptions& o, const std::vector<Vec3>& positions) {
+  if (cli::fitsToMesh(o) && positions.empty())
+    throw UsageError(
+        "the placement is fitted to a mesh (--fit or --convention), and no mesh was given: name one, or "
+        "use --fit none");
+  return param::fitPlacement(positions, o.surface, o.placement);
+}
+
+PointEvaluator::PointEvaluator(const cli::ResolvedMapping& mapping, const Affine3& localFromObject,
+                               std::string description)
+    : description_(std::move(description)) {
+  if (mapping.texgen) {
+    texgen_ = mapping.texgen;
+    for (const texgen::TexgenCoordinate& c : texgen_->coordinates)
+      needsNormal_ = needsNormal_ || c.mode == texgen::TexgenMode::SphereMap ||
+                     c.mode == texgen::TexgenMode::NormalMap || c.mode == texgen::TexgenMode::ReflectionMap;
+    texgen::texgenAt(Vec3::Zero(), Vec3::UnitZ(), *texgen_);  // throws now for what would fail at every point
+    return;
+  }
+  projector_ = mapping.projector;
+  param::ProjectorOptions raw = *projector_;
+  raw.uvTransform = param::UvTransform{};
+  raw.cubeLayout = param::CubeLayout::Faces;
+  raw_.emplace(raw, localFromObject);
+  needsNormal_ = raw_->needsNormal() || projector_->cylinderCaps;
+  normalToLocal = localFromObject.linear().inverse().transpose();
+  if (raw_->wrapsU()) period_ = projector_->uvTransform.apply(Vec2(1, 0)) - projector_->uvTransform.apply(Vec2(0, 0));
+}
+
+Result PointEvaluator::at(const Vector3& position, const Vector3& normal) const noexcept {
+  Result out;
+  out.position = position;
+  out.mapping = description_.c_str();
+  const Vec3 p = toVec3(position), n = toVec3(normal);
+  if (!p.allFinite()) return invalid(out, "the position is not finite");
+  if (needsNormal_ && !n.allFinite()) return invalid(out, "the normal is not finite");
+  if (needsNormal_ && n == Vec3::Zero()) return invalid(out, "the normal is zero (this mapping reads it)");
+  try {
+    return texgen_ ? texgenAt(p, n, out) : projectorAt(p, n, out);
+  } catch (const std::exception&) {  // only a texgen matrix beyond float range, checked at construction
+    return invalid(out, "the mapping failed at this point");
+  }
+}
+
+Result PointEvaluator::projectorAt(const Vec3& p, const Vec3& n, Result out) const {
+  const param::ProjectorOptions& o = *projector_;
+  // A cylinder cap takes faces whose normal lies within the cap angle of the axis (project()).
+  const Vec3 localNormal = normalToLocal * n;
+  const bool cap = o.surface == SurfaceKind::Cylinder && o.cylinderCaps && localNormal.norm() > 0.0 &&
+                   std::fabs(localNormal.z()) >= std::cos(o.capAngleDegrees * (kPi / 180.0)) * localNormal.norm();
+  const param::VertexUv raw = raw_->at(p, n, cap);
+  if (raw.state == CornerState::Invalid) return invalid(out, missReason(o));
+  Vec2 uv = raw.uv;
+  out.status = Status::Ok;
+  if (raw.state == CornerState::Pole) {
+    out.status = Status::Pole;
+    out.reason = "on the axis: u is undefined there (written as 0), v is exact";
+  } else if (raw_->wrapsU() && !cap) {
+    const double start = o.surface == SurfaceKind::Sphere ? param::uPeriodStart(o.spherePreset) : 0.0;
+    if (uv.x() == start || uv.x() == start + 1.0) {
+      out.status = Status::OnSeam;
+      out.reason = "on the seam: u and u + 1 are the same point";
+    }
+  } else if (o.surface == SurfaceKind::Cube) {
+    const std::optional<param::CubeFace> face = raw_->cubeFaceAt(p, n);
+    if (!face) return invalid(out, missReason(o));
+    if (uv.x() == 0.0 || uv.x() == 1.0 || uv.y() == 0.0 || uv.y() == 1.0) {
+      out.status = Status::OnSeam;
+      out.reason = "on an edge of the cube: the face follows the tie rule (x before y before z)";
+    }
+    if (o.cubeLayout == param::CubeLayout::Faces) out.w = static_cast<double>(*face);
+    uv = param::cubeAtlasUv(uv, *face, o.cubeConvention, o.cubeLayout);
+  }
+  if (!o.uvTransform.isIdentity()) uv = o.uvTransform.apply(uv);
+  if (!uv.allFinite()) return invalid(out, "the result is not finite");
+  out.u = uv.x();
+  out.v = uv.y();
+  out.period = {cap ? 0.0 : period_.x(), cap ? 0.0 : period_.y()};
+  return out;
+}
+
+Result PointEvaluator::texgenAt(const Vec3& p, const Vec3& n, Result out) const {
+  bool singular = false;
+  const Vec4 stq = texgen::texgenAt(p, n, *texgen_, &singular);
+  if (!stq.allFinite()) return invalid(out, "the result is not finite");
+  out.u = stq[0], out.v = stq[1], out.w = stq[2], out.q = stq[3];
+  out.status = singular ? Status::Pole : Status::Ok;
+  if (singular) out.reason = "sphere map: the reflection is (0, 0, -1), where m = 0; s = t = 1/2 as GL leaves it";
+  return out;
+}
+
+}  // namespace uvtk::point
