@@ -2,10 +2,10 @@
 
 #include <cstdio>
 
-#include "options/arithmetic_cli.h"
-#include "options/cli_values.h"
 #include "core/error.h"
 #include "core/progress.h"
+#include "options/arithmetic_cli.h"
+#include "options/cli_values.h"
 
 namespace uvtk::cli {
 
@@ -41,9 +41,9 @@ const std::vector<std::pair<std::string, Convention>> kConventionNames = {
     {"uvtk", Convention::Uvtk}, {"blender", Convention::Blender}, {"assimp", Convention::Assimp}};
 
 // The options a convention sets; giving one of them as well is a usage error.
-const char* const kConventionOwnedOptions[] = {"--fit",      "--axis",       "--axis-dir",   "--ref-dir",  "--scale",
-                                               "--seam-place", "--sphere-preset", "--uv-scale", "--uv-offset",
-                                               "--uv-rotate", "--flip-u",     "--flip-v"};
+const char* const kConventionOwnedOptions[] = {"--fit",       "--axis",       "--axis-dir",      "--ref-dir",
+                                               "--scale",     "--seam-place", "--sphere-preset", "--uv-scale",
+                                               "--uv-offset", "--uv-rotate",  "--flip-u",        "--flip-v"};
 
 // Another tool's projector as uvtk's placement, seam turn and UV transform (docs/conventions.md,
 // "Other tools"): each is one of our surfaces seen from a frame that tool uses.
@@ -54,8 +54,9 @@ void applyConvention(Convention convention, ProjectorOptions& o) {
       return;
     case Convention::Blender:
       if (!wraps) throw UsageError("--convention blender: expected --projector sphere or cylinder");
-      // Origin at the bounding box's centre, object axes and units; u = (1 - atan2(x, y)/pi)/2 puts the
-      // seam on -y and u = 0.25 on +x: our turn fraction in the frame turned by 270 degrees.
+      // Origin at the bounding box's centre (a script's pivot; --center gives another), object axes
+      // and units; u = (1 - atan2(x, y)/pi)/2 puts the seam on -y and u = 0.25 on +x: our turn
+      // fraction in the frame turned by 270 degrees.
       o.placement.fit = Fit::Center;
       o.placement.axis = 2;
       o.placement.turnDegrees = 270.0;
@@ -141,9 +142,10 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEy
   app.add_flag("--flip-u", o.uvTransform.flipU, "UV transform: u -> 1 - u (first)");
   app.add_flag("--flip-v", o.uvTransform.flipV, "UV transform: v -> 1 - v (first)");
   addArithmeticOptions(app, o.arithmetic);
-  addChoice<Convention>(app, "--convention", a.convention, kConventionNames,
-                        "Another tool's sphere or cylinder projector: blender (uv.sphere_project, cylinder_project, "
-                        "align to object), assimp (aiProcess_GenUVCoords); it sets the placement, seam and UV transform")
+  addChoice<Convention>(
+      app, "--convention", a.convention, kConventionNames,
+      "Another tool's sphere or cylinder projector: blender (uv.sphere_project, cylinder_project, "
+      "align to object), assimp (aiProcess_GenUVCoords); it sets the placement, seam and UV transform")
       ->default_str("uvtk");
 }
 
@@ -152,14 +154,16 @@ ProjectorOptions ProjectorArguments::resolve() const {
   const char* centerOption = cameraOwnsEye ? "--frame-center" : "--center";
   if (convention != Convention::Uvtk) {
     std::vector<const char*> owned(std::begin(kConventionOwnedOptions), std::end(kConventionOwnedOptions));
-    owned.push_back(centerOption);
+    if (convention != Convention::Blender) owned.push_back(centerOption);  // Blender's pivot may be anywhere
     for (const char* name : owned)
       if (given(app, name))
-        throw UsageError("--convention " + conventionName(convention) + " sets the placement, the seam and the UV "
-                         "transform; " + name + " goes with --convention uvtk only");
+        throw UsageError("--convention " + conventionName(convention) +
+                         " sets the placement, the seam and the UV "
+                         "transform; " +
+                         name + " goes with --convention uvtk only");
   }
-  const bool explicitFrame =
-      given(app, centerOption) || given(app, "--axis-dir") || given(app, "--ref-dir") || given(app, "--scale");
+  const bool explicitFrame = (given(app, centerOption) && convention == Convention::Uvtk) || given(app, "--axis-dir") ||
+                             given(app, "--ref-dir") || given(app, "--scale");
   if (explicitFrame) {
     if (given(app, "--fit") && o.placement.fit != Fit::None)
       throw UsageError(std::string(centerOption) +
@@ -186,6 +190,11 @@ ProjectorOptions ProjectorArguments::resolve() const {
   o.uvTransform.offset = parseVec2(uvOffset, "--uv-offset");
   if (!std::isfinite(o.uvTransform.rotateDegrees)) throw UsageError("--uv-rotate: expected a finite number");
   applyConvention(convention, o);
+  if (convention == Convention::Blender && given(app, centerOption)) {
+    ExplicitFrame pivot;  // the pivot Blender's 3D view used (Median Point: the mean of the face centroids)
+    pivot.center = parseVec3(center, centerOption);
+    o.placement.frame = pivot;
+  }
   return o;
 }
 
