@@ -509,5 +509,32 @@ TEST(Placement, GivenSpreadAxesFitAsTheComputedOnes) {
   EXPECT_GT(x.z(), 0.0);
 }
 
+TEST(Placement, CenterFitMovesTheBoxCentreToTheOriginAndKeepsAxesAndUnits) {
+  const std::vector<Vec3> positions = {{-1, -2, 0}, {3, 2, 4}};
+  PlacementOptions o;
+  o.fit = Fit::Center;
+  for (SurfaceKind surface : {SurfaceKind::Plane, SurfaceKind::Cylinder, SurfaceKind::Sphere, SurfaceKind::Cube}) {
+    const Affine3 frame = fitPlacement(positions, surface, o);
+    EXPECT_EQ(frame.linear(), Mat3::Identity());
+    EXPECT_EQ(frame * Vec3(1, 0, 2), Vec3::Zero());
+  }
+  o.axis = 1;  // object y becomes local z, by the bbox fit's cyclic permutation
+  EXPECT_EQ(fitPlacement(positions, SurfaceKind::Sphere, o) * Vec3(1, 5, 2), Vec3(0, 0, 5));
+}
+
+TEST(Placement, QuarterTurnsAreExact) {
+  PlacementOptions o;
+  o.fit = Fit::None;
+  // A turn by a puts the point at azimuth a on local +x; no 6e-17 residue in the other components.
+  const std::pair<double, Vec3> turns[] = {{90, Vec3(0, 1, 0)},  {180, Vec3(-1, 0, 0)}, {270, Vec3(0, -1, 0)},
+                                           {-90, Vec3(0, -1, 0)}, {450, Vec3(0, 1, 0)},  {-360, Vec3(1, 0, 0)}};
+  for (const auto& [degrees, direction] : turns) {
+    o.turnDegrees = degrees;
+    EXPECT_EQ(fitPlacement({}, SurfaceKind::Sphere, o) * direction, Vec3(1, 0, 0)) << degrees;
+  }
+  o.turnDegrees = 45;
+  EXPECT_TRUE((fitPlacement({}, SurfaceKind::Sphere, o) * Vec3(1, 1, 0).normalized()).isApprox(Vec3(1, 0, 0), 1e-15));
+}
+
 }  // namespace
 }  // namespace uvtk::param
