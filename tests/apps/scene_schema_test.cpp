@@ -7,13 +7,13 @@
 #include <set>
 #include <sstream>
 
-#include "arithmetic_cli.h"
+#include "options/arithmetic_cli.h"
 #include "compare_cli.h"
-#include "projector_cli.h"
+#include "options/projector_cli.h"
 #include "render_cli.h"
 #include "report_cli.h"
 #include "scene.h"
-#include "texgen_cli.h"
+#include "options/texgen_cli.h"
 
 namespace uvtk::cli {
 namespace {
