@@ -21,6 +21,12 @@ struct OutputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A check that ran to its end and found the data outside its tolerance, after printing its
+// report (`uvtk check`; exit status 1, without the "internal error" of other status-1 exceptions).
+struct CheckFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // The exit status an error stands for, as above; 1 for any other exception (a bug).
 int exitStatus(const std::exception& error);
 

@@ -45,20 +45,6 @@ PointEvaluator prepare(const std::string& options, const std::vector<Vector3>& m
 
 }  // namespace
 
-const char* statusName(Status status) {
-  switch (status) {
-    case Status::Ok:
-      return "ok";
-    case Status::Pole:
-      return "pole";
-    case Status::OnSeam:
-      return "on-seam";
-    case Status::Invalid:
-      return "invalid";
-  }
-  return "invalid";
-}
-
 Mapping::Mapping(const std::string& options, const std::vector<Vector3>& meshPositions)
     : impl_(new Impl{prepare(options, meshPositions)}) {}
 Mapping::~Mapping() = default;

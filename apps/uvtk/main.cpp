@@ -1,5 +1,5 @@
 // uvtk: the command line. main only dispatches and maps errors to exit codes:
-// 2 usage, 3 bad input, 4 cannot write output.
+// 1 a check failed (uvtk check) or a bug, 2 usage, 3 bad input, 4 cannot write output.
 #include <cstdio>
 #include <exception>
 
@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int status = app.exit(e);
     return status == 0 ? 0 : 2;
+  } catch (const uvtk::CheckFailure&) {
+    return 1;  // the command printed its verdict
   } catch (const std::exception& e) {
     const int status = uvtk::exitStatus(e);
     // Input and output errors name their file themselves.

@@ -26,7 +26,15 @@ enum class Status {
 };
 
 // "ok", "pole", "on-seam", "invalid": the names `uvtk eval` prints.
-UVTK_POINT_API const char* statusName(Status status);
+inline const char* statusName(Status status) {
+  switch (status) {
+    case Status::Ok: return "ok";
+    case Status::Pole: return "pole";
+    case Status::OnSeam: return "on-seam";
+    case Status::Invalid: return "invalid";
+  }
+  return "invalid";
+}
 
 struct Result {
   double u = 0.0, v = 0.0;  // a projector's (u, v), or texgen's (s, t); 0 when invalid
