@@ -325,30 +325,29 @@ std::string jsonTripleText(const Vector3& v) {
   return "[" + one(v[0]) + "," + one(v[1]) + "," + one(v[2]) + "]";
 }
 
-std::string formatOutputs(const std::vector<Output>& outputs, TextFormat format, bool withNormals, bool withEyes) {
+// The first line of CSV output (JSON lines have none).
+std::string outputHeader(TextFormat format, bool withNormals, bool withEyes) {
+  if (format != TextFormat::Csv) return "";
+  return std::string("x,y,z") + (withNormals ? ",nx,ny,nz" : "") + (withEyes ? ",ex,ey,ez" : "") +
+         ",u,v,w,q,status,reason\n";
+}
+
+// One point's line of output.
+std::string outputLine(const Output& o, TextFormat format, bool withNormals, bool withEyes) {
+  const Result& r = o.result;
   std::string text;
   if (format == TextFormat::Csv) {
-    text = std::string("x,y,z") + (withNormals ? ",nx,ny,nz" : "") + (withEyes ? ",ex,ey,ez" : "") +
-           ",u,v,w,q,status,reason\n";
-    for (const Output& o : outputs) {
-      text += eyeText(o.row.position);
-      if (withNormals) text += "," + eyeText(o.normal);
-      if (withEyes) text += "," + eyeText(o.eye);
-      const Result& r = o.result;
-      text += "," + number(r.u) + "," + number(r.v) + "," + number(r.w) + "," + number(r.q) + "," +
-              point::statusName(r.status) + "," + csvQuote(o.reason) + "\n";
-    }
-    return text;
+    text = eyeText(o.row.position);
+    if (withNormals) text += "," + eyeText(o.normal);
+    if (withEyes) text += "," + eyeText(o.eye);
+    return text + "," + number(r.u) + "," + number(r.v) + "," + number(r.w) + "," + number(r.q) + "," +
+           point::statusName(r.status) + "," + csvQuote(o.reason) + "\n";
   }
-  for (const Output& o : outputs) {
-    text += "{\"p\":" + jsonTripleText(o.row.position);
-    if (withNormals) text += ",\"n\":" + jsonTripleText(o.normal);
-    if (withEyes) text += ",\"eye\":" + jsonTripleText(o.eye);
-    const Result& r = o.result;
-    text += ",\"u\":" + number(r.u) + ",\"v\":" + number(r.v) + ",\"w\":" + number(r.w) + ",\"q\":" + number(r.q) +
-            ",\"status\":\"" + point::statusName(r.status) + "\",\"reason\":" + nlohmann::json(o.reason).dump() + "}\n";
-  }
-  return text;
+  text = "{\"p\":" + jsonTripleText(o.row.position);
+  if (withNormals) text += ",\"n\":" + jsonTripleText(o.normal);
+  if (withEyes) text += ",\"eye\":" + jsonTripleText(o.eye);
+  return text + ",\"u\":" + number(r.u) + ",\"v\":" + number(r.v) + ",\"w\":" + number(r.w) + ",\"q\":" + number(r.q) +
+         ",\"status\":\"" + point::statusName(r.status) + "\",\"reason\":" + nlohmann::json(o.reason).dump() + "}\n";
 }
 
 void runEval(const EvalArguments& a) {
@@ -444,8 +443,17 @@ void runEval(const EvalArguments& a) {
         "this mapping reads the normal (--omap normal or reflection, --caps, or a texgen mode that uses "
         "normals): give --normal x,y,z, or nx,ny,nz columns (\"n\" in JSON lines)");
 
-  std::vector<Output> outputs;
-  outputs.reserve(rows.size());
+  // Every row was read and checked above: from here on each point is written as it is evaluated,
+  // to the temporary of -o (renamed at the end) or to stdout.
+  std::optional<io::AtomicFile> file;
+  if (!a.output.empty()) file.emplace(a.output);
+  const auto write = [&](const std::string& text) {
+    if (file)
+      file->stream() << text;
+    else
+      std::fwrite(text.data(), 1, text.size(), stdout);
+  };
+  write(outputHeader(a.format, withNormals, withEyes));
   std::size_t counts[4] = {};
   for (const Row& row : rows) {
     Output o;
@@ -461,15 +469,12 @@ void runEval(const EvalArguments& a) {
       o.result.status = Status::Invalid;
     }
     ++counts[int(o.result.status)];
-    outputs.push_back(std::move(o));
+    write(outputLine(o, a.format, withNormals, withEyes));
   }
-
-  const std::string text = formatOutputs(outputs, a.format, withNormals, withEyes);
-  if (!a.output.empty()) {
-    io::writeFileAtomically(a.output, text);
-  } else {
-    std::fwrite(text.data(), 1, text.size(), stdout);
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) throw OutputError("<stdout>: error: cannot write");
+  if (file) {
+    file->commit();
+  } else if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    throw OutputError("<stdout>: error: cannot write");
   }
   std::fprintf(stderr, "uvtk eval: %zu points, %zu ok, %zu poles, %zu on seam, %zu invalid\n", rows.size(),
                counts[int(Status::Ok)], counts[int(Status::Pole)], counts[int(Status::OnSeam)],
