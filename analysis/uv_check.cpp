@@ -8,22 +8,6 @@
 
 namespace uvtk::analysis {
 
-double wrappedUvError(const Vec2& found, const Vec2& expected, const Vec2& period, bool pole) {
-  double du = found.x() - expected.x(), dv = found.y() - expected.y();
-  const double pu = period.x(), pv = period.y();
-  const double length2 = pu * pu + pv * pv;
-  if (length2 > 0.0) {
-    const double along = (du * pu + dv * pv) / length2;
-    const double turns = pole ? along : std::nearbyint(along);
-    if (std::isfinite(turns)) {
-      du -= turns * pu;
-      dv -= turns * pv;
-    }
-  }
-  const double error = std::hypot(du, dv);
-  return std::isnan(error) ? std::numeric_limits<double>::infinity() : error;
-}
-
 ErrorStatistics errorStatistics(std::vector<double> values) {
   ErrorStatistics s;
   s.count = values.size();

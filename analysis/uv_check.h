@@ -14,12 +14,7 @@
 
 namespace uvtk::analysis {
 
-// The distance in UV units between `found` and `expected` with whole periods removed, the rule of
-// uvtk::point::uvError (point/include/uvtk/point.h): with d = found - expected and a non-zero
-// period p, a = (d . p) / |p|^2 turns; d loses round(a) p (the nearest integer, halves to even), or
-// at a pole corner the whole a p (u is undefined there: only the component across the period
-// counts). The result is |d| (std::hypot); a zero period compares plainly.
-double wrappedUvError(const Vec2& found, const Vec2& expected, const Vec2& period, bool pole);
+// A corner's error is wrappedUvError (core/uv_map.h).
 
 // Nearest-rank statistics of a list of errors: max, the 99th percentile as the value of rank
 // ceil(0.99 n) in ascending order (1-based; no interpolation, so it is always one of the errors),

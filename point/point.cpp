@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/uv_map.h"
 #include "point/point_evaluator.h"
 
 namespace uvtk::point {
@@ -59,17 +60,8 @@ bool Mapping::needsNormal() const { return impl_->evaluator.needsNormal(); }
 const std::string& Mapping::options() const { return impl_->evaluator.description(); }
 
 double uvError(double u, double v, const Result& expected) {
-  double du = u - expected.u, dv = v - expected.v;
-  const double pu = expected.period[0], pv = expected.period[1];
-  const double length2 = pu * pu + pv * pv;
-  if (length2 > 0.0) {
-    // Remove whole periods; at a pole the whole component along the period (u is undefined there).
-    const double along = (du * pu + dv * pv) / length2;
-    const double turns = expected.status == Status::Pole ? along : std::nearbyint(along);
-    du -= turns * pu;
-    dv -= turns * pv;
-  }
-  return std::hypot(du, dv);
+  return wrappedUvError(Vec2(u, v), Vec2(expected.u, expected.v), Vec2(expected.period[0], expected.period[1]),
+                        expected.status == Status::Pole);
 }
 
 }  // namespace uvtk::point

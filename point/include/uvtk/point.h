@@ -74,7 +74,7 @@ class UVTK_POINT_API Mapping {
 
 // The distance in UV units between texture coordinates (u, v) and `expected`, with whole periods
 // removed (u compared modulo 1 on a wrapping surface) and, at a pole, only the component across
-// the period compared (u is undefined there).
+// the period compared (u is undefined there). NaN gives infinity.
 UVTK_POINT_API double uvError(double u, double v, const Result& expected);
 
 }  // namespace uvtk::point
