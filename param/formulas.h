@@ -7,6 +7,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "core/cube.h"
 #include "core/math.h"
 
 namespace uvtk::param {
@@ -114,23 +115,7 @@ Vec2T<T> sphereUv(const Vec3T<T>& q, SpherePreset preset) {
 // Where the u period of a wrapping preset starts: u lies in [start, start + 1).
 inline double uPeriodStart(SpherePreset preset) { return preset == SpherePreset::Seed004 ? -0.5 : 0.0; }
 
-// ---- Cube (§3, OpenGL 4.6 table 8.19) ----
-
-enum class CubeFace { PosX, NegX, PosY, NegY, PosZ, NegZ };  // the GL order; index = face id
-constexpr int kCubeFaceCount = 6;
-
-// The face of the major axis; ties go to x before y before z, the sign follows the sign bit,
-// so +0 picks the + face and -0 the - face.
-template <class T>
-CubeFace majorAxisFace(const Vec3T<T>& d) {
-  const T ax = std::fabs(d.x()), ay = std::fabs(d.y()), az = std::fabs(d.z());
-  if (ax >= ay && ax >= az) return std::signbit(d.x()) ? CubeFace::NegX : CubeFace::PosX;
-  if (ay >= az) return std::signbit(d.y()) ? CubeFace::NegY : CubeFace::PosY;
-  return std::signbit(d.z()) ? CubeFace::NegZ : CubeFace::PosZ;
-}
-
-inline int faceAxis(CubeFace f) { return static_cast<int>(f) / 2; }
-inline int faceSign(CubeFace f) { return static_cast<int>(f) % 2 == 0 ? 1 : -1; }
+// ---- Cube (§3): face selection and GL's table live in core/cube.h ----
 
 enum class CubeConvention {
   Gl,      // (sc, tc) from OpenGL's table: seen from outside, s runs right and t runs down
@@ -140,48 +125,22 @@ enum class CubeConvention {
 // The in-face coordinates (sc, tc) of point d on face f, before division by |ma|.
 template <class T>
 Vec2T<T> cubeFaceCoordinates(const Vec3T<T>& d, CubeFace f, CubeConvention convention) {
-  const T x = d.x(), y = d.y(), z = d.z();
-  if (convention == CubeConvention::Direct) {
-    switch (faceAxis(f)) {
-      case 0:
-        return {y, z};
-      case 1:
-        return {x, z};
-      default:
-        return {x, y};
-    }
+  if (convention == CubeConvention::Gl) return glCubeFaceCoordinates(d, f);
+  switch (faceAxis(f)) {
+    case 0:
+      return {d.y(), d.z()};
+    case 1:
+      return {d.x(), d.z()};
+    default:
+      return {d.x(), d.y()};
   }
-  switch (f) {
-    case CubeFace::PosX:
-      return {-z, -y};
-    case CubeFace::NegX:
-      return {z, -y};
-    case CubeFace::PosY:
-      return {x, z};
-    case CubeFace::NegY:
-      return {x, -z};
-    case CubeFace::PosZ:
-      return {x, -y};
-    case CubeFace::NegZ:
-      return {-x, -y};
-  }
-  return {};
 }
 
 // s = (sc/|ma| + 1)/2, t = (tc/|ma| + 1)/2 for a direction d that selects face f.
 template <class T>
 Vec2T<T> cubeFaceSt(const Vec3T<T>& d, CubeFace f, CubeConvention convention) {
-  const T ma = std::fabs(d[faceAxis(f)]);
-  const Vec2T<T> c = cubeFaceCoordinates(d, f, convention);
-  return {(c.x() / ma + T(1)) * T(0.5), (c.y() / ma + T(1)) * T(0.5)};
+  return faceStFromCoordinates(cubeFaceCoordinates(d, f, convention), d[faceAxis(f)]);
 }
-
-enum class CubeLayout {
-  Faces,       // per-face [0,1]^2, the face id kept as the third texture coordinate
-  Cross,       // 4x3 horizontal cross: -X +Z +X -Z in the middle row, +Y above and -Y below +Z
-  Strip,       // 6x1 in the order +X -X +Y -Y +Z -Z
-  ThreeByTwo,  // top row +X -X +Y, bottom row -Y +Z -Z
-};
 
 // Places face coordinates (s, t) in an atlas. In the atlases every face reads unmirrored seen
 // from outside the cube with the image's top at v = 1 (GL's t runs down, so v = 1 - t there;
@@ -195,25 +154,8 @@ Vec2T<T> cubeAtlasUv(const Vec2T<T>& st, CubeFace f, CubeConvention convention, 
   } else if (f == CubeFace::NegX || f == CubeFace::PosY || f == CubeFace::NegZ) {
     oriented.x() = T(1) - st.x();
   }
-  const int face = static_cast<int>(f);
-  int column = 0, row = 0, columns = 1, rows = 1;
-  switch (layout) {
-    case CubeLayout::Faces:
-      break;
-    case CubeLayout::Strip:
-      column = face, columns = 6;
-      break;
-    case CubeLayout::ThreeByTwo:
-      column = face % 3, row = face < 3 ? 1 : 0, columns = 3, rows = 2;
-      break;
-    case CubeLayout::Cross: {
-      // (column, row from the bottom) of +X -X +Y -Y +Z -Z
-      static constexpr int kCell[kCubeFaceCount][2] = {{2, 1}, {0, 1}, {1, 2}, {1, 0}, {1, 1}, {3, 1}};
-      column = kCell[face][0], row = kCell[face][1], columns = 4, rows = 3;
-      break;
-    }
-  }
-  return {(T(column) + oriented.x()) / T(columns), (T(row) + oriented.y()) / T(rows)};
+  const CubeLayoutCell cell = cubeLayoutCell(f, layout);
+  return {(T(cell.column) + oriented.x()) / T(cell.columns), (T(cell.row) + oriented.y()) / T(cell.rows)};
 }
 
 }  // namespace uvtk::param

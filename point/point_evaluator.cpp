@@ -71,7 +71,7 @@ PointEvaluator::PointEvaluator(const cli::ResolvedMapping& mapping, const Affine
   projector_ = mapping.projector;
   param::ProjectorOptions raw = *projector_;
   raw.uvTransform = param::UvTransform{};
-  raw.cubeLayout = param::CubeLayout::Faces;
+  raw.cubeLayout = CubeLayout::Faces;
   raw_.emplace(raw, localFromObject);
   needsNormal_ = raw_->needsNormal() || projector_->cylinderCaps;
   normalToLocal = localFromObject.linear().inverse().transpose();
@@ -113,13 +113,13 @@ Result PointEvaluator::projectorAt(const Vec3& p, const Vec3& n, Result out) con
       out.reason = "on the seam: u and u + 1 are the same point";
     }
   } else if (o.surface == SurfaceKind::Cube) {
-    const std::optional<param::CubeFace> face = raw_->cubeFaceAt(p, n);
+    const std::optional<CubeFace> face = raw_->cubeFaceAt(p, n);
     if (!face) return invalid(out, missReason(o));
     if (uv.x() == 0.0 || uv.x() == 1.0 || uv.y() == 0.0 || uv.y() == 1.0) {
       out.status = Status::OnSeam;
       out.reason = "on an edge of the cube: the face follows the tie rule (x before y before z)";
     }
-    if (o.cubeLayout == param::CubeLayout::Faces) out.w = static_cast<double>(*face);
+    if (o.cubeLayout == CubeLayout::Faces) out.w = static_cast<double>(*face);
     uv = param::cubeAtlasUv(uv, *face, o.cubeConvention, o.cubeLayout);
   }
   if (!o.uvTransform.isIdentity()) uv = o.uvTransform.apply(uv);

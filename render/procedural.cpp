@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,9 @@ constexpr int kCheckerMax = 16384;
 constexpr int kCheckerDefaultSquare = 8;
 constexpr int kGridMin = 64, kGridMax = 8192, kGridDefault = 1024;
 constexpr int kCells = 8;  // cells per side of the uv grid
+constexpr int kSphereMapMin = 8, kSphereMapMax = 8192, kSphereMapDefault = 256;
+constexpr int kSphereMapMaxChecks = 64, kSphereMapDefaultChecks = 8;
+constexpr int kCubeDefault = 64, kCubeMax = 4096, kCubeIndexMax = 256;
 
 // The nearest 8-bit value, as a float: round(v 255) / 255.
 float eightBit(double v) { return float(std::round(v * 255.0) / 255.0); }
@@ -147,8 +151,10 @@ Image uvGridImage(int n) {
 namespace {
 
 // A procedural texture's name parsed: checker:N[:C] or uvgrid[:N].
+enum class ProceduralKind { Checker, Uvgrid, SphereMap, Cube, CubeIndex };
+
 struct ProceduralName {
-  bool checker = true;
+  ProceduralKind kind = ProceduralKind::Checker;
   int n = 0, c = 0;
 };
 
@@ -157,34 +163,141 @@ bool names(const std::string& name, const std::string& word) {
   return name == word || name.compare(0, word.size() + 1, word + ":") == 0;
 }
 
+// The counts after the word: `fields` holds the name split at its colons, the counts missing from
+// it take their defaults; -1 marks a malformed count or too many fields.
+std::vector<int> counts(const std::vector<std::string>& fields, const std::vector<int>& defaults) {
+  std::vector<int> out = defaults;
+  if (fields.size() > defaults.size() + 1) return std::vector<int>(defaults.size(), -1);
+  for (std::size_t k = 1; k < fields.size(); ++k) out[k - 1] = parseCount(fields[k]);
+  return out;
+}
+
+bool within(int value, int lo, int hi) { return lo <= value && value <= hi; }
+
 std::optional<ProceduralName> parseProceduralName(const std::string& name) {
+  const std::vector<std::string> fields = splitColons(name);
+  const auto malformed = [&](const std::string& expected) {
+    return UsageError("texture '" + name + "': expected " + expected);
+  };
   if (names(name, "checker")) {
-    const std::vector<std::string> fields = splitColons(name);
-    const int n = fields.size() >= 2 ? parseCount(fields[1]) : -1;
-    const int c = fields.size() == 3 ? parseCount(fields[2]) : kCheckerDefaultSquare;
-    if (fields.size() < 2 || fields.size() > 3 || !(1 <= n && n <= kCheckerMax && 1 <= c && c <= kCheckerMax))
-      throw UsageError("texture '" + name + "': expected checker:N[:C] with 1 <= N, C <= 16384");
-    return ProceduralName{true, n, c};
+    const std::vector<int> nc = counts(fields, {-1, kCheckerDefaultSquare});
+    if (!within(nc[0], 1, kCheckerMax) || !within(nc[1], 1, kCheckerMax))
+      throw malformed("checker:N[:C] with 1 <= N, C <= 16384");
+    return ProceduralName{ProceduralKind::Checker, nc[0], nc[1]};
   }
   if (names(name, "uvgrid")) {
-    const std::vector<std::string> fields = splitColons(name);
-    const int n = fields.size() == 2 ? parseCount(fields[1]) : kGridDefault;
-    if (fields.size() > 2 || !(kGridMin <= n && n <= kGridMax))
-      throw UsageError("texture '" + name + "': expected uvgrid[:N] with 64 <= N <= 8192");
-    return ProceduralName{false, n, 0};
+    const std::vector<int> n = counts(fields, {kGridDefault});
+    if (!within(n[0], kGridMin, kGridMax)) throw malformed("uvgrid[:N] with 64 <= N <= 8192");
+    return ProceduralName{ProceduralKind::Uvgrid, n[0], 0};
+  }
+  if (names(name, "spheremap")) {
+    const std::vector<int> nk = counts(fields, {kSphereMapDefault, kSphereMapDefaultChecks});
+    if (!within(nk[0], kSphereMapMin, kSphereMapMax) || !within(nk[1], 1, kSphereMapMaxChecks))
+      throw malformed("spheremap[:N[:K]] with 8 <= N <= 8192, 1 <= K <= 64");
+    return ProceduralName{ProceduralKind::SphereMap, nk[0], nk[1]};
+  }
+  if (names(name, "cube")) {
+    const std::vector<int> n = counts(fields, {kCubeDefault});
+    if (!within(n[0], 1, kCubeMax)) throw malformed("cube[:N] with 1 <= N <= 4096");
+    return ProceduralName{ProceduralKind::Cube, n[0], 0};
+  }
+  if (names(name, "cubeindex")) {
+    const std::vector<int> n = counts(fields, {kCubeDefault});
+    if (!within(n[0], 1, kCubeIndexMax)) throw malformed("cubeindex[:N] with 1 <= N <= 256");
+    return ProceduralName{ProceduralKind::CubeIndex, n[0], 0};
   }
   return std::nullopt;
 }
 
+// Six N x N faces whose texel (i, j) of face f is colour(f, i, j) (8-bit values).
+CubeTexture cubeFromTexels(int n, const std::function<std::array<int, 3>(int, int, int)>& colour) {
+  std::vector<Texture> faces;
+  for (int f = 0; f < kCubeFaceCount; ++f) {
+    TexelLevel level{n, n, {}};
+    level.texels.reserve(std::size_t(n) * std::size_t(n));
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const std::array<int, 3> c = colour(f, i, j);
+        level.texels.push_back(Rgba(float(c[0]), float(c[1]), float(c[2]), 255.0f) / 255.0f);
+      }
+    faces.emplace_back(std::move(level), true);
+  }
+  return CubeTexture(std::move(faces));
+}
+
 }  // namespace
+
+CubeTexture cubeCheckerTexture(int n) {
+  if (!within(n, 1, kCubeMax)) throw UsageError("cube texture: expected 1 <= N <= 4096, got " + std::to_string(n));
+  static constexpr int kFaceColour[kCubeFaceCount][3] = {{255, 0, 0},   {0, 255, 255}, {0, 255, 0},
+                                                         {255, 0, 255}, {0, 0, 255},   {255, 255, 0}};
+  const int c = std::max(1, n / 8);
+  return cubeFromTexels(n, [c](int f, int i, int j) {
+    const int divisor = (i / c + j / c) % 2 == 0 ? 1 : 2;
+    return std::array<int, 3>{kFaceColour[f][0] / divisor, kFaceColour[f][1] / divisor, kFaceColour[f][2] / divisor};
+  });
+}
+
+CubeTexture cubeIndexTexture(int n) {
+  if (!within(n, 1, kCubeIndexMax))
+    throw UsageError("cubeindex texture: expected 1 <= N <= 256, got " + std::to_string(n));
+  return cubeFromTexels(n, [](int f, int i, int j) { return std::array<int, 3>{i, j, 40 * (f + 1)}; });
+}
+
+Texture sphereMapCheckerTexture(int n, int k) {
+  if (!within(n, kSphereMapMin, kSphereMapMax) || !within(k, 1, kSphereMapMaxChecks))
+    throw UsageError("spheremap texture: expected 8 <= N <= 8192 and 1 <= K <= 64, got N = " + std::to_string(n) +
+                     ", K = " + std::to_string(k));
+  TexelLevel level{n, n, {}};
+  level.texels.reserve(std::size_t(n) * std::size_t(n));
+  const Rgba grey = Rgba(128, 128, 128, 255) / 255.0f;
+  const std::array<Rgba, 4> checks = {Rgba(255, 255, 255, 255) / 255.0f, Rgba(0, 0, 0, 255) / 255.0f,
+                                      Rgba(255, 160, 0, 255) / 255.0f, Rgba(0, 64, 160, 255) / 255.0f};
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = 2.0 * (i + 0.5) / n - 1.0, y = 2.0 * (j + 0.5) / n - 1.0;
+      const double d2 = x * x + y * y;
+      if (d2 > 1.0) {
+        level.texels.push_back(grey);
+        continue;
+      }
+      // SPHERE_MAP inverted (§6): m = 4 sqrt(1 - d^2) for a unit r, so r_z = 1 - 2 d^2, theta = 2 asin(d).
+      const double theta = 2.0 * std::asin(std::sqrt(d2));
+      double phi = std::atan2(y, x);
+      if (phi < 0.0) phi += kTwoPi;
+      const int a = std::min(k - 1, int(std::floor(theta * k / kPi)));
+      const int b = std::min(2 * k - 1, int(std::floor(phi * k / kPi)));
+      const bool behind = !(d2 < 0.5);
+      level.texels.push_back(checks[std::size_t(2 * behind + (a + b) % 2)]);
+    }
+  return Texture(std::move(level), true);
+}
 
 bool isProceduralName(const std::string& name) { return parseProceduralName(name).has_value(); }
 
 std::optional<Texture> proceduralTexture(const std::string& name) {
   const std::optional<ProceduralName> parsed = parseProceduralName(name);
   if (!parsed) return std::nullopt;
-  if (parsed->checker) return checkerTexture(parsed->n, parsed->c);
-  return Texture::fromImage(uvGridImage(parsed->n), true);
+  switch (parsed->kind) {
+    case ProceduralKind::Checker:
+      return checkerTexture(parsed->n, parsed->c);
+    case ProceduralKind::Uvgrid:
+      return Texture::fromImage(uvGridImage(parsed->n), true);
+    case ProceduralKind::SphereMap:
+      return sphereMapCheckerTexture(parsed->n, parsed->c);
+    case ProceduralKind::Cube:
+    case ProceduralKind::CubeIndex:
+      break;
+  }
+  return std::nullopt;
+}
+
+std::optional<CubeTexture> proceduralCubeTexture(const std::string& name) {
+  const std::optional<ProceduralName> parsed = parseProceduralName(name);
+  if (!parsed) return std::nullopt;
+  if (parsed->kind == ProceduralKind::Cube) return cubeCheckerTexture(parsed->n);
+  if (parsed->kind == ProceduralKind::CubeIndex) return cubeIndexTexture(parsed->n);
+  return std::nullopt;
 }
 
 }  // namespace uvtk::render

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 
 #include "core/error.h"
@@ -17,15 +18,15 @@ namespace {
 
 constexpr int kRowsPerBand = 8;
 
-// Texture coordinates of one fragment and their screen-space derivatives, after the division by q.
+// Texture coordinates of one fragment, (s, t, r) / q, and their screen-space derivatives.
 struct FragmentTexcoords {
-  Vec2 st = Vec2::Zero();
-  Vec2 dstDx = Vec2::Zero(), dstDy = Vec2::Zero();
+  Vec3 str = Vec3::Zero();
+  Vec3 dx = Vec3::Zero(), dy = Vec3::Zero();
 };
 
 // d(a / q) = (da q - a dq) / q^2, for the interpolated (s, t, r, q) and its derivative.
-Vec2 projectedDerivative(const Vec4& tc, const Vec4& dtc) {
-  return (dtc.head<2>() * tc.w() - tc.head<2>() * dtc.w()) / (tc.w() * tc.w());
+Vec3 projectedDerivative(const Vec4& tc, const Vec4& dtc) {
+  return (dtc.head<3>() * tc.w() - tc.head<3>() * dtc.w()) / (tc.w() * tc.w());
 }
 
 // Everything the shading pass reads, computed once per frame.
@@ -36,6 +37,14 @@ struct FrameData {
   const std::vector<Vec4>& clip;   // per vertex
   std::vector<Vec3> normals;       // object space, per corner: for lighting or the pixel mapping
   std::vector<Vec4> cornerColour;  // lit colour per corner when the environment reads it
+};
+
+// What the texture unit returns for a fragment, and where it looked.
+struct TextureLookup {
+  Vec4 texel = Vec4::Zero();
+  Vec2 st = Vec2::Zero();  // on the selected face for a cube map
+  double lambda = 0.0;
+  int cubeFace = -1;
 };
 
 class Shader {
@@ -54,24 +63,61 @@ class Shader {
     const double wx = x + 0.5, wy = o.camera.height - row - 0.5;  // window coordinates, y up
     const TriangleInterpolator::Barycentrics b = interpolator_.at(wx, wy);
     const FragmentTexcoords tc = f_.source.pixelMapping ? exactTexcoords(face, b) : interpolatedTexcoords(face, b);
-    const Texture& texture = *o.texture;
-    const double lambda = levelOfDetail(texture.width(), texture.height(), tc.dstDx, tc.dstDy);
-    const Vec4 texel = sample(texture, o.sampler, tc.st.x(), tc.st.y(), lambda);
+    const TextureLookup lookup = o.cubeTexture ? lookUpCube(tc) : lookUp2d(tc);
     Vec4 fragment = Vec4::Ones();
     if (!f_.cornerColour.empty()) {
       fragment = Vec4::Zero();
       for (int k = 0; k < 3; ++k) fragment += b.b[k] * f_.cornerColour[3 * std::size_t(face) + std::size_t(k)];
     }
-    const Vec4 colour = textureEnvironment(o.env, fragment, texel, o.envColour);
+    const Vec4 colour = textureEnvironment(o.env, fragment, lookup.texel, o.envColour);
     if (aov) {
-      aov[0] = float(tc.st.x());
-      aov[1] = float(tc.st.y());
-      aov[4] = std::isfinite(lambda) ? float(lambda) : (lambda > 0 ? 1000.0f : -1000.0f);  // GL's lod clamp
+      aov[0] = float(lookup.st.x());
+      aov[1] = float(lookup.st.y());
+      aov[4] = std::isfinite(lookup.lambda) ? float(lookup.lambda) : (lookup.lambda > 0 ? 1000.0f : -1000.0f);  // GL's lod clamp
+      if (o.cubeTexture) aov[5] = float(lookup.cubeFace);
     }
     return colour.head<3>();
   }
 
  private:
+  TextureLookup lookUp2d(const FragmentTexcoords& tc) const {
+    const RenderOptions& o = f_.options;
+    TextureLookup out;
+    out.st = tc.str.head<2>();
+    out.lambda = levelOfDetail(o.texture->width(), o.texture->height(), tc.dx.head<2>(), tc.dy.head<2>());
+    out.texel = sample(*o.texture, o.sampler, out.st.x(), out.st.y(), out.lambda);
+    return out;
+  }
+
+  // The face and (s, t) from a direction (s, t, r), or as given with cube face ids; the level of
+  // detail from the derivatives of (s, t) on that face.
+  TextureLookup lookUpCube(const FragmentTexcoords& tc) const {
+    const RenderOptions& o = f_.options;
+    TextureLookup out;
+    Vec2 dstDx, dstDy;
+    CubeFace face = CubeFace::PosX;
+    if (f_.source.cubeFaceIds) {
+      const double id = tc.str.z();
+      const bool valid = id >= 0.0 && id < kCubeFaceCount && id == std::floor(id);
+      face = valid ? CubeFace(int(id)) : CubeFace::PosX;
+      out.st = valid ? Vec2(tc.str.head<2>()) : Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
+      dstDx = tc.dx.head<2>();
+      dstDy = tc.dy.head<2>();
+      out.cubeFace = valid ? int(face) : -1;
+    } else {
+      const CubeCoordinates c = cubeCoordinates(tc.str);
+      face = c.face;
+      out.st = c.st;
+      dstDx = cubeFaceStDerivative(tc.str, tc.dx, face);
+      dstDy = cubeFaceStDerivative(tc.str, tc.dy, face);
+      out.cubeFace = c.st.allFinite() ? int(face) : -1;
+    }
+    const int n = o.cubeTexture->size();
+    out.lambda = levelOfDetail(n, n, dstDx, dstDy);
+    out.texel = sampleCube(*o.cubeTexture, o.sampler, face, out.st.x(), out.st.y(), out.lambda, o.seamless);
+    return out;
+  }
+
   FragmentTexcoords interpolatedTexcoords(std::int32_t face, const TriangleInterpolator::Barycentrics& b) const {
     const Vec4* corners = &f_.source.corners[3 * std::size_t(face)];
     Vec4 tc = Vec4::Zero(), dx = Vec4::Zero(), dy = Vec4::Zero();
@@ -81,9 +127,9 @@ class Shader {
       dy += b.dbdy[k] * corners[k];
     }
     FragmentTexcoords out;
-    out.st = tc.head<2>() / tc.w();
-    out.dstDx = projectedDerivative(tc, dx);
-    out.dstDy = projectedDerivative(tc, dy);
+    out.str = tc.head<3>() / tc.w();
+    out.dx = projectedDerivative(tc, dx);
+    out.dy = projectedDerivative(tc, dy);
     return out;
   }
 
@@ -93,20 +139,20 @@ class Shader {
   FragmentTexcoords exactTexcoords(std::int32_t face, const TriangleInterpolator::Barycentrics& b) const {
     constexpr double h = 1e-3;
     FragmentTexcoords out;
-    out.st = exactAt(face, b.b);
-    out.dstDx = difference(exactAt(face, b.b + h * b.dbdx), exactAt(face, b.b - h * b.dbdx)) / (2 * h);
-    out.dstDy = difference(exactAt(face, b.b + h * b.dbdy), exactAt(face, b.b - h * b.dbdy)) / (2 * h);
+    out.str = exactAt(face, b.b);
+    out.dx = difference(exactAt(face, b.b + h * b.dbdx), exactAt(face, b.b - h * b.dbdx)) / (2 * h);
+    out.dy = difference(exactAt(face, b.b + h * b.dbdy), exactAt(face, b.b - h * b.dbdy)) / (2 * h);
     return out;
   }
 
-  Vec2 difference(const Vec2& a, const Vec2& b) const {
-    Vec2 d = a - b;
-    if (!d.allFinite()) return Vec2::Zero();
+  Vec3 difference(const Vec3& a, const Vec3& b) const {
+    Vec3 d = a - b;
+    if (!d.allFinite()) return Vec3::Zero();
     if (f_.source.pixelMapping->wrapsS) d.x() -= std::round(d.x());
     return d;
   }
 
-  Vec2 exactAt(std::int32_t face, const Vec3& b) const {
+  Vec3 exactAt(std::int32_t face, const Vec3& b) const {
     const Triangle& t = f_.mesh.triangles[std::size_t(face)];
     const Vec3 position =
         b[0] * f_.mesh.positions[t[0]] + b[1] * f_.mesh.positions[t[1]] + b[2] * f_.mesh.positions[t[2]];
@@ -117,7 +163,7 @@ class Shader {
       normal = length > 0.0 ? Vec3(normal / length) : Vec3::Zero();
     }
     const Vec4 tc = f_.source.pixelMapping->texcoordAt(position, normal, face);
-    return tc.head<2>() / tc.w();
+    return tc.head<3>() / tc.w();
   }
 
   const FrameData& f_;
@@ -166,8 +212,9 @@ Rendering renderFrame(const Mesh& mesh, const TexcoordSource& source, const Rend
 
   out.colour = Image(width, height, 3);
   if (o.aovs) {
-    out.aovs = Image(width, height, 5);
+    out.aovs = Image(width, height, o.cubeTexture ? 6 : 5);
     out.aovs.channelNames = {"u", "v", "depth", "face", "lod"};
+    if (o.cubeTexture) out.aovs.channelNames.push_back("cubeface");
   }
   const int bands = (height + kRowsPerBand - 1) / kRowsPerBand;
   std::vector<std::size_t> covered(std::size_t(bands), 0);
@@ -186,6 +233,7 @@ Rendering renderFrame(const Mesh& mesh, const TexcoordSource& source, const Rend
           ++covered[std::size_t(band)];
         } else if (aov) {
           aov[0] = aov[1] = aov[4] = 0.0f;
+          if (o.cubeTexture) aov[5] = -1.0f;
         }
         if (aov) {
           aov[2] = visible.depth[i];
@@ -250,10 +298,10 @@ Rendering resolve(const Rendering& samples, const VisibilityBuffer& visible, int
 }  // namespace
 
 Rendering render(const Mesh& mesh, const TexcoordSource& source, const RenderOptions& o) {
-  if (!o.texture) throw UsageError("render: no texture is bound");
+  if (!o.texture == !o.cubeTexture) throw UsageError("render: expected one texture, 2D or cube map, to be bound");
   if (!source.pixelMapping && source.corners.size() != 3 * mesh.triangles.size())
     throw UsageError("render: expected 3 texture coordinates per triangle");
-  UVTK_CHECK(!needsMipmaps(o.sampler.minFilter) || o.texture->hasMipmaps());
+  UVTK_CHECK(!needsMipmaps(o.sampler.minFilter) || (o.texture ? o.texture->hasMipmaps() : o.cubeTexture->hasMipmaps()));
   const int n = sampleGridSize(o.samplesPerPixel);
   VisibilityBuffer visible;
   if (n == 1) return renderFrame(mesh, source, o, visible);

@@ -14,6 +14,7 @@
 #include "core/image.h"
 #include "core/mesh.h"
 #include "render/camera.h"
+#include "render/cube_texture.h"
 #include "render/raster.h"
 #include "render/shading.h"
 #include "render/texture.h"
@@ -33,14 +34,20 @@ struct PixelMapping {
 struct TexcoordSource {
   std::vector<Vec4> corners;                 // (s, t, r, q), 3 per triangle; used without pixelMapping
   std::optional<PixelMapping> pixelMapping;  // evaluated at every pixel instead
+  // With a cube-map texture: r is a cube face id (0..5, GL's order; the cube projector's faces
+  // layout) and (s, t) the point on that face, instead of (s, t, r) / q being a direction.
+  bool cubeFaceIds = false;
 };
 
 struct RenderOptions {
   Camera camera;
   Mat4 worldFromObject = Mat4::Identity();
   RasterOptions raster;
-  const Texture* texture = nullptr;  // with its mipmaps when the sampler's filter needs them
+  // The bound texture, 2D or cube map (exactly one), with its mipmaps when the filter needs them.
+  const Texture* texture = nullptr;
+  const CubeTexture* cubeTexture = nullptr;
   SamplerState sampler;
+  bool seamless = false;  // cube maps: GL's TEXTURE_CUBE_MAP_SEAMLESS
   EnvMode env = EnvMode::Replace;
   Vec4 envColour = Vec4::Zero();  // GL_TEXTURE_ENV_COLOR, read by BLEND
   Lighting lighting;
@@ -57,7 +64,9 @@ struct Rendering {
   Image colour;  // RGB, row 0 at the top
   // With RenderOptions::aovs: channels u, v (s/q, t/q as interpolated, before wrapping), depth
   // (window depth), face (triangle index, -1 for the background) and lod (lambda); the background
-  // has u = v = lod = 0 and depth 1. With n x n samples per pixel, every channel is that of the
+  // has u = v = lod = 0 and depth 1. With a cube map, u and v are the (s, t) on the selected face
+  // and a sixth channel, cubeface, holds its id (0..5; -1 on the background and where there is no
+  // direction). With n x n samples per pixel, every channel is that of the
   // single sample (n/2, n/2) (integer division; column, row from the top left): the pixel's centre
   // for odd n, half a sample right of and below it for even n; lod is then that of the sample's
   // smaller footprint, log2(n) below the pixel's.
@@ -68,7 +77,7 @@ struct Rendering {
 };
 
 // Throws UsageError when the texture coordinates do not match the mesh (3 per triangle) and
-// there is no pixel mapping, when there is no texture, when samplesPerPixel is not one of the
+// there is no pixel mapping, when there is no texture or two, when samplesPerPixel is not one of the
 // allowed squares, or when the supersampled frame exceeds kMaxViewport pixels a side.
 Rendering render(const Mesh& mesh, const TexcoordSource& texcoords, const RenderOptions& options);
 

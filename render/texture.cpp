@@ -17,29 +17,10 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Texel coordinates beyond 2^62 are all "far outside"; clamping there keeps the int64 cast defined.
 constexpr double kFarTexel = 4611686018427387904.0;  // 2^62
 
-// floor(u) as an integer texel index; NaN counts as 0, infinities as +-2^62.
-std::int64_t floorToTexel(double u) {
-  if (std::isnan(u)) return 0;
-  return static_cast<std::int64_t>(std::floor(std::clamp(u, -kFarTexel, kFarTexel)));
-}
-
 // i mod n in [0, n) for n > 0, whatever the sign of i.
 std::int64_t positiveModulo(std::int64_t i, std::int64_t n) {
   const std::int64_t r = i % n;
   return r < 0 ? r + n : r;
-}
-
-// The lower of the two texels LINEAR blends along one axis and the weight of the upper one.
-struct LinearTap {
-  std::int64_t lower;
-  double alpha;
-};
-
-LinearTap linearTap(double coordinate, int size) {
-  double u = coordinate * size - 0.5;  // GL 4.6 §8.14.2: u = s w - 1/2, i0 = floor(u), alpha = frac(u)
-  u = std::isnan(u) ? 0.0 : std::clamp(u, -kFarTexel, kFarTexel);
-  const double lower = std::floor(u);
-  return {static_cast<std::int64_t>(lower), u - lower};
 }
 
 Vec4 widen(const Rgba& texel) { return texel.cast<double>(); }
@@ -173,10 +154,22 @@ int wrapTexel(std::int64_t i, int size, Wrap wrap) {
   return int((n - 1) - (a >= 0 ? a : -(1 + a)));
 }
 
+std::int64_t nearestTexel(double coordinate, int size) {
+  const double u = coordinate * size;  // GL 4.6 §8.14.2: NEAREST takes floor(u), u = s w
+  if (std::isnan(u)) return 0;
+  return static_cast<std::int64_t>(std::floor(std::clamp(u, -kFarTexel, kFarTexel)));
+}
+
+LinearTap linearTap(double coordinate, int size) {
+  double u = coordinate * size - 0.5;  // GL 4.6 §8.14.2: u = s w - 1/2, i0 = floor(u), alpha = frac(u)
+  u = std::isnan(u) ? 0.0 : std::clamp(u, -kFarTexel, kFarTexel);
+  const double lower = std::floor(u);
+  return {static_cast<std::int64_t>(lower), u - lower};
+}
+
 Rgba sampleNearest(const TexelLevel& level, Wrap wrapS, Wrap wrapT, double s, double t) {
-  // GL 4.6 §8.14.2: NEAREST takes texel (floor(u), floor(v)), u = s w, v = t h, each wrapped
-  const int i = wrapTexel(floorToTexel(s * level.width), level.width, wrapS);
-  const int j = wrapTexel(floorToTexel(t * level.height), level.height, wrapT);
+  const int i = wrapTexel(nearestTexel(s, level.width), level.width, wrapS);
+  const int j = wrapTexel(nearestTexel(t, level.height), level.height, wrapT);
   return level.at(i, j);
 }
 
@@ -198,34 +191,51 @@ double levelOfDetail(int width, int height, const Vec2& dstDx, const Vec2& dstDy
   return std::log2(rho);  // GL 4.6 §8.14.1: lambda_base = log2(rho); log2(0) = -inf, log2(inf) = +inf
 }
 
-Vec4 sample(const Texture& texture, const SamplerState& sampler, double s, double t, double lambda) {
-  if (!std::isfinite(s) || !std::isfinite(t)) return widen(texture.level(0).at(0, 0));
-  UVTK_CHECK(!isMipmapFilter(sampler.magFilter));
+LevelChoice chooseLevels(const SamplerState& sampler, int levelCount, double lambda) {
+  UVTK_CHECK(!isMipmapFilter(sampler.magFilter) && levelCount >= 1);
   if (std::isnan(lambda)) lambda = kInfinity;  // as levelOfDetail for an undefined footprint
   // GL 4.6 §8.15: c = 0.5 for a LINEAR magnification filter with a NEAREST_MIPMAP_* minification filter
   const bool halfCrossover = sampler.magFilter == Filter::Linear && (sampler.minFilter == Filter::NearestMipmapNearest ||
                                                                      sampler.minFilter == Filter::NearestMipmapLinear);
   const double c = halfCrossover ? 0.5 : 0.0;
-  if (lambda <= c) return sampleLevel(texture.level(0), sampler.magFilter == Filter::Linear, sampler, s, t);
-
-  if (!isMipmapFilter(sampler.minFilter))
-    return sampleLevel(texture.level(0), sampler.minFilter == Filter::Linear, sampler, s, t);
-  UVTK_CHECK(texture.hasMipmaps());
-  const int q = texture.levelCount() - 1;
-  const bool linearWithin = sampler.minFilter == Filter::LinearMipmapNearest || sampler.minFilter == Filter::LinearMipmapLinear;
-
+  LevelChoice choice;
+  if (lambda <= c) {
+    choice.linear = sampler.magFilter == Filter::Linear;
+    return choice;
+  }
+  if (!isMipmapFilter(sampler.minFilter)) {
+    choice.linear = sampler.minFilter == Filter::Linear;
+    return choice;
+  }
+  const int q = levelCount - 1;
+  choice.linear = sampler.minFilter == Filter::LinearMipmapNearest || sampler.minFilter == Filter::LinearMipmapLinear;
   if (sampler.minFilter == Filter::NearestMipmapNearest || sampler.minFilter == Filter::LinearMipmapNearest) {
     // GL 4.6 §8.14.3: d = 0 for lambda <= 1/2, ceil(lambda + 1/2) - 1 up to q + 1/2, else q
-    const int d = lambda <= 0.5 ? 0 : lambda > q + 0.5 ? q : int(std::ceil(lambda + 0.5)) - 1;
-    return sampleLevel(texture.level(d), linearWithin, sampler, s, t);
+    choice.level[0] = lambda <= 0.5 ? 0 : lambda > q + 0.5 ? q : int(std::ceil(lambda + 0.5)) - 1;
+    return choice;
   }
   // GL 4.6 §8.14.3: d1 = d2 = q for lambda >= q, else d1 = floor(lambda), d2 = d1 + 1;
   // tau = (1 - frac(lambda)) tau1 + frac(lambda) tau2
-  if (lambda >= q) return sampleLevel(texture.level(q), linearWithin, sampler, s, t);
-  const int d1 = int(std::floor(lambda)), d2 = d1 + 1;  // lambda < q: d2 <= q
+  if (lambda >= q) {
+    choice.level[0] = q;
+    return choice;
+  }
   const double f = lambda - std::floor(lambda);
-  return (1 - f) * sampleLevel(texture.level(d1), linearWithin, sampler, s, t) +
-         f * sampleLevel(texture.level(d2), linearWithin, sampler, s, t);
+  choice.count = 2;
+  choice.level = {int(std::floor(lambda)), int(std::floor(lambda)) + 1};  // lambda < q: d2 <= q
+  choice.weight = {1 - f, f};
+  return choice;
+}
+
+Vec4 sample(const Texture& texture, const SamplerState& sampler, double s, double t, double lambda) {
+  if (!std::isfinite(s) || !std::isfinite(t)) return widen(texture.level(0).at(0, 0));
+  UVTK_CHECK(!isMipmapFilter(sampler.minFilter) || texture.hasMipmaps());
+  const LevelChoice choice = chooseLevels(sampler, texture.levelCount(), lambda);
+  Vec4 sum = Vec4::Zero();
+  for (int k = 0; k < choice.count; ++k)
+    sum += choice.weight[std::size_t(k)] *
+           sampleLevel(texture.level(choice.level[std::size_t(k)]), choice.linear, sampler, s, t);
+  return sum;
 }
 
 }  // namespace uvtk::render

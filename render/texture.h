@@ -4,6 +4,7 @@
 // §8.14 (texture minification and magnification); docs/conventions.md §7 states our choices.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -90,6 +91,18 @@ class Texture {
 // mirror(a) = a >= 0 ? a : -(1 + a).
 int wrapTexel(std::int64_t i, int size, Wrap wrap);
 
+// NEAREST's texel index along one axis: floor(s size), in double; NaN gives 0, beyond 2^62 texels
+// the index stops at +-2^62.
+std::int64_t nearestTexel(double coordinate, int size);
+
+// LINEAR's lower texel index along one axis, i0 = floor(s size - 1/2), and the weight of the
+// upper one, alpha = frac(s size - 1/2); NaN counts as 0, far coordinates stop at +-2^62.
+struct LinearTap {
+  std::int64_t lower;
+  double alpha;
+};
+LinearTap linearTap(double coordinate, int size);
+
 // NEAREST within one level: texel (wrap(floor(s W)), wrap(floor(t H))), products in double.
 Rgba sampleNearest(const TexelLevel& level, Wrap wrapS, Wrap wrapT, double s, double t);
 
@@ -100,6 +113,20 @@ Vec4 sampleLinear(const TexelLevel& level, Wrap wrapS, Wrap wrapT, double s, dou
 // lambda = log2(rho), rho = max(|(ds/dx W, dt/dx H)|, |(ds/dy W, dt/dy H)|) for the base level's
 // W x H; -infinity when rho = 0, +infinity for infinite or NaN derivatives (the coarsest level).
 double levelOfDetail(int width, int height, const Vec2& dstDx, const Vec2& dstDy);
+
+// The levels a filter reads at level of detail `lambda` and their weights (GL 4.6 §8.14.3, §8.15):
+// one level (weight 1) or two blended; `linear` says whether each is filtered LINEAR within the
+// level. Magnification (lambda <= c, c = 0.5 when the magnification filter is LINEAR and the
+// minification filter NEAREST_MIPMAP_NEAREST or NEAREST_MIPMAP_LINEAR, else c = 0) reads level 0
+// with the magnification filter. `levelCount` counts the levels that exist (all down to 1 x 1
+// when the minification filter is a mipmap filter). NaN lambda counts as +infinity.
+struct LevelChoice {
+  int count = 1;
+  std::array<int, 2> level{0, 0};
+  std::array<double, 2> weight{1.0, 0.0};
+  bool linear = false;
+};
+LevelChoice chooseLevels(const SamplerState& sampler, int levelCount, double lambda);
 
 // The filtered texel at (s, t) for level of detail `lambda`: magnification (lambda <= c, c = 0.5
 // when the magnification filter is LINEAR and the minification filter NEAREST_MIPMAP_NEAREST or
