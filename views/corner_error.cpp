@@ -53,6 +53,7 @@ Image drawCornerError(const CornerErrorInput& in, const render::RenderOptions& o
   const render::Texture unit = render::checkerTexture(1, 1);
   render::RenderOptions o = options;
   o.texture = &unit;
+  o.cubeTexture = nullptr;
   o.sampler = render::SamplerState{};
   o.env = render::EnvMode::Replace;
   o.aovs = true;

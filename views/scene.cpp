@@ -47,10 +47,13 @@ Image shadeFaces(const Scene& scene, const std::vector<Vec3>& colours, const Vec
   return image;
 }
 
-render::TexcoordSource cornerTexcoords(const UvMap& uv) {
+render::TexcoordSource cornerTexcoords(const ViewInput& in) {
+  const UvMap& uv = *in.uv;
   render::TexcoordSource source;
   source.corners.reserve(uv.uv.size());
-  for (const Vec2& t : uv.uv) source.corners.emplace_back(t.x(), t.y(), 0.0, 1.0);
+  for (std::size_t c = 0; c < uv.uv.size(); ++c)
+    source.corners.emplace_back(uv.uv[c].x(), uv.uv[c].y(), uv.w.empty() ? 0.0 : uv.w[c], in.q ? (*in.q)[c] : 1.0);
+  source.cubeFaceIds = in.cubeFaceIds;
   return source;
 }
 

@@ -9,6 +9,7 @@
 #include "core/uv_map.h"
 #include "render/raster.h"
 #include "render/renderer.h"
+#include "views/views.h"
 
 namespace uvtk::views {
 
@@ -30,7 +31,8 @@ Scene rasterizeScene(const Mesh& mesh, const render::RenderOptions& options);
 // The visible faces in colours[face] times their shade, `background` elsewhere (RGB, row 0 at the top).
 Image shadeFaces(const Scene& scene, const std::vector<Vec3>& colours, const Vec3& background);
 
-// The per-corner UVs as the renderer's texture coordinates (s, t, 0, 1).
-render::TexcoordSource cornerTexcoords(const UvMap& uv);
+// The per-corner texture coordinates as the renderer takes them: (s, t, r, q) with r from uv.w
+// (0 without) and q from in.q (1 without), cube face ids as in.cubeFaceIds says.
+render::TexcoordSource cornerTexcoords(const ViewInput& in);
 
 }  // namespace uvtk::views

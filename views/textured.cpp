@@ -14,9 +14,10 @@ Image drawTextured(View view, const ViewInput& in, const ViewOptions& options) {
   render::RenderOptions o = options.render;  // the sampler as given: NEAREST and REPEAT by default
   if (render::needsMipmaps(o.sampler.minFilter)) texture->buildMipmaps();
   o.texture = &*texture;
+  o.cubeTexture = nullptr;
   o.env = render::EnvMode::Replace;
   o.aovs = false;
-  return render::render(*in.mesh, cornerTexcoords(*in.uv), o).colour;
+  return render::render(*in.mesh, cornerTexcoords(in), o).colour;
 }
 
 }  // namespace uvtk::views

@@ -2,9 +2,11 @@
 // evaluated at every pixel, in texels, on a logarithmic scale.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
+#include "core/cube.h"
 #include "core/error.h"
 #include "render/procedural.h"
 #include "views/canvas.h"
@@ -18,13 +20,24 @@ namespace {
 
 constexpr int kDefaultTexels = 1024;  // the texture size when none is bound
 constexpr float kBackground = -1.0f, kNoValue = -2.0f;
-constexpr int kU = 0, kV = 1, kFace = 3;  // channels of render::Rendering::aovs
-constexpr int kLowestDecade = -4;     // the colour scale starts at 1e-4 texels
+constexpr int kU = 0, kV = 1, kFace = 3, kCubeFace = 5;  // channels of render::Rendering::aovs
+constexpr int kLowestDecade = -4;                          // the colour scale starts at 1e-4 texels
 
-// The size of the texture the error is measured in: the bound one, or 1024 x 1024.
+// The size of the texture the error is measured in: the bound one (a cube map's face), or 1024 x 1024.
 std::pair<int, int> texelCounts(const render::RenderOptions& options) {
+  if (options.cubeTexture) return {options.cubeTexture->size(), options.cubeTexture->size()};
   if (!options.texture) return {kDefaultTexels, kDefaultTexels};
   return {options.texture->width(), options.texture->height()};
+}
+
+// A point (s, t) of cube face `from` seen on face `onto`: where the direction through it meets
+// onto's plane, so that two lookups on adjacent faces are compared in one face's texels, as
+// though the cube were unfolded along their edge. NaN when the direction points away from onto.
+Vec2 onCubeFace(const Vec2& st, CubeFace from, CubeFace onto) {
+  if (from == onto) return st;
+  const Vec3 d = glCubeDirection(from, 2.0 * st.x() - 1.0, 2.0 * st.y() - 1.0, 1.0);
+  if (!(faceSign(onto) * d[faceAxis(onto)] > 0.0)) return Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
+  return glCubeFaceSt(d, onto);
 }
 
 }  // namespace
@@ -34,17 +47,22 @@ UvErrorMap uvErrorMap(const ViewInput& in, const ViewOptions& options) {
     throw UsageError("uverror: expected the mapping evaluated per pixel (UVs from a projector or texgen), found none");
   UVTK_CHECK(in.mesh && in.uv);
   const auto [texelsU, texelsV] = texelCounts(options.render);
+  const bool cube = options.render.cubeTexture != nullptr;
 
-  // Only the AOVs are read: any texture will do, and a 1 x 1 one sampled NEAREST costs least.
+  // Only the AOVs are read: any texture of the bound kind will do, and a 1 x 1 one sampled NEAREST
+  // costs least. A cube map's AOVs hold the face and (s, t) on it.
   const render::Texture unit = render::checkerTexture(1, 1);
+  const render::CubeTexture unitCube = render::cubeIndexTexture(1);
   render::RenderOptions o = options.render;
-  o.texture = &unit;
+  o.texture = cube ? nullptr : &unit;
+  o.cubeTexture = cube ? &unitCube : nullptr;
   o.sampler = render::SamplerState{};
   o.env = render::EnvMode::Replace;
   o.aovs = true;
-  const render::Rendering perVertex = render::render(*in.mesh, cornerTexcoords(*in.uv), o);
+  const render::Rendering perVertex = render::render(*in.mesh, cornerTexcoords(in), o);
   render::TexcoordSource exactSource;
   exactSource.pixelMapping = in.exact;
+  exactSource.cubeFaceIds = in.cubeFaceIds;
   const render::Rendering exact = render::render(*in.mesh, exactSource, o);
 
   UvErrorMap map;
@@ -61,14 +79,19 @@ UvErrorMap uvErrorMap(const ViewInput& in, const ViewOptions& options) {
         continue;
       }
       const Vec2 a(perVertex.aovs.at(x, row, kU), perVertex.aovs.at(x, row, kV));
-      const Vec2 b(exact.aovs.at(x, row, kU), exact.aovs.at(x, row, kV));
+      Vec2 b(exact.aovs.at(x, row, kU), exact.aovs.at(x, row, kV));
+      if (cube) {
+        const int faceA = int(perVertex.aovs.at(x, row, kCubeFace)), faceB = int(exact.aovs.at(x, row, kCubeFace));
+        b = faceA < 0 || faceB < 0 ? Vec2::Constant(std::numeric_limits<double>::quiet_NaN())
+                                   : onCubeFace(b, CubeFace(faceB), CubeFace(faceA));
+      }
       if (!a.allFinite() || !b.allFinite()) {
         out = kNoValue;
         ++map.invalidPixels;
         continue;
       }
       Vec2 d = a - b;
-      if (in.wrapsU) d.x() -= std::round(d.x());  // u has period 1: the nearest of its differences
+      if (in.wrapsU && !cube) d.x() -= std::round(d.x());  // u has period 1: the nearest of its differences
       const double error = std::hypot(d.x() * double(texelsU), d.y() * double(texelsV));
       out = float(error);
       sum += error;

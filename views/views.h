@@ -39,6 +39,8 @@ struct ViewInput {
   std::vector<int> poleVertices;  // vertices drawn as poles (a projector's list or summary->poleVertices)
   bool wrapsU = false;            // u compared modulo 1 by uverror
   std::optional<render::PixelMapping> exact;  // the mapping evaluated per pixel; required by UvError (UsageError if missing)
+  const std::vector<double>* q = nullptr;     // texgen's q per corner; none: 1
+  bool cubeFaceIds = false;                   // uv.w holds cube face ids (render::TexcoordSource::cubeFaceIds)
 };
 
 struct ViewOptions {

@@ -14,6 +14,7 @@
 #include "meshes/generators.h"
 #include "param/projector.h"
 #include "render/procedural.h"
+#include "texgen/texgen.h"
 #include "views/canvas.h"
 #include "views/layout.h"
 #include "views/legend.h"
@@ -33,6 +34,7 @@ struct Mapped {
   std::vector<int> poles;
   std::optional<render::PixelMapping> exact;
   bool wrapsU = false;
+  std::vector<double> q;  // texgen's
 
   // After the UVs change.
   void analyse() {
@@ -44,6 +46,7 @@ struct Mapped {
     ViewInput in;
     in.mesh = &mesh, in.uv = &uv, in.faces = &faces, in.summary = &summary;
     in.poleVertices = poles, in.wrapsU = wrapsU, in.exact = exact;
+    in.q = q.empty() ? nullptr : &q;
     return in;
   }
 };
@@ -105,7 +108,7 @@ TEST(TexturedViews, AreTheRendererWithTheProceduralTextureReplace) {
   render::RenderOptions direct = o.render;
   direct.texture = &checker;
   direct.env = render::EnvMode::Replace;
-  const Image expected = render::render(m.mesh, cornerTexcoords(m.uv), direct).colour;
+  const Image expected = render::render(m.mesh, cornerTexcoords(m.input()), direct).colour;
   const Image checkerView = drawView(View::Checker, m.input(), o);
   ASSERT_EQ(checkerView.width, 64);
   ASSERT_EQ(checkerView.height, 64);
@@ -314,6 +317,61 @@ TEST(UvError, IsLargestAtThePolesOfASphere) {
   const Image image = drawView(View::UvError, m.input(), o);
   EXPECT_GT(image.height, 128);
   EXPECT_EQ(pixelColour(image, 0, 0), o.render.background);
+}
+
+// The mesh with texgen's (s, t, r, q) drawn under `o`'s camera, and texgen evaluated per pixel as
+// apps/uvtk/mapped_mesh.cpp evaluates it.
+Mapped texgenMapped(Mesh mesh, texgen::TexgenMode mode, const ViewOptions& o) {
+  texgen::TexgenOptions options;
+  for (int c = 0; c < 3; ++c) options.coordinates[std::size_t(c)] = {mode, Vec4::Zero()};
+  options.modelviewAtPlanes = options.modelviewAtDraw = o.render.camera.viewFromWorld * o.render.worldFromObject;
+  texgen::TexgenResult generated = texgen::generateTexcoords(mesh, options);
+  Mapped m;
+  m.mesh = std::move(mesh);
+  m.uv = std::move(generated.uv);
+  m.q = std::move(generated.q);
+  m.analyse();
+  m.exact = render::PixelMapping{
+      [options](const Vec3& p, const Vec3& n, std::int32_t) { return texgen::texgenAt(p, n, options); }, false, true};
+  return m;
+}
+
+TEST(UvError, OfACubeMapIsZeroForTheNormalMapOfAFlatQuad) {
+  const Mesh plane = meshes::planeGrid(4, 4, 2.0, 2.0);
+  ViewOptions o = viewFrom(plane, Vec3(0.3, -0.2, 1.0), Vec3::UnitY(), 64);
+  const render::CubeTexture cube = render::cubeCheckerTexture(64);
+  o.render.cubeTexture = &cube;
+  // One normal everywhere: interpolated or evaluated, the direction is the same.
+  const Mapped m = texgenMapped(plane, texgen::TexgenMode::NormalMap, o);
+  const UvErrorMap map = uvErrorMap(m.input(), o);
+  EXPECT_GT(map.pixels, 64u * 64u / 4);
+  EXPECT_EQ(map.invalidPixels, 0u);
+  EXPECT_LT(map.max, 1e-4);
+}
+
+// REFLECTION_MAP per vertex is only an approximation of the reflection vector per pixel: on a
+// sphere its error falls with the square of the triangles' size, it is measured in texels of the
+// bound cube map's face, and pixels whose two lookups select adjacent faces are compared across
+// the shared edge, so no pixel counts as an outlier of a whole face.
+TEST(UvError, OfACubeMapReflectionFallsWithTheTrianglesAndCrossesFaceEdges) {
+  const render::CubeTexture cube64 = render::cubeCheckerTexture(64), cube128 = render::cubeCheckerTexture(128);
+  const auto errorOf = [&](int slices, const render::CubeTexture& cube) {
+    const Mesh sphere = meshes::latLongSphere(slices, slices / 2);
+    ViewOptions o = viewFrom(sphere, Vec3(0.3, 0.4, 1.0), Vec3::UnitY(), 128);
+    o.render.cubeTexture = &cube;
+    const Mapped m = texgenMapped(sphere, texgen::TexgenMode::ReflectionMap, o);
+    const UvErrorMap map = uvErrorMap(m.input(), o);
+    EXPECT_EQ(map.invalidPixels, 0u);
+    EXPECT_GT(map.pixels, 128u * 128u / 3);
+    return map;
+  };
+  const UvErrorMap coarse = errorOf(16, cube64), fine = errorOf(32, cube64), coarse128 = errorOf(16, cube128);
+  EXPECT_GT(coarse.mean, 0.05);
+  EXPECT_GT(coarse.mean, 2.5 * fine.mean);  // half the size, about a quarter of the error
+  EXPECT_NEAR(coarse128.mean / coarse.mean, 2.0, 1e-3);  // texels of 128 x 128 faces, not 64 x 64
+  // A direction across a face edge compared on one face's plane: within a few texels, never the
+  // tens of texels a lookup on the wrong face would differ by.
+  EXPECT_LT(coarse.max, 8.0);
 }
 
 TEST(UvError, FlagsPixelsWithoutAValueAndNeedsTheExactMapping) {
