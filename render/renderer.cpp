@@ -97,8 +97,10 @@ class Shader {
     Vec2 dstDx, dstDy;
     CubeFace face = CubeFace::PosX;
     if (f_.source.cubeFaceIds) {
-      const double id = tc.str.z();
-      const bool valid = id >= 0.0 && id < kCubeFaceCount && id == std::floor(id);
+      // Equal ids at the corners interpolate to that id only up to rounding (the barycentrics and
+      // the division by q are exact to a few ulp), so an id within 1e-9 of an integer counts.
+      const double id = std::round(tc.str.z());
+      const bool valid = id >= 0.0 && id < kCubeFaceCount && std::abs(tc.str.z() - id) <= 1e-9;
       face = valid ? CubeFace(int(id)) : CubeFace::PosX;
       out.st = valid ? Vec2(tc.str.head<2>()) : Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
       dstDx = tc.dx.head<2>();
