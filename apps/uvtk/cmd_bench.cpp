@@ -15,8 +15,6 @@
 #include <string>
 #include <vector>
 
-#include "options/arithmetic_cli.h"
-#include "options/cli_values.h"
 #include "commands.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
@@ -24,12 +22,14 @@
 #include "io/mesh_reader.h"
 #include "mapped_mesh.h"
 #include "meshes/generators.h"
+#include "options/arithmetic_cli.h"
+#include "options/cli_values.h"
+#include "options/projector_cli.h"
 #include "param/batch_atan2.h"
 #include "param/reference.h"
 #include "peers/assimp_peer.h"
-#include "render_cli.h"
-#include "options/projector_cli.h"
 #include "render/procedural.h"
+#include "render_cli.h"
 #include "views/pareto.h"
 
 namespace uvtk::cli {
@@ -216,9 +216,7 @@ std::vector<nlohmann::json> benchRendering(const BenchArguments& a, const Mesh& 
   texture.buildMipmaps();
 
   const MappedMesh mapped = mapByProjector(mesh, projectorNamed(a.renderProjector, "isn"), false);
-  render::TexcoordSource perVertex, perPixel;
-  perVertex.corners = mapped.corners();
-  perPixel.pixelMapping = mapped.exact;
+  const render::TexcoordSource perVertex = mapped.texcoordSource(false), perPixel = mapped.texcoordSource(true);
   render::RenderOptions base;
   base.camera = a.camera.frame(mapped.mesh, width, height);
   base.texture = &texture;

@@ -1,22 +1,22 @@
 // `uvtk render`: draw a mesh with its texture coordinates (from the file, a projector or texgen,
 // per vertex or evaluated per pixel) as OpenGL's fixed-function pipeline draws it, into a PNG,
-// with optional float AOVs (u, v, depth, face, lod) in an EXR.
+// with optional float AOVs (u, v, depth, face, lod, and cubeface with a cube map) in an EXR.
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "options/arithmetic_cli.h"
-#include "options/cli_values.h"
 #include "commands.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
 #include "mapped_mesh.h"
+#include "options/arithmetic_cli.h"
+#include "options/cli_values.h"
 #include "options/projector_cli.h"
+#include "options/texgen_cli.h"
 #include "render_cli.h"
 #include "run_report.h"
-#include "options/texgen_cli.h"
 
 namespace uvtk::cli {
 
@@ -40,6 +40,8 @@ void runRender(RenderArguments& a) {
                          ? "--uv per-pixel evaluates a mapping: give --projector or --texgen"
                          : "--view uverror compares with the exact mapping: give --projector or --texgen");
   a.camera.check();
+  a.texture.check();
+  checkTextureUse(a.frame, a.texture, projectorGiven ? &a.projector.options : nullptr);
   const Mat4 worldFromObject = a.model.empty() ? Mat4::Identity() : parseMatrix(a.model, "--model");
 
   StageClock clock("uvtk render");
@@ -64,14 +66,14 @@ void runRender(RenderArguments& a) {
   const double uvMs = clock.stop();
 
   clock.start("texture", a.texture.source);
-  const render::Texture texture = a.texture.load();
+  const BoundTexture texture = a.texture.load();
   const double textureMs = clock.stop();
 
   clock.start(a.frame.view.empty() ? "rendering" : "drawing", a.frame.size);
   MappedMesh::Measures measures;
   const auto measured = [&]() -> const MappedMesh::Measures& { return measures = mapped.measure(); };
   nlohmann::json j = drawFrame(a.frame, a.output, mapped,
-                               renderOptions(a.frame, a.texture, &texture, camera, worldFromObject), measured);
+                               renderOptions(a.frame, a.texture, texture, camera, worldFromObject), measured);
   clock.stop();
 
   if (!a.json.empty()) {
@@ -98,7 +100,7 @@ void runRender(RenderArguments& a) {
 void addRenderCommand(CLI::App& root) {
   auto a = std::make_shared<RenderArguments>();
   CLI::App* cmd = root.add_subcommand(
-      "render", "Render a textured mesh as OpenGL's fixed-function pipeline would (checker, uvgrid or an image)");
+      "render", "Render a textured mesh as OpenGL's fixed-function pipeline would (2D textures and cube maps)");
   cmd->add_option("input", a->input, "Input mesh (.obj or .off)")->required();
   cmd->add_option("-o,--output", a->output, "Output image, 8-bit RGB, format by extension (.png, .tif, .jpg, ...)")
       ->required();

@@ -3,10 +3,10 @@
 #include <limits>
 #include <memory>
 
-#include "options/cli_values.h"
 #include "core/error.h"
-#include "param/projector.h"
+#include "options/cli_values.h"
 #include "options/projector_cli.h"
+#include "param/projector.h"
 #include "run_report.h"
 #include "summary_json.h"
 
@@ -35,7 +35,33 @@ views::ViewInput MappedMesh::viewInput(const Measures& measures) const {
   in.poleVertices = projection ? projection->summary.poleVertexList : measures.summary.poleVertices;
   in.exact = exact;
   in.wrapsU = exact && exact->wrapsS;
+  in.q = q.empty() ? nullptr : &q;
+  in.cubeFaceIds = cubeFaceIds();
   return in;
+}
+
+bool MappedMesh::cubeFaceIds() const { return projector && writesCubeFaceIds(*projector); }
+
+render::TexcoordSource MappedMesh::texcoordSource(bool perPixel) const {
+  render::TexcoordSource out;
+  if (perPixel) {
+    out.pixelMapping = exact;
+  } else {
+    out.corners = corners();
+  }
+  out.cubeFaceIds = cubeFaceIds();
+  return out;
+}
+
+void MappedMesh::checkLooksUp(const render::RenderOptions& options) const {
+  if (!options.cubeTexture || source != "projector" || cubeFaceIds()) return;
+  throw UsageError(
+      "a cube-map texture needs directions or cube faces: texgen, the file's vt, or --projector cube with "
+      "--cube-layout faces; for an atlas layout give the layout image as a 2D texture");
+}
+
+bool writesCubeFaceIds(const param::ProjectorOptions& options) {
+  return options.surface == param::SurfaceKind::Cube && options.cubeLayout == CubeLayout::Faces;
 }
 
 std::vector<Vec4> MappedMesh::corners() const {
@@ -58,14 +84,17 @@ render::PixelMapping projectorPixelMapping(const param::ProjectorOptions& option
       const Triangle& t = mesh.triangles[f];
       (*capNormals)[f] = triangleAreaNormal(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
     }
-  return render::PixelMapping{[mapping, capNormals](const Vec3& p, const Vec3& n, std::int32_t face) -> Vec4 {
+  // The cube's faces layout keeps the face id as r: per pixel the face of the pixel's own probe.
+  const bool faceIds = writesCubeFaceIds(options);
+  return render::PixelMapping{[mapping, capNormals, faceIds](const Vec3& p, const Vec3& n, std::int32_t face) -> Vec4 {
                                 const Vec3& capNormal = (*capNormals)[std::size_t(face)];
                                 const bool cap = !capNormal.isZero();
                                 const param::VertexUv mapped = mapping->at(p, cap ? capNormal : n, cap);
                                 const double nan = std::numeric_limits<double>::quiet_NaN();
-                                return mapped.state == param::CornerState::Invalid
-                                           ? Vec4(nan, nan, 0, 1)
-                                           : Vec4(mapped.uv.x(), mapped.uv.y(), 0, 1);
+                                if (mapped.state == param::CornerState::Invalid) return Vec4(nan, nan, 0, 1);
+                                if (!faceIds) return Vec4(mapped.uv.x(), mapped.uv.y(), 0, 1);
+                                const std::optional<CubeFace> cubeFace = mapping->cubeFaceAt(p, n);
+                                return Vec4(mapped.uv.x(), mapped.uv.y(), cubeFace ? double(*cubeFace) : nan, 1);
                               },
                               mapping->wrapsU(), mapping->needsNormal()};
 }

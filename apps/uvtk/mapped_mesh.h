@@ -32,6 +32,13 @@ struct MappedMesh {
 
   // (s, t, r, q) per corner, as the renderer takes them.
   std::vector<Vec4> corners() const;
+  // r holds cube face ids (writesCubeFaceIds), not a direction's third component.
+  bool cubeFaceIds() const;
+  // What the renderer interpolates (per-vertex) or evaluates at every pixel (per-pixel).
+  render::TexcoordSource texcoordSource(bool perPixel) const;
+  // Throws UsageError when `options` binds a cube map these coordinates cannot look up: a
+  // projector's UVs other than the cube's faces layout (texgen's and the file's are directions).
+  void checkLooksUp(const render::RenderOptions& options) const;
   // Where a planar projector looks, so that faces turned away count as backfacing, not flipped.
   analysis::DistortionOptions distortionOptions() const;
   // The per-face distortion and the mesh-wide summary of these UVs.
@@ -44,6 +51,10 @@ struct MappedMesh {
   // poles the projector found, or for the file's UVs the fanned poles the summary found.
   views::ViewInput viewInput(const Measures& measures) const;
 };
+
+// Whether the projector's r is the cube face id and (s, t) the point on that face: the cube's faces
+// layout (render::TexcoordSource::cubeFaceIds); `uvtk map --write-w` writes it as w.
+bool writesCubeFaceIds(const param::ProjectorOptions& options);
 
 // Where UVs made by a projector came from, added to a JSON record: "options" and, after
 // --seam-place auto, "seam_placement". Nothing for the file's UVs or texgen.

@@ -5,12 +5,12 @@
 #include <filesystem>
 #include <sstream>
 
-#include "options/arithmetic_cli.h"
-#include "options/cli_values.h"
 #include "core/error.h"
 #include "core/gl_matrices.h"
 #include "core/stopwatch.h"
 #include "io/image_io.h"
+#include "options/arithmetic_cli.h"
+#include "options/cli_values.h"
 #include "render/procedural.h"
 
 namespace uvtk::cli {
@@ -23,7 +23,6 @@ const std::vector<std::pair<std::string, render::Filter>> kFilterNames = {
     {"nearest_mipmap_linear", render::Filter::NearestMipmapLinear},
     {"linear_mipmap_linear", render::Filter::LinearMipmapLinear}};
 
-
 namespace {
 
 // The AOV channels `list` names ("uv,depth,face,lod" in any order and subset), by their names in
@@ -33,10 +32,10 @@ std::vector<std::string> aovChannels(const std::string& list) {
   for (const std::string& name : splitList(list)) {
     if (name == "uv") {
       channels.push_back("u"), channels.push_back("v");
-    } else if (name == "depth" || name == "face" || name == "lod") {
+    } else if (name == "depth" || name == "face" || name == "lod" || name == "cubeface") {
       channels.push_back(name);
     } else {
-      throw UsageError("--aov: expected a list of uv, depth, face, lod, found '" + name + "'");
+      throw UsageError("--aov: expected a list of uv, depth, face, lod, cubeface, found '" + name + "'");
     }
   }
   return channels;
@@ -150,20 +149,53 @@ render::Camera CameraArguments::make(const Mesh& mesh, const Mat4& worldFromObje
   return camera;
 }
 
+namespace {
+
+const std::vector<std::pair<std::string, render::Wrap>> kWrapNames = {
+    {"repeat", render::Wrap::Repeat},
+    {"clamp_to_edge", render::Wrap::ClampToEdge},
+    {"mirrored_repeat", render::Wrap::MirroredRepeat}};
+
+// The cube-map sources read from files: the word, and the layout of its single image (Faces for
+// the six files of cubefaces).
+const std::vector<std::pair<std::string, CubeLayout>> kCubeFileSources = {{"cubefaces", CubeLayout::Faces},
+                                                                          {"cubecross", CubeLayout::Cross},
+                                                                          {"cubestrip", CubeLayout::Strip},
+                                                                          {"cube3x2", CubeLayout::ThreeByTwo}};
+
+// The cube-map file source `source` begins with ("word:"), if any.
+const std::pair<std::string, CubeLayout>* cubeFileSource(const std::string& source) {
+  for (const auto& entry : kCubeFileSources)
+    if (source.compare(0, entry.first.size() + 1, entry.first + ":") == 0 || source == entry.first) return &entry;
+  return nullptr;
+}
+
+bool names(const std::string& source, const std::string& word) {
+  return source == word || source.compare(0, word.size() + 1, word + ":") == 0;
+}
+
+}  // namespace
+
 void addTextureOptions(CLI::App& app, TextureArguments& a, const std::string& sourceOption) {
   app.add_option(sourceOption, a.source,
-                 "checker:N[:C] (N x N texels, C x C squares, white at texel 0,0), uvgrid[:N], or an image file "
-                 "(top row at v = 1)")
+                 "checker:N[:C] (N x N texels, C x C squares, white at texel 0,0), uvgrid[:N], spheremap[:N[:K]], or "
+                 "an image file (top row at v = 1); cube maps: cube[:N], cubeindex[:N], cubefaces:PX,NX,PY,NY,PZ,NZ, "
+                 "cubecross:FILE, cubestrip:FILE, cube3x2:FILE (a face's top row at t = 0), looked up by direction "
+                 "(texgen, a file's vt) or by --projector cube --cube-layout faces")
       ->capture_default_str();
   addChoice<render::Filter>(app, "--filter", a.filter, kFilterNames,
                             "Minification filter; magnification is nearest for nearest*, else linear")
       ->default_str("nearest");
-  addChoice<render::Wrap>(app, "--wrap", a.wrap,
-                          {{"repeat", render::Wrap::Repeat},
-                           {"clamp_to_edge", render::Wrap::ClampToEdge},
-                           {"mirrored_repeat", render::Wrap::MirroredRepeat}},
-                          "Wrap mode of s and t")
-      ->default_str("repeat");
+  std::vector<std::string> wrapNames;
+  for (const auto& [name, wrap] : kWrapNames) wrapNames.push_back(name);
+  app.add_option(
+         "--wrap", a.wrap,
+         "Wrap mode of s and t (default repeat); a cube map's applies to each face, default clamp_to_edge (GL's "
+         "REPEAT would filter a face's edge with its opposite edge)")
+      ->check(CLI::IsMember(wrapNames).description(""))
+      ->type_name("repeat|clamp_to_edge|mirrored_repeat");
+  app.add_flag("--seamless", a.seamless,
+               "Cube maps: filter across face edges (GL's TEXTURE_CUBE_MAP_SEAMLESS; off, as GL's default)");
   addChoice<render::EnvMode>(app, "--env", a.env,
                              {{"replace", render::EnvMode::Replace},
                               {"modulate", render::EnvMode::Modulate},
@@ -174,17 +206,76 @@ void addTextureOptions(CLI::App& app, TextureArguments& a, const std::string& so
   app.add_option("--env-color", a.envColour, "GL_TEXTURE_ENV_COLOR for blend (r,g,b,a)")->capture_default_str();
 }
 
-bool TextureArguments::procedural() const { return render::isProceduralName(source); }
+bool TextureArguments::cubeMap() const {
+  return names(source, "cube") || names(source, "cubeindex") || cubeFileSource(source) != nullptr;
+}
 
-render::Texture TextureArguments::load() const {
-  render::Texture texture = [&] {
-    if (std::optional<render::Texture> made = render::proceduralTexture(source)) return std::move(*made);
-    // A texture's texel limit is checked from the file's header, before its pixels are read.
-    const io::ImageFile file = io::readImage(source, io::kMaxImageValues, render::kMaxTexels);
-    return render::Texture::fromImage(file.image, file.eightBit);
-  }();
-  if (render::needsMipmaps(filter)) texture.buildMipmaps();
-  return texture;
+std::vector<std::string> TextureArguments::files() const {
+  if (render::isProceduralName(source)) return {};
+  const auto* cube = cubeFileSource(source);
+  if (!cube) return {source};
+  const std::string list = source.size() > cube->first.size() ? source.substr(cube->first.size() + 1) : "";
+  std::vector<std::string> out = cube->second == CubeLayout::Faces ? splitList(list) : std::vector<std::string>{list};
+  const std::size_t expected = cube->second == CubeLayout::Faces ? 6 : 1;
+  if (out.size() != expected || std::any_of(out.begin(), out.end(), [](const std::string& f) { return f.empty(); }))
+    throw UsageError("texture '" + source + "': expected " +
+                     (expected == 6 ? "cubefaces:PX,NX,PY,NY,PZ,NZ (six image files)" : cube->first + ":FILE"));
+  return out;
+}
+
+void TextureArguments::resolveFiles(const std::function<std::string(const std::string&)>& resolve) {
+  const std::vector<std::string> list = files();
+  if (list.empty()) return;
+  const auto* cube = cubeFileSource(source);
+  std::string resolved = cube ? cube->first + ":" : "";
+  for (std::size_t k = 0; k < list.size(); ++k) resolved += (k ? "," : "") + resolve(list[k]);
+  source = resolved;
+}
+
+void TextureArguments::check() const {
+  files();
+  if (seamless && !cubeMap())
+    throw UsageError("--seamless filters cube maps across their edges: '" + source + "' is 2D");
+}
+
+render::Wrap TextureArguments::wrapMode() const {
+  if (wrap.empty()) return cubeMap() ? render::Wrap::ClampToEdge : render::Wrap::Repeat;
+  for (const auto& [name, mode] : kWrapNames)
+    if (name == wrap) return mode;
+  throw UsageError("--wrap: expected repeat, clamp_to_edge or mirrored_repeat, found '" + wrap + "'");
+}
+
+BoundTexture TextureArguments::load() const {
+  check();
+  BoundTexture bound;
+  if (std::optional<render::CubeTexture> made = render::proceduralCubeTexture(source)) {
+    bound.cube = std::move(*made);
+  } else if (std::optional<render::Texture> flat = render::proceduralTexture(source)) {
+    bound.flat = std::move(*flat);
+  } else {
+    // A texture's texel limit is checked from each file's header, before its pixels are read; a
+    // cube map's faces share it (six files a sixth each, an atlas as one image).
+    const std::vector<std::string> list = files();
+    std::vector<Image> images;
+    bool eightBit = true;
+    for (const std::string& file : list) {
+      io::ImageFile read = io::readImage(file, io::kMaxImageValues, render::kMaxTexels / std::int64_t(list.size()));
+      eightBit = eightBit && read.eightBit;
+      images.push_back(std::move(read.image));
+    }
+    const auto* cube = cubeFileSource(source);
+    if (!cube)
+      bound.flat = render::Texture::fromImage(images[0], eightBit);
+    else if (cube->second == CubeLayout::Faces)
+      bound.cube = render::CubeTexture::fromImages(images, list, eightBit);
+    else
+      bound.cube = render::CubeTexture::fromLayoutImage(images[0], cube->second, list[0], eightBit);
+  }
+  if (render::needsMipmaps(filter)) {
+    if (bound.flat) bound.flat->buildMipmaps();
+    if (bound.cube) bound.cube->buildMipmaps();
+  }
+  return bound;
 }
 
 void addFrameOptions(CLI::App& app, FrameArguments& a) {
@@ -203,8 +294,8 @@ void addFrameOptions(CLI::App& app, FrameArguments& a) {
       app, "--uv", a.uv, {{"per-vertex", FrameArguments::Uv::PerVertex}, {"per-pixel", FrameArguments::Uv::PerPixel}},
       "Interpolate per-vertex texture coordinates, or evaluate the mapping at every pixel")
       ->default_str("per-vertex");
-  app.add_option("--aov", a.aov, "Also write float AOVs: a list of uv, depth, face, lod")
-      ->type_name("uv,depth,face,lod");
+  app.add_option("--aov", a.aov, "Also write float AOVs: a list of uv, depth, face, lod, cubeface (cube maps)")
+      ->type_name("uv,depth,face,lod,cubeface");
   app.add_option("--aov-output", a.aovOutput, "The AOV file (.exr or .tif; default: the output with .exr)");
   app.add_option("--view", a.view,
                  "Draw inspection views instead: checker, uvgrid, stretch, linf, angle, area, seams, uverror, layout "
@@ -251,19 +342,33 @@ bool FrameArguments::needsExact() const {
   return uv == Uv::PerPixel || std::any_of(list.begin(), list.end(), views::needsExactMapping);
 }
 
+void checkTextureUse(const FrameArguments& frame, const TextureArguments& texture,
+                     const param::ProjectorOptions* projector) {
+  const bool cube = texture.cubeMap();
+  if (cube && projector && !writesCubeFaceIds(*projector))
+    throw UsageError(
+        "a cube-map texture needs directions: --texgen, a file's vt, or --projector cube --cube-layout faces; for "
+        "an atlas layout give the layout image as a 2D texture");
+  const std::vector<std::string> aovs = frame.aov.empty() ? std::vector<std::string>() : aovChannels(frame.aov);
+  if (!cube && std::find(aovs.begin(), aovs.end(), "cubeface") != aovs.end())
+    throw UsageError("--aov cubeface: the texture '" + texture.source + "' is 2D, not a cube map");
+}
+
 render::RenderOptions renderOptions(const FrameArguments& frame, const TextureArguments& texture,
-                                    const render::Texture* image, const render::Camera& camera,
+                                    const BoundTexture& bound, const render::Camera& camera,
                                     const Mat4& worldFromObject) {
   render::RenderOptions options;
   options.camera = camera;
   options.worldFromObject = worldFromObject;
   options.raster = {frame.cull, frame.threads};
   options.samplesPerPixel = frame.samplesPerPixel;
-  options.sampler = render::samplerFor(texture.filter, texture.wrap);
+  options.sampler = render::samplerFor(texture.filter, texture.wrapMode());
   options.env = texture.env;
   options.envColour = parseVec4(texture.envColour, "--env-color");
   options.background = parseVec3(frame.background, "--background");
-  options.texture = image;
+  options.texture = bound.flat ? &*bound.flat : nullptr;
+  options.cubeTexture = bound.cube ? &*bound.cube : nullptr;
+  options.seamless = texture.seamless;
   return options;
 }
 
@@ -273,15 +378,10 @@ nlohmann::json drawFrame(const FrameArguments& frame, const std::string& output,
   UVTK_CHECK(!frame.needsExact() || mapped.exact);  // the callers refuse the file's UVs before any work
   if (!frame.view.empty()) return drawViews(frame, output, mapped, options, measures);
 
-  render::TexcoordSource texcoords;
-  if (frame.uv == FrameArguments::Uv::PerPixel) {
-    texcoords.pixelMapping = mapped.exact;
-  } else {
-    texcoords.corners = mapped.corners();
-  }
   render::RenderOptions withAovs = options;
   withAovs.aovs = !frame.aov.empty();
-  const render::Rendering rendering = render::render(mapped.mesh, texcoords, withAovs);
+  const render::Rendering rendering =
+      render::render(mapped.mesh, mapped.texcoordSource(frame.uv == FrameArguments::Uv::PerPixel), withAovs);
   const auto writeStart = std::chrono::steady_clock::now();
   io::writeImage(output, rendering.colour, io::PixelType::UInt8);
   if (!frame.aov.empty())
@@ -301,9 +401,16 @@ nlohmann::json drawFrame(const FrameArguments& frame, const std::string& output,
       {"milliseconds",
        {{"raster", rendering.rasterMs}, {"shade", rendering.shadeMs}, {"write", millisecondsSince(writeStart)}}}};
   if (options.texture)
-    j["texture"] = {{"width", options.texture->width()},
+    j["texture"] = {{"kind", "2d"},
+                    {"width", options.texture->width()},
                     {"height", options.texture->height()},
-                    {"levels", options.texture->levelCount()}};
+                    {"levels", options.texture->levelCount()},
+                    {"seamless", false}};
+  if (options.cubeTexture)
+    j["texture"] = {{"kind", "cube"},
+                    {"size", options.cubeTexture->size()},
+                    {"levels", options.cubeTexture->levelCount()},
+                    {"seamless", options.seamless}};
   if (!frame.aov.empty()) j["aov_output"] = frame.aovOutput;
   return j;
 }

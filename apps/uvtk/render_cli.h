@@ -37,16 +37,34 @@ struct CameraArguments {
 };
 void addCameraOptions(CLI::App& app, CameraArguments& arguments);
 
+// A loaded texture: 2D or a cube map.
+struct BoundTexture {
+  std::optional<render::Texture> flat;
+  std::optional<render::CubeTexture> cube;
+};
+
 struct TextureArguments {
   std::string source = "checker:64:8";
   render::Filter filter = render::Filter::Nearest;
-  render::Wrap wrap = render::Wrap::Repeat;
+  std::string wrap;  // --wrap as given, empty when not; wrapMode() is the mode used
   render::EnvMode env = render::EnvMode::Replace;
   std::string envColour = "0,0,0,0";
+  bool seamless = false;
 
-  bool procedural() const;
+  // Whether the source names a cube map: cube[:N], cubeindex[:N], cubefaces:..., cubecross:...,
+  // cubestrip:..., cube3x2:... (the word bare or before a colon).
+  bool cubeMap() const;
+  // The image files the source reads (none for a procedural texture; UsageError for a malformed
+  // source), and the source with each replaced by resolve(file) (a scene's, against its folder).
+  std::vector<std::string> files() const;
+  void resolveFiles(const std::function<std::string(const std::string& file)>& resolve);
+  // Throws UsageError for a malformed source or --seamless with a 2D texture, before any work.
+  void check() const;
+  // --wrap, else clamp_to_edge for a cube map (GL's default REPEAT would filter a face's edge with
+  // its opposite edge) and repeat for a 2D texture.
+  render::Wrap wrapMode() const;
   // The texture, with mipmaps only when the filter reads them.
-  render::Texture load() const;
+  BoundTexture load() const;
 };
 // `sourceOption` is "--texture" in `uvtk render`; a scene's texture calls it "--source".
 void addTextureOptions(CLI::App& app, TextureArguments& arguments, const std::string& sourceOption);
@@ -74,9 +92,15 @@ struct FrameArguments {
 };
 void addFrameOptions(CLI::App& app, FrameArguments& arguments);
 
+// Throws UsageError unless `frame` can draw `texture` with texture coordinates from `projector`
+// (none: texgen's or the file's, which are directions to a cube map): a cube map needs directions or
+// the cube projector's face ids, and the cubeface AOV a cube map. Before any work.
+void checkTextureUse(const FrameArguments& frame, const TextureArguments& texture,
+                     const param::ProjectorOptions* projector);
+
 // The renderer's options for a frame: camera, texture (which must outlive them), sampling.
 render::RenderOptions renderOptions(const FrameArguments& frame, const TextureArguments& texture,
-                                    const render::Texture* image, const render::Camera& camera,
+                                    const BoundTexture& bound, const render::Camera& camera,
                                     const Mat4& worldFromObject);
 
 // Draws `mapped` into `output` as `frame` asks: the textured picture (and AOVs), or the inspection

@@ -6,11 +6,11 @@
 #include <map>
 #include <set>
 
-#include "options/arithmetic_cli.h"
-#include "options/cli_values.h"
 #include "core/error.h"
 #include "io/json_file.h"
 #include "io/json_schema.h"
+#include "options/arithmetic_cli.h"
+#include "options/cli_values.h"
 #include "options/projector_cli.h"
 #include "render/procedural.h"
 
@@ -179,8 +179,10 @@ class SceneReader {
     t.parser = std::make_shared<CLI::App>();
     addTextureOptions(*t.parser, t.arguments, "--source");
     parseOptions(*t.parser, j, {"name"}, pointer);
-    if (!at(pointer + "/source", [&] { return t.arguments.procedural(); }))
-      t.arguments.source = input(j["source"], pointer + "/source");
+    at(pointer + "/source", [&] {
+      t.arguments.resolveFiles([&](const std::string& file) { return input(file, pointer + "/source"); });
+      t.arguments.check();
+    });
     at(pointer + "/env_color", [&] { parseVec4(t.arguments.envColour, "--env-color"); });
     return t;
   }
@@ -252,6 +254,11 @@ class SceneReader {
       parseOptions(*o.parser, j, {"kind", "mapping", "camera", "texture", "path", "json"}, pointer);
       o.frame.aovOutput = output(o.frame.aovOutput);
       at(pointer, [&] { o.frame.check(o.path); });
+      const SceneMapping& mapping = scene.mappings[*o.mapping];
+      const TextureArguments& texture = o.texture ? scene.textures[*o.texture].arguments : scene.defaultTexture;
+      at(pointer, [&] {
+        checkTextureUse(o.frame, texture, mapping.kind == SceneMapping::Kind::Projector ? &mapping.projector : nullptr);
+      });
       if (o.frame.needsExact() && scene.mappings[*o.mapping].kind == SceneMapping::Kind::File)
         fail(pointer, std::string(o.frame.uv == FrameArguments::Uv::PerPixel ? "uv per-pixel" : "view uverror") +
                           " evaluates the mapping at every pixel, and mapping \"" + scene.mappings[*o.mapping].name +

@@ -266,7 +266,7 @@ class SceneRunner {
     };
     json record =
         drawFrame(o.frame, o.path, mapped,
-                  renderOptions(o.frame, textureOf(scene_, texture), &textures_.at(texture), camera, model), measures);
+                  renderOptions(o.frame, textureOf(scene_, texture), textures_.at(texture), camera, model), measures);
     record["mapping"] = scene_.mappings[*o.mapping].name;
     record["mesh"] = scene_.meshes[scene_.mappings[*o.mapping].mesh].name;
     if (!o.json.empty()) io::writeFileAtomically(o.json, record.dump(2) + "\n");
@@ -289,7 +289,7 @@ class SceneRunner {
   const std::vector<Stage>& plan_;
   json records_;
   std::vector<json> outputs_;  // per output, written by the thread of its mesh
-  std::map<std::size_t, render::Texture> textures_;
+  std::map<std::size_t, BoundTexture> textures_;
   json failures_ = json::array();
   int status_ = 0;
   std::mutex mutex_;

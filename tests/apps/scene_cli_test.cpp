@@ -105,6 +105,38 @@ TEST_F(SceneCli, SharedMappingIsComputedOnceAndOnlyRequiredExtrasArePlanned) {
   EXPECT_EQ(io::readImage(path("n.png")).image.height, 48);
 }
 
+// A scene's texture takes the cube-map sources and seamless filtering as `uvtk render` does, its
+// files relative to the scene; the seamless frame differs from the per-face one only near edges.
+TEST_F(SceneCli, CubeMapTexturesRenderWithAndWithoutSeamlessFiltering) {
+  const int n = 4;
+  Image strip(6 * n, n, 3);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < 6 * n; ++x)
+      for (int c = 0; c < 3; ++c) strip.at(x, y, c) = float((x * 53 + y * 29 + c * 71) % 256) / 255.0f;
+  io::writeImage(path("strip.png"), strip, io::PixelType::UInt8);
+  const json scene = {
+      {"meshes", {sphereMesh({{{"kind", "texgen"}, {"name", "r"}, {"texgen", "reflection_map"}}})}},
+      {"textures",
+       {{{"name", "edges"}, {"source", "cubestrip:strip.png"}, {"filter", "linear"}},
+        {{"name", "seamless"}, {"source", "cubestrip:strip.png"}, {"filter", "linear"}, {"seamless", true}}}},
+      {"outputs",
+       {{{"kind", "render"}, {"mapping", "r"}, {"texture", "edges"}, {"size", "64x64"}, {"path", "a.png"}},
+        {{"kind", "render"}, {"mapping", "r"}, {"texture", "seamless"}, {"size", "64x64"}, {"path", "b.png"}}}}};
+  const CliRun r = run(scene);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Image a = io::readImage(path("a.png")).image, b = io::readImage(path("b.png")).image;
+  std::size_t differ = 0;
+  for (std::size_t k = 0; k < a.pixels.size(); ++k) differ += a.pixels[k] != b.pixels[k];
+  EXPECT_GT(differ, 0u);                   // 4 x 4 faces: much of the sphere is near an edge
+  EXPECT_LT(differ, a.pixels.size() / 2);  // but not everywhere
+
+  json flat = scene;
+  flat["textures"][1]["source"] = "checker:8";
+  const CliRun refused = run(flat);
+  EXPECT_NE(refused.status, 0);
+  EXPECT_NE(refused.err.find("/textures/1"), std::string::npos) << refused.err;
+}
+
 struct BadScene {
   const char* what;
   json scene;
@@ -134,6 +166,11 @@ TEST_F(SceneCli, InvalidScenesAreRefusedWithTheirJsonPathAndNothingIsWritten) {
   duplicate["meshes"][0]["name"] = "sphere";
   json missingImage = scene(good, spp);
   missingImage["textures"] = {{{"name", "t"}, {"source", "none.png"}}};
+  json cubeOutput = spp;
+  cubeOutput["texture"] = "env";
+  json cubeOnSphere = scene(good, cubeOutput), missingFace = scene(good, cubeOutput);
+  cubeOnSphere["textures"] = {{{"name", "env"}, {"source", "cube:8"}}};
+  missingFace["textures"] = {{{"name", "env"}, {"source", "cubestrip:none.png"}}};
   const std::vector<BadScene> cases = {
       {"enum", scene(withAxis, spp), "/meshes/1/mappings/0/axis: expected one of x, y, z, found \"w\""},
       {"reference", scene(good, withRef), "/outputs/1/mapping: no mapping named \"nope\"; the scene has: s"},
@@ -147,6 +184,8 @@ TEST_F(SceneCli, InvalidScenesAreRefusedWithTheirJsonPathAndNothingIsWritten) {
       {"missing mesh", missingMesh, "/meshes/0/path: no such file"},
       {"duplicate", duplicate, "/meshes/1/name: duplicate mesh name \"sphere\" (also at /meshes/0)"},
       {"missing image", missingImage, "/textures/0/source: no such file"},
+      {"cube map on a sphere", cubeOnSphere, "/outputs/1: a cube-map texture needs directions"},
+      {"missing cube map file", missingFace, "/textures/0/source: no such file"},
   };
   for (const BadScene& c : cases) {
     SCOPED_TRACE(c.what);
