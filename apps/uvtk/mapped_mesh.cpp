@@ -53,13 +53,6 @@ render::TexcoordSource MappedMesh::texcoordSource(bool perPixel) const {
   return out;
 }
 
-void MappedMesh::checkLooksUp(const render::RenderOptions& options) const {
-  if (!options.cubeTexture || source != "projector" || cubeFaceIds()) return;
-  throw UsageError(
-      "a cube-map texture needs directions or cube faces: texgen, the file's vt, or --projector cube with "
-      "--cube-layout faces; for an atlas layout give the layout image as a 2D texture");
-}
-
 bool writesCubeFaceIds(const param::ProjectorOptions& options) {
   return options.surface == param::SurfaceKind::Cube && options.cubeLayout == CubeLayout::Faces;
 }

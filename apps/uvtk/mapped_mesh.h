@@ -36,9 +36,6 @@ struct MappedMesh {
   bool cubeFaceIds() const;
   // What the renderer interpolates (per-vertex) or evaluates at every pixel (per-pixel).
   render::TexcoordSource texcoordSource(bool perPixel) const;
-  // Throws UsageError when `options` binds a cube map these coordinates cannot look up: a
-  // projector's UVs other than the cube's faces layout (texgen's and the file's are directions).
-  void checkLooksUp(const render::RenderOptions& options) const;
   // Where a planar projector looks, so that faces turned away count as backfacing, not flipped.
   analysis::DistortionOptions distortionOptions() const;
   // The per-face distortion and the mesh-wide summary of these UVs.
