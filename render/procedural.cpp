@@ -275,6 +275,11 @@ Texture sphereMapCheckerTexture(int n, int k) {
 
 bool isProceduralName(const std::string& name) { return parseProceduralName(name).has_value(); }
 
+bool isProceduralCubeName(const std::string& name) {
+  const std::optional<ProceduralName> parsed = parseProceduralName(name);
+  return parsed && (parsed->kind == ProceduralKind::Cube || parsed->kind == ProceduralKind::CubeIndex);
+}
+
 std::optional<Texture> proceduralTexture(const std::string& name) {
   const std::optional<ProceduralName> parsed = parseProceduralName(name);
   if (!parsed) return std::nullopt;

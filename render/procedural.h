@@ -53,6 +53,10 @@ bool isProceduralName(const std::string& name);
 // procedural cube map). Throws UsageError for a malformed procedural name.
 std::optional<Texture> proceduralTexture(const std::string& name);
 
+// Whether `name` denotes a procedural cube map ("cube[:N]", "cubeindex[:N]"); throws UsageError,
+// as proceduralCubeTexture does, when a procedural name is malformed.
+bool isProceduralCubeName(const std::string& name);
+
 // The cube map a name denotes when it is a procedural one ("cube[:N]", "cubeindex[:N]"), else
 // nullopt. Throws UsageError for a malformed procedural name.
 std::optional<CubeTexture> proceduralCubeTexture(const std::string& name);

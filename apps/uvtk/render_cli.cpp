@@ -170,9 +170,6 @@ const std::pair<std::string, CubeLayout>* cubeFileSource(const std::string& sour
   return nullptr;
 }
 
-bool names(const std::string& source, const std::string& word) {
-  return source == word || source.compare(0, word.size() + 1, word + ":") == 0;
-}
 
 }  // namespace
 
@@ -207,7 +204,7 @@ void addTextureOptions(CLI::App& app, TextureArguments& a, const std::string& so
 }
 
 bool TextureArguments::cubeMap() const {
-  return names(source, "cube") || names(source, "cubeindex") || cubeFileSource(source) != nullptr;
+  return cubeFileSource(source) != nullptr || render::isProceduralCubeName(source);
 }
 
 std::vector<std::string> TextureArguments::files() const {
