@@ -190,6 +190,111 @@ Mesh planeGrid(int nx, int ny, double width, double height) {
 
 namespace uvtk::meshes {
 
+namespace {
+
+// A deterministic hash of an integer triple to [-1, 1] (no random state: tests assert exact counts).
+double hashNoise(long a, long b, long c) {
+  unsigned long long h = 1469598103934665603ULL;
+  for (long v : {a, b, c}) {
+    h ^= static_cast<unsigned long long>(v) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    h *= 1099511628211ULL;
+  }
+  h ^= h >> 33;
+  return static_cast<double>(h % 2000001ULL) / 1000000.0 - 1.0;
+}
+
+}  // namespace
+
+Mesh torusKnot(int p, int q, int segments, int sides, double tubeRadius) {
+  require(p >= 1 && q >= 1 && segments >= 3 && sides >= 3 && tubeRadius > 0.0,
+          "torusKnot: expected p, q >= 1, segments, sides >= 3 and a positive tube radius");
+  const auto curve = [p, q](double t) {
+    const double r = 2.0 + std::cos(q * t);
+    return Vec3(r * std::cos(p * t), r * std::sin(p * t), -std::sin(q * t));
+  };
+  Mesh mesh;
+  const double h = 1e-4;
+  for (int i = 0; i < segments; ++i) {
+    const double t = kTwoPi * i / segments;
+    const Vec3 c = curve(t), d1 = (curve(t + h) - curve(t - h)) / (2 * h),
+               d2 = (curve(t + h) - 2.0 * c + curve(t - h)) / (h * h);
+    const Vec3 tangent = d1.normalized();
+    const Vec3 binormal = d1.cross(d2).normalized();
+    const Vec3 normal = binormal.cross(tangent);
+    for (int j = 0; j < sides; ++j) {
+      const double a = kTwoPi * j / sides;
+      mesh.positions.push_back(c + tubeRadius * (std::cos(a) * normal + std::sin(a) * binormal));
+    }
+  }
+  for (int i = 0; i < segments; ++i)
+    for (int j = 0; j < sides; ++j) {
+      const int i1 = (i + 1) % segments, j1 = (j + 1) % sides;
+      addQuad(mesh, i * sides + j, i * sides + j1, i1 * sides + j1, i1 * sides + j);
+    }
+  return mesh;
+}
+
+Mesh bone(int stacks, int sides, double length) {
+  require(stacks >= 4 && sides >= 3 && length > 0.0, "bone: expected stacks >= 4, sides >= 3 and a positive length");
+  Mesh mesh;
+  mesh.positions.push_back({0.0, 0.0, 0.0});
+  for (int k = 1; k < stacks; ++k) {
+    const double s = static_cast<double>(k) / stacks;
+    const double knob = std::exp(-std::pow((s - 0.07) / 0.07, 2)) + 0.8 * std::exp(-std::pow((s - 0.93) / 0.06, 2));
+    const double radius = (0.32 + 0.55 * knob) * std::pow(std::sin(kPi * s), 0.35) * length / 10.0;
+    const double twist = 0.6 * s;
+    for (int j = 0; j < sides; ++j) {
+      const double a = kTwoPi * j / sides + twist;
+      const double bump = 1.0 + 0.04 * std::sin(3 * a + 7 * s) + 0.02 * hashNoise(k, j, 7);
+      mesh.positions.push_back(
+          {1.25 * radius * bump * std::cos(a), 0.85 * radius * bump * std::sin(a), length * s});
+    }
+  }
+  mesh.positions.push_back({0.0, 0.0, length});
+  const int last = static_cast<int>(mesh.positions.size()) - 1;
+  for (int j = 0; j < sides; ++j) mesh.triangles.push_back({0, 1 + (j + 1) % sides, 1 + j});
+  addGridFaces(mesh, 1, sides, stacks - 2, true);
+  const int top = 1 + (stacks - 2) * sides;
+  for (int j = 0; j < sides; ++j) mesh.triangles.push_back({top + j, top + (j + 1) % sides, last});
+  return mesh;
+}
+
+Mesh bumpyBlob(int level, double noise) {
+  require(noise >= 0.0 && noise < 0.5, "bumpyBlob: expected a noise in [0, 0.5)");
+  Mesh mesh = icosphere(level);
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    const Vec3 d = mesh.positions[i];
+    const double lobes = 0.18 * std::sin(2.1 * d.x() + 0.4) * std::cos(1.7 * d.y()) + 0.12 * d.z() * d.z() +
+                         0.06 * std::sin(5.0 * d.y() + 3.0 * d.z());
+    const double grain = noise * hashNoise(std::lround(d.x() * 1e6), std::lround(d.y() * 1e6), std::lround(d.z() * 1e6));
+    mesh.positions[i] = Vec3(0.3, -0.2, 0.1) + (1.0 + lobes + grain) * Vec3(1.0 * d.x(), 0.8 * d.y(), 1.15 * d.z());
+  }
+  return mesh;
+}
+
+Mesh scannedPatch(int level) {
+  const Mesh blob = bumpyBlob(level);
+  Mesh patch;
+  std::vector<int> renumbered(blob.positions.size(), -1);
+  for (const Triangle& t : blob.triangles) {
+    const Vec3 centroid = (blob.positions[t[0]] + blob.positions[t[1]] + blob.positions[t[2]]) / 3.0;
+    const Vec3 d = centroid - Vec3(0.3, -0.2, 0.1);
+    // A wavy cut, smooth enough that every boundary vertex keeps one fan (the patch stays a disk).
+    const double threshold = -0.2 + 0.1 * std::sin(3.0 * std::atan2(d.z(), d.y()));
+    if (d.x() < threshold * d.norm()) continue;
+    Triangle kept;
+    for (int k = 0; k < 3; ++k) {
+      if (renumbered[t[k]] < 0) {
+        renumbered[t[k]] = static_cast<int>(patch.positions.size());
+        patch.positions.push_back(blob.positions[t[k]]);
+      }
+      kept[k] = renumbered[t[k]];
+    }
+    patch.triangles.push_back(kept);
+  }
+  return patch;
+}
+
 std::vector<BundledMesh> bundledMeshes() {
   return {
       {"sphere_latlong.obj", "latLongSphere(32, 16)", latLongSphere(32, 16)},

@@ -38,6 +38,28 @@ Mesh torus(int majorSegments, int minorSegments, double majorRadius, double mino
 // nx x ny quads (two triangles each).
 Mesh planeGrid(int nx, int ny, double width, double height);
 
+// ---- Meshes like real ones: what the tests run every feature on ----
+// Each is deterministic (a fixed hash, no random state), so a test can assert exact counts.
+
+// A (p, q) torus knot tube: the curve ((R + cos(q t)) cos(p t), (R + cos(q t)) sin(p t), -sin(q t))
+// with R = 2, swept by a circle of `tubeRadius` in the curve's Frenet frame. Closed, genus 1,
+// knotted: no projector opens it into a disk. `segments` along the curve, `sides` around (>= 3).
+Mesh torusKnot(int p, int q, int segments, int sides, double tubeRadius = 0.4);
+
+// A long bone-like solid of revolution about z, from z = 0 to z = length: a thin shaft with knobby
+// ends, an elliptical, gently twisted and bumpy cross-section, and one pole vertex at each end
+// (first the one at z = 0, last the one at z = length). Closed, genus 0. `stacks` >= 4, `sides` >= 3.
+Mesh bone(int stacks, int sides, double length = 10.0);
+
+// An icosphere of `level` with a deterministic scan-like relief (a few smooth lobes and a fine
+// hash noise of relative amplitude `noise`), centred off the origin at (0.3, -0.2, 0.1). Closed.
+Mesh bumpyBlob(int level, double noise = 0.02);
+
+// An open patch cut from bumpyBlob(level): the faces whose centroid has x above a noisy threshold
+// near -0.2, vertices renumbered, unreferenced ones dropped: a curved scan with one ragged
+// boundary loop, like the front of a scanned head.
+Mesh scannedPatch(int level);
+
 }  // namespace uvtk::meshes
 
 namespace uvtk::meshes {

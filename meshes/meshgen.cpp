@@ -2,10 +2,13 @@
 // Usage: uvtk_meshgen [FOLDER]   (default: the current folder)
 //        uvtk_meshgen --sphere SEGMENTS RINGS FILE   a lat-long sphere of any size, for large-mesh
 //        measurements (3162 x 1582: 10 M triangles)
+//        uvtk_meshgen --like-real FOLDER   a torus knot, a long bone, a bumpy blob and an open scanned patch
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <string>
+
+#include <utility>
 
 #include "io/obj_writer.h"
 #include "meshes/generators.h"
@@ -27,8 +30,25 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc == 3 && std::string(argv[1]) == "--like-real") {
+    // Meshes like real ones (meshes/generators.h), for trying uvtk where nobody tuned it.
+    const std::pair<const char*, uvtk::Mesh> meshes[] = {{"torus_knot.obj", uvtk::meshes::torusKnot(2, 3, 240, 16)},
+                                                        {"bone.obj", uvtk::meshes::bone(120, 32)},
+                                                        {"bumpy_blob.obj", uvtk::meshes::bumpyBlob(4)},
+                                                        {"scanned_patch.obj", uvtk::meshes::scannedPatch(4)}};
+    try {
+      for (const auto& [file, mesh] : meshes) {
+        uvtk::io::writeObj(std::string(argv[2]) + "/" + file, mesh, nullptr);
+        std::fprintf(stderr, "%s/%s: %zu vertices, %zu faces\n", argv[2], file, mesh.vertexCount(), mesh.faceCount());
+      }
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      return 4;
+    }
+    return 0;
+  }
   if (argc > 2) {
-    std::fprintf(stderr, "usage: uvtk_meshgen [FOLDER] | --sphere SEGMENTS RINGS FILE\n");
+    std::fprintf(stderr, "usage: uvtk_meshgen [FOLDER] | --sphere SEGMENTS RINGS FILE | --like-real FOLDER\n");
     return 2;
   }
   const std::string folder = argc == 2 ? argv[1] : ".";

@@ -131,5 +131,79 @@ TEST(BundledMeshes, TheCommittedFilesAreWhatTheGeneratorWrites) {
   }
 }
 
+
+// ---- The meshes like real ones ----
+
+// Boundary edges (directed edges without their reverse) and the loops they form.
+int boundaryLoops(const Mesh& m) {
+  std::map<std::pair<int, int>, int> directed;
+  for (const Triangle& t : m.triangles)
+    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+  std::map<int, int> next;
+  for (const auto& [edge, count] : directed)
+    if (!directed.count({edge.second, edge.first})) next[edge.first] = edge.second;
+  int loops = 0;
+  while (!next.empty()) {
+    int v = next.begin()->first;
+    while (next.count(v)) {
+      const int w = next[v];
+      next.erase(v);
+      v = w;
+    }
+    ++loops;
+  }
+  return loops;
+}
+
+int eulerCharacteristic(const Mesh& m) {
+  std::map<std::pair<int, int>, int> edges;
+  for (const Triangle& t : m.triangles)
+    for (int k = 0; k < 3; ++k) ++edges[std::minmax(t[k], t[(k + 1) % 3])];
+  return int(m.positions.size()) - int(edges.size()) + int(m.triangles.size());
+}
+
+TEST(TorusKnot, IsAClosedOutwardTubeOfGenusOne) {
+  const Mesh m = torusKnot(2, 3, 120, 10);
+  EXPECT_EQ(m.positions.size(), 1200u);
+  EXPECT_EQ(m.triangles.size(), 2400u);
+  EXPECT_TRUE(isClosedAndOriented(m));
+  EXPECT_EQ(eulerCharacteristic(m), 0);
+  // The tube's volume is about pi r^2 times the curve's length (about 2 pi 4.3 for (2, 3), R = 2).
+  const double volume = signedVolume(m);
+  EXPECT_GT(volume, 0.0);
+  EXPECT_NEAR(volume / (kPi * 0.16), 27.0, 6.0);
+}
+
+TEST(Bone, IsClosedOutwardLongAndThinWithPolesAtItsEnds) {
+  const Mesh m = bone(80, 24, 10.0);
+  EXPECT_EQ(m.positions.size(), std::size_t(79 * 24 + 2));
+  EXPECT_TRUE(isClosedAndOriented(m));
+  EXPECT_EQ(eulerCharacteristic(m), 2);
+  EXPECT_GT(signedVolume(m), 0.0);
+  EXPECT_EQ(m.positions.front(), Vec3(0, 0, 0));
+  EXPECT_EQ(m.positions.back(), Vec3(0, 0, 10));
+  double widest = 0.0;
+  for (const Vec3& p : m.positions) widest = std::max(widest, std::hypot(p.x(), p.y()));
+  EXPECT_LT(widest, 1.5);  // more than 6 times longer than wide
+}
+
+TEST(BumpyBlob, IsAClosedOutwardSphereOffTheOrigin) {
+  const Mesh m = bumpyBlob(3);
+  EXPECT_EQ(m.triangles.size(), 1280u);
+  EXPECT_TRUE(isClosedAndOriented(m));
+  EXPECT_EQ(eulerCharacteristic(m), 2);
+  EXPECT_GT(signedVolume(m), 0.0);
+  EXPECT_EQ(bumpyBlob(3).positions, m.positions);  // deterministic
+}
+
+TEST(ScannedPatch, IsAnOpenDiskWithOneRaggedBoundary) {
+  const Mesh m = scannedPatch(4);
+  EXPECT_GT(m.triangles.size(), 2000u);
+  EXPECT_LT(m.triangles.size(), 5120u);
+  EXPECT_EQ(boundaryLoops(m), 1);
+  EXPECT_EQ(eulerCharacteristic(m), 1);
+  EXPECT_EQ(checkMesh(m).unreferencedVertices, 0u);
+}
+
 }  // namespace
 }  // namespace uvtk::meshes
