@@ -22,11 +22,30 @@ enum FaceFlag : std::uint8_t {
   kFaceSphereMapSingular = 1 << 5,  // a texgen SPHERE_MAP corner had m = 0 (written as s = t = 1/2)
 };
 
+// Why a corner has no valid UV: the value of UvMap::cornerInvalid (0: the corner is valid).
+// docs/conventions.md §4 defines each case; the verdict (analysis/judgement.h) counts them apart.
+enum CornerInvalid : std::uint8_t {
+  kCornerValid = 0,
+  kCornerMiss = 1,        // the probe misses the surface (or runs exactly parallel to it)
+  kCornerBehind = 2,      // the ray meets the surface only behind its origin (planes: the line's crossing at t < 0)
+  kCornerOutOfRange = 3,  // the hit lies beyond kSensibleRange times the fitted extent (a nearly parallel ray)
+  kCornerNotFinite = 4,   // a value overflowed or was not finite
+  kCornerNoTexcoord = 5,  // a file's corner without vt
+};
+constexpr int kCornerInvalidCount = 6;
+
+// "valid", "miss", "behind", "out_of_range", "not_finite", "no_texcoord": the JSON keys.
+inline const char* cornerInvalidName(int reason) {
+  static constexpr const char* kNames[kCornerInvalidCount] = {"valid",        "miss",       "behind",
+                                                              "out_of_range", "not_finite", "no_texcoord"};
+  return reason >= 0 && reason < kCornerInvalidCount ? kNames[reason] : "unknown";
+}
+
 struct UvMap {
   std::vector<Vec2> uv;                     // 3 per triangle, corner k of face f at 3 f + k
   std::vector<double> w;                    // optional third component per corner (cube face index), or empty
   std::vector<std::uint8_t> faceFlags;      // one FaceFlag set per triangle
-  std::vector<std::uint8_t> cornerInvalid;  // 1 where the corner has no valid UV (written as 0, 0)
+  std::vector<std::uint8_t> cornerInvalid;  // a CornerInvalid per corner, non-zero where it has no valid UV (written as 0, 0)
 
   std::size_t faceCount() const { return faceFlags.size(); }
   bool faceHas(std::size_t f, FaceFlag flag) const { return (faceFlags[f] & flag) != 0; }

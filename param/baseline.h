@@ -1,7 +1,8 @@
 // Reference parametrizations for `uvtk compare`: the classical methods that flatten a mesh by
 // optimisation instead of projecting it, computed by CGAL's Surface_mesh_parameterization
 // (docs/conventions.md, "Reference parametrizations (CGAL)"). Both need a topological disk, so
-// this header also answers what the topology of a mesh is and cuts a mesh open along its UV seams.
+// this header also answers what the topology of a mesh is and cuts a mesh open along its UV seams;
+// cutToDisk (param/cut_graph.h) cuts any connected manifold mesh open along a short cut graph instead.
 #pragma once
 
 #include <cstddef>

@@ -43,7 +43,7 @@ struct Evaluated {
 // The cube: a face per triangle, then each corner projected onto it by its own probe.
 template <class T, class M>
 void evaluateCube(const CubeSurfaceT<T>& surface, const M& mapping, const Mesh& mesh, const LocalFrameT<T>& frame,
-                  const std::vector<Vec3>& normals, bool perCorner, CornerField& c) {
+                  const std::vector<Vec3>& normals, bool perCorner, const SensibleRangeT<T>& range, CornerField& c) {
   const std::size_t faceCount = mesh.triangles.size();
   c.w.resize(3 * faceCount);
   Progress progress("mapping", faceCount, "faces");
@@ -67,23 +67,32 @@ void evaluateCube(const CubeSurfaceT<T>& surface, const M& mapping, const Mesh& 
     for (int k = 0; k < 3; ++k) {
       const std::size_t corner = 3 * f + k;
       if (k > 0 && surface.cornerFace(probes[k]) != first) c.faceFlags[f] |= kFaceCubeSeam;
-      const std::optional<Vec2T<T>> st = face ? surface.projectOnFace(probes[k], *face) : std::nullopt;
       c.w[corner] = face ? static_cast<double>(*face) : 0.0;
-      const Vec2 uv = st ? surface.uvAt(*st, *face).template cast<double>() : Vec2(NAN, NAN);
-      if (!uv.allFinite()) {
-        c.uv[corner] = Vec2::Zero();
-        c.faceFlags[f] |= kFaceInvalid;
+      if (!face) {
+        c.invalidate(corner, kCornerMiss);
+        continue;
+      }
+      const HitT<T> hit = surface.projectOnFace(probes[k], *face);
+      CornerInvalid reason = judgeHit(hit, range);
+      Vec2 uv = Vec2::Zero();
+      if (reason == kCornerValid) {
+        uv = surface.uvAt(surface.faceSt(hit.q, *face), *face).template cast<double>();
+        if (!uv.allFinite()) reason = kCornerNotFinite;
+      }
+      if (reason != kCornerValid) {
+        c.invalidate(corner, reason);
         continue;
       }
       c.uv[corner] = uv;
       c.state[corner] = CornerState::Ok;
+      c.reason[corner] = kCornerValid;
     }
   }
 }
 
 template <class T, class S, class M>
 Evaluated evaluateCorners(const S& surface, const M& mapping, const Mesh& mesh, const LocalFrameT<T>& frame,
-                          const ProjectorOptions& o) {
+                          const ProjectorOptions& o, const SensibleRangeT<T>& range) {
   const std::size_t faceCount = mesh.triangles.size();
   Evaluated result;
   CornerField& c = result.corners;
@@ -95,9 +104,10 @@ Evaluated evaluateCorners(const S& surface, const M& mapping, const Mesh& mesh, 
   if (M::kNeedsNormal) normals = perCorner ? cornerNormals(mesh) : areaWeightedVertexNormals(mesh);
 
   if constexpr (std::is_same_v<S, CubeSurfaceT<T>>) {
-    evaluateCube(surface, mapping, mesh, frame, normals, perCorner, c);
+    evaluateCube(surface, mapping, mesh, frame, normals, perCorner, range, c);
   } else {
-    const SampleEvaluator<T, S, M> evaluate(surface, mapping, frame, PoleTest(o.poleEpsilon), o.arithmetic.math);
+    const SampleEvaluator<T, S, M> evaluate(surface, mapping, frame, PoleTest(o.poleEpsilon), o.arithmetic.math,
+                                            range);
     result.evaluateAt = [evaluate](const Vec3& position, const Vec3& normal) { return evaluate.at(position, normal); };
     const auto& triangles = mesh.triangles;
     std::vector<VertexUv> samples(perCorner ? 3 * faceCount : mesh.positions.size());
@@ -123,6 +133,7 @@ Evaluated evaluateCorners(const S& surface, const M& mapping, const Mesh& mesh, 
         s[k] = &samples[perCorner ? 3 * f + k : triangles[f][k]];
         c.uv[3 * f + k] = s[k]->uv;
         c.state[3 * f + k] = s[k]->state;
+        c.reason[3 * f + k] = s[k]->reason;
         invalid |= s[k]->state == CornerState::Invalid;
         pole |= s[k]->state == CornerState::Pole;
       }
@@ -142,24 +153,24 @@ Vec2 capUv(const Vec3T<T>& local, bool top) {
   return Vec2T<T>(((top ? T(1) : T(-1)) * local.x() + T(1)) * T(0.5), (local.y() + T(1)) * T(0.5)).template cast<double>();
 }
 
-// Cylinder caps: faces whose normal lies within the cap angle of the axis are mapped by capUv.
+// Cylinder caps: the faces CylinderCaps takes are mapped by capUv, whatever the mapping said.
 template <class T>
-void applyCaps(const Mesh& mesh, const LocalFrameT<T>& frame, double capAngleDegrees, CornerField& c) {
-  const T cosLimit = T(std::cos(capAngleDegrees * (kPi / 180.0)));
+void applyCaps(const Mesh& mesh, const LocalFrameT<T>& frame, const CylinderCaps& caps, CornerField& c) {
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const Triangle& t = mesh.triangles[f];
-    const Vec3T<T> p[3] = {frame.point(mesh.positions[t[0]]), frame.point(mesh.positions[t[1]]),
-                           frame.point(mesh.positions[t[2]])};
-    const Vec3T<T> n = triangleAreaNormal(p[0], p[1], p[2]);
-    const T length = n.norm();
-    if (!(length > T(0)) || std::fabs(n.z()) < cosLimit * length) continue;
+    const Vec3 normal = triangleAreaNormal(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
+    if (!caps.isCap(normal)) continue;
     c.faceFlags[f] = static_cast<std::uint8_t>((c.faceFlags[f] & ~(kFacePole | kFaceInvalid)) | kFaceCap);
     for (int k = 0; k < 3; ++k) {
-      const Vec2 uv = capUv(p[k], n.z() > T(0));
-      const bool finite = uv.allFinite();
-      c.uv[3 * f + k] = finite ? uv : Vec2::Zero();
-      c.state[3 * f + k] = finite ? CornerState::Ok : CornerState::Invalid;
-      if (!finite) c.faceFlags[f] |= kFaceInvalid;
+      const std::size_t corner = 3 * f + k;
+      const Vec2 uv = capUv(frame.point(mesh.positions[t[k]]), caps.isTop(normal));
+      if (!uv.allFinite()) {
+        c.invalidate(corner, kCornerNotFinite);
+        continue;
+      }
+      c.uv[corner] = uv;
+      c.state[corner] = CornerState::Ok;
+      c.reason[corner] = kCornerValid;
     }
   }
 }
@@ -189,40 +200,85 @@ decltype(auto) withPrecision(Precision precision, F&& f) {
 template <class T>
 Evaluated evaluateMesh(const Mesh& mesh, const Affine3& localFromObject, const ProjectorOptions& o) {
   const LocalFrameT<T> frame(localFromObject);
-  Evaluated evaluated =
-      visitProjector<T>(o, frame, [&](const auto& s, const auto& m) { return evaluateCorners(s, m, mesh, frame, o); });
-  if (o.surface == SurfaceKind::Cylinder && o.cylinderCaps) applyCaps(mesh, frame, o.capAngleDegrees, evaluated.corners);
+  const SensibleRangeT<T> range(sensibleBox(mesh.positions, o, localFromObject));
+  Evaluated evaluated = visitProjector<T>(
+      o, frame, [&](const auto& s, const auto& m) { return evaluateCorners(s, m, mesh, frame, o, range); });
+  if (o.surface == SurfaceKind::Cylinder && o.cylinderCaps)
+    applyCaps(mesh, frame, CylinderCaps(localFromObject, o.capAngleDegrees), evaluated.corners);
   return evaluated;
 }
 
 }  // namespace
 
+std::optional<Eigen::AlignedBox3d> sensibleBox(const std::vector<Vec3>& positions, const ProjectorOptions& o,
+                                               const Affine3& localFromObject) {
+  const LocalFrameT<double> frame(localFromObject);  // the local positions the mapping itself sees
+  Eigen::AlignedBox3d box;
+  for (const Vec3& p : positions) box.extend(frame.point(p));
+  switch (o.surface) {  // the unit shape the fits put the mesh on (§2)
+    case SurfaceKind::Plane:
+      box.extend(Vec3(0, 0, 0)).extend(Vec3(1, 1, 0));
+      break;
+    case SurfaceKind::Cylinder:
+      box.extend(Vec3(-1, -1, 0)).extend(Vec3(1, 1, 1));
+      break;
+    case SurfaceKind::Sphere:
+    case SurfaceKind::Cube:
+      box.extend(Vec3(-1, -1, -1)).extend(Vec3(1, 1, 1));
+      break;
+    case SurfaceKind::TwoPlane:  // object space: no unit shape
+      break;
+  }
+  if (box.isEmpty() || !box.sizes().allFinite() || !(box.sizes().maxCoeff() > 0.0)) return std::nullopt;
+  return box;
+}
+
+CylinderCaps::CylinderCaps(const Affine3& localFromObject, double capAngleDegrees)
+    : axis_((localFromObject.linear().inverse() * Vec3::UnitZ()).normalized()),
+      cosLimit_(std::cos(capAngleDegrees * (kPi / 180.0))) {}
+
+bool CylinderCaps::isCap(const Vec3& objectNormal) const {
+  const double length = objectNormal.norm();  // the cosine of the angle with the axis line: |n.a| / |n|
+  return length > 0.0 && std::fabs(objectNormal.dot(axis_)) >= cosLimit_ * length;
+}
+
 void mapVertices(const ProjectorOptions& o, const Affine3& localFromObject, const std::vector<Vec3>& positions,
-                 const std::vector<Vec3>& normals, std::vector<VertexUv>& out, int threads) {
+                 const std::vector<Vec3>& normals, std::vector<VertexUv>& out, int threads,
+                 const std::optional<Eigen::AlignedBox3d>& sensible) {
   checkOptions(o);
   out.resize(positions.size());
   withPrecision(o.arithmetic.precision, [&](auto zero) {
-    evaluatePositions<decltype(zero)>(o, localFromObject, positions, normals, out.data(), o.arithmetic.math, threads);
+    evaluatePositions<decltype(zero)>(o, localFromObject, positions, normals, out.data(), o.arithmetic.math, threads,
+                                      sensible);
   });
 }
 
-PointMapping::PointMapping(const ProjectorOptions& o, const Affine3& localFromObject) : uvTransform_(o.uvTransform) {
+PointMapping::PointMapping(const ProjectorOptions& o, const Affine3& localFromObject,
+                           const std::optional<Eigen::AlignedBox3d>& sensible)
+    : uvTransform_(o.uvTransform) {
   checkOptions(o);
   withPrecision(o.arithmetic.precision, [&](auto zero) {
     using T = decltype(zero);
     const LocalFrameT<T> frame(localFromObject);
+    const SensibleRangeT<T> range(sensible);
     visitProjector<T>(o, frame, [&](const auto& s, const auto& m) {
       using S = std::decay_t<decltype(s)>;
       using M = std::decay_t<decltype(m)>;
       needsNormal_ = M::kNeedsNormal;
       if constexpr (std::is_same_v<S, CubeSurfaceT<T>>) {
-        evaluate_ = [s, m, frame](const Vec3& position, const Vec3& normal) {
+        evaluate_ = [s, m, frame, range](const Vec3& position, const Vec3& normal) {
           VertexUv out;
           const ProbeT<T> probe = m.probe(SampleT<T>{frame.point(position), frame.normal(normal)});
           const std::optional<CubeFace> face = s.cornerFace(probe);
-          const std::optional<Vec2T<T>> st = face ? s.projectOnFace(probe, *face) : std::nullopt;
-          const Vec2 uv = st ? s.uvAt(*st, *face).template cast<double>() : Vec2(NAN, NAN);
-          if (!uv.allFinite()) return out;
+          if (!face) return out;  // a miss
+          const HitT<T> hit = s.projectOnFace(probe, *face);
+          out.reason = judgeHit(hit, range);
+          if (out.reason != kCornerValid) return out;
+          const Vec2 uv = s.uvAt(s.faceSt(hit.q, *face), *face).template cast<double>();
+          if (!uv.allFinite()) {
+            out.reason = kCornerNotFinite;
+            return out;
+          }
           out.uv = uv;
           out.state = CornerState::Ok;
           return out;
@@ -232,13 +288,13 @@ PointMapping::PointMapping(const ProjectorOptions& o, const Affine3& localFromOb
         };
       } else {
         wrapsU_ = S::kWraps;
-        const SampleEvaluator<T, S, M> evaluate(s, m, frame, PoleTest(o.poleEpsilon), o.arithmetic.math);
+        const SampleEvaluator<T, S, M> evaluate(s, m, frame, PoleTest(o.poleEpsilon), o.arithmetic.math, range);
         evaluate_ = [evaluate](const Vec3& position, const Vec3& normal) { return evaluate.at(position, normal); };
       }
     });
     if (o.surface == SurfaceKind::Cylinder && o.cylinderCaps)
-      cap_ = [frame](const Vec3& position, const Vec3& normal) {
-        return capUv(frame.point(position), frame.normal(normal).z() > T(0));
+      cap_ = [frame, caps = CylinderCaps(localFromObject, o.capAngleDegrees)](const Vec3& position, const Vec3& normal) {
+        return capUv(frame.point(position), caps.isTop(normal));
       };
   });
 }
@@ -247,13 +303,19 @@ VertexUv PointMapping::at(const Vec3& position, const Vec3& normal, bool capFace
   VertexUv out;
   if (capFace && cap_) {
     out.uv = cap_(position, normal);
-    out.state = out.uv.allFinite() ? CornerState::Ok : CornerState::Invalid;
+    const bool finite = out.uv.allFinite();
+    out.state = finite ? CornerState::Ok : CornerState::Invalid;
+    out.reason = finite ? kCornerValid : kCornerNotFinite;
+    if (!finite) out.uv = Vec2::Zero();
   } else {
     out = evaluate_(position, normal);
   }
   if (out.state == CornerState::Invalid) return out;
   if (!uvTransform_.isIdentity()) out.uv = uvTransform_.apply(out.uv);
-  if (!out.uv.allFinite()) out = VertexUv{};
+  if (!out.uv.allFinite()) {
+    out = VertexUv{};
+    out.reason = kCornerNotFinite;
+  }
   return out;
 }
 
@@ -290,8 +352,7 @@ Projection project(Mesh mesh, const ProjectorOptions& o) {
       if (corners.state[i] == CornerState::Invalid) continue;
       corners.uv[i] = o.uvTransform.apply(corners.uv[i]);
       if (corners.uv[i].allFinite()) continue;
-      corners.state[i] = CornerState::Invalid;  // a scale or offset that overflows
-      corners.faceFlags[i / 3] |= kFaceInvalid;
+      corners.invalidate(i, kCornerNotFinite);  // a scale or offset that overflows
       overflowed = true;
     }
     if (overflowed) {  // recount the invalid corners; the seam counts needed the untransformed u
@@ -299,6 +360,7 @@ Projection project(Mesh mesh, const ProjectorOptions& o) {
       out.summary.invalidVertices = recount.invalidVertices;
       out.summary.invalidFaces = recount.invalidFaces;
       out.summary.invalidVertexList = recount.invalidVertexList;
+      out.summary.invalidCorners = recount.invalidCorners;
     }
   }
   out.uv = std::move(corners).toUvMap();

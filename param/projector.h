@@ -2,6 +2,7 @@
 // status and a summary out. The library entry point behind `uvtk map`.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -66,7 +67,7 @@ struct ProjectorOptions {
 enum class CornerState : std::uint8_t {
   Ok,
   Pole,     // on the axis of a wrapping surface: v is defined, u is not (§5)
-  Invalid,  // the probe missed the surface, or a value was not finite
+  Invalid,  // no (u, v): the reason (CornerInvalid, core/uv_map.h) says why
 };
 
 // One vertex through both stages, before seam and pole repair.
@@ -74,6 +75,7 @@ struct VertexUv {
   Vec2 uv = Vec2::Zero();     // u = 0 for poles; (0, 0) when invalid
   Vec2 axial = Vec2::Zero();  // the hit point projected along the surface's axis
   CornerState state = CornerState::Invalid;
+  CornerInvalid reason = kCornerMiss;  // kCornerValid exactly when state is not Invalid
 };
 
 struct MappingSummary {
@@ -83,6 +85,9 @@ struct MappingSummary {
   double seamLength = 0.0;              // their total length in object space
   std::size_t poleVertices = 0, poleFaces = 0;
   std::size_t invalidVertices = 0, invalidFaces = 0;
+  // Corners of the output mesh per CornerInvalid (entry kCornerValid: the valid corners), as in
+  // analysis::Judgement; the invalid entries add up to the corners with cornerInvalid set.
+  std::array<std::size_t, kCornerInvalidCount> invalidCorners{};
   std::size_t cubeSeamFaces = 0, capFaces = 0;
   std::size_t addedVertices = 0, addedFaces = 0;  // by --seam cut
   std::vector<int> invalidVertexList;             // vertex indices (input numbering, 0-based)
@@ -97,23 +102,52 @@ struct Projection {
   Affine3 localFromObject = Affine3::Identity();
 };
 
+// The sensible box B of the range rule (docs/conventions.md §4), in the projector's local frame:
+// the box of the mesh's local positions united with the surface's unit shape (plane [0,1]^2 x {0};
+// cylinder radius 1, z in [0, 1]; sphere the unit ball; cube [-1,1]^3; two-plane nothing, it works
+// in object space). Nothing when it has no finite, non-zero extent (then there is no range check).
+// project() computes it from its mesh; callers of mapVertices and PointMapping that have the mesh
+// pass it in.
+std::optional<Eigen::AlignedBox3d> sensibleBox(const std::vector<Vec3>& positions, const ProjectorOptions& options,
+                                               const Affine3& localFromObject);
+
 // The two-stage mapping of single vertices in object space: placement, O-mapping, surface,
 // S-mapping, no seam or pole repair and no UV transform. `normals` is read only by the normal
 // and reflection O-mappings (then it has one unit normal per position). `out` is resized, so a
 // caller that maps repeatedly reuses its memory. The cube chooses faces per triangle and is a
-// UsageError here. `threads` (0: one per core) split the positions into contiguous ranges.
+// UsageError here. `threads` (0: one per core) split the positions into contiguous ranges. Hits
+// beyond the range of `sensible` (sensibleBox) are kCornerOutOfRange; without it nothing is.
 void mapVertices(const ProjectorOptions& options, const Affine3& localFromObject, const std::vector<Vec3>& positions,
-                 const std::vector<Vec3>& normals, std::vector<VertexUv>& out, int threads = 1);
+                 const std::vector<Vec3>& normals, std::vector<VertexUv>& out, int threads = 1,
+                 const std::optional<Eigen::AlignedBox3d>& sensible = std::nullopt);
+
+// Which faces the cylinder's caps take (§5): those whose object-space normal makes an angle of at
+// most capAngleDegrees with the projector's axis, the object-space direction of local +z. Decided
+// in object space because a fit scales non-uniformly: a long mesh squeezed to height 1 would tilt
+// every side normal towards the axis. The one test behind project() and point::PointEvaluator.
+class CylinderCaps {
+ public:
+  CylinderCaps(const Affine3& localFromObject, double capAngleDegrees);
+  bool isCap(const Vec3& objectNormal) const;
+  bool isTop(const Vec3& objectNormal) const { return objectNormal.dot(axis_) > 0.0; }  // else the bottom cap
+
+ private:
+  Vec3 axis_;  // unit, object space
+  double cosLimit_;
+};
 
 // The exact mapping at single object-space points, for evaluation at every pixel: placement,
 // O-mapping, surface, S-mapping and the UV transform, without seam or pole repair (u stays in its
 // period; a pole gets u = 0). The cube takes the face of each point's own probe (exact, where
 // project() chooses one face per triangle); a face project() mapped by a cylinder cap maps by the
 // cap projection, mirrored by the sign of the given normal along the axis (pass the face normal).
+// A hit beyond the range of `sensible` (sensibleBox of the mesh) is kCornerOutOfRange; without a
+// box nothing is.
 class PointMapping {
  public:
   // Throws UsageError like project() for inconsistent options.
-  PointMapping(const ProjectorOptions& options, const Affine3& localFromObject);
+  PointMapping(const ProjectorOptions& options, const Affine3& localFromObject,
+               const std::optional<Eigen::AlignedBox3d>& sensible = std::nullopt);
   VertexUv at(const Vec3& position, const Vec3& normal, bool capFace = false) const;
   // The cube face at() projects onto; nothing where the probe misses or for other surfaces.
   std::optional<CubeFace> cubeFaceAt(const Vec3& position, const Vec3& normal) const;

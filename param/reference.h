@@ -15,6 +15,7 @@ struct ReferenceUv {
   Vec2T<long double> uv = Vec2T<long double>::Zero();
   Vec2T<long double> axial = Vec2T<long double>::Zero();
   CornerState state = CornerState::Invalid;
+  CornerInvalid reason = kCornerMiss;
 };
 
 // mapVertices in long double, whatever options.arithmetic says; the same contract otherwise.

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <type_traits>
 #include <variant>
 
@@ -87,14 +88,16 @@ decltype(auto) visitProjector(const ProjectorOptions& o, const LocalFrameT<T>& f
   return std::visit(std::forward<F>(f), makeSurface<T>(o), makeRayMapping<T>(o, frame));
 }
 
-// The whole two-stage mapping of samples of a non-cube surface: O-mapping, resolve, pole test,
-// S-mapping. Per block: every sample to its hit point, the block's arctangents at once, then (u, v).
-// Out is VertexUv, or a record with the same members in another precision (ReferenceUv).
+// The whole two-stage mapping of samples of a non-cube surface: O-mapping, resolve, the hit's
+// verdict (judgeHit: miss, behind, not finite, out of range), pole test, S-mapping. Per block: every
+// sample to its hit point, the block's arctangents at once, then (u, v). Out is VertexUv, or a
+// record with the same members in another precision (ReferenceUv).
 template <class T, class S, class M, class Out = VertexUv>
 class SampleEvaluator {
  public:
-  SampleEvaluator(const S& surface, const M& mapping, const LocalFrameT<T>& frame, PoleTest isPole, MathMode math)
-      : surface_(surface), mapping_(mapping), frame_(frame), isPole_(isPole), math_(math) {}
+  SampleEvaluator(const S& surface, const M& mapping, const LocalFrameT<T>& frame, PoleTest isPole, MathMode math,
+                  const SensibleRangeT<T>& range)
+      : surface_(surface), mapping_(mapping), frame_(frame), isPole_(isPole), math_(math), range_(range) {}
 
   // Samples i < count at object-space position(i) with normal(i) (read only when the O-mapping
   // needs normals) into out[i].
@@ -131,13 +134,14 @@ class SampleEvaluator {
     for (std::size_t i = 0; i < n; ++i) {
       SampleT<T> sample{frame_.point(position(i)), Vec3T<T>::Zero()};
       if constexpr (M::kNeedsNormal) sample.n = frame_.normal(normal(i));
-      const std::optional<Vec3T<T>> hit = surface_.resolve(mapping_.probe(sample));
+      const HitT<T> hit = surface_.resolve(mapping_.probe(sample));
       out[i] = Out{};
-      if (!hit || !hit->allFinite()) {
+      out[i].reason = judgeHit(hit, range_);
+      if (out[i].reason != kCornerValid) {
         for (std::size_t a = 0; a < kAngles; ++a) y[i * kAngles + a] = T(0), x[i * kAngles + a] = T(1);
         continue;
       }
-      q[i] = *hit;
+      q[i] = hit.q;
       out[i].axial = OutVec2(R(q[i].x()), R(q[i].y()));
       out[i].state = CornerState::Ok;
       if constexpr (S::kWraps)
@@ -154,7 +158,8 @@ class SampleEvaluator {
       const Vec2T<T> uv = surface_.uvFromAngles(q[i], angles.data() + i * kAngles);
       // u is undefined at a pole (§5); v is defined there.
       out[i].uv = OutVec2(out[i].state == CornerState::Pole ? R(0) : R(uv.x()), R(uv.y()));
-      if (!out[i].uv.allFinite()) out[i].uv = OutVec2::Zero(), out[i].state = CornerState::Invalid;
+      if (!out[i].uv.allFinite())
+        out[i].uv = OutVec2::Zero(), out[i].state = CornerState::Invalid, out[i].reason = kCornerNotFinite;
     }
   }
 #pragma GCC diagnostic pop
@@ -164,14 +169,17 @@ class SampleEvaluator {
   LocalFrameT<T> frame_;
   PoleTest isPole_;
   MathMode math_;
+  SensibleRangeT<T> range_;
 };
 
 // mapVertices in precision T into `out` (positions.size() records): the surface and O-mapping
-// the options name, `threads` contiguous ranges of whole blocks. Throws UsageError for the cube
-// (its face is chosen per triangle) and for missing normals.
+// the options name, `threads` contiguous ranges of whole blocks, hits judged against the range of
+// `sensible` (none: no range check). Throws UsageError for the cube (its face is chosen per
+// triangle) and for missing normals.
 template <class T, class Out>
 void evaluatePositions(const ProjectorOptions& o, const Affine3& localFromObject, const std::vector<Vec3>& positions,
-                       const std::vector<Vec3>& normals, Out* out, MathMode math, int threads) {
+                       const std::vector<Vec3>& normals, Out* out, MathMode math, int threads,
+                       const std::optional<Eigen::AlignedBox3d>& sensible = std::nullopt) {
   const LocalFrameT<T> frame(localFromObject);
   visitProjector<T>(o, frame, [&](const auto& s, const auto& m) {
     using S = std::decay_t<decltype(s)>;
@@ -181,7 +189,8 @@ void evaluatePositions(const ProjectorOptions& o, const Affine3& localFromObject
     } else {
       if (M::kNeedsNormal && normals.size() != positions.size())
         throw UsageError("this O-mapping needs one normal per position");
-      const SampleEvaluator<T, S, M, Out> evaluate(s, m, frame, PoleTest(o.poleEpsilon), math);
+      const SampleEvaluator<T, S, M, Out> evaluate(s, m, frame, PoleTest(o.poleEpsilon), math,
+                                                   SensibleRangeT<T>(sensible));
       const int chunks = threadCount(threads);
       const std::size_t size = (positions.size() / std::size_t(chunks) + 255) / 256 * 256;
       parallelFor(chunks, chunks, [&](int chunk) {

@@ -11,7 +11,15 @@ namespace uvtk::param {
 void CornerField::resize(std::size_t faceCount) {
   uv.resize(3 * faceCount);
   state.assign(3 * faceCount, CornerState::Invalid);
+  reason.assign(3 * faceCount, kCornerMiss);
   faceFlags.assign(faceCount, kFaceOk);
+}
+
+void CornerField::invalidate(std::size_t i, CornerInvalid why) {
+  uv[i] = Vec2::Zero();
+  state[i] = CornerState::Invalid;
+  reason[i] = why;
+  faceFlags[i / 3] |= kFaceInvalid;
 }
 
 UvMap CornerField::toUvMap() && {
@@ -22,7 +30,8 @@ UvMap CornerField::toUvMap() && {
   map.cornerInvalid.resize(state.size());
   for (std::size_t i = 0; i < state.size(); ++i) {
     const bool invalid = state[i] == CornerState::Invalid;
-    map.cornerInvalid[i] = invalid ? 1 : 0;
+    UVTK_CHECK(invalid == (reason[i] != kCornerValid));
+    map.cornerInvalid[i] = reason[i];
     if (invalid) map.uv[i] = Vec2::Zero();
     if (invalid) map.faceFlags[i / 3] |= kFaceInvalid;
   }
@@ -151,12 +160,13 @@ SeamReport repairSeams(Mesh& mesh, CornerField& c, double uStart, SeamMode mode,
   CornerField out;
   out.resize(0);
   auto emit = [&](const Triangle& t, const Triangle& normals, const Vec2 (&uv)[3], const CornerState (&state)[3],
-                  std::uint8_t flags) {
+                  const CornerInvalid (&reason)[3], std::uint8_t flags) {
     triangles.push_back(t);
     if (mesh.hasNormals()) cornerNormals.push_back(normals);
     for (int k = 0; k < 3; ++k) {
       out.uv.push_back(uv[k]);
       out.state.push_back(state[k]);
+      out.reason.push_back(reason[k]);
     }
     out.faceFlags.push_back(flags);
   };
@@ -175,7 +185,8 @@ SeamReport repairSeams(Mesh& mesh, CornerField& c, double uStart, SeamMode mode,
     if (!shifted[f] || !anyLow) {
       const Vec2 uv[3] = {c.uv[3 * f], c.uv[3 * f + 1], c.uv[3 * f + 2]};
       const CornerState state[3] = {c.state[3 * f], c.state[3 * f + 1], c.state[3 * f + 2]};
-      emit(t, normals, uv, state, c.faceFlags[f]);
+      const CornerInvalid reason[3] = {c.reason[3 * f], c.reason[3 * f + 1], c.reason[3 * f + 2]};
+      emit(t, normals, uv, state, reason, c.faceFlags[f]);
       continue;
     }
     // Clip the triangle by the seam: one polygon per side, corners in order, cut points between.
@@ -183,18 +194,22 @@ SeamReport repairSeams(Mesh& mesh, CornerField& c, double uStart, SeamMode mode,
       int vertex, normal;
       Vec2 uv;
       CornerState state;
+      CornerInvalid reason;
     };
     std::vector<Corner> high, low;
     for (int k = 0; k < 3; ++k) {
       const int next = (k + 1) % 3;
       const Vec2 uv = c.uv[3 * f + k];
       const CornerState state = c.state[3 * f + k];
-      if (side[k] != Side::Low) high.push_back({t[k], normals[k], {side[k] == Side::On ? uStart + 1.0 : uv.x(), uv.y()}, state});
-      if (side[k] != Side::High) low.push_back({t[k], normals[k], {side[k] == Side::On ? uStart : uv.x() - 1.0, uv.y()}, state});
+      const CornerInvalid reason = c.reason[3 * f + k];
+      if (side[k] != Side::Low)
+        high.push_back({t[k], normals[k], {side[k] == Side::On ? uStart + 1.0 : uv.x(), uv.y()}, state, reason});
+      if (side[k] != Side::High)
+        low.push_back({t[k], normals[k], {side[k] == Side::On ? uStart : uv.x() - 1.0, uv.y()}, state, reason});
       if ((side[k] == Side::High && side[next] == Side::Low) || (side[k] == Side::Low && side[next] == Side::High)) {
         const SeamCutter::CutPoint p = cutter.cut(f, k, next);
-        high.push_back({p.vertex, p.normal, {uStart + 1.0, p.v}, CornerState::Ok});
-        low.push_back({p.vertex, p.normal, {uStart, p.v}, CornerState::Ok});
+        high.push_back({p.vertex, p.normal, {uStart + 1.0, p.v}, CornerState::Ok, kCornerValid});
+        low.push_back({p.vertex, p.normal, {uStart, p.v}, CornerState::Ok, kCornerValid});
       }
     }
     for (const std::vector<Corner>* piece : {&high, &low})
@@ -204,7 +219,8 @@ SeamReport repairSeams(Mesh& mesh, CornerField& c, double uStart, SeamMode mode,
         const Corner& d = (*piece)[k + 1];
         const Vec2 uv[3] = {a.uv, b.uv, d.uv};
         const CornerState state[3] = {a.state, b.state, d.state};
-        emit({a.vertex, b.vertex, d.vertex}, {a.normal, b.normal, d.normal}, uv, state, c.faceFlags[f]);
+        const CornerInvalid reason[3] = {a.reason, b.reason, d.reason};
+        emit({a.vertex, b.vertex, d.vertex}, {a.normal, b.normal, d.normal}, uv, state, reason, c.faceFlags[f]);
       }
   }
   report.addedVertices = mesh.positions.size() - vertexCountBefore;
@@ -245,6 +261,7 @@ MappingSummary summarize(const Mesh& mesh, const CornerField& c, const SeamRepor
     s.capFaces += (flags & kFaceCap) ? 1 : 0;
     for (int k = 0; k < 3; ++k) {
       const CornerState state = c.state[3 * f + k];
+      ++s.invalidCorners[state == CornerState::Invalid ? c.reason[3 * f + k] : kCornerValid];
       if (state == CornerState::Pole) vertexState[mesh.triangles[f][k]] |= 1;
       if (state == CornerState::Invalid) vertexState[mesh.triangles[f][k]] |= 2;
     }

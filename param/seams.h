@@ -16,10 +16,13 @@ struct CornerField {
   std::vector<Vec2> uv;
   std::vector<double> w;  // cube face id, or empty
   std::vector<CornerState> state;
+  std::vector<CornerInvalid> reason;  // kCornerValid exactly where state is not Invalid
   std::vector<std::uint8_t> faceFlags;
 
   void resize(std::size_t faceCount);  // UVs left uninitialised: every corner is written once
-  UvMap toUvMap() &&;  // invalid corners become (0, 0) with cornerInvalid set
+  // Corner i has no (u, v), for `why`: written (0, 0), its face flagged kFaceInvalid.
+  void invalidate(std::size_t i, CornerInvalid why);
+  UvMap toUvMap() &&;  // invalid corners become (0, 0) with their reason in cornerInvalid
 };
 
 // Whether the closed triangle (a, b, c) contains the origin: for hit points projected along the
@@ -44,7 +47,7 @@ SeamReport repairSeams(Mesh& mesh, CornerField& corners, double uStart, SeamMode
 // Gives each pole corner the mean u of its face's other valid corners.
 void fanPoleCorners(CornerField& corners);
 
-// Counts for the summary: poles, invalid vertices, cube seams, caps, and the seam edges (edges
+// Counts for the summary: poles, invalid vertices, corners per reason, cube seams, caps, and the seam edges (edges
 // whose two faces give an endpoint u values differing by a non-zero integer) with their length.
 MappingSummary summarize(const Mesh& mesh, const CornerField& corners, const SeamReport& seams);
 

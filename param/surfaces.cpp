@@ -75,28 +75,26 @@ std::optional<CubeFace> CubeSurfaceT<T>::cornerFace(const ProbeT<T>& probe) cons
 }
 
 template <class T>
-std::optional<Vec2T<T>> CubeSurfaceT<T>::projectOnFace(const ProbeT<T>& probe, CubeFace f) const {
+HitT<T> CubeSurfaceT<T>::projectOnFace(const ProbeT<T>& probe, CubeFace f) const {
   using Kind = typename ProbeT<T>::Kind;
   const int a = faceAxis(f);
   const T sign = T(faceSign(f));
   const Vec3T<T>& p = probe.point;
+  HitT<T> hit = noHit<T>(kCornerMiss);
   switch (probe.kind) {
-    case Kind::Foot: {  // orthographic: (sc + 1)/2 with sc, tc of p itself
-      const Vec2T<T> c = cubeFaceCoordinates(p, f, convention);
-      return Vec2T<T>((c.x() + T(1)) * T(0.5), (c.y() + T(1)) * T(0.5));
-    }
+    case Kind::Foot:  // orthographic: p moved along the face's axis onto its plane
+      hit = hitAt<T>(p);
+      break;
     case Kind::Central:  // central projection onto the face plane
-      if (!(p[a] * sign > T(0))) return std::nullopt;
-      return cubeFaceSt(p, f, convention);
-    case Kind::Ray: {
-      const Vec3T<T>& d = probe.direction;
-      if (d[a] == T(0)) return std::nullopt;
-      Vec3T<T> hit = p + ((sign - p[a]) / d[a]) * d;
-      hit[a] = sign;
-      return cubeFaceSt(hit, f, convention);
-    }
+      if (!(p[a] * sign > T(0))) return noHit<T>(kCornerMiss);
+      hit = hitAt<T>(Vec3T<T>(p / std::fabs(p[a])));
+      break;
+    case Kind::Ray:
+      hit = rayMeetsPlane(probe, Vec3T<T>(Vec3T<T>::Unit(a)), sign);
+      break;
   }
-  return std::nullopt;
+  if (hit) hit.q[a] = sign;
+  return hit;
 }
 
 template struct TwoPlaneSurfaceT<float>;

@@ -14,6 +14,7 @@
 #include <variant>
 
 #include "core/math.h"
+#include "core/uv_map.h"
 #include "param/formulas.h"
 
 namespace uvtk::param {
@@ -24,7 +25,7 @@ struct ProbeT {
   enum class Kind {
     Foot,     // the point itself; the surface takes the foot of its own normal through it
     Central,  // the ray from the local origin through `point` (a direction when at infinity)
-    Ray,      // the ray point + t direction, first hit t >= 0 (planes: the line's crossing)
+    Ray,      // the ray point + t direction, first hit t >= 0
   };
   Kind kind = Kind::Foot;
   Vec3T<T> point = Vec3T<T>::Zero();
@@ -75,9 +76,71 @@ struct ReflectionRayT {  // `reflection`: the view ray from the eye, mirrored ab
 template <class T>
 using RayMappingT = std::variant<SurfaceNormalRayT<T>, CentroidRayT<T>, ObjectNormalRayT<T>, ReflectionRayT<T>>;
 
+// ---- Hit points and their verdict (docs/conventions.md §4) ----
+
+// What a surface makes of a probe: the hit point q in the local frame, or why there is none
+// (kCornerMiss, kCornerBehind). Reads like an optional: `if (hit)`, `*hit`, `hit->x()`.
+template <class T>
+struct HitT {
+  Vec3T<T> q = Vec3T<T>::Zero();
+  CornerInvalid reason = kCornerMiss;
+  // false where q only shares the hit's (u, v) (the radial surfaces' isn and the sphere's central
+  // probe return the point itself): then q says nothing about how far the hit lies, and the range
+  // rule does not apply.
+  bool onSurface = true;
+  explicit operator bool() const { return reason == kCornerValid; }
+  const Vec3T<T>& operator*() const { return q; }
+  const Vec3T<T>* operator->() const { return &q; }
+};
+
+template <class T>
+HitT<T> hitAt(const Vec3T<T>& q) {
+  return {q, kCornerValid, true};
+}
+
+template <class T>
+HitT<T> sameUvAs(const Vec3T<T>& q) {  // a point with the hit's (u, v), not the hit itself
+  return {q, kCornerValid, false};
+}
+
+template <class T>
+HitT<T> noHit(CornerInvalid reason) {
+  return {Vec3T<T>::Zero(), reason, true};
+}
+
+// The range rule (§4): a hit lies out of range when some coordinate of q - centre(B) exceeds
+// kSensibleRange times the largest half-extent of the sensible box B (param::sensibleBox: the
+// mesh's local box united with the surface's unit shape). Far hits come from nearly parallel rays.
+constexpr double kSensibleRange = 2.0;
+
+template <class T>
+struct SensibleRangeT {
+  Vec3T<T> centre = Vec3T<T>::Zero();
+  T reach = std::numeric_limits<T>::infinity();  // without a box every finite hit is in range
+
+  SensibleRangeT() = default;
+  explicit SensibleRangeT(const std::optional<Eigen::AlignedBox3d>& box) {
+    if (!box || box->isEmpty()) return;
+    centre = box->center().cast<T>();
+    reach = static_cast<T>(kSensibleRange * (0.5 * box->sizes()).maxCoeff());
+  }
+  bool contains(const Vec3T<T>& q) const { return (q - centre).cwiseAbs().maxCoeff() <= reach; }
+};
+
+// Why a hit gives no (u, v), or kCornerValid: the surface's verdict (miss, behind), then a value
+// that is not finite, then the range rule. A few compares: it runs once per sample.
+template <class T>
+CornerInvalid judgeHit(const HitT<T>& hit, const SensibleRangeT<T>& range) {
+  if (hit.reason != kCornerValid) return hit.reason;
+  if (!hit.q.allFinite()) return kCornerNotFinite;
+  if (hit.onSurface && !range.contains(hit.q)) return kCornerOutOfRange;
+  return kCornerValid;
+}
+
 // ---- Intermediate surfaces ----
-// resolve() returns the hit point q (local frame; radial surfaces may return any positive
-// multiple of it, since their (u, v) and pole tests are scale-invariant) or nothing on a miss.
+// resolve() returns the hit of the probe (HitT: the point q in the local frame, or why there is
+// none); radial surfaces may return a point with the hit's (u, v) instead (HitT::onSurface false),
+// since their (u, v) and pole tests are scale-invariant.
 //
 // The S-mapping of a surface runs in two steps, so that the arctangents of a whole block of points
 // can be taken at once by a vectorised library (--math fast): angleArguments(q) gives the (y, x)
@@ -101,7 +164,7 @@ template <class T>
 struct PlaneSurfaceT {  // z = 0, (u, v) = (x, y)
   static constexpr bool kWraps = false;
   static constexpr int kAngles = 0;
-  std::optional<Vec3T<T>> resolve(const ProbeT<T>& probe) const;
+  HitT<T> resolve(const ProbeT<T>& probe) const;
   std::array<AtanArguments<T>, 0> angleArguments(const Vec3T<T>&) const { return {}; }
   Vec2T<T> uvFromAngles(const Vec3T<T>& q, const T*) const { return {q.x(), q.y()}; }
   Vec2T<T> uvAt(const Vec3T<T>& q) const { return uvFromAngles(q, nullptr); }
@@ -119,7 +182,7 @@ struct TwoPlaneSurfaceT {
   Vec3T<T> axis;  // a
   // Normalises in double, then rounds to T. Throws UsageError for a zero normal or parallel planes.
   TwoPlaneSurfaceT(const Vec4& e1, const Vec4& e2);
-  std::optional<Vec3T<T>> resolve(const ProbeT<T>& probe) const;
+  HitT<T> resolve(const ProbeT<T>& probe) const;
   std::array<AtanArguments<T>, 0> angleArguments(const Vec3T<T>&) const { return {}; }
   Vec2T<T> uvFromAngles(const Vec3T<T>& q, const T*) const {
     return {planeU.template head<3>().dot(q) + planeU[3], planeV.template head<3>().dot(q) + planeV[3]};
@@ -131,7 +194,7 @@ template <class T>
 struct CylinderSurfaceT {  // radius 1 about the z axis
   static constexpr bool kWraps = true;
   static constexpr int kAngles = 1;
-  std::optional<Vec3T<T>> resolve(const ProbeT<T>& probe) const;
+  HitT<T> resolve(const ProbeT<T>& probe) const;
   std::array<AtanArguments<T>, 1> angleArguments(const Vec3T<T>& q) const { return {{{q.y(), q.x()}}}; }
   // (u, v) = (turn fraction, z) (§3)
   Vec2T<T> uvFromAngles(const Vec3T<T>& q, const T* angles) const { return {turnFromAngle(angles[0]), q.z()}; }
@@ -145,7 +208,7 @@ struct SphereSurfaceT {  // radius 1 about the origin
   static constexpr bool kWraps = true;
   static constexpr int kAngles = 2;
   SpherePreset preset = SpherePreset::Default;
-  std::optional<Vec3T<T>> resolve(const ProbeT<T>& probe) const;
+  HitT<T> resolve(const ProbeT<T>& probe) const;
   // The azimuth's arguments for the preset, then those of the angle from the nearer pole (§3).
   std::array<AtanArguments<T>, 2> angleArguments(const Vec3T<T>& q) const {
     const auto [y, x] = sphereAzimuthArguments(q, preset);
@@ -160,7 +223,7 @@ struct SphereSurfaceT {  // radius 1 about the origin
 };
 
 // The box [-1, 1]^3. Faces are chosen per triangle (chooseFace); each corner is then projected
-// onto that face's plane by its own probe (projectOnFace).
+// onto that face's plane by its own probe (projectOnFace), then to (s, t) (faceSt).
 template <class T>
 struct CubeSurfaceT {
   static constexpr bool kWraps = false;
@@ -170,8 +233,10 @@ struct CubeSurfaceT {
   std::optional<CubeFace> chooseFace(const ProbeT<T>& probe, const Vec3T<T>& faceNormal) const;
   // The face a corner alone would choose (Foot probes: the major axis of its position).
   std::optional<CubeFace> cornerFace(const ProbeT<T>& probe) const;
-  // Face coordinates (s, t) of the probe on face f's plane, before the layout.
-  std::optional<Vec2T<T>> projectOnFace(const ProbeT<T>& probe, CubeFace f) const;
+  // The probe's hit on face f's plane (a Ray probe: for t >= 0 only, else kCornerBehind).
+  HitT<T> projectOnFace(const ProbeT<T>& probe, CubeFace f) const;
+  // Face coordinates (s, t) of a hit on face f's plane, before the layout.
+  Vec2T<T> faceSt(const Vec3T<T>& q, CubeFace f) const { return cubeFaceSt(q, f, convention); }
   Vec2T<T> uvAt(const Vec2T<T>& st, CubeFace f) const { return cubeAtlasUv(st, f, convention, layout); }
 };
 
@@ -223,96 +288,105 @@ bool isZero(const Vec3T<T>& v) {
   return v.x() == T(0) && v.y() == T(0) && v.z() == T(0);
 }
 
-// The crossing of the ray's line with the plane n.x = 0; nothing when they are parallel.
+// Where the ray p + t d (t >= 0) meets the plane n.x = level: a miss when they are parallel,
+// kCornerBehind when only the line does (t < 0). An origin on the plane to 64 ulp hits at t = 0,
+// as in firstNonNegativeRoot, so that a vertex on a plane (a cube mesh on its fitted cube) does
+// not fall behind by rounding.
 template <class T>
-std::optional<Vec3T<T>> lineMeetsPlane(const ProbeT<T>& probe, const Vec3T<T>& n) {
+HitT<T> rayMeetsPlane(const ProbeT<T>& probe, const Vec3T<T>& n, T level) {
+  const Vec3T<T>& p = probe.point;
   const T along = n.dot(probe.direction);
-  if (along == T(0)) return std::nullopt;
-  return Vec3T<T>(probe.point - (n.dot(probe.point) / along) * probe.direction);
+  if (along == T(0)) return noHit<T>(kCornerMiss);
+  const T offset = n.dot(p) - level;
+  if (std::fabs(offset) <= T(64) * std::numeric_limits<T>::epsilon() * std::max(T(1), p.cwiseAbs().maxCoeff()))
+    return hitAt<T>(p);
+  const T t = -offset / along;
+  if (t < T(0)) return noHit<T>(kCornerBehind);
+  return hitAt<T>(p + t * probe.direction);  // a NaN t leaves q not finite: judgeHit says so
 }
 
 template <class T>
-std::optional<Vec3T<T>> PlaneSurfaceT<T>::resolve(const ProbeT<T>& probe) const {
+HitT<T> PlaneSurfaceT<T>::resolve(const ProbeT<T>& probe) const {
   using Kind = typename ProbeT<T>::Kind;
   const Vec3T<T>& p = probe.point;
   switch (probe.kind) {
     case Kind::Foot:
-      return Vec3T<T>(p.x(), p.y(), T(0));
+      return hitAt<T>(Vec3T<T>(p.x(), p.y(), T(0)));
     case Kind::Central:  // central projection onto z = 1
-      if (!(p.z() > T(0))) return std::nullopt;
-      return Vec3T<T>(p.x() / p.z(), p.y() / p.z(), T(1));
+      if (!(p.z() > T(0))) return noHit<T>(kCornerMiss);
+      return hitAt<T>(Vec3T<T>(p.x() / p.z(), p.y() / p.z(), T(1)));
     case Kind::Ray: {
-      std::optional<Vec3T<T>> hit = lineMeetsPlane(probe, Vec3T<T>(Vec3T<T>::UnitZ()));
-      if (hit) hit->z() = T(0);
+      HitT<T> hit = rayMeetsPlane(probe, Vec3T<T>(Vec3T<T>::UnitZ()), T(0));
+      if (hit) hit.q.z() = T(0);
       return hit;
     }
   }
-  return std::nullopt;
+  return noHit<T>(kCornerMiss);
 }
 
 template <class T>
-std::optional<Vec3T<T>> TwoPlaneSurfaceT<T>::resolve(const ProbeT<T>& probe) const {
+HitT<T> TwoPlaneSurfaceT<T>::resolve(const ProbeT<T>& probe) const {
   using Kind = typename ProbeT<T>::Kind;
   const Vec3T<T>& p = probe.point;
   switch (probe.kind) {
     case Kind::Foot:
-      return p;
+      return hitAt<T>(p);
     case Kind::Central: {  // central projection onto a.x = 1
       const T along = axis.dot(p);
-      if (!(along > T(0))) return std::nullopt;
-      return Vec3T<T>(p / along);
+      if (!(along > T(0))) return noHit<T>(kCornerMiss);
+      return hitAt<T>(Vec3T<T>(p / along));
     }
     case Kind::Ray:
-      return lineMeetsPlane(probe, axis);
+      return rayMeetsPlane(probe, axis, T(0));
   }
-  return std::nullopt;
+  return noHit<T>(kCornerMiss);
 }
 
 template <class T>
-std::optional<Vec3T<T>> CylinderSurfaceT<T>::resolve(const ProbeT<T>& probe) const {
+HitT<T> CylinderSurfaceT<T>::resolve(const ProbeT<T>& probe) const {
   using Kind = typename ProbeT<T>::Kind;
   const Vec3T<T>& p = probe.point;
   switch (probe.kind) {
     case Kind::Foot:
-      return p;  // same azimuth and height as (x/rho, y/rho, z)
+      return sameUvAs<T>(p);  // same azimuth and height as (x/rho, y/rho, z)
     case Kind::Central: {
       const T rho = radialDistance(p.x(), p.y());
-      if (!(rho > T(0))) return std::nullopt;  // along the axis the ray never meets the side
-      return Vec3T<T>(p / rho);
+      if (!(rho > T(0))) return noHit<T>(kCornerMiss);  // along the axis the ray never meets the side
+      return hitAt<T>(Vec3T<T>(p / rho));
     }
     case Kind::Ray: {
       const Vec3T<T>& d = probe.direction;
-      if (isZero(d)) return std::nullopt;  // no direction (a zero normal): not a ray, even from the side
+      if (isZero(d)) return noHit<T>(kCornerMiss);  // no direction (a zero normal): not a ray, even from the side
       const T radial2 = p.x() * p.x() + p.y() * p.y();
       const std::optional<T> t =
           firstNonNegativeRoot(d.x() * d.x() + d.y() * d.y(), T(2) * (p.x() * d.x() + p.y() * d.y()), radial2 - T(1),
                                std::max(T(1), radial2));
-      if (!t) return std::nullopt;
-      return Vec3T<T>(p + *t * d);
+      if (!t) return noHit<T>(kCornerMiss);  // no root, or both behind: a miss (§4)
+      return hitAt<T>(Vec3T<T>(p + *t * d));
     }
   }
-  return std::nullopt;
+  return noHit<T>(kCornerMiss);
 }
 
 template <class T>
-std::optional<Vec3T<T>> SphereSurfaceT<T>::resolve(const ProbeT<T>& probe) const {
+HitT<T> SphereSurfaceT<T>::resolve(const ProbeT<T>& probe) const {
   using Kind = typename ProbeT<T>::Kind;
   const Vec3T<T>& p = probe.point;
   switch (probe.kind) {
     case Kind::Foot:
     case Kind::Central:  // radial: the hit point is p/|p|, and (u, v) ignore the scale
-      if (isZero(p)) return std::nullopt;
-      return p;
+      if (isZero(p)) return noHit<T>(kCornerMiss);
+      return sameUvAs<T>(p);
     case Kind::Ray: {
       const Vec3T<T>& d = probe.direction;
-      if (isZero(d)) return std::nullopt;  // no direction (a zero normal): not a ray, even from the surface
+      if (isZero(d)) return noHit<T>(kCornerMiss);  // no direction (a zero normal): not a ray, even from the surface
       const T p2 = p.squaredNorm();
       const std::optional<T> t = firstNonNegativeRoot(d.squaredNorm(), T(2) * p.dot(d), p2 - T(1), std::max(T(1), p2));
-      if (!t) return std::nullopt;
-      return Vec3T<T>(p + *t * d);
+      if (!t) return noHit<T>(kCornerMiss);  // no root, or both behind: a miss (§4)
+      return hitAt<T>(Vec3T<T>(p + *t * d));
     }
   }
-  return std::nullopt;
+  return noHit<T>(kCornerMiss);
 }
 
 }  // namespace uvtk::param

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "param/formulas.h"
+#include "param/surfaces.h"
 #include "texgen/texgen.h"
 
 namespace uvtk::point {
@@ -16,15 +17,27 @@ namespace {
 
 Vec3 toVec3(const Vector3& v) { return {v[0], v[1], v[2]}; }
 
-// Why a projector found no value at a finite point (docs/conventions.md §4).
-const char* missReason(const param::ProjectorOptions& o) {
+// Why a projector found no value at a finite point (docs/conventions.md §4): the reason the
+// mapping carried, and for a miss which miss the options make it.
+const char* missReason(const param::ProjectorOptions& o, CornerInvalid reason) {
   using param::RayKind;
+  static_assert(param::kSensibleRange == 2.0, "the out-of-range text below names the factor");
+  switch (reason) {
+    case kCornerBehind:
+      return o.surface == SurfaceKind::Cube ? "the ray meets the cube face's plane only behind the point"
+                                            : "the ray meets the plane only behind the point";
+    case kCornerOutOfRange:
+      return "the hit lies beyond 2 times the fitted extent";
+    case kCornerNotFinite:
+      return "the result is not finite";
+    default:
+      break;
+  }
   if (o.ray == RayKind::Centroid || (o.ray == RayKind::Reflection && o.atInfinity))
     return o.surface == SurfaceKind::Cylinder ? "the central ray runs along the cylinder's axis"
            : o.surface == SurfaceKind::Sphere ? "the point is the sphere's centre"
                                               : "the central ray points away from the surface";
-  if (o.ray == RayKind::SurfaceNormal)
-    return o.surface == SurfaceKind::Sphere ? "the point is the sphere's centre" : "the result is not finite";
+  if (o.ray == RayKind::SurfaceNormal) return "the point is the sphere's centre";  // isn misses nothing else
   switch (o.surface) {
     case SurfaceKind::Plane:
     case SurfaceKind::TwoPlane:
@@ -34,7 +47,7 @@ const char* missReason(const param::ProjectorOptions& o) {
     case SurfaceKind::Sphere:
       return "the ray misses the sphere";
     case SurfaceKind::Cube:
-      return "the ray is parallel to the cube face's plane";
+      return "the ray misses the cube, or is parallel to its face's plane";
   }
   return "the ray misses the surface";
 }
@@ -58,7 +71,7 @@ Affine3 placementFor(const param::ProjectorOptions& o, const std::vector<Vec3>& 
 }
 
 PointEvaluator::PointEvaluator(const cli::ResolvedMapping& mapping, const Affine3& localFromObject,
-                               std::string description)
+                               std::string description, const std::optional<Eigen::AlignedBox3d>& sensible)
     : description_(std::move(description)) {
   if (mapping.texgen) {
     texgen_ = mapping.texgen;
@@ -72,9 +85,9 @@ PointEvaluator::PointEvaluator(const cli::ResolvedMapping& mapping, const Affine
   param::ProjectorOptions raw = *projector_;
   raw.uvTransform = param::UvTransform{};
   raw.cubeLayout = CubeLayout::Faces;
-  raw_.emplace(raw, localFromObject);
+  raw_.emplace(raw, localFromObject, sensible);
   needsNormal_ = raw_->needsNormal() || projector_->cylinderCaps;
-  normalToLocal = localFromObject.linear().inverse().transpose();
+  if (raw.surface == SurfaceKind::Cylinder && raw.cylinderCaps) caps_.emplace(localFromObject, raw.capAngleDegrees);
   if (raw_->wrapsU()) period_ = projector_->uvTransform.apply(Vec2(1, 0)) - projector_->uvTransform.apply(Vec2(0, 0));
 }
 
@@ -95,12 +108,9 @@ Result PointEvaluator::at(const Vector3& position, const Vector3& normal) const 
 
 Result PointEvaluator::projectorAt(const Vec3& p, const Vec3& n, Result out) const {
   const param::ProjectorOptions& o = *projector_;
-  // A cylinder cap takes faces whose normal lies within the cap angle of the axis (project()).
-  const Vec3 localNormal = normalToLocal * n;
-  const bool cap = o.surface == SurfaceKind::Cylinder && o.cylinderCaps && localNormal.norm() > 0.0 &&
-                   std::fabs(localNormal.z()) >= std::cos(o.capAngleDegrees * (kPi / 180.0)) * localNormal.norm();
+  const bool cap = caps_ && caps_->isCap(n);  // as project() decides it
   const param::VertexUv raw = raw_->at(p, n, cap);
-  if (raw.state == CornerState::Invalid) return invalid(out, missReason(o));
+  if (raw.state == CornerState::Invalid) return invalid(out, missReason(o, raw.reason));
   Vec2 uv = raw.uv;
   out.status = Status::Ok;
   if (raw.state == CornerState::Pole) {
@@ -114,7 +124,7 @@ Result PointEvaluator::projectorAt(const Vec3& p, const Vec3& n, Result out) con
     }
   } else if (o.surface == SurfaceKind::Cube) {
     const std::optional<CubeFace> face = raw_->cubeFaceAt(p, n);
-    if (!face) return invalid(out, missReason(o));
+    if (!face) return invalid(out, missReason(o, kCornerMiss));
     if (uv.x() == 0.0 || uv.x() == 1.0 || uv.y() == 0.0 || uv.y() == 1.0) {
       out.status = Status::OnSeam;
       out.reason = "on an edge of the cube: the face follows the tie rule (x before y before z)";

@@ -15,8 +15,11 @@ namespace uvtk::point {
 class PointEvaluator {
  public:
   // `localFromObject` is the projector's placement (fitPlacement); texgen ignores it. `description`
-  // names the mapping in every Result (Result::mapping). Throws UsageError like project().
-  PointEvaluator(const cli::ResolvedMapping& mapping, const Affine3& localFromObject, std::string description);
+  // names the mapping in every Result (Result::mapping). `sensible` (param::sensibleBox of the mesh)
+  // enables the range rule: hits beyond it are invalid; without it there is no range check.
+  // Throws UsageError like project().
+  PointEvaluator(const cli::ResolvedMapping& mapping, const Affine3& localFromObject, std::string description,
+                 const std::optional<Eigen::AlignedBox3d>& sensible = std::nullopt);
 
   Result at(const Vector3& position, const Vector3& normal) const noexcept;
   bool needsNormal() const { return needsNormal_; }
@@ -28,7 +31,7 @@ class PointEvaluator {
 
   std::optional<param::ProjectorOptions> projector_;
   std::optional<param::PointMapping> raw_;  // without the UV transform, cube faces unlaid: seams are visible
-  Mat3 normalToLocal = Mat3::Identity();    // for the cylinder's cap test
+  std::optional<param::CylinderCaps> caps_;  // with --caps on the cylinder
   std::optional<texgen::TexgenOptions> texgen_;
   Vec2 period_ = Vec2::Zero();
   std::string description_;

@@ -27,7 +27,7 @@ ProjectorOptions optionsFor(SurfaceKind surface, RayKind ray = RayKind::SurfaceN
 
 std::size_t invalidCorners(const UvMap& uv) {
   std::size_t n = 0;
-  for (auto c : uv.cornerInvalid) n += c;
+  for (auto c : uv.cornerInvalid) n += c != kCornerValid;
   return n;
 }
 
@@ -364,7 +364,8 @@ TEST(Project, AUvTransformThatOverflowsFlagsTheCornersInvalidInsteadOfWritingInf
   mesh.triangles = {{0, 1, 2}};
   const Projection p = project(mesh, o);
   EXPECT_EQ(p.uv.uv[1], Vec2::Zero());
-  EXPECT_EQ(p.uv.cornerInvalid[1], 1);
+  EXPECT_EQ(p.uv.cornerInvalid[1], kCornerNotFinite);
+  EXPECT_EQ(p.summary.invalidCorners[kCornerNotFinite], 1u);
   EXPECT_TRUE(p.uv.faceHas(0, kFaceInvalid));
   EXPECT_EQ(p.summary.invalidVertexList, std::vector<int>{1});
   EXPECT_EQ(p.uv.uv[2], Vec2(0, 1));

@@ -39,8 +39,35 @@ TEST(PlaneSurface, ResolvesEveryProbeKind) {
   EXPECT_FALSE(plane.resolve(central({2, 4, -1})));
   // t = -pz/nz = -4/-2 = 2: (1 + 2, 1 + 0, 0)
   EXPECT_EQ(*plane.resolve(ray({1, 1, 4}, {1, 0, -2})), Vec3(3, 1, 0));
-  EXPECT_FALSE(plane.resolve(ray({1, 1, 4}, {1, 0, 0})));
+  EXPECT_EQ(plane.resolve(ray({1, 1, 4}, {1, 0, 0})).reason, kCornerMiss);  // parallel
   EXPECT_EQ(plane.uvAt({0.25, 0.5, 0}), Vec2(0.25, 0.5));
+}
+
+// A ray is not its line: the crossing at t = -pz/nz < 0 lies behind the point (§4).
+TEST(PlaneSurface, ARayWhoseLineCrossesOnlyBehindItsOriginIsBehind) {
+  const PlaneSurface plane;
+  // from z = 4 heading up: the line meets z = 0 at t = -2
+  EXPECT_EQ(plane.resolve(ray({1, 1, 4}, {1, 0, 2})).reason, kCornerBehind);
+  EXPECT_EQ(plane.resolve(ray({1, 1, -4}, {0, 0, -1})).reason, kCornerBehind);
+  // an origin on the plane to rounding hits at itself, whichever way the ray points
+  EXPECT_EQ(*plane.resolve(ray({1, 1, 1e-17}, {0, 0, 1})), Vec3(1, 1, 0));
+  const TwoPlaneSurface two(Vec4(1, 0, 0, 0), Vec4(0, 1, 0, 0));
+  EXPECT_EQ(two.resolve(ray({1, 1, 4}, {1, 0, 2})).reason, kCornerBehind);
+}
+
+// B = [0, 2]^3: centre 1, largest half-extent 1, reach kSensibleRange = 2: |q - 1| <= 2 per coordinate.
+TEST(SensibleRange, AHitIsOutOfRangeBeyondTwiceTheLargestHalfExtentFromTheCentre) {
+  const SensibleRangeT<double> range(Eigen::AlignedBox3d(Vec3(0, 0, 0), Vec3(2, 2, 2)));
+  EXPECT_EQ(range.reach, 2.0);
+  EXPECT_TRUE(range.contains(Vec3(3, -1, 1)));
+  EXPECT_FALSE(range.contains(Vec3(3.0000001, 1, 1)));
+  EXPECT_FALSE(range.contains(Vec3(1, 1, -1.0000001)));
+  EXPECT_EQ(judgeHit(hitAt<double>(Vec3(4, 1, 1)), range), kCornerOutOfRange);
+  EXPECT_EQ(judgeHit(sameUvAs<double>(Vec3(4, 1, 1)), range), kCornerValid);  // radial: scale-free
+  EXPECT_EQ(judgeHit(hitAt<double>(Vec3(INFINITY, 1, 1)), range), kCornerNotFinite);
+  EXPECT_EQ(judgeHit(noHit<double>(kCornerBehind), range), kCornerBehind);
+  // without a box there is no range check
+  EXPECT_EQ(judgeHit(hitAt<double>(Vec3(1e300, 1, 1)), SensibleRangeT<double>()), kCornerValid);
 }
 
 TEST(TwoPlaneSurface, GivesTrueSignedDistances) {
@@ -75,9 +102,9 @@ TEST(CylinderSurface, ResolvesEveryProbeKind) {
   EXPECT_TRUE(c.resolve(ray({0.5, 0, 0.2}, {1, 0, 0}))->isApprox(Vec3(1, 0, 0.2)));
   // from outside heading in: enters at x = 1 (t = 1)
   EXPECT_TRUE(c.resolve(ray({2, 0, 0}, {-1, 0, 0.5}))->isApprox(Vec3(1, 0, 0.5)));
-  // from outside heading away, or parallel to the axis: misses
-  EXPECT_FALSE(c.resolve(ray({2, 0, 0}, {1, 0, 0})));
-  EXPECT_FALSE(c.resolve(ray({2, 0, 0}, {0, 0, 1})));
+  // from outside heading away (its line meets the side only behind), or parallel to the axis: misses
+  EXPECT_EQ(c.resolve(ray({2, 0, 0}, {1, 0, 0})).reason, kCornerMiss);
+  EXPECT_EQ(c.resolve(ray({2, 0, 0}, {0, 0, 1})).reason, kCornerMiss);
 }
 
 TEST(SphereSurface, ResolvesEveryProbeKind) {
@@ -87,7 +114,8 @@ TEST(SphereSurface, ResolvesEveryProbeKind) {
   EXPECT_FALSE(s.resolve(central({0, 0, 0})));
   EXPECT_TRUE(s.resolve(ray({0, 0, 0}, {0, 2, 0}))->isApprox(Vec3(0, 1, 0)));
   EXPECT_TRUE(s.resolve(ray({0, -3, 0}, {0, 1, 0}))->isApprox(Vec3(0, -1, 0)));
-  EXPECT_FALSE(s.resolve(ray({0, -3, 0}, {1, 0, 0})));
+  EXPECT_EQ(s.resolve(ray({0, -3, 0}, {1, 0, 0})).reason, kCornerMiss);
+  EXPECT_EQ(s.resolve(ray({0, -3, 0}, {0, -1, 0})).reason, kCornerMiss);  // only its line meets it, behind
   // a ray tangent to the sphere touches it once
   EXPECT_TRUE(s.resolve(ray({-2, 1, 0}, {1, 0, 0}))->isApprox(Vec3(0, 1, 0), 1e-8));
 }
@@ -104,14 +132,18 @@ TEST(CubeSurface, ChoosesFacesPerProbeKind) {
 
 TEST(CubeSurface, ProjectsCornersOntoTheChosenFacePlane) {
   const CubeSurface cube;
+  const auto st = [&](const Probe& probe, CubeFace f) { return cube.faceSt(*cube.projectOnFace(probe, f), f); };
   // Foot: orthographic, (sc + 1)/2 of the point itself; +Z: sc = x, tc = -y
-  EXPECT_TRUE(cube.projectOnFace(foot({0.5, 0.5, 0.2}), CubeFace::PosZ)->isApprox(Vec2(0.75, 0.25)));
+  EXPECT_EQ(*cube.projectOnFace(foot({0.5, 0.5, 0.2}), CubeFace::PosZ), Vec3(0.5, 0.5, 1));
+  EXPECT_TRUE(st(foot({0.5, 0.5, 0.2}), CubeFace::PosZ).isApprox(Vec2(0.75, 0.25)));
   // Central: divided by the face axis component
-  EXPECT_TRUE(cube.projectOnFace(central({0.25, 0.25, 0.5}), CubeFace::PosZ)->isApprox(Vec2(0.75, 0.25)));
-  EXPECT_FALSE(cube.projectOnFace(central({0.25, 0.25, -0.5}), CubeFace::PosZ));
+  EXPECT_TRUE(st(central({0.25, 0.25, 0.5}), CubeFace::PosZ).isApprox(Vec2(0.75, 0.25)));
+  EXPECT_EQ(cube.projectOnFace(central({0.25, 0.25, -0.5}), CubeFace::PosZ).reason, kCornerMiss);
   // Ray from the origin along (0.5, 0.5, 1) meets z = 1 at (0.5, 0.5)
-  EXPECT_TRUE(cube.projectOnFace(ray({0, 0, 0}, {0.5, 0.5, 1}), CubeFace::PosZ)->isApprox(Vec2(0.75, 0.25)));
-  EXPECT_FALSE(cube.projectOnFace(ray({0, 0, 0}, {1, 0, 0}), CubeFace::PosZ));
+  EXPECT_TRUE(st(ray({0, 0, 0}, {0.5, 0.5, 1}), CubeFace::PosZ).isApprox(Vec2(0.75, 0.25)));
+  EXPECT_EQ(cube.projectOnFace(ray({0, 0, 0}, {1, 0, 0}), CubeFace::PosZ).reason, kCornerMiss);  // parallel
+  // heading away from z = 1: its line meets the plane at t = -1 only
+  EXPECT_EQ(cube.projectOnFace(ray({0, 0, 0}, {0, 0, -1}), CubeFace::PosZ).reason, kCornerBehind);
 }
 
 TEST(ReflectionRay, MirrorsTheViewAboutTheNormal) {
