@@ -7,7 +7,8 @@
 
 namespace uvtk::analysis {
 
-Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDistortion>& faces, int overlapResolution) {
+Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDistortion>& faces, int overlapResolution,
+                  const std::vector<int>* poleVertices) {
   UVTK_CHECK(faces.size() == mesh.triangles.size() && uv.uv.size() == 3 * faces.size() &&
              uv.faceFlags.size() == faces.size());
   Summary s;
@@ -40,7 +41,8 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
   s.l2Stretches = weightedStatistics(l2, weights, BinSpacing::Log2);
   s.linfStretches = weightedStatistics(linf, weights, BinSpacing::Log2);
 
-  s.poleVertices = fannedPoleVertices(mesh, uv);
+  s.poleVertices = poleVertices ? *poleVertices : fannedPoleVertices(mesh, uv);
+  std::sort(s.poleVertices.begin(), s.poleVertices.end());
   s.seams = classifySeamEdges(mesh, uv, s.poleVertices);
   for (std::size_t corner = 0; corner < uv.uv.size(); ++corner)
     if (uv.cornerInvalid.empty() || uv.cornerInvalid[corner] == 0) s.uvBounds.extend(uv.uv[corner]);

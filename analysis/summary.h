@@ -38,15 +38,17 @@ struct Summary {
   // as the mesh values are (a face at 1 is stretched like an isometric layout of the same area).
   // Ratios get log2-spaced bins (angle, L2, Linf); area distortion, already a log2, linear bins.
   Statistics angleDistortion, areaDistortion, l2Stretches, linfStretches;
-  SeamEdges seams;                 // classifySeamEdges with the fanned pole vertices
+  SeamEdges seams;                 // classifySeamEdges with the pole vertices
   std::size_t poleFaces = 0;       // faces flagged kFacePole, whatever their status
-  std::vector<int> poleVertices;   // fannedPoleVertices
+  std::vector<int> poleVertices;   // the given pole vertices, or fannedPoleVertices
   Eigen::AlignedBox2d uvBounds;    // over every valid corner; empty when there is none
   Overlap overlap;
 };
 
-// The report for `faces` = measureFaces(mesh, uv, ...). Preconditions: matching sizes.
+// The report for `faces` = measureFaces(mesh, uv, ...). `poleVertices`: the source's own pole
+// vertices (a projector knows them); null: the fanned poles found in the UVs (fannedPoleVertices).
+// Preconditions: matching sizes.
 Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDistortion>& faces,
-                  int overlapResolution = 1024);
+                  int overlapResolution = 1024, const std::vector<int>* poleVertices = nullptr);
 
 }  // namespace uvtk::analysis

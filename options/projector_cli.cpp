@@ -38,7 +38,10 @@ const std::vector<std::pair<std::string, SeamMode>> kSeamNames = {
     {"none", SeamMode::None}, {"shift", SeamMode::Shift}, {"cut", SeamMode::Cut}};
 const std::vector<std::pair<std::string, PoleMode>> kPoleNames = {{"none", PoleMode::None}, {"fan", PoleMode::Fan}};
 const std::vector<std::pair<std::string, Convention>> kConventionNames = {
-    {"uvtk", Convention::Uvtk}, {"blender", Convention::Blender}, {"assimp", Convention::Assimp}};
+    {"uvtk", Convention::Uvtk},
+    {"blender", Convention::Blender},
+    {"assimp", Convention::Assimp},
+    {"notes", Convention::Notes}};
 
 // The options a convention sets; giving one of them as well is a usage error.
 const char* const kConventionOwnedOptions[] = {"--fit",       "--axis",       "--axis-dir",      "--ref-dir",
@@ -72,6 +75,17 @@ void applyConvention(Convention convention, ProjectorOptions& o) {
       o.placement.fit = Fit::BBox;
       o.placement.axis = 1;
       o.placement.turnDegrees = 180.0;
+      return;
+    case Convention::Notes:
+      if (o.surface != SurfaceKind::Cube && o.surface != SurfaceKind::Sphere)
+        throw UsageError("--convention notes: expected --projector cube or sphere");
+      // The notes work on a vector in object coordinates: no fit, the object's origin and axes.
+      // The cube: the face of the major axis, (s, t) from the remaining coordinates in x, y, z
+      // order ("direct"); the sphere: s = atan2(y, x)/(2 pi), t = acos(z)/pi (seed004). The ray
+      // (centroid unless --omap is given) and the cube layout (faces by default) are set by the caller.
+      o.placement.fit = Fit::None;
+      o.cubeConvention = CubeConvention::Direct;
+      o.spherePreset = SpherePreset::Seed004;
       return;
   }
 }
@@ -145,7 +159,9 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEy
   addChoice<Convention>(
       app, "--convention", a.convention, kConventionNames,
       "Another tool's sphere or cylinder projector: blender (uv.sphere_project, cylinder_project, "
-      "align to object), assimp (aiProcess_GenUVCoords); it sets the placement, seam and UV transform")
+      "align to object), assimp (aiProcess_GenUVCoords); or notes: the lecture notes' cube (direct convention) "
+      "and sphere (seed004) in object coordinates with the centroid ray; it sets the placement, seam and UV "
+      "transform")
       ->default_str("uvtk");
 }
 
@@ -155,6 +171,7 @@ ProjectorOptions ProjectorArguments::resolve() const {
   if (convention != Convention::Uvtk) {
     std::vector<const char*> owned(std::begin(kConventionOwnedOptions), std::end(kConventionOwnedOptions));
     if (convention != Convention::Blender) owned.push_back(centerOption);  // Blender's pivot may be anywhere
+    if (convention == Convention::Notes) owned.push_back("--cube-convention");
     for (const char* name : owned)
       if (given(app, name))
         throw UsageError("--convention " + conventionName(convention) +
@@ -190,6 +207,9 @@ ProjectorOptions ProjectorArguments::resolve() const {
   o.uvTransform.offset = parseVec2(uvOffset, "--uv-offset");
   if (!std::isfinite(o.uvTransform.rotateDegrees)) throw UsageError("--uv-rotate: expected a finite number");
   applyConvention(convention, o);
+  // The notes' vector is a direction from the origin (the cube's worked example selects its face
+  // by it): the centroid ray, unless another O-mapping (e.g. reflection) is asked for.
+  if (convention == Convention::Notes && !given(app, "--omap")) o.ray = RayKind::Centroid;
   if (convention == Convention::Blender && given(app, centerOption)) {
     ExplicitFrame pivot;  // the pivot Blender's 3D view used (Median Point: the mean of the face centroids)
     pivot.center = parseVec3(center, centerOption);

@@ -15,6 +15,7 @@ enum class Convention {
   Uvtk,
   Blender,  // uv.sphere_project / uv.cylinder_project, ALIGN_TO_OBJECT, POLAR_ZX
   Assimp,   // aiProcess_GenUVCoords with its default axis +y
+  Notes,    // the lecture notes' worked examples (the seeds): cube direct, sphere seed004, object frame
 };
 
 // The raw option values as typed; resolve() turns them into ProjectorOptions.

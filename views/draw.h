@@ -7,10 +7,11 @@
 
 namespace uvtk::views {
 
-Image drawTextured(View view, const ViewInput& in, const ViewOptions& options);  // checker, uvgrid
-Image drawHeatmap(View view, const ViewInput& in, const ViewOptions& options);   // stretch, linf, angle, area
-Image drawSeams(const ViewInput& in, const ViewOptions& options);
-Image drawUvError(const ViewInput& in, const ViewOptions& options);
-Image drawLayout(const ViewInput& in, const ViewOptions& options);
+// Each returns the picture without its legend strip, and the legend drawView puts below it.
+DrawnView drawTextured(View view, const ViewInput& in, const ViewOptions& options);  // checker, uvgrid
+DrawnView drawHeatmap(View view, const ViewInput& in, const ViewOptions& options);   // stretch, linf, angle, area
+DrawnView drawSeams(const ViewInput& in, const ViewOptions& options);
+DrawnView drawUvError(const ViewInput& in, const ViewOptions& options);
+DrawnView drawLayout(const ViewInput& in, const ViewOptions& options);
 
 }  // namespace uvtk::views

@@ -7,11 +7,11 @@
 
 namespace uvtk::views {
 
-Image drawHeatmap(View view, const ViewInput& in, const ViewOptions& options) {
-  UVTK_CHECK(in.faces && in.summary);
-  const FaceColouring colouring = colourByMeasure(view, *in.faces, *in.summary);
+DrawnView drawHeatmap(View view, const ViewInput& in, const ViewOptions& options) {
+  UVTK_CHECK(in.judgement);
+  const FaceColouring colouring = colourByMeasure(view, *in.judgement);
   const Scene scene = rasterizeScene(*in.mesh, options.render);
-  return withLegend(shadeFaces(scene, colouring.colours, options.render.background), colouring.legend);
+  return {shadeFaces(scene, colouring.colours, options.render.background), colouring.legend};
 }
 
 }  // namespace uvtk::views

@@ -38,8 +38,9 @@ Vec2 layoutImagePoint(const analysis::UvGrid& grid, const Vec2& uv) {
   return Vec2(relative.x(), 1.0 - relative.y()) * grid.resolution;
 }
 
-Image drawLayout(const ViewInput& in, const ViewOptions& options) {
-  UVTK_CHECK(in.faces && in.summary);
+DrawnView drawLayout(const ViewInput& in, const ViewOptions& options) {
+  UVTK_CHECK(in.judgement);
+  const analysis::Judgement& judgement = *in.judgement;
   if (!isMeasure(options.layoutFill))
     throw UsageError(std::string("layout: expected a fill of stretch, linf, angle or area, found '") +
                      toString(options.layoutFill) + "'");
@@ -47,22 +48,19 @@ Image drawLayout(const ViewInput& in, const ViewOptions& options) {
     throw UsageError("layout: expected a size in " + std::to_string(kMinSize) + ".." + std::to_string(kMaxSize) +
                      ", found " + std::to_string(options.layoutSize));
   const UvMap& uv = *in.uv;
-  const FaceColouring colouring = colourByMeasure(options.layoutFill, *in.faces, *in.summary);
-  const analysis::UvGrid grid = layoutGrid(in.summary->uvBounds, options.layoutSize);
+  const FaceColouring colouring = colourByMeasure(options.layoutFill, judgement);
+  const analysis::UvGrid grid = layoutGrid(judgement.summary.uvBounds, options.layoutSize);
   const int n = grid.resolution;
 
   Image image(n, n, 3);
   fillRect(image, 0, 0, n, n, kLayoutBackground);
   // Painter's order: where faces overlap the later one shows, and the hatching says so.
-  analysis::forEachCoveredPixel(uv, *in.faces, grid,
+  analysis::forEachCoveredPixel(uv, judgement.faces, grid,
                                 [&](std::size_t face, int x, int y) { setPixel(image, x, n - 1 - y, colouring.colours[face]); });
-  const std::vector<std::uint8_t> counts = analysis::coverageCounts(uv, *in.faces, grid);
-  std::size_t twice = 0, more = 0;
+  const std::vector<std::uint8_t> counts = analysis::coverageCounts(uv, judgement.faces, grid);
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
       const int count = counts[std::size_t(y) * std::size_t(n) + std::size_t(x)];
-      twice += count == 2;
-      more += count >= 3;
       if (std::optional<Vec3> hatch = overlapHatch(count, x, n - 1 - y)) setPixel(image, x, n - 1 - y, *hatch);
     }
 
@@ -71,7 +69,7 @@ Image drawLayout(const ViewInput& in, const ViewOptions& options) {
     drawSegment(image, layoutImagePoint(grid, square[k]), layoutImagePoint(grid, square[(k + 1) % 4]), kFrameWidth, kFrameColour);
 
   // Each seam edge on both of its faces' sides.
-  const SeamMarks seams = seamMarks(*in.mesh, uv, in.poleVertices);
+  const SeamMarks seams = seamMarks(*in.mesh, uv, judgement.summary.poleVertices);
   for (const analysis::SeamEdge& edge : seams.edges)
     for (int side = 0; side < 2; ++side)
       drawSegment(image, layoutImagePoint(grid, uv.uv[edge.cornerA[side]]), layoutImagePoint(grid, uv.uv[edge.cornerB[side]]),
@@ -81,11 +79,13 @@ Image drawLayout(const ViewInput& in, const ViewOptions& options) {
   const Eigen::AlignedBox2d& shown = grid.bounds;
   legend.title.insert(legend.title.begin(), "UV LAYOUT, U " + range(shown.min().x(), shown.max().x()) + "  V " +
                                                 range(shown.min().y(), shown.max().y()));
-  legend.entries.push_back({kLayoutBackground, "covered twice: " + std::to_string(twice) + " pixels", 2});
-  legend.entries.push_back({kLayoutBackground, "covered 3+ times: " + std::to_string(more) + " pixels", 3});
-  for (const LegendEntry& entry : seams.legendEntries()) legend.entries.push_back(entry);
+  // The hatching is drawn at this picture's resolution; the numbers are the judgement's.
+  const analysis::Overlap& overlap = judgement.summary.overlap;
+  legend.entries.push_back({kLayoutBackground, "overlap: " + overlapText(overlap), 2});
+  legend.entries.push_back({kLayoutBackground, "faces overlapping: " + std::to_string(judgement.overlappedFaces), 3});
+  for (const LegendEntry& entry : seamLegendEntries(judgement.summary.seams)) legend.entries.push_back(entry);
   legend.entries.push_back({kFrameColour, "frame: the unit square"});
-  return withLegend(image, legend);
+  return {image, legend};
 }
 
 }  // namespace uvtk::views

@@ -112,6 +112,14 @@ BarPlacement barPlacement(const Legend& legend, int viewHeight) {
   return {kLegendPadding, viewHeight + kLegendPadding + int(legend.title.size()) * (lineHeight() + kLegendLineGap)};
 }
 
+std::vector<std::string> Legend::lines() const {
+  std::vector<std::string> out = title;
+  if (bar)
+    for (const Tick& tick : bar->ticks) out.push_back(tick.label);
+  for (const LegendEntry& entry : entries) out.push_back(entry.label);
+  return out;
+}
+
 Image withLegend(const Image& view, const Legend& legend) {
   UVTK_CHECK(view.channels == 3);
   const auto [width, height] = paintLegend(legend, view.height, nullptr);

@@ -50,6 +50,10 @@ struct Legend {
   std::vector<std::string> title;  // one line each
   std::optional<ColourBar> bar;
   std::vector<LegendEntry> entries;
+  bool empty() const { return title.empty() && !bar && entries.empty(); }
+  // Its text: the title lines, the bar's tick labels, the entries' labels (what `uvtk render
+  // --json` records, so that every number a legend shows can be checked against the JSON).
+  std::vector<std::string> lines() const;
 };
 
 // The legend's geometry. Text is render/font.h at scale 2 (14 pixels high); every block is

@@ -69,8 +69,9 @@ ColourScale measureScale(View measure, const std::vector<analysis::FaceDistortio
   return {Palette::Sequential, 1.0, std::max(statistics.p99, kMinTop), false};
 }
 
-FaceColouring colourByMeasure(View measure, const std::vector<analysis::FaceDistortion>& faces,
-                              const analysis::Summary& summary) {
+FaceColouring colourByMeasure(View measure, const analysis::Judgement& judgement) {
+  const std::vector<analysis::FaceDistortion>& faces = judgement.faces;
+  const analysis::Summary& summary = judgement.summary;
   const ColourScale scale = measureScale(measure, faces, summary);
   const analysis::AreaTotals totals = analysis::okAreaTotals(faces);
   FaceColouring out;

@@ -38,7 +38,6 @@ struct FaceColouring {
   std::vector<Vec3> colours;
   Legend legend;
 };
-FaceColouring colourByMeasure(View measure, const std::vector<analysis::FaceDistortion>& faces,
-                              const analysis::Summary& summary);
+FaceColouring colourByMeasure(View measure, const analysis::Judgement& judgement);
 
 }  // namespace uvtk::views

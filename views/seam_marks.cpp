@@ -1,13 +1,21 @@
 #include "views/seam_marks.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 namespace uvtk::views {
 
-std::vector<LegendEntry> SeamMarks::legendEntries() const {
-  return {{kWrapSeamColour, "wrap seam edges: " + std::to_string(wraps)},
-          {kCutColour, "cut edges: " + std::to_string(edges.size() - wraps)}};
+std::vector<LegendEntry> seamLegendEntries(const analysis::SeamEdges& counts) {
+  return {{kWrapSeamColour, "wrap seam edges: " + std::to_string(counts.wrapEdges)},
+          {kCutColour, "cut edges: " + std::to_string(counts.cutEdges)}};
+}
+
+std::string overlapText(const analysis::Overlap& overlap) {
+  char text[160];
+  std::snprintf(text, sizeof text, "%.3g %% of %zu covered pixels (%d x %d raster)", 100.0 * overlap.fraction(),
+                overlap.coveredPixels, overlap.resolution, overlap.resolution);
+  return text;
 }
 
 SeamMarks seamMarks(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices) {

@@ -2,8 +2,10 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
+#include "analysis/overlap.h"
 #include "analysis/seams.h"
 #include "core/mesh.h"
 #include "core/uv_map.h"
@@ -16,9 +18,13 @@ struct SeamMarks {
   std::size_t wraps = 0;                  // edges[0, wraps) are the wrap seams
 
   static Vec3 colour(const analysis::SeamEdge& edge) { return edge.wrap ? kWrapSeamColour : kCutColour; }
-  // "wrap seam edges: N" and "cut edges: N" in their colours.
-  std::vector<LegendEntry> legendEntries() const;
 };
+
+// "wrap seam edges: N" and "cut edges: N" in their colours, N from the judgement's summary.
+std::vector<LegendEntry> seamLegendEntries(const analysis::SeamEdges& counts);
+
+// "0.42 % of 123456 covered pixels (1024 x 1024 raster)": the judgement's overlap, as the JSON has it.
+std::string overlapText(const analysis::Overlap& overlap);
 
 // analysis::seamEdgeList(mesh, uv, poleVertices) in drawing order.
 SeamMarks seamMarks(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices);

@@ -76,7 +76,6 @@ bool inFront(const Mesh& mesh, const Scene& scene, int x, int row, double depth)
 
 // What the seams view marks a face as: the first that applies.
 enum class FaceMark { Invalid, PoleFace, Flipped, Straddle, Plain };
-constexpr std::size_t kFaceMarkCount = 5;
 
 FaceMark markOf(const analysis::FaceDistortion& face, const UvMap& uv, std::size_t f) {
   if (face.status == analysis::FaceStatus::Invalid) return FaceMark::Invalid;
@@ -99,23 +98,22 @@ Vec3 colourOf(FaceMark mark) {
 
 }  // namespace
 
-Image drawSeams(const ViewInput& in, const ViewOptions& options) {
-  UVTK_CHECK(in.faces && in.faces->size() == in.mesh->faceCount());
+DrawnView drawSeams(const ViewInput& in, const ViewOptions& options) {
+  UVTK_CHECK(in.judgement && in.judgement->faces.size() == in.mesh->faceCount());
+  const analysis::Judgement& judgement = *in.judgement;
   const Mesh& mesh = *in.mesh;
   const Scene scene = rasterizeScene(mesh, options.render);
   const int width = scene.visible.width, height = scene.visible.height;
 
-  std::array<std::size_t, kFaceMarkCount> marked{};  // faces per FaceMark
   std::vector<Vec3> colours;
   colours.reserve(mesh.faceCount());
   for (std::size_t f = 0; f < mesh.faceCount(); ++f) {
-    const FaceMark mark = markOf((*in.faces)[f], *in.uv, f);
-    ++marked[std::size_t(mark)];
-    colours.push_back(colourOf(mark));
+    colours.push_back(colourOf(markOf(judgement.faces[f], *in.uv, f)));
   }
   Image image = shadeFaces(scene, colours, options.render.background);
 
-  const SeamMarks seams = seamMarks(mesh, *in.uv, in.poleVertices);
+  const std::vector<int>& poleVertices = judgement.summary.poleVertices;
+  const SeamMarks seams = seamMarks(mesh, *in.uv, poleVertices);
   for (const analysis::SeamEdge& edge : seams.edges) {
     const auto clipped = clipSegment(scene.clip[std::size_t(edge.a)], scene.clip[std::size_t(edge.b)]);
     if (!clipped) continue;
@@ -126,7 +124,7 @@ Image drawSeams(const ViewInput& in, const ViewOptions& options) {
     });
   }
 
-  for (int v : in.poleVertices) {
+  for (int v : poleVertices) {
     UVTK_CHECK(v >= 0 && std::size_t(v) < mesh.vertexCount());
     const Vec4& c = scene.clip[std::size_t(v)];
     if (!insideViewVolume(c)) continue;
@@ -138,15 +136,18 @@ Image drawSeams(const ViewInput& in, const ViewOptions& options) {
   auto count = [](const char* what, std::size_t n) { return std::string(what) + ": " + std::to_string(n); };
   Legend legend;
   legend.title = {"SEAMS AND POLES"};
-  legend.entries = seams.legendEntries();
+  // The counts are the judgement's (a face both flipped and straddling is drawn flipped and
+  // counted in both), so that the legend equals `uvtk map --json` and `uvtk report`.
+  using analysis::FaceStatus;
+  legend.entries = seamLegendEntries(judgement.summary.seams);
   legend.entries.insert(legend.entries.end(), {
-      {kStraddleColour, count("seam-straddling faces", marked[std::size_t(FaceMark::Straddle)])},
-      {kPoleVertexColour, count("pole vertices", in.poleVertices.size())},
-      {colourOf(FaceMark::PoleFace), count("pole faces", marked[std::size_t(FaceMark::PoleFace)])},
-      {colourOf(FaceMark::Flipped), count("flipped faces", marked[std::size_t(FaceMark::Flipped)])},
-      {colourOf(FaceMark::Invalid), count("invalid faces", marked[std::size_t(FaceMark::Invalid)])},
+      {kStraddleColour, count("seam-straddling faces", judgement.straddlingFaces)},
+      {kPoleVertexColour, count("pole vertices", poleVertices.size())},
+      {colourOf(FaceMark::PoleFace), count("pole faces", judgement.summary.poleFaces)},
+      {colourOf(FaceMark::Flipped), count("flipped faces", judgement.statusCount(FaceStatus::Flipped))},
+      {colourOf(FaceMark::Invalid), count("invalid faces", judgement.statusCount(FaceStatus::Invalid))},
   });
-  return withLegend(image, legend);
+  return {image, legend};
 }
 
 }  // namespace uvtk::views

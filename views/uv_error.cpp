@@ -102,7 +102,7 @@ UvErrorMap uvErrorMap(const ViewInput& in, const ViewOptions& options) {
   return map;
 }
 
-Image drawUvError(const ViewInput& in, const ViewOptions& options) {
+DrawnView drawUvError(const ViewInput& in, const ViewOptions& options) {
   const UvErrorMap map = uvErrorMap(in, options);
   // Decades from 1e-4 texels to the first power of ten at or above the largest error, at least one.
   int topDecade = kLowestDecade + 1;
@@ -131,7 +131,7 @@ Image drawUvError(const ViewInput& in, const ViewOptions& options) {
   legend.bar = bar;
   if (map.invalidPixels > 0)
     legend.entries.push_back({statusColour(analysis::FaceStatus::Invalid), "no value: " + std::to_string(map.invalidPixels) + " pixels"});
-  return withLegend(image, legend);
+  return {image, legend};
 }
 
 }  // namespace uvtk::views

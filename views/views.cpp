@@ -57,6 +57,11 @@ std::vector<View> parseViewList(const std::string& commaList) {
 bool needsExactMapping(View view) { return view == View::UvError; }
 
 Image drawView(View view, const ViewInput& in, const ViewOptions& options) {
+  const DrawnView drawn = drawViewAndLegend(view, in, options);
+  return drawn.legend.empty() ? drawn.image : withLegend(drawn.image, drawn.legend);
+}
+
+DrawnView drawViewAndLegend(View view, const ViewInput& in, const ViewOptions& options) {
   UVTK_CHECK(in.mesh && in.uv && in.uv->uv.size() == 3 * in.mesh->faceCount());
   switch (view) {
     case View::Checker:

@@ -12,11 +12,12 @@
 #include <vector>
 
 #include "analysis/distortion.h"
-#include "analysis/summary.h"
+#include "analysis/judgement.h"
 #include "core/image.h"
 #include "core/mesh.h"
 #include "core/uv_map.h"
 #include "render/renderer.h"
+#include "views/legend.h"
 
 namespace uvtk::views {
 
@@ -34,9 +35,9 @@ bool needsExactMapping(View view);
 struct ViewInput {
   const Mesh* mesh = nullptr;
   const UvMap* uv = nullptr;  // 3 corners per triangle, face flags (kFaceSeamStraddle, kFacePole, kFaceInvalid...)
-  const std::vector<analysis::FaceDistortion>* faces = nullptr;  // measureFaces(mesh, uv)
-  const analysis::Summary* summary = nullptr;                    // summarize(...)
-  std::vector<int> poleVertices;  // vertices drawn as poles (a projector's list or summary->poleVertices)
+  // The mapping's judgement (analysis/judgement.h): its per-face measures, summary, pole vertices
+  // and counts. Every number a legend shows is read from it, so that legends equal the JSON.
+  const analysis::Judgement* judgement = nullptr;
   bool wrapsU = false;            // u compared modulo 1 by uverror
   std::optional<render::PixelMapping> exact;  // the mapping evaluated per pixel; required by UvError (UsageError if missing)
   const std::vector<double>* q = nullptr;     // texgen's q per corner; none: 1
@@ -49,14 +50,22 @@ struct ViewOptions {
   render::RenderOptions render;
   View layoutFill = View::Stretch;  // measure that fills triangles in the layout view: Stretch, Linf, Angle or Area
   int layoutSize = 512;             // layout image is layoutSize x layoutSize (+ legend)
+  int checks = 16;                  // checker view: checks across the unit square, 1..1024 (UsageError outside)
 };
 
 // The view as a 3-channel RGB image in [0, 1], row 0 at the top. The camera views are
 // render.camera's width x height, with the legend in a strip below (docs/views.md).
-// Preconditions: mesh and uv set; faces for the heatmaps, seams and layout; summary for the
-// heatmaps and layout. Throws UsageError for uverror without `exact`, and for a layout fill
+// Preconditions: mesh and uv set; the judgement for the heatmaps, seams and layout. Throws UsageError for uverror without `exact`, and for a layout fill
 // that is not a measure or a layoutSize outside 16..16384.
 Image drawView(View view, const ViewInput& in, const ViewOptions& options);
+
+// A view before its legend strip is drawn, and that legend.
+struct DrawnView {
+  Image image;
+  Legend legend;
+};
+// drawView's picture and legend apart (drawView puts the legend in a strip below the picture).
+DrawnView drawViewAndLegend(View view, const ViewInput& in, const ViewOptions& options);
 
 // Per pixel, |uv_per_vertex - uv_exact| in texels of options.render.texture (W x H; 1024 x 1024
 // if none): sqrt((du W)^2 + (dv H)^2), du taken modulo 1 to [-0.5, 0.5] when wrapsU. One channel

@@ -273,10 +273,9 @@ std::vector<nlohmann::json> benchRendering(const BenchArguments& a, const Mesh& 
   }
 
   // The UV error of interpolation, once: it depends on neither filter nor threads.
-  const MappedMesh::Measures measures = mapped.measure();
   views::ViewOptions viewOptions;
   viewOptions.render = base;
-  const views::UvErrorMap uvError = views::uvErrorMap(mapped.viewInput(measures), viewOptions);
+  const views::UvErrorMap uvError = views::uvErrorMap(mapped.viewInput(nullptr), viewOptions);
 
   std::fprintf(stderr, "uvtk bench: timing %zu rendering configurations ...\n", cases.size());
   const CollectingReporter timings = runBenchmarks();

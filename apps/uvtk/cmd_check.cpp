@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "measures_json.h"
+#include "verdict_cli.h"
 #include "analysis/uv_check.h"
 #include "commands.h"
 #include "core/error.h"
@@ -43,6 +45,7 @@ struct CheckArguments {
   bool partial = false;
   MappingArguments mapping;
   std::vector<std::string> mappingOptions;  // every option addMappingOptions added
+  VerdictArguments verdict;                 // of the stored UVs as a layout (docs/conventions.md §11)
 };
 
 // The file's (u, v) per corner; a corner without vt is marked in cornerInvalid. Throws InputError
@@ -274,6 +277,10 @@ void runCheck(CheckArguments& a) {
   options.poleCorners = analysis::poleCornerMask(mesh, reference.poleVertices);
   options.worst = std::size_t(a.worst);
   const analysis::UvCheck check = analysis::checkUvs(reference.uv, found, options);
+  // The stored UVs judged as any layout: their flips, overlap and seams, whatever the reference says.
+  analysis::JudgementOptions judging;
+  judging.thresholds = a.verdict.thresholds();
+  const analysis::Judgement judgement = analysis::judge(mesh, found, judging);
   const Report report{mesh, reference, reference.uv, found, check, texels};
 
   const bool decided = a.tolerance.has_value();
@@ -311,7 +318,9 @@ void runCheck(CheckArguments& a) {
                                 {"list", invalid}}},
                               {"worst", worst},
                               {"tolerance", a.tolerance ? nlohmann::json(*a.tolerance) : nlohmann::json(nullptr)},
-                              {"status", status}};
+                              {"status", status},
+                              {"stored_uvs_verdict", analysis::toString(judgement.verdict)},
+                              {"stored_uvs_reasons", reasonsJson(judgement)}};
     io::writeFileAtomically(a.json, j.dump(2) + "\n");
   }
 
@@ -364,6 +373,7 @@ void runCheck(CheckArguments& a) {
   std::printf("worst %zu of %zu main corners:\n", check.worst.size(), check.main.count);
   for (std::size_t i = 0; i < check.worst.size(); ++i)
     std::printf("%s\n", cornerLine(report, i + 1, check.worst[i]).c_str());
+  std::printf("the stored UVs as a layout: %s\n", verdictLine(judgement).c_str());
   if (!decided)
     std::printf("uvtk check: no --tolerance given: report only\n");
   else if (pass)
@@ -371,7 +381,8 @@ void runCheck(CheckArguments& a) {
   else
     std::printf("uvtk check: FAIL (max error %.9g > tolerance %.9g)\n", check.main.max, *a.tolerance);
   std::fflush(stdout);
-  if (!pass) throw CheckFailure("the check failed");  // exit status 1 (2, 3, 4: usage, input, output errors)
+  if (!pass) throw CheckFailure("the check failed");
+  enforceVerdict(a.verdict, judgement.verdict, "uvtk check");  // exit status 1 (2, 3, 4: usage, input, output errors)
 }
 
 }  // namespace
@@ -409,6 +420,7 @@ void addCheckCommand(CLI::App& root) {
     if (std::find(before.begin(), before.end(), name) == before.end() && name != "--help")
       a->mappingOptions.push_back(name);
   }
+  addVerdictOptions(*cmd, a->verdict);
   cmd->callback([a] { runCheck(*a); });
 }
 

@@ -8,7 +8,9 @@
 #include "commands.h"
 #include "compare_cli.h"
 #include "io/mesh_reader.h"
+#include "core/error.h"
 #include "run_report.h"
+#include "verdict_cli.h"
 
 namespace uvtk::cli {
 
@@ -17,10 +19,13 @@ namespace {
 struct CompareCommandArguments {
   std::string input;
   CompareArguments compare;
+  VerdictArguments verdict;
 };
 
-void runCompare(const CompareCommandArguments& a) {
+void runCompare(CompareCommandArguments& a) {
   a.compare.check();
+  if (a.verdict.exitFrom()) throw UsageError("--fail-on: compare takes RULE=VALUE, not warn or fail");
+  a.compare.thresholds = a.verdict.thresholds();
   StageClock clock("uvtk compare");
   clock.start("reading", a.input);
   const io::ReadMeshResult input = io::readMesh(a.input);
@@ -40,6 +45,7 @@ void addCompareCommand(CLI::App& root) {
       "compare", "Rank every projector x O-mapping x fit (and CGAL's LSCM and ARAP) on a mesh by a distortion measure");
   cmd->add_option("input", a->input, "Input mesh (.obj or .off)")->required();
   addCompareOptions(*cmd, a->compare);
+  addVerdictOptions(*cmd, a->verdict);
   cmd->callback([a] { runCompare(*a); });
 }
 

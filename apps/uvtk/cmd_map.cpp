@@ -26,6 +26,7 @@
 #include "param/projector.h"
 #include "options/projector_cli.h"
 #include "run_report.h"
+#include "verdict_cli.h"
 
 namespace uvtk::cli {
 
@@ -40,6 +41,8 @@ struct MapArguments {
   bool quiet = false;
   int jobs = 0;
   ProjectorArguments projector;
+  VerdictArguments verdict;
+  int overlapResolution = 1024;
 };
 
 // Where one mesh is read and written; no JSON summary when `json` is empty.
@@ -47,9 +50,15 @@ struct MeshPaths {
   std::string input, output, json;
 };
 
-// Reads, maps and writes one mesh (and its JSON summary), prints the input's notes, and returns
-// the numbers of its summary line. The stages are shown on a terminal only with `showStages`.
-std::string mapMesh(const MeshPaths& paths, const MapArguments& a, const param::ProjectorOptions& options,
+// One mesh's summary line and its verdict.
+struct MeshResult {
+  std::string numbers;
+  analysis::Verdict verdict = analysis::Verdict::Pass;
+};
+
+// Reads, maps, judges and writes one mesh (and its JSON summary), prints the input's notes, and
+// returns its summary line. The stages are shown on a terminal only with `showStages`.
+MeshResult mapMesh(const MeshPaths& paths, const MapArguments& a, const param::ProjectorOptions& options,
                     bool showStages) {
   StageClock clock("uvtk map", showStages);
   clock.start("reading", paths.input);
@@ -62,6 +71,10 @@ std::string mapMesh(const MeshPaths& paths, const MapArguments& a, const param::
   const double mapMs = clock.stop();
   const param::MappingSummary& s = mapped.projection->summary;
 
+  clock.start("judging", std::to_string(mapped.mesh.faceCount()) + " faces");
+  const analysis::Judgement judgement = mapped.judge(a.verdict.thresholds(), a.overlapResolution);
+  const double judgeMs = clock.stop();
+
   clock.start("writing", paths.output);
   io::ObjWriteOptions write;
   write.writeW = a.writeW;
@@ -71,17 +84,19 @@ std::string mapMesh(const MeshPaths& paths, const MapArguments& a, const param::
   const double writeMs = clock.stop();
 
   if (!paths.json.empty()) {
-    nlohmann::json j = mapSummaryJson(mapped, inputSummary, paths.output);
-    j["milliseconds"] = {{"read", readMs}, {"map", mapMs}, {"write", writeMs}};
+    nlohmann::json j = mapSummaryJson(mapped, judgement, inputSummary, paths.output);
+    j["milliseconds"] = {{"read", readMs}, {"map", mapMs}, {"judge", judgeMs}, {"write", writeMs}};
     io::writeFileAtomically(paths.json, j.dump(2) + "\n");
   }
   printMappingNotes(paths.input, input.warnings, mapped);
+  const analysis::Summary& measured = judgement.summary;
   char numbers[256];
   std::snprintf(numbers, sizeof numbers,
                 "%zu vertices, %zu faces, %zu seam edges, %zu pole vertices, %zu pole faces, %zu invalid vertices, "
-                "%.1f ms",
-                s.vertices, s.faces, s.seamEdges, s.poleVertices, s.poleFaces, s.invalidVertices, mapMs);
-  return numbers;
+                "%.1f ms; ",
+                s.vertices, s.faces, measured.seams.wrapEdges + measured.seams.cutEdges, measured.poleVertices.size(),
+                measured.poleFaces, s.invalidVertices, mapMs);
+  return {numbers + verdictLine(judgement), judgement.verdict};
 }
 
 std::string lowercaseExtension(const fs::path& path) {
@@ -167,6 +182,7 @@ struct MeshOutcome {
   int status = 0;
   std::string error;
   double milliseconds = 0.0;
+  analysis::Verdict verdict = analysis::Verdict::Pass;
 };
 
 // Maps one mesh of a batch; a failure is recorded and printed, never thrown.
@@ -174,8 +190,9 @@ MeshOutcome mapBatchMesh(const MeshPaths& paths, const MapArguments& a, const pa
   const auto start = std::chrono::steady_clock::now();
   MeshOutcome outcome;
   try {
-    const std::string numbers = mapMesh(paths, a, options, false);
-    if (!a.quiet) printProgressMessage("uvtk map: " + paths.input + ": " + numbers);
+    const MeshResult result = mapMesh(paths, a, options, false);
+    outcome.verdict = result.verdict;
+    if (!a.quiet) printProgressMessage("uvtk map: " + paths.input + ": " + result.numbers);
   } catch (const std::exception& e) {
     // A usage error here is a check of the options that only mapping the mesh makes.
     const int status = exitStatus(e);
@@ -200,9 +217,10 @@ nlohmann::json batchJson(const std::vector<MeshPaths>& paths, const std::vector<
                            {"output", paths[i].output},
                            {"status", ok ? "ok" : "failed"},
                            {"milliseconds", outcomes[i].milliseconds}};
-    if (ok)
+    if (ok) {
       mesh["summary"] = paths[i].json;
-    else
+      mesh["verdict"] = analysis::toString(outcomes[i].verdict);
+    } else
       mesh["error"] = outcomes[i].error;
     failed += !ok;
     meshes.push_back(std::move(mesh));
@@ -234,9 +252,11 @@ void mapBatch(const std::vector<std::string>& inputs, const MapArguments& a, con
   }
   int status = 0;
   std::size_t failed = 0;
+  analysis::Verdict worst = analysis::Verdict::Pass;
   for (const MeshOutcome& o : outcomes) {
     status = std::max(status, o.status);
     failed += o.status != 0;
+    if (o.status == 0) worst = std::max(worst, o.verdict);
   }
   if (!a.json.empty())
     io::writeFileAtomically((fs::path(a.json) / "batch.json").string(),
@@ -245,17 +265,22 @@ void mapBatch(const std::vector<std::string>& inputs, const MapArguments& a, con
       "uvtk map: " + std::to_string(paths.size() - failed) + " meshes mapped, " + std::to_string(failed) + " failed";
   if (status != 0) throwWithStatus(status, line);  // main prints the line
   std::fprintf(stderr, "%s\n", line.c_str());
+  enforceVerdict(a.verdict, worst, "uvtk map");
 }
 
 void runMap(const MapArguments& a) {
   if (a.quiet) setProgressEnabled(false);
   if (a.input.empty() == a.list.empty()) throw UsageError("expected a mesh, a folder of meshes or --list FILE");
   const param::ProjectorOptions options = a.projector.resolve();
+  a.verdict.check();
+  if (a.overlapResolution < 1 || a.overlapResolution > 16384)
+    throw UsageError("--overlap-resolution: expected 1 to 16384 pixels");
   std::error_code ignored;
   if (!a.list.empty()) return mapBatch(meshesInList(a.list), a, options);
   if (fs::is_directory(a.input, ignored)) return mapBatch(meshesInFolder(a.input), a, options);
-  const std::string numbers = mapMesh({a.input, a.output, a.json}, a, options, true);
-  if (!a.quiet) std::fprintf(stderr, "uvtk map: %s\n", numbers.c_str());
+  const MeshResult result = mapMesh({a.input, a.output, a.json}, a, options, true);
+  if (!a.quiet) std::fprintf(stderr, "uvtk map: %s\n", result.numbers.c_str());
+  enforceVerdict(a.verdict, result.verdict, "uvtk map");
 }
 
 }  // namespace
@@ -281,6 +306,10 @@ void addMapCommand(CLI::App& root) {
                   "UV text that round-trips a double (up to 17 digits) or a float (up to 9)")
       ->default_str("double");
   addProjectorOptions(*map, arguments->projector);
+  addVerdictOptions(*map, arguments->verdict);
+  map->add_option("--overlap-resolution", arguments->overlapResolution,
+                  "Pixels across the layout raster that measures overlap for the verdict")
+      ->capture_default_str();
   map->callback([arguments] { runMap(*arguments); });
 }
 

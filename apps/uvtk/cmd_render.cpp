@@ -70,8 +70,8 @@ void runRender(RenderArguments& a) {
   const double textureMs = clock.stop();
 
   clock.start(a.frame.view.empty() ? "rendering" : "drawing", a.frame.size);
-  MappedMesh::Measures measures;
-  const auto measured = [&]() -> const MappedMesh::Measures& { return measures = mapped.measure(); };
+  analysis::Judgement judgement;
+  const auto measured = [&]() -> const analysis::Judgement& { return judgement = mapped.judge(); };
   nlohmann::json j = drawFrame(a.frame, a.output, mapped,
                                renderOptions(a.frame, a.texture, texture, camera, worldFromObject), measured);
   clock.stop();

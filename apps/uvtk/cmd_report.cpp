@@ -13,6 +13,7 @@
 #include "options/projector_cli.h"
 #include "report_cli.h"
 #include "run_report.h"
+#include "verdict_cli.h"
 
 namespace uvtk::cli {
 
@@ -22,10 +23,12 @@ struct ReportCommandArguments {
   std::string input;
   ReportArguments report;
   ProjectorArguments projector;
+  VerdictArguments verdict;
 };
 
 void runReport(const ReportCommandArguments& a) {
   a.report.check();
+  a.verdict.check();
   const bool projectorGiven = given(a.projector.app, "--projector");
   const param::ProjectorOptions projectorOptions = a.projector.resolve();
 
@@ -43,18 +46,21 @@ void runReport(const ReportCommandArguments& a) {
   const double mapMs = clock.stop();
 
   clock.start("measuring", std::to_string(mapped.mesh.faceCount()) + " faces");
-  const MappedMesh::Measures measures = mapped.measure(a.report.overlapResolution);
+  const analysis::Judgement judgement = mapped.judge(a.verdict.thresholds(), a.report.overlapResolution);
   const double measureMs = clock.stop();
 
   clock.start("writing", a.report.html.empty() ? a.report.json : a.report.html);
-  writeReport(a.report, mapped, measures, inputSummary,
+  writeReport(a.report, mapped, judgement, inputSummary,
               {{"read", readMs}, {"texcoords", mapMs}, {"measure", measureMs}});
   clock.stop();
   printMappingNotes(a.input, input.warnings, mapped);
-  const analysis::Summary& summary = measures.summary;
-  std::fprintf(stderr, "uvtk report: %zu faces, L2 stretch %.6g, Linf stretch %.6g, %zu seam edges, overlap %.4g%%\n",
+  const analysis::Summary& summary = judgement.summary;
+  std::fprintf(stderr,
+               "uvtk report: %zu faces, L2 stretch %.6g, Linf stretch %.6g, %zu seam edges, overlap %.4g%%; %s\n",
                mapped.mesh.faceCount(), summary.l2Stretch, summary.linfStretch,
-               summary.seams.wrapEdges + summary.seams.cutEdges, 100.0 * summary.overlap.fraction());
+               summary.seams.wrapEdges + summary.seams.cutEdges, 100.0 * summary.overlap.fraction(),
+               verdictLine(judgement).c_str());
+  enforceVerdict(a.verdict, judgement.verdict, "uvtk report");
 }
 
 }  // namespace
@@ -66,6 +72,7 @@ void addReportCommand(CLI::App& root) {
   cmd->add_option("input", a->input, "Input mesh (.obj or .off)")->required();
   addReportOptions(*cmd, a->report);
   addProjectorOptions(*cmd, a->projector);
+  addVerdictOptions(*cmd, a->verdict);
   cmd->callback([a] { runReport(*a); });
 }
 

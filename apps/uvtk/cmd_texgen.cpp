@@ -1,5 +1,6 @@
 // `uvtk texgen`: OpenGL fixed-function texture-coordinate generation on a mesh, written as an
 // OBJ with per-corner `vt s t` (or `vt s t r`), and optionally every (s, t, r, q) as JSON.
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -23,6 +24,44 @@ namespace uvtk::cli {
 namespace {
 
 using texgen::TexgenMode;
+
+// An OBJ cannot carry q: when q is not 1 at some (valid) corner, the file gets the projective
+// division (s/q, t/q, r/q) at every corner, as a projective lookup would see it. A corner whose q
+// is 0 (or whose quotient is not finite) has no texture coordinate: written (0, 0, 0), marked
+// invalid and counted. docs/conventions.md §6.
+struct ProjectiveDivision {
+  bool applied = false;           // q was not 1 at some valid corner: uv holds the quotients
+  std::size_t qNotOneCorners = 0;  // valid corners with q != 1
+  std::size_t qZeroCorners = 0;    // of those, corners with q = 0 or a non-finite quotient
+  UvMap uv;
+};
+
+ProjectiveDivision divideByQ(const texgen::TexgenResult& result) {
+  ProjectiveDivision out;
+  const std::size_t corners = result.q.size();
+  for (std::size_t c = 0; c < corners; ++c)
+    if (result.uv.cornerInvalid[c] == kCornerValid && result.q[c] != 1.0) ++out.qNotOneCorners;
+  if (out.qNotOneCorners == 0) return out;
+  out.applied = true;
+  out.uv = result.uv;
+  for (std::size_t c = 0; c < corners; ++c) {
+    if (result.uv.cornerInvalid[c] != kCornerValid || result.q[c] == 1.0) continue;
+    const double q = result.q[c];
+    const Vec2 st = result.uv.uv[c] / q;
+    const double r = result.uv.w[c] / q;
+    if (q != 0.0 && st.allFinite() && std::isfinite(r)) {
+      out.uv.uv[c] = st;
+      out.uv.w[c] = r;
+      continue;
+    }
+    out.uv.uv[c] = Vec2::Zero();
+    out.uv.w[c] = 0.0;
+    out.uv.cornerInvalid[c] = kCornerNotFinite;
+    out.uv.faceFlags[c / 3] |= kFaceInvalid;
+    ++out.qZeroCorners;
+  }
+  return out;
+}
 
 struct TexgenCommandArguments {
   std::string input, output, json;
@@ -50,8 +89,10 @@ void runTexgen(const TexgenCommandArguments& a) {
   write.writeW = options.coordinates[2].mode != TexgenMode::Off ||
                  options.textureMatrix.row(2) != Eigen::RowVector4d(0, 0, 1, 0);
   write.header = "uvtk texgen " + a.input;
-  io::writeObj(a.output, input.mesh, &result.uv, write);
+  const ProjectiveDivision divided = divideByQ(result);
+  io::writeObj(a.output, input.mesh, divided.applied ? &divided.uv : &result.uv, write);
   const double writeMs = clock.stop();
+  const std::size_t invalidCorners = result.invalidCorners + divided.qZeroCorners;
 
   const std::size_t vertices = input.mesh.vertexCount(), faces = input.mesh.faceCount();
   if (!a.json.empty()) {
@@ -67,7 +108,10 @@ void runTexgen(const TexgenCommandArguments& a) {
     nlohmann::json j = {{"vertices", vertices},
                         {"faces", faces},
                         {"sphere_map_singular_corners", result.sphereMapSingular},
-                        {"invalid_corners", result.invalidCorners},
+                        {"invalid_corners", invalidCorners},
+                        {"q_divided", divided.applied},
+                        {"q_not_one_corners", divided.qNotOneCorners},
+                        {"q_zero_corners", divided.qZeroCorners},
                         {"normalize", options.normalize},
                         {"precision", precisionName(options.precision)},
                         {"coordinates", modes},
@@ -78,8 +122,11 @@ void runTexgen(const TexgenCommandArguments& a) {
     io::writeFileAtomically(a.json, j.dump(2) + "\n");
   }
   printInputWarnings(a.input, input.warnings);
+  if (divided.applied)
+    std::fprintf(stderr, "uvtk texgen: q is not 1 at %zu corners: wrote s/q, t/q%s (%zu corners with q = 0 written as 0 and counted invalid)\n",
+                 divided.qNotOneCorners, write.writeW ? ", r/q" : "", divided.qZeroCorners);
   std::fprintf(stderr, "uvtk texgen: %zu vertices, %zu faces, %zu sphere-map singular corners, %zu invalid corners, %.1f ms\n",
-               vertices, faces, result.sphereMapSingular, result.invalidCorners, texgenMs);
+               vertices, faces, result.sphereMapSingular, invalidCorners, texgenMs);
 }
 
 }  // namespace
@@ -89,7 +136,7 @@ void addTexgenCommand(CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
       "texgen", "OpenGL fixed-function texture-coordinate generation (glTexGen, GL 4.6 compatibility §12.1.3)");
   cmd->add_option("input", arguments->input, "Input mesh (.obj or .off)")->required();
-  cmd->add_option("-o,--output", arguments->output, "Output OBJ with per-corner vt s t (vt s t r when r is generated)")
+  cmd->add_option("-o,--output", arguments->output, "Output OBJ with per-corner vt s t (vt s t r when r is generated); divided by q where q is not 1")
       ->required();
   addTexgenOptions(*cmd, arguments->texgen, "--mode");
   cmd->add_option("--eye", arguments->eye, "View: gluLookAt eye (x,y,z)")->capture_default_str();
@@ -98,7 +145,7 @@ void addTexgenCommand(CLI::App& root) {
   cmd->add_option("--model", arguments->model,
                   "Model matrix, 16 numbers column-major (default identity); vertices are drawn under view * model, "
                   "eye_linear planes are given under the view alone");
-  cmd->add_option("--json", arguments->json, "Also write the summary and every corner's [s, t, r, q] as JSON");
+  cmd->add_option("--json", arguments->json, "Also write the summary and every corner's [s, t, r, q] (undivided) as JSON");
   cmd->callback([arguments] { runTexgen(*arguments); });
 }
 

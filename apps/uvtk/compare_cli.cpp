@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -15,6 +16,7 @@
 #include "mapped_mesh.h"
 #include "measures_json.h"
 #include "param/baseline.h"
+#include "param/cut_graph.h"
 #include "render/camera.h"
 #include "run_report.h"
 #include "views/views.h"
@@ -23,26 +25,20 @@ namespace uvtk::cli {
 
 namespace {
 
-// One ranked candidate: a projector configuration or a baseline, with its measures.
+// One ranked candidate: a projector configuration or a baseline, with its judgement.
 struct Candidate {
   std::string name;
   MappedMesh mapped;
-  MappedMesh::Measures measures;
-  double problemArea = 0.0;  // fraction of the 3D area on flipped, backfacing, zero-UV-area or invalid faces
-  double key = 0.0;          // the ranking measure
-
-  bool usable = false;  // problemArea and the overlap fraction at most kTolerated
+  analysis::Judgement judgement;
+  double key = 0.0;  // the ranking measure
   nlohmann::json record;
 
-  const analysis::Summary& summary() const { return measures.summary; }
-  // How much of the mapping is wrong: the problem area plus the overlap fraction.
-  double badness() const { return problemArea + summary().overlap.fraction(); }
+  const analysis::Summary& summary() const { return judgement.summary; }
 };
 
-// A candidate is usable when at most this fraction of its area is mapped wrongly or overlapped.
-constexpr double kTolerated = 0.01;
-
+// The --by measure; a mapping without a single ok face has no measure and comes last in its verdict.
 double rankKey(const analysis::Summary& s, RankBy by) {
+  if (s.statusCounts[analysis::FaceStatus::Ok] == 0) return std::numeric_limits<double>::infinity();
   switch (by) {
     case RankBy::StretchL2:
       return s.l2Stretch;
@@ -60,33 +56,18 @@ Candidate measure(std::string name, MappedMesh mapped, const CompareArguments& a
   Candidate c;
   c.name = std::move(name);
   c.mapped = std::move(mapped);
-  c.measures = c.mapped.measure(a.overlapResolution);
-  double total = 0.0, problem = 0.0;
-  for (const analysis::FaceDistortion& face : c.measures.faces) {
-    total += face.area3d;
-    using analysis::FaceStatus;
-    if (face.status != FaceStatus::Ok && face.status != FaceStatus::PoleFace && face.status != FaceStatus::ZeroArea3d)
-      problem += face.area3d;
-  }
-  c.problemArea = total > 0.0 ? problem / total : 0.0;
+  c.judgement = c.mapped.judge(a.thresholds, a.overlapResolution);
   c.key = rankKey(c.summary(), a.by);
-
-  c.usable = c.problemArea <= kTolerated && c.summary().overlap.fraction() <= kTolerated && c.summary().l2Stretch > 0.0;
-  c.record = measuresJson(c.mapped, c.summary());
+  c.record = judgementJson(c.mapped, c.judgement);
   c.record["name"] = c.name;
-  c.record["problem_area_fraction"] = c.problemArea;
-  c.record["usable"] = c.usable;
+  c.record["first_reason"] = c.judgement.firstReason();
   addMappingOrigin(c.record, c.mapped);
   return c;
 }
 
-// Usable candidates first, by the measure, then by seam length; the others by their problem area
-// plus their overlap fraction.
+// Pass, then warn, then fail; inside a verdict by the --by measure, ties by the shorter seam.
 bool ranksBefore(const Candidate& x, const Candidate& y) {
-  if (x.usable != y.usable) return x.usable;
-  if (!x.usable) {
-    return x.badness() < y.badness() || (x.badness() == y.badness() && x.key < y.key);
-  }
+  if (x.judgement.verdict != y.judgement.verdict) return x.judgement.verdict < y.judgement.verdict;
   return x.key < y.key || (x.key == y.key && x.summary().seams.length() < y.summary().seams.length());
 }
 
@@ -134,8 +115,9 @@ std::vector<std::pair<std::string, param::ProjectorOptions>> configurations(cons
 }
 
 // LSCM and ARAP of the mesh if it is a disk, else of the mesh cut open along the UV seams of the
-// best-ranked usable projector whose seams cut it into a disk (a sphere's or a cylinder's seam
-// opens a closed mesh into one piece; a cube's cuts it into six); skipped records say why not.
+// best-ranked projector that does not fail and whose seams cut it into a disk (a sphere's or a
+// cylinder's seam opens a closed mesh into one piece; a cube's cuts it into six), else along a cut
+// graph (param::cutToDisk: a knotted or higher-genus mesh); skipped records say why not.
 void addBaselines(const Mesh& mesh, const std::vector<Candidate>& ranked, const CompareArguments& a,
                   std::vector<Candidate>& baselines, nlohmann::json& skipped) {
   const auto skip = [&](const std::string& reason) {
@@ -147,7 +129,7 @@ void addBaselines(const Mesh& mesh, const std::vector<Candidate>& ranked, const 
   Mesh disk = mesh;
   if (!param::analyzeTopology(mesh).isDisk()) {
     for (const Candidate& c : ranked) {
-      if (!c.usable || !c.mapped.projector) continue;
+      if (c.judgement.verdict == analysis::Verdict::Fail || !c.mapped.projector) continue;
       // Cut without fanning the poles: a fanned pole splits into a vertex per face, and ARAP then
       // folds those slivers over each other.
       param::ProjectorOptions unfanned = *c.mapped.projector;
@@ -159,9 +141,16 @@ void addBaselines(const Mesh& mesh, const std::vector<Candidate>& ranked, const 
       seams = &c;
       break;
     }
-    if (!seams) return skip("the mesh is not a topological disk, and no usable projector's seams cut it into one");
+    if (!seams) {
+      try {
+        disk = param::cutToDisk(mesh).mesh;
+      } catch (const UsageError& e) {
+        return skip(std::string("the mesh is not a topological disk, and cannot be cut into one: ") + e.what());
+      }
+    }
   }
-  const std::string cutFrom = seams ? seams->name : "";
+  const bool cut = disk.vertexCount() != mesh.vertexCount();
+  const std::string cutFrom = seams ? seams->name : cut ? "cut graph" : "";
   for (const param::Baseline baseline : {param::Baseline::Lscm, param::Baseline::Arap}) {
     const std::string name =
         std::string(param::toString(baseline)) + (cutFrom.empty() ? "" : " (cut: " + cutFrom + ")");
@@ -169,7 +158,7 @@ void addBaselines(const Mesh& mesh, const std::vector<Candidate>& ranked, const 
       MappedMesh mapped;
       mapped.uv = param::parameterizeDisk(disk, baseline);
       // Measured on the uncut mesh (same triangles in the same order), so that the cut shows as seams.
-      mapped.mesh = cutFrom.empty() ? disk : seams->mapped.mesh;
+      mapped.mesh = seams ? seams->mapped.mesh : mesh;
       mapped.source = param::toString(baseline);
       baselines.push_back(measure(name, std::move(mapped), a));
       if (!cutFrom.empty()) baselines.back().record["cut_along"] = cutFrom;
@@ -179,18 +168,34 @@ void addBaselines(const Mesh& mesh, const std::vector<Candidate>& ranked, const 
   }
 }
 
-std::string markdownTable(const std::vector<Candidate>& ranked) {
-  std::string table =
-      "| rank | mapping | L2 stretch | Linf stretch | angle (mean) | seam length | problem area | overlap | usable |\n"
-      "|---:|---|---:|---:|---:|---:|---:|---:|---|\n";
+// The line above the table when nothing passes: what stops the best candidates.
+std::string nothingPassesLine(const std::vector<Candidate>& ranked) {
+  if (ranked.empty() || ranked.front().judgement.verdict == analysis::Verdict::Pass) return "";
+  std::string line = "No mapping passes. The best: ";
+  for (std::size_t i = 0; i < std::min<std::size_t>(3, ranked.size()); ++i)
+    line += (i == 0 ? "" : "; ") + ranked[i].name + " (" + analysis::toString(ranked[i].judgement.verdict) + ": " +
+            ranked[i].judgement.firstReason() + ")";
+  return line + ".\n\n";
+}
+
+std::string markdownTable(const std::vector<Candidate>& ranked, RankBy by) {
+  static const char* kByNames[] = {"L2 stretch", "Linf stretch", "angle (mean)", "seam length"};
+  std::string table = nothingPassesLine(ranked) + "Ranked by verdict, then by " + kByNames[int(by)] +
+                      " (ties: the shorter seam).\n\n"
+                      "| rank | mapping | verdict | L2 stretch | Linf stretch | angle (mean) | seam length | flipped "
+                      "area | overlap | why |\n"
+                      "|---:|---|---|---:|---:|---:|---:|---:|---:|---|\n";
   char row[512];
   for (std::size_t i = 0; i < ranked.size(); ++i) {
     const Candidate& c = ranked[i];
-    std::snprintf(row, sizeof row, "| %zu | %s | %.5g | %.5g | %.5g | %.5g | %.3g%% | %.3g%% | %s |\n", i + 1,
-                  c.name.c_str(), c.summary().l2Stretch, c.summary().linfStretch, c.summary().angleDistortion.mean,
-                  c.summary().seams.length(), 100.0 * c.problemArea, 100.0 * c.summary().overlap.fraction(),
-                  c.usable ? "yes" : "no");
-    table += row;
+    std::string why;
+    for (const analysis::Reason& r : c.judgement.reasons) why += (why.empty() ? "" : "; ") + r.text();
+    std::snprintf(row, sizeof row, "| %zu | %s | %s | %.5g | %.5g | %.5g | %.5g | %.3g%% | %.3g%% | ", i + 1,
+                  c.name.c_str(), analysis::toString(c.judgement.verdict), c.summary().l2Stretch,
+                  c.summary().linfStretch, c.summary().angleDistortion.mean, c.summary().seams.length(),
+                  100.0 * c.judgement.values[std::size_t(analysis::Rule::FlippedArea)],
+                  100.0 * c.summary().overlap.fraction());
+    table += row + (why.empty() ? std::string("-") : why) + " |\n";
   }
   return table;
 }
@@ -201,12 +206,13 @@ Image contactSheetOf(const std::vector<Candidate>& ranked, const CompareArgument
   std::vector<std::pair<std::string, Image>> tiles;
   for (std::size_t i = 0; i < count; ++i) {
     const Candidate& c = ranked[i];
-    const views::ViewInput in = c.mapped.viewInput(c.measures);
+    const views::ViewInput in = c.mapped.viewInput(&c.judgement);
     views::ViewOptions options;
     options.render.camera = a.camera.frame(c.mapped.mesh, a.tileSize, a.tileSize);
     options.render.raster = {render::Cull::None, a.threads};
     for (const views::View view : {views::View::Checker, views::View::Stretch})
-      tiles.emplace_back("#" + std::to_string(i + 1) + " " + c.name + " " + views::toString(view),
+      tiles.emplace_back("#" + std::to_string(i + 1) + " " + analysis::toString(c.judgement.verdict) + " " + c.name +
+                             " " + views::toString(view),
                          views::drawView(view, in, options));
   }
   return views::contactSheet(tiles, 4);
@@ -250,7 +256,7 @@ Comparison compareMappings(const CompareArguments& a, const Mesh& mesh, const nl
   }
 
   Comparison out;
-  out.table = markdownTable(ranked);
+  out.table = markdownTable(ranked, a.by);
   if (!a.markdown.empty()) io::writeFileAtomically(a.markdown, out.table);
   if (!a.sheet.empty()) {
     clock.start("drawing", a.sheet);
@@ -261,6 +267,7 @@ Comparison compareMappings(const CompareArguments& a, const Mesh& mesh, const nl
   out.record = {{"tool", {{"name", "uvtk"}, {"version", UVTK_VERSION}}},
                 {"input", input},
                 {"rank_by", kRankNames[int(a.by)]},
+                {"order", "verdict (pass, warn, fail), then rank_by, then seam length"},
                 {"ranking", nlohmann::json::array()},
                 {"skipped", skipped}};
   for (std::size_t i = 0; i < ranked.size(); ++i) {

@@ -19,6 +19,7 @@ struct CompareArguments {
   int top = 8, tileSize = 256, overlapResolution = 512, baselineMaxFaces = 200000, threads = 0;
   bool seamPlaceAuto = false, baselines = true;
   ViewCamera camera;
+  analysis::Thresholds thresholds;  // the verdict's (uvtk compare's --fail-on/--warn-on, a scene's "thresholds")
 
   void check() const;  // throws UsageError before any work
 };

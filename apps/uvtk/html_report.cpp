@@ -93,7 +93,9 @@ constexpr const char* kStyle =
     "<style>body{font-family:sans-serif;margin:2em;max-width:80em}table{border-collapse:collapse}"
     "th,td{border:1px solid #ccc;padding:2px 8px;text-align:left}td{font-family:monospace}"
     "figure{display:inline-block;margin:0 1em 1em 0;vertical-align:top}img{max-width:36em}"
-    ".failed{color:#b00}</style>";
+    ".failed{color:#b00}.verdict{display:inline-block;padding:2px 10px;border-radius:4px;color:#fff;"
+    "font-weight:bold;text-transform:uppercase}.verdict.pass{background:#2a7d2a}.verdict.warn{background:#b07800}"
+    ".verdict.fail{background:#b00}</style>";
 
 std::string pageStart(const std::string& title) {
   return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + escaped(title) + "</title>\n" +
@@ -123,6 +125,28 @@ class PageFiles {
  private:
   std::filesystem::path folder_;
 };
+
+// A verdict badge ("pass", "warn", "fail"), coloured.
+std::string verdictBadge(const std::string& verdict) {
+  return "<span class=\"verdict " + escaped(verdict) + "\">" + escaped(verdict) + "</span>";
+}
+
+// The first screen of a report: the verdict and every reason, as a list.
+std::string verdictSection(const nlohmann::json& report) {
+  std::ostringstream html;
+  html << "<h2>Verdict " << verdictBadge(report.at("verdict").get<std::string>()) << "</h2>\n";
+  const nlohmann::json& reasons = report.at("reasons");
+  if (reasons.empty()) {
+    html << "<p>No rule triggered (docs/conventions.md section 11 lists the rules and thresholds).</p>\n";
+  } else {
+    html << "<ul class=\"reasons\">\n";
+    for (const nlohmann::json& r : reasons)
+      html << "<li>" << verdictBadge(r.at("severity").get<std::string>()) << " " << escaped(r.at("text").get<std::string>())
+           << "</li>\n";
+    html << "</ul>\n";
+  }
+  return html.str();
+}
 
 bool isPicture(const std::string& file) {
   const std::string extension = std::filesystem::path(file).extension().string();
@@ -154,16 +178,21 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath) 
       std::string caption =
           kind(o) == "compare" ? "ranking of " + o.value("mesh", std::string()) : o.value("mapping", std::string());
       if (o.contains("views")) caption += ": " + o.at("views").dump();
+      std::string verdict;  // each mapping's picture says how its mapping was judged
+      if (o.contains("verdict"))
+        verdict = verdictBadge(o.at("verdict").get<std::string>()) + " " +
+                  escaped(o.value("first_reason", std::string())) + "<br>";
       html << "<figure><a href=\"" << escaped(*src) << "\"><img alt=\"" << escaped(caption) << "\" src=\""
-           << escaped(*src) << "\"></a><figcaption>" << escaped(caption) << "<br><code>" << escaped(*src)
+           << escaped(*src) << "\"></a><figcaption>" << verdict << escaped(caption) << "<br><code>" << escaped(*src)
            << "</code></figcaption></figure>\n";
     }
 
-  html << "<h2>Measures</h2>\n<table>\n<tr><th>mesh</th><th>mapping</th><th>L2 stretch</th><th>Linf stretch</th>"
+  html << "<h2>Measures</h2>\n<table>\n<tr><th>mesh</th><th>mapping</th><th>verdict</th><th>L2 stretch</th><th>Linf stretch</th>"
           "<th>angle (mean)</th><th>seam length</th><th>overlap</th><th>files</th></tr>\n";
   for (const nlohmann::json& o : outputs)
     if (kind(o) == "report" && o.contains("stretch_l2"))
       html << "<tr><td>" << cell(o.at("mesh")) << "</td><td>" << cell(o.at("mapping")) << "</td><td>"
+           << verdictBadge(o.at("verdict").get<std::string>()) << " " << cell(o.at("first_reason")) << "</td><td>"
            << cell(o.at("stretch_l2")) << "</td><td>" << cell(o.at("stretch_linf")) << "</td><td>"
            << cell(o.at("angle_mean")) << "</td><td>" << cell(o.at("seam_length")) << "</td><td>"
            << cell(o.at("overlap_fraction")) << "</td><td>" << files.links(o.at("files")) << "</td></tr>\n";
@@ -173,20 +202,23 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath) 
   for (const nlohmann::json& o : outputs)
     if (kind(o) == "compare" && o.contains("top")) {
       html << "<h3>" << cell(o.at("mesh")) << "</h3>\n<p>" << files.links(o.at("files"))
-           << "</p>\n<table>\n<tr><th>rank</th><th>mapping</th><th>L2 stretch</th><th>usable</th></tr>\n";
+           << "</p>\n<table>\n<tr><th>rank</th><th>mapping</th><th>verdict</th><th>L2 stretch</th><th>why</th></tr>\n";
       for (const nlohmann::json& r : o.at("top"))
         html << "<tr><td>" << cell(r.at("rank")) << "</td><td>" << cell(r.at("name")) << "</td><td>"
-             << cell(r.at("stretch_l2")) << "</td><td>" << cell(r.at("usable")) << "</td></tr>\n";
+             << verdictBadge(r.at("verdict").get<std::string>()) << "</td><td>" << cell(r.at("stretch_l2"))
+             << "</td><td>" << cell(r.at("first_reason")) << "</td></tr>\n";
       html << "</table>\n";
     }
 
-  html << "<h2>Meshes with UVs</h2>\n<table>\n<tr><th>mapping</th><th>seam edges</th><th>pole faces</th>"
+  html << "<h2>Meshes with UVs</h2>\n<table>\n<tr><th>mapping</th><th>verdict</th><th>seam edges</th><th>pole faces</th>"
           "<th>invalid vertices</th><th>files</th></tr>\n";
   for (const nlohmann::json& o : outputs)
-    if (kind(o) == "obj") {
-      const nlohmann::json summary = o.value("summary", nlohmann::json::object());
+    if (kind(o) == "obj" && o.contains("summary")) {
+      const nlohmann::json& summary = o.at("summary");
+      const nlohmann::json& seams = summary.at("judgement").at("seams");
       html << "<tr><td>" << cell(o.value("mapping", nlohmann::json())) << "</td><td>"
-           << cell(summary.value("seam_edges", nlohmann::json())) << "</td><td>"
+           << verdictBadge(o.at("verdict").get<std::string>()) << " " << cell(o.at("first_reason")) << "</td><td>"
+           << cell(seams.at("wrap_edges").get<std::size_t>() + seams.at("cut_edges").get<std::size_t>()) << "</td><td>"
            << cell(summary.value("pole_faces", nlohmann::json())) << "</td><td>"
            << cell(summary.value("invalid_vertices", nlohmann::json())) << "</td><td>" << files.links(o.at("files"))
            << "</td></tr>\n";
@@ -207,6 +239,7 @@ std::string htmlReport(const nlohmann::json& report, const std::vector<std::pair
   const std::string title = "uvtk report: " + report.at("input").at("path").get<std::string>();
   std::ostringstream html;
   html << pageStart(title);
+  html << verdictSection(report);
   html << "<h2>Views</h2>\n";
   for (const auto& [name, image] : views)
     html << "<figure><img alt=\"" << escaped(name) << " view\" src=\"" << io::pngDataUri(image) << "\" width=\""

@@ -8,6 +8,7 @@
 #include "options/projector_cli.h"
 #include "param/projector.h"
 #include "run_report.h"
+#include "measures_json.h"
 #include "summary_json.h"
 
 namespace uvtk::cli {
@@ -19,20 +20,21 @@ analysis::DistortionOptions MappedMesh::distortionOptions() const {
   return options;
 }
 
-MappedMesh::Measures MappedMesh::measure(int overlapResolution) const {
-  Measures m;
-  m.faces = analysis::measureFaces(mesh, uv, distortionOptions());
-  m.summary = analysis::summarize(mesh, uv, m.faces, overlapResolution);
-  return m;
+analysis::Judgement MappedMesh::judge(const analysis::Thresholds& thresholds, int overlapResolution) const {
+  analysis::JudgementOptions options;
+  options.distortion = distortionOptions();
+  if (projection) options.poleVertices = projection->summary.poleVertexList;
+  options.wrapsU = projector && exact && exact->wrapsS;  // a wrapping projector's seam is expected
+  options.overlapResolution = overlapResolution;
+  options.thresholds = thresholds;
+  return analysis::judge(mesh, uv, options);
 }
 
-views::ViewInput MappedMesh::viewInput(const Measures& measures) const {
+views::ViewInput MappedMesh::viewInput(const analysis::Judgement* judgement) const {
   views::ViewInput in;
   in.mesh = &mesh;
   in.uv = &uv;
-  in.faces = &measures.faces;
-  in.summary = &measures.summary;
-  in.poleVertices = projection ? projection->summary.poleVertexList : measures.summary.poleVertices;
+  in.judgement = judgement;
   in.exact = exact;
   in.wrapsU = exact && exact->wrapsS;
   in.q = q.empty() ? nullptr : &q;
@@ -156,8 +158,12 @@ void addMappingOrigin(nlohmann::json& record, const MappedMesh& mapped) {
   if (mapped.seamPlacement) record["seam_placement"] = seamPlacementJson(*mapped.seamPlacement);
 }
 
-nlohmann::json mapSummaryJson(const MappedMesh& mapped, const nlohmann::json& input, const std::string& output) {
+nlohmann::json mapSummaryJson(const MappedMesh& mapped, const analysis::Judgement& judgement,
+                              const nlohmann::json& input, const std::string& output) {
   nlohmann::json j = mapped.projection ? summaryJson(mapped.projection->summary) : nlohmann::json::object();
+  j["judgement"] = judgementJson(mapped, judgement);
+  j["verdict"] = j["judgement"]["verdict"];
+  j["reasons"] = j["judgement"]["reasons"];
   j["texcoords"] = mapped.source;
   j["input"] = input;
   j["output"] = output;

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "analysis/distortion.h"
-#include "analysis/summary.h"
+#include "analysis/judgement.h"
 #include "core/mesh.h"
 #include "core/uv_map.h"
 #include "param/projector.h"
@@ -38,15 +38,13 @@ struct MappedMesh {
   render::TexcoordSource texcoordSource(bool perPixel) const;
   // Where a planar projector looks, so that faces turned away count as backfacing, not flipped.
   analysis::DistortionOptions distortionOptions() const;
-  // The per-face distortion and the mesh-wide summary of these UVs.
-  struct Measures {
-    std::vector<analysis::FaceDistortion> faces;
-    analysis::Summary summary;
-  };
-  Measures measure(int overlapResolution = 1024) const;
-  // What the views draw: this mesh and its UVs with their measures (which must outlive it); the
-  // poles the projector found, or for the file's UVs the fanned poles the summary found.
-  views::ViewInput viewInput(const Measures& measures) const;
+  // The judgement of these UVs (analysis/judgement.h): per-face measures, counts, the summary
+  // with the projector's own pole vertices (for other sources the fanned poles found in the UVs),
+  // and the verdict under `thresholds`.
+  analysis::Judgement judge(const analysis::Thresholds& thresholds = {}, int overlapResolution = 1024) const;
+  // What the views draw: this mesh and its UVs with their judgement (null for views without
+  // measures; it must outlive the result).
+  views::ViewInput viewInput(const analysis::Judgement* judgement) const;
 };
 
 // Whether the projector's r is the cube face id and (s, t) the point on that face: the cube's faces
@@ -57,9 +55,11 @@ bool writesCubeFaceIds(const param::ProjectorOptions& options);
 // --seam-place auto, "seam_placement". Nothing for the file's UVs or texgen.
 void addMappingOrigin(nlohmann::json& record, const MappedMesh& mapped);
 
-// The summary `uvtk map --json` writes (without the times): the projector's mapping summary, or
-// for other sources only "texcoords", with the "input" record and the output file.
-nlohmann::json mapSummaryJson(const MappedMesh& mapped, const nlohmann::json& input, const std::string& output);
+// The summary `uvtk map --json` writes (without the times): the projector's mapping summary (for
+// other sources only "texcoords"), the "input" record, the output file, and under "judgement"
+// the mapping's judgement (measures_json.h) with its "verdict" and "reasons" also at the top.
+nlohmann::json mapSummaryJson(const MappedMesh& mapped, const analysis::Judgement& judgement,
+                              const nlohmann::json& input, const std::string& output);
 
 // On stderr: the input's warnings, and where --seam-place auto put the seam.
 void printMappingNotes(const std::string& inputPath, const MeshWarnings& warnings, const MappedMesh& mapped);

@@ -1,5 +1,7 @@
 #include "measures_json.h"
 
+#include <cmath>
+
 namespace uvtk::cli {
 
 nlohmann::json statisticsJson(const analysis::Statistics& s) {
@@ -18,18 +20,54 @@ nlohmann::json statisticsJson(const analysis::Statistics& s) {
             {"weight_fraction", h.weightFraction}}}};
 }
 
-nlohmann::json measuresJson(const MappedMesh& mapped, const analysis::Summary& s) {
+nlohmann::json reasonJson(const analysis::Reason& r) {
+  return {{"code", analysis::toString(r.rule)},
+          {"severity", analysis::toString(r.severity)},
+          {"value", r.value},
+          {"threshold", r.threshold},
+          {"faces", r.faces},
+          {"text", r.text()}};
+}
+
+nlohmann::json reasonsJson(const analysis::Judgement& judgement) {
+  nlohmann::json reasons = nlohmann::json::array();
+  for (const analysis::Reason& r : judgement.reasons) reasons.push_back(reasonJson(r));
+  return reasons;
+}
+
+namespace {
+
+// A threshold of infinity ("never") as JSON's null.
+nlohmann::json thresholdJson(double threshold) {
+  return std::isinf(threshold) ? nlohmann::json(nullptr) : nlohmann::json(threshold);
+}
+
+}  // namespace
+
+nlohmann::json judgementJson(const MappedMesh& mapped, const analysis::Judgement& j) {
   using analysis::FaceStatus;
+  const analysis::Summary& s = j.summary;
   nlohmann::json counts;
   for (int k = 0; k < analysis::kFaceStatusCount; ++k)
     counts[analysis::toString(FaceStatus(k))] = s.statusCounts.faces[std::size_t(k)];
-  // The projector knows its pole vertices (§5); from UVs alone only fanned poles show.
-  const std::size_t poleVertices = mapped.projection ? mapped.projection->summary.poleVertices : s.poleVertices.size();
+  nlohmann::json values, warn, fail, corners;
+  for (int k = 0; k < analysis::kRuleCount; ++k) {
+    const auto rule = analysis::Rule(k);
+    values[analysis::toString(rule)] = j.values[std::size_t(k)];
+    warn[analysis::toString(rule)] = thresholdJson(j.thresholds.of(rule, analysis::Verdict::Warn));
+    fail[analysis::toString(rule)] = thresholdJson(j.thresholds.of(rule, analysis::Verdict::Fail));
+  }
+  for (int reason = 1; reason < kCornerInvalidCount; ++reason)
+    corners[cornerInvalidName(reason)] = j.invalidCorners[std::size_t(reason)];
   nlohmann::json bounds = nullptr;
   if (!s.uvBounds.isEmpty())
     bounds = {{"min", {s.uvBounds.min().x(), s.uvBounds.min().y()}},
               {"max", {s.uvBounds.max().x(), s.uvBounds.max().y()}}};
-  return {{"vertices", mapped.mesh.vertexCount()},
+  return {{"verdict", analysis::toString(j.verdict)},
+          {"reasons", reasonsJson(j)},
+          {"rule_values", values},
+          {"thresholds", {{"warn", warn}, {"fail", fail}}},
+          {"vertices", mapped.mesh.vertexCount()},
           {"faces", mapped.mesh.faceCount()},
           {"stretch_l2", s.l2Stretch},
           {"stretch_linf", s.linfStretch},
@@ -38,13 +76,24 @@ nlohmann::json measuresJson(const MappedMesh& mapped, const analysis::Summary& s
           {"stretch_l2_faces", statisticsJson(s.l2Stretches)},
           {"stretch_linf_faces", statisticsJson(s.linfStretches)},
           {"status_counts", counts},
+          {"face_flags",
+           {{"invalid", j.invalidFaces},
+            {"out_of_range", j.outOfRangeFaces},
+            {"seam_straddling", j.straddlingFaces},
+            {"unrepaired_seam", j.unrepairedSeamFaces},
+            {"pole", s.poleFaces},
+            {"cap", j.capFaces},
+            {"cube_seam", j.cubeSeamFaces},
+            {"sphere_map_singular", j.sphereMapSingularFaces},
+            {"overlapping", j.overlappedFaces}}},
+          {"invalid_corners", corners},
           {"seams",
            {{"wrap_edges", s.seams.wrapEdges},
             {"cut_edges", s.seams.cutEdges},
             {"length", s.seams.length()},
             {"wrap_length", s.seams.wrapLength},
             {"cut_length", s.seams.cutLength}}},
-          {"poles", {{"vertices", poleVertices}, {"faces", s.poleFaces}}},
+          {"poles", {{"vertices", s.poleVertices.size()}, {"faces", s.poleFaces}}},
           {"uv_bounds", bounds},
           {"overlap_fraction", s.overlap.fraction()},
           {"overlap",

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/summary.h"
+#include "analysis/judgement.h"
 #include "mapped_mesh.h"
 
 namespace uvtk::cli {
@@ -12,8 +12,14 @@ namespace uvtk::cli {
 // mean, p50, p90, p99, min, max (area-weighted) and the histogram.
 nlohmann::json statisticsJson(const analysis::Statistics& statistics);
 
-// vertices, faces, stretch_l2, stretch_linf, angle, area, stretch_l2_faces, stretch_linf_faces,
-// status_counts, seams, poles, uv_bounds, overlap_fraction, overlap.
-nlohmann::json measuresJson(const MappedMesh& mapped, const analysis::Summary& summary);
+// The judgement of a mapping: verdict, reasons ({code, severity, value, threshold, faces}), rule_values,
+// thresholds, vertices, faces, stretch_l2, stretch_linf, angle, area, stretch_l2_faces,
+// stretch_linf_faces, status_counts, face_flags, invalid_corners, seams, poles, uv_bounds,
+// overlap_fraction, overlap. Every number is read from `judgement`.
+nlohmann::json judgementJson(const MappedMesh& mapped, const analysis::Judgement& judgement);
+
+// One reason as {code, severity, value, threshold, faces, text}, and all of a judgement's.
+nlohmann::json reasonJson(const analysis::Reason& reason);
+nlohmann::json reasonsJson(const analysis::Judgement& judgement);
 
 }  // namespace uvtk::cli

@@ -56,20 +56,23 @@ Image selectChannels(const Image& all, const std::vector<std::string>& names) {
 // The named inspection views: one picture, or a contact sheet of several.
 nlohmann::json drawViews(const FrameArguments& frame, const std::string& output, const MappedMesh& mapped,
                          const render::RenderOptions& renderOptions,
-                         const std::function<const MappedMesh::Measures&()>& measures) {
+                         const std::function<const analysis::Judgement&()>& judgement) {
   const std::vector<views::View> list = frame.views();
-  static const MappedMesh::Measures kNone;
-  const views::ViewInput in = mapped.viewInput(frame.showsMeasures() ? measures() : kNone);
+  const views::ViewInput in = mapped.viewInput(frame.showsMeasures() ? &judgement() : nullptr);
   views::ViewOptions options;
   options.render = renderOptions;
   options.layoutFill = frame.layoutFill;
   options.layoutSize = frame.layoutSize;
+  options.checks = frame.checks;
 
   nlohmann::json j = {{"output", output}, {"texcoords", mapped.source}, {"views", nlohmann::json::array()}};
   std::vector<std::pair<std::string, Image>> tiles;
   for (const views::View view : list) {
-    tiles.emplace_back(views::toString(view), views::drawView(view, in, options));
+    const views::DrawnView drawn = views::drawViewAndLegend(view, in, options);
+    tiles.emplace_back(views::toString(view),
+                       drawn.legend.empty() ? drawn.image : views::withLegend(drawn.image, drawn.legend));
     j["views"].push_back(views::toString(view));
+    j["legends"][views::toString(view)] = drawn.legend.lines();
     if (view == views::View::UvError) {
       const views::UvErrorMap error = views::uvErrorMap(in, options);
       j["uverror_texels"] = {
@@ -306,6 +309,8 @@ void addFrameOptions(CLI::App& app, FrameArguments& a) {
                          "The measure that fills the triangles of the layout view")
       ->default_str("stretch");
   app.add_option("--layout-size", a.layoutSize, "Pixels across the layout view's UV square")->capture_default_str();
+  app.add_option("--checks", a.checks, "Checks across the unit square in the checker view (1 to 1024)")
+      ->capture_default_str();
 }
 
 void FrameArguments::check(const std::string& output) {
@@ -317,6 +322,7 @@ void FrameArguments::check(const std::string& output) {
   if (!view.empty() && !aov.empty()) throw UsageError("--view and --aov exclude each other");
   views();
   if (layoutSize < 16 || layoutSize > 16384) throw UsageError("--layout-size: expected 16 to 16384 pixels");
+  if (checks < 1 || checks > 1024) throw UsageError("--checks: expected 1 to 1024 checks, got " + std::to_string(checks));
   io::checkImageType(output, io::PixelType::UInt8);
   if (!aov.empty()) io::checkImageType(aovOutput, io::PixelType::Float);
 }
@@ -371,9 +377,9 @@ render::RenderOptions renderOptions(const FrameArguments& frame, const TextureAr
 
 nlohmann::json drawFrame(const FrameArguments& frame, const std::string& output, const MappedMesh& mapped,
                          const render::RenderOptions& options,
-                         const std::function<const MappedMesh::Measures&()>& measures) {
+                         const std::function<const analysis::Judgement&()>& judgement) {
   UVTK_CHECK(!frame.needsExact() || mapped.exact);  // the callers refuse the file's UVs before any work
-  if (!frame.view.empty()) return drawViews(frame, output, mapped, options, measures);
+  if (!frame.view.empty()) return drawViews(frame, output, mapped, options, judgement);
 
   render::RenderOptions withAovs = options;
   withAovs.aovs = !frame.aov.empty();

@@ -81,6 +81,7 @@ struct FrameArguments {
   std::string view;  // inspection views instead of the textured picture
   views::View layoutFill = views::View::Stretch;
   int layoutSize = 512;
+  int checks = 16;  // the checker view's checks across the unit square
 
   // Checks the values for a frame written to `output` (and fills the default AOV file name);
   // throws UsageError. Nothing is written when a check fails.
@@ -104,10 +105,10 @@ render::RenderOptions renderOptions(const FrameArguments& frame, const TextureAr
                                     const Mat4& worldFromObject);
 
 // Draws `mapped` into `output` as `frame` asks: the textured picture (and AOVs), or the inspection
-// views; `measures` is called only when a view shows distortion. Returns the JSON record of the frame.
+// views; `judgement` is called only when a view shows measures. Returns the JSON record of the frame.
 // A frame that needs the exact mapping (FrameArguments::needsExact) needs a mapped.exact.
 nlohmann::json drawFrame(const FrameArguments& frame, const std::string& output, const MappedMesh& mapped,
                          const render::RenderOptions& options,
-                         const std::function<const MappedMesh::Measures&()>& measures);
+                         const std::function<const analysis::Judgement&()>& judgement);
 
 }  // namespace uvtk::cli

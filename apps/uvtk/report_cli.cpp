@@ -35,9 +35,9 @@ void ReportArguments::check() const {
   camera.check();
 }
 
-nlohmann::json writeReport(const ReportArguments& a, const MappedMesh& mapped, const MappedMesh::Measures& measures,
+nlohmann::json writeReport(const ReportArguments& a, const MappedMesh& mapped, const analysis::Judgement& judgement,
                            const nlohmann::json& input, const nlohmann::json& milliseconds) {
-  nlohmann::json report = measuresJson(mapped, measures.summary);
+  nlohmann::json report = judgementJson(mapped, judgement);
   report["tool"] = {{"name", "uvtk"}, {"version", UVTK_VERSION}};
   report["input"] = input;
   report["texcoords"] = mapped.source;
@@ -48,7 +48,7 @@ nlohmann::json writeReport(const ReportArguments& a, const MappedMesh& mapped, c
   if (!a.html.empty()) {
     const auto [width, height] = parseImageSize(a.size, "--size");
     const render::Texture texture = render::checkerTexture(a.textureSize, std::max(1, a.textureSize / 8));
-    const views::ViewInput in = mapped.viewInput(measures);
+    const views::ViewInput in = mapped.viewInput(&judgement);
     views::ViewOptions options;
     options.render.camera = a.camera.frame(mapped.mesh, width, height);
     options.render.raster.threads = a.threads;

@@ -21,11 +21,11 @@ struct ReportArguments {
 };
 void addReportOptions(CLI::App& app, ReportArguments& arguments);
 
-// Writes the report of `mapped` with its `measures` (taken at arguments.overlapResolution);
+// Writes the report of `mapped` with its `judgement` (taken at arguments.overlapResolution);
 // `input` is the "input" record, `milliseconds` the times of the stages before (none when null).
 // Returns the report.
 nlohmann::json writeReport(const ReportArguments& arguments, const MappedMesh& mapped,
-                           const MappedMesh::Measures& measures, const nlohmann::json& input,
+                           const analysis::Judgement& judgement, const nlohmann::json& input,
                            const nlohmann::json& milliseconds = nullptr);
 
 }  // namespace uvtk::cli

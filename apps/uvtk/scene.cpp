@@ -130,6 +130,19 @@ class SceneReader {
                                                  "\" (also at " + entries[j].pointer + ")");
   }
 
+  // The schema has checked the names and the values' types.
+  analysis::Thresholds thresholds(const json& j) const {
+    analysis::Thresholds t;
+    for (const auto severity : {analysis::Verdict::Warn, analysis::Verdict::Fail}) {
+      const char* key = analysis::toString(severity);
+      for (const auto& [rule, value] : j.value(key, json::object()).items()) {
+        const std::string text = value.is_string() ? value.get<std::string>() : value.dump();
+        t.set(rule + "=" + text, severity, path_ + ": /thresholds/" + key + "/" + rule);
+      }
+    }
+    return t;
+  }
+
   Scene read() const {
     const json doc = io::readJsonFile(path_);
     static const json schema = json::parse(sceneSchemaText());
@@ -142,6 +155,7 @@ class SceneReader {
     Scene scene;
     scene.path = path_;
     scene.title = doc.value("title", fs::path(path_).stem().string());
+    if (doc.contains("thresholds")) scene.thresholds = thresholds(doc["thresholds"]);
     const json none = json::array();
     for (std::size_t i = 0; i < doc.value("cameras", none).size(); ++i)
       scene.cameras.push_back(camera(doc["cameras"][i], "/cameras/" + std::to_string(i)));

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/judgement.h"
 #include "compare_cli.h"
 #include "core/math.h"
 #include "param/projector.h"
@@ -79,6 +80,7 @@ struct Scene {
   std::vector<SceneCamera> cameras;
   std::vector<SceneTexture> textures;
   std::vector<SceneOutput> outputs;
+  analysis::Thresholds thresholds;  // the verdict's, for every mapping ("thresholds")
   TextureArguments defaultTexture;  // for render outputs that name none
   std::shared_ptr<CLI::App> defaultTextureParser;
 };

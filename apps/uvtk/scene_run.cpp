@@ -27,8 +27,15 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-// The overlap raster of the distortion views (MappedMesh::measure's default).
+// The overlap raster of the judgement the views, the OBJ summaries and the gallery read
+// (MappedMesh::judge's default).
 constexpr int kViewsOverlapResolution = 1024;
+
+// The verdict and first reason of a mapping, for the run report and the gallery.
+void addVerdict(json& record, const analysis::Judgement& judgement) {
+  record["verdict"] = analysis::toString(judgement.verdict);
+  record["first_reason"] = judgement.firstReason();
+}
 
 std::string joined(const std::vector<std::string>& items) {
   std::string text;
@@ -65,7 +72,7 @@ struct MeshWork {
   io::ReadMeshResult input;
   json inputSummary;
   std::map<std::size_t, MappedMesh> mapped;
-  std::map<std::pair<std::size_t, int>, MappedMesh::Measures> measures;
+  std::map<std::pair<std::size_t, int>, analysis::Judgement> judgements;
 };
 
 class SceneRunner {
@@ -178,8 +185,8 @@ class SceneRunner {
         work->mapped.emplace(stage.index, map(scene_.mappings[stage.index], *work));
         return;
       case Stage::Kind::Measure:
-        work->measures[{stage.index, stage.overlapResolution}] =
-            work->mapped.at(stage.index).measure(stage.overlapResolution);
+        work->judgements[{stage.index, stage.overlapResolution}] =
+            work->mapped.at(stage.index).judge(scene_.thresholds, stage.overlapResolution);
         return;
       case Stage::Kind::Obj:
         return writeObj(scene_.outputs[stage.index], stage.index, *work);
@@ -188,9 +195,11 @@ class SceneRunner {
       case Stage::Kind::Report: {
         const SceneOutput& o = scene_.outputs[stage.index];
         const MappedMesh& mapped = work->mapped.at(*o.mapping);
-        const json report = writeReport(o.report, mapped, work->measures.at({*o.mapping, o.report.overlapResolution}),
-                                        work->inputSummary);
+        const analysis::Judgement& judgement = work->judgements.at({*o.mapping, o.report.overlapResolution});
+        const json report = writeReport(o.report, mapped, judgement, work->inputSummary);
         outputs_[stage.index] = {{"mapping", scene_.mappings[*o.mapping].name},
+                                 {"verdict", report["verdict"]},
+                                 {"first_reason", judgement.firstReason()},
                                  {"mesh", scene_.meshes[scene_.mappings[*o.mapping].mesh].name},
                                  {"stretch_l2", report["stretch_l2"]},
                                  {"stretch_linf", report["stretch_linf"]},
@@ -201,12 +210,17 @@ class SceneRunner {
       }
       case Stage::Kind::Compare: {
         const SceneOutput& o = scene_.outputs[stage.index];
-        const Comparison comparison = compareMappings(o.compare, work->input.mesh, work->inputSummary);
+        CompareArguments arguments = o.compare;
+        arguments.thresholds = scene_.thresholds;
+        const Comparison comparison = compareMappings(arguments, work->input.mesh, work->inputSummary);
         json top = json::array();
         for (const json& r : comparison.record["ranking"]) {
           if (top.size() == 5) break;
-          top.push_back(
-              {{"rank", r["rank"]}, {"name", r["name"]}, {"stretch_l2", r["stretch_l2"]}, {"usable", r["usable"]}});
+          top.push_back({{"rank", r["rank"]},
+                         {"name", r["name"]},
+                         {"stretch_l2", r["stretch_l2"]},
+                         {"verdict", r["verdict"]},
+                         {"first_reason", r["first_reason"]}});
         }
         outputs_[stage.index] = {{"mesh", scene_.meshes[*o.mesh].name}, {"best", comparison.best}, {"top", top}};
         return;
@@ -249,9 +263,11 @@ class SceneRunner {
     write.floatPrecision = o.floatDigits;
     write.header = "uvtk run " + scene_.path + ": mapping " + scene_.mappings[*o.mapping].name;
     io::writeObj(o.path, mapped.mesh, &mapped.uv, write);
-    const json summary = mapSummaryJson(mapped, work.inputSummary, o.path);  // as `uvtk map --json`
+    const analysis::Judgement& judgement = work.judgements.at({*o.mapping, kViewsOverlapResolution});
+    const json summary = mapSummaryJson(mapped, judgement, work.inputSummary, o.path);  // as `uvtk map --json`
     if (!o.json.empty()) io::writeFileAtomically(o.json, summary.dump(2) + "\n");
     outputs_[index] = {{"mapping", scene_.mappings[*o.mapping].name}, {"summary", summary}};
+    addVerdict(outputs_[index], judgement);
   }
 
   void renderOutput(const SceneOutput& o, std::size_t index, MeshWork& work) {
@@ -261,12 +277,13 @@ class SceneRunner {
     const render::Camera camera = o.camera ? scene_.cameras[*o.camera].arguments.make(mapped.mesh, model, width, height)
                                            : CameraArguments{}.make(mapped.mesh, model, width, height);
     const std::size_t texture = o.texture.value_or(scene_.textures.size());
-    const auto measures = [&]() -> const MappedMesh::Measures& {
-      return work.measures.at({*o.mapping, kViewsOverlapResolution});
+    const auto judgement = [&]() -> const analysis::Judgement& {
+      return work.judgements.at({*o.mapping, kViewsOverlapResolution});
     };
     json record =
         drawFrame(o.frame, o.path, mapped,
-                  renderOptions(o.frame, textureOf(scene_, texture), textures_.at(texture), camera, model), measures);
+                  renderOptions(o.frame, textureOf(scene_, texture), textures_.at(texture), camera, model), judgement);
+    if (work.judgements.count({*o.mapping, kViewsOverlapResolution})) addVerdict(record, judgement());
     record["mapping"] = scene_.mappings[*o.mapping].name;
     record["mesh"] = scene_.meshes[scene_.mappings[*o.mapping].mesh].name;
     if (!o.json.empty()) io::writeFileAtomically(o.json, record.dump(2) + "\n");
@@ -307,13 +324,19 @@ std::vector<Stage> planScene(const Scene& s) {
   const std::size_t defaultTexture = s.textures.size();
   std::vector<bool> mappingUsed(s.mappings.size()), meshUsed(s.meshes.size()), textureUsed(defaultTexture + 1);
   std::vector<std::set<int>> measures(s.mappings.size());
+  const bool gallery = std::any_of(s.outputs.begin(), s.outputs.end(),
+                                   [](const SceneOutput& o) { return o.kind == SceneOutput::Kind::Gallery; });
+  // Whether an output reads the mapping's judgement: views of measures, OBJ summaries (as `uvtk map
+  // --json`), and every picture a gallery labels with its verdict.
+  const auto judged = [gallery](const SceneOutput& o) {
+    return o.kind == SceneOutput::Kind::Obj ||
+           (o.kind == SceneOutput::Kind::Render && (gallery || o.frame.showsMeasures()));
+  };
   for (const SceneOutput& o : s.outputs) {
     if (o.mapping) mappingUsed[*o.mapping] = true, meshUsed[s.mappings[*o.mapping].mesh] = true;
     if (o.kind == SceneOutput::Kind::Compare) meshUsed[*o.mesh] = true;
-    if (o.kind == SceneOutput::Kind::Render) {
-      textureUsed[o.texture.value_or(defaultTexture)] = true;
-      if (o.frame.showsMeasures()) measures[*o.mapping].insert(kViewsOverlapResolution);
-    }
+    if (o.kind == SceneOutput::Kind::Render) textureUsed[o.texture.value_or(defaultTexture)] = true;
+    if (judged(o)) measures[*o.mapping].insert(kViewsOverlapResolution);
     if (o.kind == SceneOutput::Kind::Report) measures[*o.mapping].insert(o.report.overlapResolution);
   }
 
@@ -355,7 +378,7 @@ std::vector<Stage> planScene(const Scene& s) {
                           resolution,
                           m,
                           s.mappings[k].name,
-                          {"distortion", "overlap on " + std::to_string(resolution) + "^2 pixels"},
+                          {"distortion", "overlap on " + std::to_string(resolution) + "^2 pixels", "verdict"},
                           {mapStage[k]}});
         }
     for (std::size_t i = 0; i < s.outputs.size(); ++i) {
@@ -371,10 +394,8 @@ std::vector<Stage> planScene(const Scene& s) {
       if (o.kind == SceneOutput::Kind::Compare)
         computes.push_back(o.compare.baselines ? "every projector, LSCM and ARAP" : "every projector");
       std::vector<std::size_t> needs = {o.mapping ? mapStage[*o.mapping] : read};
-      if (o.kind == SceneOutput::Kind::Render) {
-        needs.push_back(textureStage[o.texture.value_or(defaultTexture)]);
-        if (o.frame.showsMeasures()) needs.push_back(measureStage[{*o.mapping, kViewsOverlapResolution}]);
-      }
+      if (o.kind == SceneOutput::Kind::Render) needs.push_back(textureStage[o.texture.value_or(defaultTexture)]);
+      if (judged(o)) needs.push_back(measureStage[{*o.mapping, kViewsOverlapResolution}]);
       if (o.kind == SceneOutput::Kind::Report) needs.push_back(measureStage[{*o.mapping, o.report.overlapResolution}]);
       plan.push_back({kKinds[int(o.kind)], i, 0, m, joined(files), computes, needs});
     }

@@ -1,4 +1,5 @@
-// The mapping summary as JSON, the same numbers as the one-line summary on stderr.
+// The projector's record of the mapping as JSON: what it did (poles, invalid vertices, cut faces).
+// The seams, counts and verdict are the judgement's (measures_json.h), not recounted here.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -11,8 +12,6 @@ inline nlohmann::json summaryJson(const param::MappingSummary& s) {
   return {{"vertices", s.vertices},
           {"faces", s.faces},
           {"straddling_faces", s.straddlingFaces},
-          {"seam_edges", s.seamEdges},
-          {"seam_length", s.seamLength},
           {"pole_vertices", s.poleVertices},
           {"pole_faces", s.poleFaces},
           {"invalid_vertices", s.invalidVertices},

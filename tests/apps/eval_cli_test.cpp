@@ -189,6 +189,23 @@ TEST_F(EvalCli, CubeDirectConventionGivesTheNotesExample) {
   for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(faces.number(i, "w"), double(i)) << i;
 }
 
+TEST_F(EvalCli, ConventionNotesGivesTheNotesExampleByName) {
+  // --convention notes stands for --cube-convention direct --fit none --omap centroid --cube-layout faces.
+  const Table t = csv("--projector cube --convention notes --point=-0.2,0.5,-0.84");
+  ASSERT_EQ(t.rows.size(), 1u) << out;
+  EXPECT_EQ(t.number(0, "w"), 5.0);                   // -Z
+  EXPECT_NEAR(t.number(0, "u"), 8.0 / 21.0, 1e-15);   // (1 - 0.2/0.84)/2 = 0.38095...
+  EXPECT_NEAR(t.number(0, "v"), 67.0 / 84.0, 1e-15);  // (1 + 0.5/0.84)/2 = 0.797619...
+  EXPECT_EQ(t.text(0, "status"), "ok");
+  const std::string byName = out;
+  csv("--projector cube --cube-convention direct --fit none --omap centroid --cube-layout faces "
+      "--point=-0.2,0.5,-0.84");
+  EXPECT_EQ(out, byName);
+  // What it owns is refused beside it (exit 2).
+  EXPECT_EQ(eval("--projector cube --convention notes --cube-convention gl --point 1,0,0").status, 2);
+  EXPECT_EQ(eval("--projector cylinder --convention notes --point 1,0,0").status, 2);
+}
+
 TEST_F(EvalCli, TexgenSphereMapAndItsSingularPoint) {
   // Identity view, e = (0, 0, -5): u = (0, 0, -1); n = (0, 1, 1)/sqrt 2, n.u = -1/sqrt 2;
   // r = u - 2 n (n.u) = (0, 1, 0); m = 2 sqrt(0 + 1 + 1); (s, t) = (1/2, 1/(2 sqrt 2) + 1/2).
@@ -350,17 +367,24 @@ TEST_F(EvalCli, PerRowEyeEqualsTheSameEyeGivenByOption) {
 }
 
 TEST_F(EvalCli, ReflectionTakesEachRowsEyeWithoutEyeOption) {
-  // Plane, p = (0, 0, 1), N = +z, eye (1, 0, 2): V = (-1, 0, -1)/sqrt 2, R = (-1, 0, 1)/sqrt 2; the
-  // line p + tR meets z = 0 at (1, 0, 0). From (0, 1, 2) at (0, 1, 0).
+  // Plane, p = (0, 0, 1), N = -z (facing the plane), eye (1, 0, 0): V = (-1, 0, 1)/sqrt 2,
+  // R = (-1, 0, -1)/sqrt 2; the ray p + tR meets z = 0 at t = sqrt 2, at (-1, 0, 0). From (0, 1, 0) at
+  // (0, -1, 0).
   const Table t = csv("--projector plane --omap reflection --input json",
-                      "{\"p\": [0, 0, 1], \"n\": [0, 0, 1], \"eye\": [1, 0, 2]}\n"
-                      "{\"p\": [0, 0, 1], \"n\": [0, 0, 1], \"eye\": [0, 1, 2]}\n"
-                      "{\"p\": [0, 0, 1], \"n\": [0, 0, 1], \"eye\": [0, 1, 2]}\n");
+                      "{\"p\": [0, 0, 1], \"n\": [0, 0, -1], \"eye\": [1, 0, 0]}\n"
+                      "{\"p\": [0, 0, 1], \"n\": [0, 0, -1], \"eye\": [0, 1, 0]}\n"
+                      "{\"p\": [0, 0, 1], \"n\": [0, 0, -1], \"eye\": [0, 1, 0]}\n");
   ASSERT_EQ(t.rows.size(), 3u) << out;
-  EXPECT_NEAR(t.number(0, "u"), 1.0, 1e-15);
+  EXPECT_NEAR(t.number(0, "u"), -1.0, 1e-15);
   EXPECT_NEAR(t.number(0, "v"), 0.0, 1e-15);
   EXPECT_NEAR(t.number(1, "u"), 0.0, 1e-15);
-  EXPECT_NEAR(t.number(1, "v"), 1.0, 1e-15);
+  EXPECT_NEAR(t.number(1, "v"), -1.0, 1e-15);
+  // With N = +z the reflected ray leaves the plane: it meets it only behind the point (§4).
+  const Table behind = csv("--projector plane --omap reflection --input json",
+                           "{\"p\": [0, 0, 1], \"n\": [0, 0, 1], \"eye\": [1, 0, 2]}\n");
+  ASSERT_EQ(behind.rows.size(), 1u) << out;
+  EXPECT_EQ(behind.text(0, "status"), "invalid");
+  EXPECT_NE(behind.text(0, "reason").find("behind"), std::string::npos) << out;
   EXPECT_EQ(t.text(2, "v"), t.text(1, "v"));
   // A row without an eye then has none to use.
   const CliRun r =

@@ -1,5 +1,7 @@
 // `uvtk map` as a user runs it: exit codes, messages, outputs, and nothing written on failure.
 #include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -56,9 +58,18 @@ TEST_F(MapCli, WritesTheSummaryAsJson) {
   io::writeObj(path("sphere.obj"), meshes::latLongSphere(16, 8), nullptr);
   ASSERT_EQ(uvtk("map " + path("sphere.obj") + " -o " + path("out.obj") + " --json " + path("s.json")).status, 0);
   const std::string json = readText(path("s.json"));
-  for (const char* key : {"\"vertices\": 114", "\"faces\": 224", "\"seam_edges\": 8", "\"pole_vertices\": 2",
-                          "\"pole_faces\": 32", "\"invalid_vertices\": 0", "\"milliseconds\""})
+  for (const char* key : {"\"vertices\": 114", "\"faces\": 224", "\"pole_vertices\": 2", "\"pole_faces\": 32",
+                          "\"invalid_vertices\": 0", "\"milliseconds\""})
     EXPECT_NE(json.find(key), std::string::npos) << key << "\n" << json;
+  // The seams and the verdict are the judgement's: the 8 edges of the seam meridian, pole to pole;
+  // the 32 pole faces (2 x 16 of 224, 7.5 % of the area) warn.
+  const nlohmann::json j = nlohmann::json::parse(json);
+  EXPECT_EQ(j["judgement"]["seams"]["wrap_edges"], 8);
+  EXPECT_EQ(j["judgement"]["seams"]["cut_edges"], 0);
+  EXPECT_EQ(j["verdict"], "warn");
+  ASSERT_EQ(j["reasons"].size(), 1u);
+  EXPECT_EQ(j["reasons"][0]["code"], "pole_area");
+  EXPECT_EQ(j["reasons"][0]["faces"], 32);
 }
 
 TEST_F(MapCli, HelpListsEveryOptionWithItsDefault) {

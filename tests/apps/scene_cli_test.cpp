@@ -66,8 +66,9 @@ TEST_F(SceneCli, AnObjOnlySceneReadsMapsAndWritesAndComputesNothingElse) {
                         {{"name", "torus"}, {"path", kMeshes + "/torus.obj"}}}},
                       {"outputs", {{{"kind", "obj"}, {"mapping", "s"}, {"path", "out/s.obj"}}}}};
   const json p = plan(scene);
-  EXPECT_EQ(stages(p), (std::vector<std::string>{"read", "map", "obj"}));
-  EXPECT_TRUE(computed(p).empty());  // no normals, no mipmaps, no measures
+  // The OBJ's summary is `uvtk map --json`'s, verdict included: one judgement, nothing else.
+  EXPECT_EQ(stages(p), (std::vector<std::string>{"read", "map", "measure", "obj"}));
+  EXPECT_EQ(computed(p), (std::set<std::string>{"distortion", "overlap on 1024^2 pixels", "verdict"}));
   EXPECT_TRUE(written() == std::vector<std::string>{"plan.json"}) << "--plan runs nothing";
 
   const CliRun r = run(scene, "--json " + path("run.json"));
@@ -76,7 +77,8 @@ TEST_F(SceneCli, AnObjOnlySceneReadsMapsAndWritesAndComputesNothingElse) {
   EXPECT_EQ(stages(report), stages(p));
   for (const json& s : report["stages"]) EXPECT_EQ(s["status"], "ok");
   EXPECT_TRUE(fs::exists(path("out/s.obj")));
-  EXPECT_EQ(report["outputs"][0]["summary"]["seam_edges"].get<int>() > 0, true);
+  EXPECT_GT(report["outputs"][0]["summary"]["judgement"]["seams"]["wrap_edges"].get<int>(), 0);
+  EXPECT_EQ(report["outputs"][0]["verdict"], report["outputs"][0]["summary"]["verdict"]);
 }
 
 TEST_F(SceneCli, SharedMappingIsComputedOnceAndOnlyRequiredExtrasArePlanned) {

@@ -1,4 +1,4 @@
-// --convention blender|assimp: hand-computed values, and the per-corner UVs Blender 3.4.1 and
+// --convention blender|assimp|notes: hand-computed values, and the per-corner UVs Blender 3.4.1 and
 // assimp 5.2.5 wrote themselves (tests/data/peers/README.md), reproduced through the point API.
 #include <gtest/gtest.h>
 
@@ -84,6 +84,86 @@ TEST(ConventionAssimp, CylinderVRunsOverTheBoxAlongY) {
   const Result r = m.at(offCentre(1, 1, 0));
   EXPECT_DOUBLE_EQ(r.u, 0.75);
   EXPECT_DOUBLE_EQ(r.v, 0.75);  // (y - ymin)/(ymax - ymin) = (1 + 2)/4
+}
+
+// ---- --convention notes: the lecture notes' worked examples ----
+
+TEST(ConventionNotes, CubeGivesTheNotesWorkedExample) {
+  // "The vector (-0.2, 0.5, -0.84) selects the -Z face; (-0.2, 0.5) gets mapped to (0.38, 0.80)":
+  // major axis |z| = 0.84, direct convention on -Z: s = (x/|z| + 1)/2, t = (y/|z| + 1)/2.
+  const Mapping m("--projector cube --convention notes");  // no mesh: nothing is fitted
+  const Result r = m.at({-0.2, 0.5, -0.84});
+  EXPECT_EQ(r.status, Status::Ok) << r.reason;
+  EXPECT_EQ(r.w, 5.0);  // -Z in the faces layout (+X -X +Y -Y +Z -Z)
+  EXPECT_NEAR(r.u, 8.0 / 21.0, 1e-15);   // (1 - 0.2/0.84)/2 = 0.380952...
+  EXPECT_NEAR(r.v, 67.0 / 84.0, 1e-15);  // (1 + 0.5/0.84)/2 = 0.797619...
+  EXPECT_NEAR(r.u, 0.38, 0.005);
+  EXPECT_NEAR(r.v, 0.80, 0.005);
+  // Exactly the long form the preset stands for.
+  const Result longForm =
+      Mapping("--projector cube --cube-convention direct --fit none --omap centroid --cube-layout faces").at(
+          {-0.2, 0.5, -0.84});
+  EXPECT_EQ(r.u, longForm.u);
+  EXPECT_EQ(r.v, longForm.v);
+  EXPECT_EQ(r.w, longForm.w);
+  // The direction from the origin selects the face, whatever the length: the point scaled by 3.
+  const Result far = m.at({-0.6, 1.5, -2.52});
+  EXPECT_EQ(far.w, 5.0);
+  EXPECT_NEAR(far.u, 8.0 / 21.0, 1e-15);
+  EXPECT_NEAR(far.v, 67.0 / 84.0, 1e-15);
+}
+
+TEST(ConventionNotes, CubeUsesTheRemainingCoordinatesInXYZOrderOnEveryFace) {
+  const Mapping m("--projector cube --convention notes");
+  // +X: (y, z); -Y: (x, z); +Z: (x, y); each divided by the major component's magnitude.
+  const Result px = m.at({2, 1, -1});
+  EXPECT_EQ(px.w, 0.0);
+  EXPECT_DOUBLE_EQ(px.u, 0.75);  // (1/2 + 1)/2
+  EXPECT_DOUBLE_EQ(px.v, 0.25);  // (-1/2 + 1)/2
+  const Result ny = m.at({1, -4, 2});
+  EXPECT_EQ(ny.w, 3.0);
+  EXPECT_DOUBLE_EQ(ny.u, 0.625);
+  EXPECT_DOUBLE_EQ(ny.v, 0.75);
+  const Result pz = m.at({0.5, -0.5, 1});
+  EXPECT_EQ(pz.w, 4.0);
+  EXPECT_DOUBLE_EQ(pz.u, 0.75);
+  EXPECT_DOUBLE_EQ(pz.v, 0.25);
+}
+
+TEST(ConventionNotes, SphereIsSeed004InObjectCoordinates) {
+  // s = atan2(y, x)/(2 pi) in (-1/2, 1/2], t = acos(z)/pi (t = 0 at +z), of the direction from the origin.
+  const Mapping m("--projector sphere --convention notes");
+  const Result a = m.at({0, 2, 0});
+  EXPECT_DOUBLE_EQ(a.u, 0.25);
+  EXPECT_DOUBLE_EQ(a.v, 0.5);
+  const Result b = m.at({0, -1, 1});  // azimuth -90 degrees, polar angle 45 degrees
+  EXPECT_NEAR(b.u, -0.25, 1e-15);
+  EXPECT_NEAR(b.v, 0.25, 1e-15);
+  const Result top = m.at({0, 0, 3});
+  EXPECT_EQ(top.status, Status::Pole);
+  EXPECT_EQ(top.v, 0.0);
+}
+
+TEST(ConventionNotes, LeavesTheRayFreeButOwnsTheFormulasAndThePlacement) {
+  // --omap reflection looks the notes' cube up by the reflected vector: at the eye's height a
+  // flat mirror facing +z sends the view from (0, 0, 5) back along +z, the +Z face's centre.
+  const Result reflected =
+      Mapping("--projector cube --convention notes --omap reflection --at-infinity --eye 0,0,5").at({0, 0, 0}, {0, 0, 1});
+  EXPECT_EQ(reflected.w, 4.0);
+  EXPECT_DOUBLE_EQ(reflected.u, 0.5);
+  EXPECT_DOUBLE_EQ(reflected.v, 0.5);
+  for (const char* options : {"--projector cube --convention notes --cube-convention gl",
+                              "--projector cube --convention notes --fit bbox",
+                              "--projector cube --convention notes --center 1,0,0",
+                              "--projector sphere --convention notes --sphere-preset glu",
+                              "--projector cylinder --convention notes", "--projector plane --convention notes"}) {
+    try {
+      Mapping m(options);
+      ADD_FAILURE() << options << ": accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("--convention"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(Convention, RejectsWhatItSetsAndSurfacesTheToolDoesNotHave) {

@@ -29,23 +29,21 @@ namespace {
 struct Mapped {
   Mesh mesh;
   UvMap uv;
-  std::vector<analysis::FaceDistortion> faces;
-  analysis::Summary summary;
-  std::vector<int> poles;
+  analysis::Judgement judgement;
   std::optional<render::PixelMapping> exact;
   bool wrapsU = false;
   std::vector<double> q;  // texgen's
 
   // After the UVs change.
   void analyse() {
-    faces = analysis::measureFaces(mesh, uv);
-    summary = analysis::summarize(mesh, uv, faces, 256);
-    poles = summary.poleVertices;
+    analysis::JudgementOptions options;
+    options.overlapResolution = 256;
+    judgement = analysis::judge(mesh, uv, options);
   }
   ViewInput input() const {
     ViewInput in;
-    in.mesh = &mesh, in.uv = &uv, in.faces = &faces, in.summary = &summary;
-    in.poleVertices = poles, in.wrapsU = wrapsU, in.exact = exact;
+    in.mesh = &mesh, in.uv = &uv, in.judgement = &judgement;
+    in.wrapsU = wrapsU, in.exact = exact;
     in.q = q.empty() ? nullptr : &q;
     return in;
   }
@@ -100,27 +98,27 @@ Vec2 projectToImage(const ViewOptions& o, const Vec3& p) {
 
 // ---- checker and uvgrid ----
 
-TEST(TexturedViews, AreTheRendererWithTheProceduralTextureReplace) {
+// The checker view (shaded, ViewOptions::checks) is checked in checker_view_test.cpp.
+TEST(TexturedViews, UvgridIsTheRendererWithTheProceduralTextureReplace) {
   const Mapped m = planarPlane();
   ViewOptions o = viewFrom(m.mesh, Vec3::UnitZ(), Vec3::UnitY(), 64);
-  o.render.env = render::EnvMode::Modulate;  // overridden: the views show the texture as it is
-  const render::Texture checker = render::checkerTexture(64, 8);
+  o.render.env = render::EnvMode::Modulate;  // overridden: uvgrid shows the texture as it is
+  const std::optional<render::Texture> uvgrid = render::proceduralTexture("uvgrid:1024");
   render::RenderOptions direct = o.render;
-  direct.texture = &checker;
+  direct.texture = &*uvgrid;
   direct.env = render::EnvMode::Replace;
   const Image expected = render::render(m.mesh, cornerTexcoords(m.input()), direct).colour;
-  const Image checkerView = drawView(View::Checker, m.input(), o);
-  ASSERT_EQ(checkerView.width, 64);
-  ASSERT_EQ(checkerView.height, 64);
-  EXPECT_EQ(checkerView.pixels, expected.pixels);
-  EXPECT_NE(drawView(View::Uvgrid, m.input(), o).pixels, expected.pixels);
+  const Image uvgridView = drawView(View::Uvgrid, m.input(), o);
+  ASSERT_EQ(uvgridView.width, 64);
+  ASSERT_EQ(uvgridView.height, 64);
+  EXPECT_EQ(uvgridView.pixels, expected.pixels);
 }
 
 // ---- heatmaps ----
 
 TEST(Heatmaps, AnIsometricPlaneIsUniformlyTheColourOfTheExactValue) {
   const Mapped m = planarPlane();
-  ASSERT_EQ(m.summary.statusCounts[analysis::FaceStatus::Ok], m.mesh.faceCount());
+  ASSERT_EQ(m.judgement.summary.statusCounts[analysis::FaceStatus::Ok], m.mesh.faceCount());
   const ViewOptions o = viewFrom(m.mesh, Vec3::UnitZ(), Vec3::UnitY(), 64, true);  // face-on: shade 1
   const Scene scene = rasterizeScene(m.mesh, o.render);
   for (View view : {View::Stretch, View::Linf, View::Angle, View::Area}) {
@@ -146,8 +144,8 @@ TEST(Heatmaps, AFlippedFaceShowsTheFlippedColourAndIsListedInTheLegend) {
   constexpr std::size_t kFlipped = 9;
   std::swap(m.uv.uv[3 * kFlipped + 1], m.uv.uv[3 * kFlipped + 2]);  // mirrors the face in UV
   m.analyse();
-  ASSERT_EQ(m.faces[kFlipped].status, analysis::FaceStatus::Flipped);
-  ASSERT_EQ(m.summary.statusCounts[analysis::FaceStatus::Flipped], 1u);
+  ASSERT_EQ(m.judgement.faces[kFlipped].status, analysis::FaceStatus::Flipped);
+  ASSERT_EQ(m.judgement.summary.statusCounts[analysis::FaceStatus::Flipped], 1u);
   const ViewOptions o = viewFrom(m.mesh, Vec3::UnitZ(), Vec3::UnitY(), 64, true);
   const Scene scene = rasterizeScene(m.mesh, o.render);
   const Vec3 flipped = statusColour(analysis::FaceStatus::Flipped);
@@ -169,7 +167,7 @@ TEST(Heatmaps, AFlippedFaceShowsTheFlippedColourAndIsListedInTheLegend) {
     }
   EXPECT_TRUE(flippedSwatch);
   EXPECT_FALSE(poleSwatch);
-  const FaceColouring colouring = colourByMeasure(View::Stretch, m.faces, m.summary);
+  const FaceColouring colouring = colourByMeasure(View::Stretch, m.judgement);
   ASSERT_EQ(colouring.legend.entries.size(), 1u);
   EXPECT_EQ(colouring.legend.entries[0].label, "flipped: 1");
 }
@@ -192,24 +190,24 @@ TEST(Heatmaps, FaceColoursMatchTheLegendBarAtTheirValues) {
   m.analyse();
   const ViewOptions o = viewFrom(m.mesh, Vec3::UnitZ(), Vec3::UnitY(), 96, true);
   for (View view : {View::Stretch, View::Linf, View::Angle, View::Area}) {
-    const FaceColouring colouring = colourByMeasure(view, m.faces, m.summary);
+    const FaceColouring colouring = colourByMeasure(view, m.judgement);
     const ColourBar& bar = *colouring.legend.bar;
     EXPECT_EQ(bar.ticks.back().label.substr(0, 2), ">=");
     const Image image = drawView(view, m.input(), o);
     const BarPlacement at = barPlacement(colouring.legend, 96);
     const Scene scene = rasterizeScene(m.mesh, o.render);
-    const analysis::AreaTotals totals = analysis::okAreaTotals(m.faces);
+    const analysis::AreaTotals totals = analysis::okAreaTotals(m.judgement.faces);
     double largest = -1e300;
     int largestFace = 0;
     for (int f = 0; f < 4; ++f) {
-      const double value = measureValue(view, m.faces[std::size_t(f)], totals);
+      const double value = measureValue(view, m.judgement.faces[std::size_t(f)], totals);
       if (value > largest) largest = value, largestFace = f;
     }
     for (int row = 0; row < 96; ++row)
       for (int x = 0; x < 96; ++x) {
         const std::int32_t face = scene.visible.face[scene.visible.index(x, row)];
         if (face < 0) continue;
-        const double value = measureValue(view, m.faces[std::size_t(face)], totals);
+        const double value = measureValue(view, m.judgement.faces[std::size_t(face)], totals);
         const Vec3 barColour = pixelColour(image, at.columnAt(bar.scale.position(value)), at.top + kBarHeight / 2);
         // The bar samples its pixel's centre: within half a pixel of the value's position.
         ASSERT_LT((pixelColour(image, x, row) - barColour).cwiseAbs().maxCoeff(), 0.01) << toString(view) << " face " << face;
@@ -228,7 +226,7 @@ TEST(Heatmaps, FaceColoursMatchTheLegendBarAtTheirValues) {
 // An open cylinder by the cylinder projector: the wrap seam runs up the +x side.
 TEST(SeamsView, DrawsTheSeamWhereItsEdgesProjectAndNotBehindTheSurface) {
   const Mapped m = mapWith(meshes::cylinder(24, 4, 1.0, 2.0, false), projector(param::SurfaceKind::Cylinder));
-  const std::vector<analysis::SeamEdge> edges = analysis::seamEdgeList(m.mesh, m.uv, m.poles);
+  const std::vector<analysis::SeamEdge> edges = analysis::seamEdgeList(m.mesh, m.uv, m.judgement.summary.poleVertices);
   ASSERT_EQ(edges.size(), 4u);
   const Vec3& wrap = kWrapSeamColour;
 
@@ -260,7 +258,7 @@ TEST(SeamsView, DrawsTheSeamWhereItsEdgesProjectAndNotBehindTheSurface) {
 
 TEST(SeamsView, MarksPolesAndTheSeamOfASphere) {
   const Mapped m = mapWith(meshes::latLongSphere(16, 8), projector(param::SurfaceKind::Sphere));
-  ASSERT_EQ(m.poles, (std::vector<int>{0, int(m.mesh.vertexCount()) - 1}));
+  ASSERT_EQ(m.judgement.summary.poleVertices, (std::vector<int>{0, int(m.mesh.vertexCount()) - 1}));
   const ViewOptions o = viewFrom(m.mesh, Vec3(1, 0, 1), Vec3::UnitZ(), 128);
   const Image image = drawView(View::Seams, m.input(), o);
   const Vec2 pole = projectToImage(o, m.mesh.positions[0]);
@@ -432,7 +430,7 @@ TEST(LayoutView, OverlapsAreHatchedAndFillsHaveTheMeasureColour) {
   const Image image = drawView(View::Layout, m.input(), o);
   EXPECT_GE(image.width, 2 * kLegendPadding + kBarLength);  // widened by the legend
   EXPECT_GT(image.height, 200);
-  const analysis::UvGrid grid = layoutGrid(m.summary.uvBounds, 200);
+  const analysis::UvGrid grid = layoutGrid(m.judgement.summary.uvBounds, 200);
   EXPECT_NEAR(grid.bounds.min().x(), -1.25 / 32.0, 1e-15);
   EXPECT_NEAR(grid.bounds.max().y(), 1.25 + 1.25 / 32.0, 1e-15);
   const Vec3 fill = paletteColour(Palette::Sequential, 0.0);
@@ -464,7 +462,7 @@ TEST(LayoutView, ASquareSplitInTwoIsFilledOnceAndTheSeamIsDrawnOnBothSides) {
   ViewOptions o;
   o.layoutSize = 128;
   const Image image = drawView(View::Layout, square.input(), o);
-  const analysis::UvGrid grid = layoutGrid(square.summary.uvBounds, 128);
+  const analysis::UvGrid grid = layoutGrid(square.judgement.summary.uvBounds, 128);
   const Vec3 fill = paletteColour(Palette::Sequential, 0.0);
   const auto [x0, row1] = layoutPixel(grid, {0.01, 0.01});
   const auto [x1, row0] = layoutPixel(grid, {0.99, 0.99});
@@ -483,7 +481,7 @@ TEST(LayoutView, ASquareSplitInTwoIsFilledOnceAndTheSeamIsDrawnOnBothSides) {
   seam.uv.faceFlags.assign(2, kFaceOk);
   seam.analyse();
   const Image layout = drawView(View::Layout, seam.input(), o);
-  const analysis::UvGrid seamGrid = layoutGrid(seam.summary.uvBounds, 128);
+  const analysis::UvGrid seamGrid = layoutGrid(seam.judgement.summary.uvBounds, 128);
   for (const Vec2& midpoint : {Vec2(0.5, 0.5), Vec2(1.5, 0.5)}) {
     const auto [x, row] = layoutPixel(seamGrid, midpoint);
     EXPECT_TRUE(near(pixelColour(layout, x, row), kWrapSeamColour)) << midpoint.transpose();

@@ -1,0 +1,240 @@
+#include "analysis/judgement.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "analysis/overlap.h"
+#include "core/error.h"
+
+namespace uvtk::analysis {
+
+namespace {
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
+
+// The rules' names and default thresholds (docs/conventions.md §11), in Rule order.
+struct RuleEntry {
+  const char* name;
+  double warn, fail;
+  bool isCount;  // a count of corners or faces (printed as an integer)
+};
+constexpr RuleEntry kRules[kRuleCount] = {
+    {"invalid_corners", kNever, 0.0, true},        // any invalid corner fails
+    {"out_of_range_corners", kNever, 0.0, true},   // any corner beyond the sensible range fails
+    {"flipped_area", 0.0, 1e-3, false},             // any flip warns, more than 0.1 % of the area fails
+    {"zero_area_uv_area", 0.0, 1e-3, false},        // likewise for faces collapsed in UV
+    {"overlap", 1e-3, 1e-2, false},                 // 0.1 % of the covered texels warns, 1 % fails
+    {"unrepaired_seam_faces", kNever, 0.0, true},   // a face still across the seam fails
+    {"stretch_p99", 3.0, kNever, false},            // 1 % of the area stretched 3 times the mean warns
+    {"pole_area", 0.02, kNever, false},             // pole fans over 2 % of the area warn
+    {"backfacing_area", 0.0, kNever, false},        // a planar projection's back faces warn
+};
+
+const RuleEntry& entry(Rule rule) { return kRules[static_cast<std::size_t>(rule)]; }
+
+std::string ruleNames() {
+  std::string names;
+  for (const RuleEntry& r : kRules) names += std::string(names.empty() ? "" : ", ") + r.name;
+  return names;
+}
+
+std::string formatValue(Rule rule, double value) {
+  if (std::isinf(value)) return "off";
+  char text[64];
+  if (entry(rule).isCount)
+    std::snprintf(text, sizeof text, "%.0f", value);
+  else
+    std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+// Whether the valid corners of face f span more than half a turn of u (a seam left across it).
+bool spansSeam(const UvMap& uv, std::size_t f) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t corner = 3 * f; corner < 3 * f + 3; ++corner) {
+    if (!uv.cornerInvalid.empty() && uv.cornerInvalid[corner] != kCornerValid) continue;
+    lo = std::min(lo, uv.uv[corner].x());
+    hi = std::max(hi, uv.uv[corner].x());
+  }
+  return hi - lo > 0.5;
+}
+
+// Faces that cover the centre of a pixel another face covers too, on the overlap's own raster.
+std::size_t countOverlappedFaces(const UvMap& uv, const std::vector<FaceDistortion>& faces, const Overlap& overlap,
+                                 const Eigen::AlignedBox2d& bounds) {
+  if (overlap.overlappedPixels == 0) return 0;
+  const UvGrid grid{bounds, overlap.resolution};
+  const std::vector<std::uint8_t> counts = coverageCounts(uv, faces, grid);
+  std::vector<std::uint8_t> overlapped(faces.size(), 0);
+  forEachCoveredPixel(uv, faces, grid, [&](std::size_t face, int x, int y) {
+    if (counts[std::size_t(y) * std::size_t(grid.resolution) + std::size_t(x)] >= 2) overlapped[face] = 1;
+  });
+  return std::size_t(std::count(overlapped.begin(), overlapped.end(), std::uint8_t(1)));
+}
+
+// The UV bounding box of the faces the overlap raster draws (measureOverlap's box).
+Eigen::AlignedBox2d measuredFaceBounds(const UvMap& uv, const std::vector<FaceDistortion>& faces) {
+  Eigen::AlignedBox2d box;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    if (isMeasured(faces[f].status))
+      for (std::size_t corner = 3 * f; corner < 3 * f + 3; ++corner) box.extend(uv.uv[corner]);
+  return box;
+}
+
+}  // namespace
+
+const char* toString(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::Pass:
+      return "pass";
+    case Verdict::Warn:
+      return "warn";
+    case Verdict::Fail:
+      return "fail";
+  }
+  return "?";
+}
+
+std::optional<Verdict> parseVerdict(std::string_view name) {
+  for (Verdict v : {Verdict::Pass, Verdict::Warn, Verdict::Fail})
+    if (name == toString(v)) return v;
+  return std::nullopt;
+}
+
+const char* toString(Rule rule) { return entry(rule).name; }
+
+std::optional<Rule> parseRule(std::string_view name) {
+  for (int k = 0; k < kRuleCount; ++k)
+    if (name == kRules[k].name) return Rule(k);
+  return std::nullopt;
+}
+
+Thresholds::Thresholds() {
+  for (int k = 0; k < kRuleCount; ++k) warn[std::size_t(k)] = kRules[k].warn, fail[std::size_t(k)] = kRules[k].fail;
+}
+
+double& Thresholds::of(Rule rule, Verdict severity) {
+  UVTK_CHECK(severity != Verdict::Pass);
+  return (severity == Verdict::Fail ? fail : warn)[static_cast<std::size_t>(rule)];
+}
+
+double Thresholds::of(Rule rule, Verdict severity) const { return const_cast<Thresholds&>(*this).of(rule, severity); }
+
+void Thresholds::set(std::string_view assignment, Verdict severity, std::string_view option) {
+  const std::size_t equals = assignment.find('=');
+  const auto refuse = [&](const std::string& what) {
+    throw UsageError(std::string(option) + ": " + what + " in '" + std::string(assignment) +
+                     "': expected RULE=VALUE (VALUE a number >= 0, or off) with RULE one of " + ruleNames());
+  };
+  if (equals == std::string_view::npos) refuse("no '='");
+  const std::optional<Rule> rule = parseRule(assignment.substr(0, equals));
+  if (!rule) refuse("unknown rule '" + std::string(assignment.substr(0, equals)) + "'");
+  const std::string_view text = assignment.substr(equals + 1);
+  double value = 0.0;
+  if (text == "off" || text == "inf") {
+    value = kNever;
+  } else {
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || !(value >= 0.0)) refuse("bad value");
+  }
+  of(*rule, severity) = value;
+}
+
+std::string Reason::text() const {
+  char faceText[64] = "";
+  if (faces > 0) std::snprintf(faceText, sizeof faceText, " (%zu face%s)", faces, faces == 1 ? "" : "s");
+  return std::string(toString(rule)) + " " + formatValue(rule, value) + " > " + formatValue(rule, threshold) +
+         faceText;
+}
+
+std::string Judgement::firstReason() const { return reasons.empty() ? "no rule triggered" : reasons.front().text(); }
+
+void applyThresholds(Judgement& j, const Thresholds& thresholds) {
+  j.thresholds = thresholds;
+  j.reasons.clear();
+  j.verdict = Verdict::Pass;
+  for (Verdict severity : {Verdict::Fail, Verdict::Warn})
+    for (int k = 0; k < kRuleCount; ++k) {
+      const Rule rule = Rule(k);
+      const double value = j.values[std::size_t(k)];
+      const double threshold = thresholds.of(rule, severity);
+      if (!(value > threshold)) continue;
+      // A rule that fails is not listed again as a warning.
+      if (severity == Verdict::Warn && value > thresholds.of(rule, Verdict::Fail)) continue;
+      j.reasons.push_back({rule, severity, value, threshold, j.ruleFaces[std::size_t(k)]});
+      j.verdict = std::max(j.verdict, severity);
+    }
+}
+
+Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& options) {
+  UVTK_CHECK(uv.uv.size() == 3 * mesh.faceCount() && uv.faceFlags.size() == mesh.faceCount());
+  Judgement j;
+  j.faces = measureFaces(mesh, uv, options.distortion);
+  j.summary = summarize(mesh, uv, j.faces, options.overlapResolution,
+                        options.poleVertices ? &*options.poleVertices : nullptr);
+
+  // Faces by status and by flag, their 3D areas, and the invalid corners by reason.
+  std::array<double, kFaceStatusCount> statusArea{};
+  double poleArea = 0.0;
+  for (std::size_t f = 0; f < mesh.faceCount(); ++f) {
+    const FaceDistortion& face = j.faces[f];
+    j.surfaceArea += face.area3d;
+    statusArea[static_cast<std::size_t>(face.status)] += face.area3d;
+    bool invalid = uv.faceHas(f, kFaceInvalid), outOfRange = false, otherInvalid = false;
+    for (std::size_t corner = 3 * f; corner < 3 * f + 3; ++corner) {
+      const std::uint8_t reason = uv.cornerInvalid.empty() ? std::uint8_t(kCornerValid) : uv.cornerInvalid[corner];
+      UVTK_CHECK(reason < kCornerInvalidCount);
+      ++j.invalidCorners[reason];
+      invalid |= reason != kCornerValid;
+      outOfRange |= reason == kCornerOutOfRange;
+      otherInvalid |= reason != kCornerValid && reason != kCornerOutOfRange;
+    }
+    // A face flagged invalid with no invalid corner counts with the invalid corners' rule.
+    otherInvalid |= invalid && !outOfRange;
+    j.otherInvalidFaces += otherInvalid ? 1 : 0;
+    j.invalidFaces += invalid ? 1 : 0;
+    j.outOfRangeFaces += outOfRange ? 1 : 0;
+    j.straddlingFaces += uv.faceHas(f, kFaceSeamStraddle) ? 1 : 0;
+    j.capFaces += uv.faceHas(f, kFaceCap) ? 1 : 0;
+    j.cubeSeamFaces += uv.faceHas(f, kFaceCubeSeam) ? 1 : 0;
+    j.sphereMapSingularFaces += uv.faceHas(f, kFaceSphereMapSingular) ? 1 : 0;
+    if (uv.faceHas(f, kFacePole)) poleArea += face.area3d;
+    // A pole fan and a cap are meant to differ from the side; invalid faces are counted above.
+    if (options.wrapsU && !invalid && !uv.faceHas(f, kFacePole) && !uv.faceHas(f, kFaceCap) && spansSeam(uv, f))
+      ++j.unrepairedSeamFaces;
+  }
+  if (j.summary.overlap.overlappedPixels > 0)
+    j.overlappedFaces = countOverlappedFaces(uv, j.faces, j.summary.overlap, measuredFaceBounds(uv, j.faces));
+
+  const auto share = [&](double area) { return j.surfaceArea > 0.0 ? area / j.surfaceArea : 0.0; };
+  const auto set = [&](Rule rule, double value, std::size_t faces) {
+    j.values[static_cast<std::size_t>(rule)] = value;
+    j.ruleFaces[static_cast<std::size_t>(rule)] = faces;
+  };
+  std::size_t invalidOther = 0;
+  for (int reason = 1; reason < kCornerInvalidCount; ++reason)
+    if (reason != kCornerOutOfRange) invalidOther += j.invalidCorners[std::size_t(reason)];
+  set(Rule::InvalidCorners, double(invalidOther), j.otherInvalidFaces);
+  set(Rule::OutOfRangeCorners, double(j.invalidCorners[kCornerOutOfRange]), j.outOfRangeFaces);
+  set(Rule::FlippedArea, share(statusArea[std::size_t(FaceStatus::Flipped)]), j.statusCount(FaceStatus::Flipped));
+  set(Rule::ZeroAreaUvArea, share(statusArea[std::size_t(FaceStatus::ZeroAreaUv)]),
+      j.statusCount(FaceStatus::ZeroAreaUv));
+  set(Rule::Overlap, j.summary.overlap.fraction(), j.overlappedFaces);
+  set(Rule::UnrepairedSeamFaces, double(j.unrepairedSeamFaces), j.unrepairedSeamFaces);
+  std::size_t stretched = 0;
+  const double p99 = j.summary.l2Stretches.p99;
+  const double normalisation = std::sqrt(1.0 / okAreaTotals(j.faces).surfacePerUv());
+  for (const FaceDistortion& face : j.faces)
+    stretched += face.status == FaceStatus::Ok && face.l2Stretch * normalisation >= p99 ? 1 : 0;
+  set(Rule::StretchP99, p99, stretched);
+  set(Rule::PoleArea, share(poleArea), j.summary.poleFaces);
+  set(Rule::BackfacingArea, share(statusArea[std::size_t(FaceStatus::Backfacing)]),
+      j.statusCount(FaceStatus::Backfacing));
+  applyThresholds(j, options.thresholds);
+  return j;
+}
+
+}  // namespace uvtk::analysis

@@ -1,0 +1,106 @@
+// The judgement of one UV mapping: every per-face status and count, the measures, the seams and
+// poles, the overlap, and a verdict (pass, warn or fail) with the reasons for it. Computed once
+// per mapping; every consumer (the CLI's summary line, `map --json`, `report`, the views' legends,
+// `compare`, scene reports and the gallery) reads this one object and recounts nothing.
+// The rules and their default thresholds: docs/conventions.md §11.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "analysis/distortion.h"
+#include "analysis/summary.h"
+#include "core/mesh.h"
+#include "core/uv_map.h"
+
+namespace uvtk::analysis {
+
+enum class Verdict : std::uint8_t { Pass, Warn, Fail };
+const char* toString(Verdict verdict);  // "pass", "warn", "fail"
+std::optional<Verdict> parseVerdict(std::string_view name);
+
+// The rules of the verdict, each a measured value compared with a warn and a fail threshold.
+enum class Rule : std::uint8_t {
+  InvalidCorners,       // corners with no valid UV, out of range apart (count)
+  OutOfRangeCorners,    // corners beyond the projector's sensible range (count)
+  FlippedArea,          // flipped faces' share of the 3D area
+  ZeroAreaUvArea,       // zero-UV-area faces' share of the 3D area
+  Overlap,              // overlapped share of the covered UV raster
+  UnrepairedSeamFaces,  // faces still spanning more than half a turn of a wrapping u (count)
+  StretchP99,           // the 99th percentile of the normalised per-face L2 stretch
+  PoleArea,             // pole faces' share of the 3D area
+  BackfacingArea,       // backfacing faces' share of the 3D area (planar projections)
+};
+constexpr int kRuleCount = 9;
+const char* toString(Rule rule);  // "invalid_corners", "out_of_range_corners", ...
+std::optional<Rule> parseRule(std::string_view name);
+
+// A threshold per rule and severity: the rule triggers when its value exceeds the threshold
+// (infinity: never). Defaults: docs/conventions.md §11.
+struct Thresholds {
+  std::array<double, kRuleCount> warn, fail;
+  Thresholds();  // the defaults
+  double& of(Rule rule, Verdict severity);
+  double of(Rule rule, Verdict severity) const;
+  // "RULE=VALUE" (VALUE a number >= 0, or "off"/"inf": never) for the given severity. Throws
+  // UsageError naming `option`, the bad text and the rule names.
+  void set(std::string_view assignment, Verdict severity, std::string_view option);
+  bool operator==(const Thresholds& other) const { return warn == other.warn && fail == other.fail; }
+};
+
+// One reason of a verdict: the rule, how bad (Warn or Fail), its value, the threshold it exceeded,
+// and how many faces it concerns.
+struct Reason {
+  Rule rule = Rule::InvalidCorners;
+  Verdict severity = Verdict::Warn;
+  double value = 0.0, threshold = 0.0;
+  std::size_t faces = 0;
+  // "flipped_area 0.42 > 0.001 (1,152 faces)"
+  std::string text() const;
+};
+
+// What the judgement needs to know about where the UVs came from.
+struct JudgementOptions {
+  DistortionOptions distortion;              // where a planar projector looks (backfacing faces)
+  std::optional<std::vector<int>> poleVertices;  // the source's own pole vertices; else the fanned poles found in the UVs
+  bool wrapsU = false;                       // u has period 1 (cylinder, sphere): seams are expected, not failed
+  int overlapResolution = 1024;              // pixels across the raster that measures overlap
+  Thresholds thresholds;
+};
+
+struct Judgement {
+  std::vector<FaceDistortion> faces;  // measureFaces
+  Summary summary;                    // summarize, with the pole vertices of the options
+  double surfaceArea = 0.0;           // sum(A3) over every face: the denominator of the area shares
+  std::array<std::size_t, kCornerInvalidCount> invalidCorners{};  // per CornerInvalid (entry 0: valid corners)
+  std::size_t invalidFaces = 0;         // faces with an invalid corner or kFaceInvalid
+  std::size_t outOfRangeFaces = 0;      // faces with an out-of-range corner
+  std::size_t otherInvalidFaces = 0;    // invalid faces with a corner invalid for another reason (or none)
+  std::size_t straddlingFaces = 0;      // kFaceSeamStraddle: faces the seam crossed (repaired unless --seam none)
+  std::size_t unrepairedSeamFaces = 0;  // of a wrapping u, faces whose valid corners span more than 0.5
+  std::size_t capFaces = 0, cubeSeamFaces = 0, sphereMapSingularFaces = 0;
+  std::size_t overlappedFaces = 0;      // faces covering a pixel that another face covers too
+  // The values the rules compare, indexed by Rule, and the faces each concerns.
+  std::array<double, kRuleCount> values{};
+  std::array<std::size_t, kRuleCount> ruleFaces{};
+  Thresholds thresholds;  // those the verdict was taken under
+  Verdict verdict = Verdict::Pass;
+  std::vector<Reason> reasons;  // fail reasons first, then warn reasons, each in Rule order
+
+  std::size_t statusCount(FaceStatus status) const { return summary.statusCounts[status]; }
+  // The first reason's text, or "no rule triggered".
+  std::string firstReason() const;
+};
+
+// Measures `uv` on `mesh` and judges it. Preconditions: 3 corners per triangle, matching face flags.
+Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& options = {});
+
+// The verdict and reasons of `values` under `thresholds` (judge's last step, exposed so that a
+// changed threshold needs no new measuring).
+void applyThresholds(Judgement& judgement, const Thresholds& thresholds);
+
+}  // namespace uvtk::analysis
