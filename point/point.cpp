@@ -32,13 +32,15 @@ PointEvaluator prepare(const std::string& options, const std::vector<Vector3>& m
     if (mapping.seamPlaceAuto)
       throw UsageError("--seam-place auto needs a mesh's faces; give the angle it chose (uvtk map prints it)");
     Affine3 frame = Affine3::Identity();
+    std::optional<Eigen::AlignedBox3d> sensible;  // the range rule needs the mesh (docs/conventions.md §4)
     if (mapping.projector) {
       std::vector<Vec3> positions;
       positions.reserve(meshPositions.size());
       for (const Vector3& p : meshPositions) positions.emplace_back(p[0], p[1], p[2]);
       frame = placementFor(*mapping.projector, positions);
+      if (!positions.empty()) sensible = param::sensibleBox(positions, *mapping.projector, frame);
     }
-    return PointEvaluator(mapping, frame, options);
+    return PointEvaluator(mapping, frame, options, sensible);
   } catch (const UsageError& e) {
     throw std::invalid_argument("uvtk::point::Mapping(\"" + options + "\"): " + e.what());
   }

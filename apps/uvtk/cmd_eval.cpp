@@ -252,10 +252,11 @@ std::string eyeText(const Vector3& e) { return number(e[0]) + "," + number(e[1])
 // latest row that brought its own (rebuilt only when that eye changes).
 class Evaluators {
  public:
+  // `sensible`: the range rule's box of --mesh (param::sensibleBox); none without a mesh.
   Evaluators(const MappingArguments& arguments, const ResolvedMapping& mapping, const Affine3& frame,
-             bool defaultUsable)
-      : arguments_(arguments), mapping_(mapping), frame_(frame) {
-    if (defaultUsable) default_.emplace(mapping_, frame_, "uvtk eval");
+             const std::optional<Eigen::AlignedBox3d>& sensible, bool defaultUsable)
+      : arguments_(arguments), mapping_(mapping), frame_(frame), sensible_(sensible) {
+    if (defaultUsable) default_.emplace(mapping_, frame_, "uvtk eval", sensible_);
   }
 
   // nullptr, with `reason` set, when this eye gives no mapping.
@@ -275,11 +276,11 @@ class Evaluators {
         if (mapping_.projector) {
           ResolvedMapping m = mapping_;
           m.projector->eye = Vec3((*eye)[0], (*eye)[1], (*eye)[2]);
-          last_.emplace(m, frame_, "uvtk eval");
+          last_.emplace(m, frame_, "uvtk eval", sensible_);
         } else {  // the view is made from the options' text: the same path as --eye
           MappingArguments a = arguments_;
           a.projector.eye = eyeText(*eye);
-          last_.emplace(resolveMapping(a), frame_, "uvtk eval");
+          last_.emplace(resolveMapping(a), frame_, "uvtk eval", sensible_);
         }
       } catch (const UsageError& e) {
         lastReason_ = std::string("no view from this eye: ") + e.what();
@@ -301,6 +302,7 @@ class Evaluators {
   const MappingArguments& arguments_;
   ResolvedMapping mapping_;
   Affine3 frame_;
+  std::optional<Eigen::AlignedBox3d> sensible_;
   std::optional<point::PointEvaluator> default_, last_;
   std::optional<Vector3> lastEye_;
   std::string lastReason_;
@@ -391,6 +393,7 @@ void runEval(const EvalArguments& a) {
     mapping = resolveMapping(m);
   }
   Affine3 frame = Affine3::Identity();
+  std::optional<Eigen::AlignedBox3d> sensible;
   if (isTexgen && !a.mesh.empty())
     throw UsageError("--mesh: texgen has no placement to fit; --mesh goes with a projector only");
   if (mapping.projector) {
@@ -413,8 +416,9 @@ void runEval(const EvalArguments& a) {
       positions = input.mesh.positions;
     }
     frame = point::placementFor(options, positions);
+    if (!positions.empty()) sensible = param::sensibleBox(positions, options, frame);
   }
-  Evaluators evaluators(m, mapping, frame, !eyeFromRows);
+  Evaluators evaluators(m, mapping, frame, sensible, !eyeFromRows);
 
   if (fromStdin) rows = a.input == TextFormat::Csv ? readCsv(std::cin) : readJsonLines(std::cin);
 

@@ -71,7 +71,9 @@ namespace {
 // The projector evaluated at every pixel (docs/conventions.md §9).
 render::PixelMapping projectorPixelMapping(const param::ProjectorOptions& options, const Affine3& localFromObject,
                                            const Mesh& mesh, const UvMap& uv) {
-  auto mapping = std::make_shared<param::PointMapping>(options, localFromObject);
+  // The range rule as project() applied it, so that per-pixel and per-vertex values agree on it.
+  auto mapping = std::make_shared<param::PointMapping>(options, localFromObject,
+                                                       param::sensibleBox(mesh.positions, options, localFromObject));
   // A cap face maps by the side its own normal faces, as project() decided (param/projector.h).
   auto capNormals = std::make_shared<std::vector<Vec3>>(uv.faceCount(), Vec3::Zero());
   for (std::size_t f = 0; f < uv.faceCount(); ++f)

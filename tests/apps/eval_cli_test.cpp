@@ -247,6 +247,25 @@ TEST_F(EvalCli, BlenderConventionIsFittedToTheMesh) {
   EXPECT_EQ(t.number(0, "v"), 0.5);
 }
 
+TEST_F(EvalCli, WithAMeshAHitBeyondTwiceItsExtentIsOutOfRange) {
+  // The unit square in z = 0, unplaced: the sensible box is [0, 1]^2 x {0}, centre (1/2, 1/2, 0),
+  // half-extent 1/2, range R = 2 x 1/2 = 1 (docs/conventions.md §4). From p = (0.5, 0.5, 0.1) along
+  // (1, 0, -0.01) the line meets z = 0 at x = 10.5: 10 from the centre, out of range; along
+  // (1, 0, -1) at (0.6, 0.5).
+  writeText("square.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n");
+  const std::string options = "--projector plane --omap normal --fit none --point 0.5,0.5,0.1 ";
+  const Table far = csv(options + "--normal 1,0,-0.01 --mesh " + path("square.obj"));
+  ASSERT_EQ(far.rows.size(), 1u) << out;
+  EXPECT_EQ(far.text(0, "status"), "invalid");
+  EXPECT_NE(far.text(0, "reason").find("beyond"), std::string::npos) << out;
+  const Table near = csv(options + "--normal 1,0,-1 --mesh " + path("square.obj"));
+  EXPECT_NEAR(near.number(0, "u"), 0.6, 1e-15);
+  EXPECT_NEAR(near.number(0, "v"), 0.5, 1e-15);
+  // Without a mesh there is no box and no range check: the far hit is given as it is.
+  const Table bare = csv(options + "--normal 1,0,-0.01");
+  EXPECT_NEAR(bare.number(0, "u"), 10.5, 1e-12);
+}
+
 TEST_F(EvalCli, AssimpConventionIsFittedToTheMesh) {
   writeText("box.obj", "v 1 2 3\nv 3 6 7\nv 1 6 3\nf 1 2 3\n");
   const Table t = csv("--convention assimp --mesh " + path("box.obj") + " --point 3,4,5 --point 2,4,6");
