@@ -7,27 +7,12 @@
 #include <numeric>
 #include <tuple>
 
+#include "core/disjoint_sets.h"
 #include "core/error.h"
 
 namespace uvtk::param {
 
 namespace {
-
-// Disjoint sets of 0 .. n-1 (union-find with path halving): the components of a relation given
-// one pair at a time.
-class DisjointSets {
- public:
-  explicit DisjointSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), std::size_t{0}); }
-
-  std::size_t find(std::size_t i) {
-    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
-    return i;
-  }
-  void join(std::size_t a, std::size_t b) { parent_[find(a)] = find(b); }
-
- private:
-  std::vector<std::size_t> parent_;
-};
 
 // One triangle side, directed as the triangle traverses it, and the corner it starts at.
 struct HalfEdge {

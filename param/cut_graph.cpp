@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "core/disjoint_sets.h"
 #include "core/error.h"
 
 namespace uvtk::param {
@@ -17,26 +18,6 @@ namespace uvtk::param {
 namespace {
 
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
-
-// Disjoint sets of 0 .. n-1 (union-find with path halving).
-class DisjointSets {
- public:
-  explicit DisjointSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), std::size_t{0}); }
-
-  std::size_t find(std::size_t i) {
-    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
-    return i;
-  }
-  // False when a and b were already in one set.
-  bool join(std::size_t a, std::size_t b) {
-    const std::size_t ra = find(a), rb = find(b);
-    parent_[ra] = rb;
-    return ra != rb;
-  }
-
- private:
-  std::vector<std::size_t> parent_;
-};
 
 std::size_t nextCorner(std::size_t corner) { return corner - corner % 3 + (corner + 1) % 3; }
 
