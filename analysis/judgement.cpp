@@ -152,6 +152,17 @@ std::string Reason::text() const {
 
 std::string Judgement::firstReason() const { return reasons.empty() ? "no rule triggered" : reasons.front().text(); }
 
+std::string Judgement::reasonsText() const {
+  std::string text;
+  for (std::size_t i = 0; i < reasons.size(); ++i) {
+    if (i > 0) text += "; ";
+    const bool firstWarning = reasons[i].severity == Verdict::Warn && (i == 0 || reasons[i - 1].severity == Verdict::Fail);
+    if (firstWarning && verdict == Verdict::Fail) text += "warn: ";
+    text += reasons[i].text();
+  }
+  return text;
+}
+
 void applyThresholds(Judgement& j, const Thresholds& thresholds) {
   j.thresholds = thresholds;
   j.reasons.clear();

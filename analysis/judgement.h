@@ -94,6 +94,9 @@ struct Judgement {
   std::size_t statusCount(FaceStatus status) const { return summary.statusCounts[status]; }
   // The first reason's text, or "no rule triggered".
   std::string firstReason() const;
+  // Every reason's text, "; " between them, the warnings after "warn: " when some rule fails:
+  // "flipped_area 0.00454 > 0.001 (20 faces); warn: overlap 0.00803 > 0.001 (99 faces)".
+  std::string reasonsText() const;
 };
 
 // Measures `uv` on `mesh` and judges it. Preconditions: 3 corners per triangle, matching face flags.

@@ -188,8 +188,7 @@ std::string markdownTable(const std::vector<Candidate>& ranked, RankBy by) {
   char row[512];
   for (std::size_t i = 0; i < ranked.size(); ++i) {
     const Candidate& c = ranked[i];
-    std::string why;
-    for (const analysis::Reason& r : c.judgement.reasons) why += (why.empty() ? "" : "; ") + r.text();
+    const std::string why = c.judgement.reasonsText();
     std::snprintf(row, sizeof row, "| %zu | %s | %s | %.5g | %.5g | %.5g | %.5g | %.3g%% | %.3g%% | ", i + 1,
                   c.name.c_str(), analysis::toString(c.judgement.verdict), c.summary().l2Stretch,
                   c.summary().linfStretch, c.summary().angleDistortion.mean, c.summary().seams.length(),

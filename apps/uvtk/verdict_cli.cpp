@@ -38,9 +38,8 @@ void addVerdictOptions(CLI::App& app, VerdictArguments& a) {
 }
 
 std::string verdictLine(const analysis::Judgement& j) {
-  std::string line = std::string("verdict ") + analysis::toString(j.verdict);
-  for (std::size_t i = 0; i < j.reasons.size(); ++i) line += (i == 0 ? ": " : "; ") + j.reasons[i].text();
-  return line;
+  const std::string verdict = std::string("verdict ") + analysis::toString(j.verdict);
+  return j.reasons.empty() ? verdict : verdict + ": " + j.reasonsText();
 }
 
 void enforceVerdict(const VerdictArguments& a, analysis::Verdict verdict, const std::string& what) {

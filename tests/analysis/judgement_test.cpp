@@ -69,6 +69,7 @@ TEST(Judgement, OneFlippedFaceOf32FailsWithItsAreaShareAndCount) {
   EXPECT_DOUBLE_EQ(first.threshold, 1e-3);
   EXPECT_EQ(first.faces, 1u);
   EXPECT_EQ(first.text(), "flipped_area 0.0312 > 0.001 (1 face)");
+  EXPECT_EQ(j.reasonsText(), "flipped_area 0.0312 > 0.001 (1 face)");
   // Mirrored in place, it still covers only its own cell: the flip alone fails it.
   EXPECT_EQ(j.values[std::size_t(Rule::Overlap)], 0.0);
   EXPECT_EQ(j.overlappedFaces, 0u);
@@ -114,6 +115,9 @@ TEST(Judgement, InvalidAndOutOfRangeCornersFailApartByReason) {
   EXPECT_EQ(j.reasons[0].faces, 1u);
   EXPECT_EQ(j.reasons[1].rule, Rule::OutOfRangeCorners);
   EXPECT_EQ(j.reasons[1].faces, 1u);
+  // Warnings after the failures, marked as such: the mirrored face 0 (its invalid corner reads (0, 0)).
+  const std::string text = j.reasonsText();
+  EXPECT_EQ(text.rfind("invalid_corners 2 > 0 (1 face); out_of_range_corners 1 > 0 (1 face)", 0), 0u) << text;
 }
 
 TEST(Judgement, AnUnrepairedSeamFailsWhileARepairedOneIsOnlyReported) {
