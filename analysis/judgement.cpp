@@ -121,7 +121,10 @@ double& Thresholds::of(Rule rule, Verdict severity) {
   return (severity == Verdict::Fail ? fail : warn)[static_cast<std::size_t>(rule)];
 }
 
-double Thresholds::of(Rule rule, Verdict severity) const { return const_cast<Thresholds&>(*this).of(rule, severity); }
+double Thresholds::of(Rule rule, Verdict severity) const {
+  UVTK_CHECK(severity != Verdict::Pass);
+  return (severity == Verdict::Fail ? fail : warn)[static_cast<std::size_t>(rule)];
+}
 
 void Thresholds::set(std::string_view assignment, Verdict severity, std::string_view option) {
   const std::size_t equals = assignment.find('=');
