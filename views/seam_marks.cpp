@@ -21,9 +21,7 @@ std::string overlapText(const analysis::Overlap& overlap) {
 SeamMarks seamMarks(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices) {
   SeamMarks marks;
   marks.edges = analysis::seamEdgeList(mesh, uv, poleVertices);
-  const auto cuts = std::stable_partition(marks.edges.begin(), marks.edges.end(),
-                                          [](const analysis::SeamEdge& e) { return e.wrap; });
-  marks.wraps = std::size_t(cuts - marks.edges.begin());
+  std::stable_partition(marks.edges.begin(), marks.edges.end(), [](const analysis::SeamEdge& e) { return e.wrap; });
   return marks;
 }
 

@@ -15,7 +15,6 @@ namespace uvtk::views {
 
 struct SeamMarks {
   std::vector<analysis::SeamEdge> edges;  // drawing order: wraps first, so that cuts stay on top where both meet
-  std::size_t wraps = 0;                  // edges[0, wraps) are the wrap seams
 
   static Vec3 colour(const analysis::SeamEdge& edge) { return edge.wrap ? kWrapSeamColour : kCutColour; }
 };

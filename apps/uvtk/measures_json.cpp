@@ -20,6 +20,8 @@ nlohmann::json statisticsJson(const analysis::Statistics& s) {
             {"weight_fraction", h.weightFraction}}}};
 }
 
+namespace {
+
 nlohmann::json reasonJson(const analysis::Reason& r) {
   return {{"code", analysis::toString(r.rule)},
           {"severity", analysis::toString(r.severity)},
@@ -28,6 +30,8 @@ nlohmann::json reasonJson(const analysis::Reason& r) {
           {"faces", r.faces},
           {"text", r.text()}};
 }
+
+}  // namespace
 
 nlohmann::json reasonsJson(const analysis::Judgement& judgement) {
   nlohmann::json reasons = nlohmann::json::array();

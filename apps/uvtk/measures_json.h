@@ -18,8 +18,7 @@ nlohmann::json statisticsJson(const analysis::Statistics& statistics);
 // overlap_fraction, overlap. Every number is read from `judgement`.
 nlohmann::json judgementJson(const MappedMesh& mapped, const analysis::Judgement& judgement);
 
-// One reason as {code, severity, value, threshold, faces, text}, and all of a judgement's.
-nlohmann::json reasonJson(const analysis::Reason& reason);
+// A judgement's reasons, each as {code, severity, value, threshold, faces, text}.
 nlohmann::json reasonsJson(const analysis::Judgement& judgement);
 
 }  // namespace uvtk::cli
