@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace uvtk {
 
@@ -27,8 +28,25 @@ struct CheckFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The exit status an error stands for, as above; 1 for any other exception (a bug).
+// The exit status an error stands for, as above. Exceptions of the standard library that a user's
+// input or machine can cause are classed too: std::bad_alloc and std::length_error (more memory
+// than there is, or than a size can hold) and std::filesystem::filesystem_error (a path the system
+// refused, e.g. too long; sites that write translate theirs to OutputError) are bad input, 3.
+// 1 for any other exception (a bug).
 int exitStatus(const std::exception& error);
+
+// The one line that reports `error`: its message with control characters escaped (a NUL or an
+// escape sequence in a file name must neither cut nor garble it); the standard library's
+// exceptions above in uvtk's words ("FILE: error: REASON", "uvtk: error: out of memory ...").
+std::string errorMessage(const std::exception& error);
+
+// `text` with its control characters but the line feed (which separates the lines of a message
+// listing several problems) escaped as in JSON (\u0000, \t, \r, \u001b); for messages.
+std::string printable(std::string_view text);
+
+// `name` as a JSON string: in double quotes, with quotes, backslashes and every control character
+// escaped. How a message shows a file name that may hold anything, a NUL included.
+std::string quotedName(std::string_view name);
 
 // Throws the error class whose exit status is `status` (1: std::runtime_error) with `message`: how
 // a command that carried on past failures ends with the worst one's status.

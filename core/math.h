@@ -2,6 +2,8 @@
 // unless a precision is chosen (Vec2T, Vec3T).
 #pragma once
 
+#include <cmath>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -24,6 +26,21 @@ template <class T>
 using Vec4T = Eigen::Matrix<T, 4, 1>;
 
 constexpr double kPi = 3.14159265358979323846264338327950288;
+
+// The power of two that brings the largest |entry| of `m` into [1, 2); 1 when no entry is finite
+// and non-zero. Scaling by it is exact, so directions and ratios computed afterwards are unchanged.
+inline double unitPowerOfTwo(const Mat3& m) {
+  const double largest = m.cwiseAbs().maxCoeff();
+  return largest > 0.0 && std::isfinite(largest) ? std::ldexp(1.0, -std::ilogb(largest)) : 1.0;
+}
+
+// The inverse of a 3x3 matrix with entries anywhere in a double's range (1e-300 .. 1e300): inverted
+// at unit scale, so the determinant (the cube of the scale) neither overflows nor underflows. Equal
+// bit for bit to Eigen's inverse wherever that one stays in range.
+inline Mat3 inverseAtAnyScale(const Mat3& m) {
+  const double s = unitPowerOfTwo(m);
+  return (m * s).inverse() * s;
+}
 constexpr double kTwoPi = 2.0 * kPi;
 
 }  // namespace uvtk

@@ -5,10 +5,29 @@
 
 namespace uvtk {
 
+namespace {
+
+// The power of two that brings the mesh's largest coordinate to about 1. Areas computed from
+// positions times it stay out of underflow and overflow for meshes at 1e-300 or 1e300, and
+// scaling by a power of two changes no direction and no ratio of areas.
+double unitScale(const Mesh& mesh) {
+  double largest = 0.0;
+  for (const Vec3& p : mesh.positions) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  return largest > 0.0 && std::isfinite(largest) ? std::ldexp(1.0, -std::ilogb(largest)) : 1.0;
+}
+
+Vec3 scaledAreaNormal(const Mesh& mesh, const Triangle& t, double scale) {
+  return triangleAreaNormal<double>(mesh.positions[t[0]] * scale, mesh.positions[t[1]] * scale,
+                                    mesh.positions[t[2]] * scale);
+}
+
+}  // namespace
+
 std::vector<Vec3> areaWeightedVertexNormals(const Mesh& mesh) {
   std::vector<Vec3> sum(mesh.positions.size(), Vec3::Zero());
+  const double scale = unitScale(mesh);
   for (const Triangle& t : mesh.triangles) {
-    const Vec3 n = triangleAreaNormal(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
+    const Vec3 n = scaledAreaNormal(mesh, t, scale);
     for (int v : t) sum[v] += n;
   }
   for (Vec3& n : sum) {
@@ -38,11 +57,11 @@ std::vector<Vec3> cornerNormals(const Mesh& mesh) {
 MeshWarnings checkMesh(const Mesh& mesh) {
   MeshWarnings warnings;
   std::vector<char> used(mesh.positions.size(), 0);
+  const double scale = unitScale(mesh);
   for (const Triangle& t : mesh.triangles) {
     for (int v : t) used[v] = 1;
     const bool repeated = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
-    if (repeated ||
-        triangleAreaNormal(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]).squaredNorm() == 0.0)
+    if (repeated || scaledAreaNormal(mesh, t, scale).squaredNorm() == 0.0)
       ++warnings.degenerateFaces;
   }
   for (char u : used) warnings.unreferencedVertices += u ? 0 : 1;

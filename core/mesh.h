@@ -13,7 +13,7 @@ using Triangle = std::array<int, 3>;  // three indices, counter-clockwise seen f
 
 struct Mesh {
   std::vector<Vec3> positions;      // object space
-  std::vector<Triangle> triangles;  // indices into positions; polygons arrive fan-triangulated
+  std::vector<Triangle> triangles;  // indices into positions; polygons arrive triangulated
 
   // Attributes a file may carry per corner (OBJ `vt`, `vn`). A corner table is either empty or
   // has one entry per triangle; an index of -1 means that corner has no attribute.
@@ -32,6 +32,12 @@ struct Mesh {
 struct MeshWarnings {
   std::size_t degenerateFaces = 0;        // two equal corner indices or zero area
   std::size_t unreferencedVertices = 0;   // vertices no face uses
+  // Faces of more than three corners that are self-intersecting, non-planar or of zero area
+  // (io/polygon_triangulation.h): triangulated all the same, perhaps folding over themselves.
+  std::size_t nonSimplePolygons = 0;
+  std::size_t firstNonSimplePolygonLine = 0;  // the line of the first of them; 0 when there is none
+  std::size_t vertexColours = 0;              // OBJ `v x y z r g b` lines: the colours are dropped
+  std::size_t parameterVertices = 0;          // OBJ `vp` lines (free-form geometry), ignored
 };
 
 // Twice the area-weighted normal of a triangle: the cross product of two edges.

@@ -5,22 +5,39 @@
 #include "core/error.h"
 
 namespace uvtk::io {
+namespace {
 
-AtomicFile::AtomicFile(const std::string& path) : temporary_(path) {
+std::ofstream openStream(const TemporaryFile& file) {
   errno = 0;
-  stream_.open(temporary_.path(), std::ios::binary | std::ios::trunc);
-  if (!stream_) throw writeError(path, "cannot open the temporary file " + temporary_.path(), errno);
+  std::ofstream stream(file.path(), std::ios::binary | std::ios::trunc);
+  if (!stream) {
+    const int error = errno;
+    throw writeError(file.shownName(),
+                     file.writesStraight() ? "cannot open it" : "cannot open the temporary file " + file.path(), error);
+  }
+  return stream;
 }
 
-void AtomicFile::commit() {
-  // A full disk (ENOSPC) or a file-size limit (EFBIG) shows as a failed write. A failed stream writes
-  // no more, so errno still holds the reason its write failed.
-  if (stream_) stream_.flush();
-  const bool written = static_cast<bool>(stream_);
+// Flushes and closes `stream`; throws OutputError when any of its writes failed. A full disk
+// (ENOSPC) or a file-size limit (EFBIG) shows as a failed write. A failed stream writes no more,
+// so errno still holds the reason its write failed.
+void closeChecked(std::ofstream& stream, const TemporaryFile& file) {
+  if (stream) stream.flush();
+  const bool written = static_cast<bool>(stream);
   int error = errno;
-  stream_.close();
+  stream.close();
   if (written) error = errno;
-  if (!written || stream_.fail()) throw writeError(temporary_.target(), "writing the temporary file failed", error);
+  if (!written || stream.fail())
+    throw writeError(file.shownName(), file.writesStraight() ? "writing failed" : "writing the temporary file failed",
+                     error);
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(const std::string& path) : temporary_(path), stream_(openStream(temporary_)) {}
+
+void AtomicFile::commit() {
+  closeChecked(stream_, temporary_);
   temporary_.commit();
 }
 
@@ -28,6 +45,38 @@ void writeFileAtomically(const std::string& path, const std::string& text) {
   AtomicFile file(path);
   file.stream().write(text.data(), static_cast<std::streamsize>(text.size()));
   file.commit();
+}
+
+TemporaryFile& OutputSet::stage(const std::string& target) {
+  auto file = std::make_unique<TemporaryFile>(target);
+  std::lock_guard<std::mutex> lock(mutex_);
+  files_.push_back(std::move(file));
+  return *files_.back();
+}
+
+void OutputSet::write(const std::string& target, const std::function<void(std::ostream&)>& contents) {
+  TemporaryFile& file = stage(target);
+  std::ofstream stream = openStream(file);
+  contents(stream);
+  closeChecked(stream, file);
+}
+
+void OutputSet::writeText(const std::string& target, std::string_view text) {
+  write(target, [text](std::ostream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
+}
+
+void OutputSet::adopt(OutputSet& other) {
+  std::scoped_lock lock(mutex_, other.mutex_);
+  for (auto& file : other.files_) files_.push_back(std::move(file));
+  other.files_.clear();
+}
+
+void OutputSet::publish() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<TemporaryFile*> files;
+  for (const auto& file : files_) files.push_back(file.get());
+  publishTogether(files);
+  files_.clear();
 }
 
 }  // namespace uvtk::io

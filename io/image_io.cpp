@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "io/temporary_file.h"
+#include "io/atomic_file.h"
 
 namespace uvtk::io {
 
@@ -208,24 +208,29 @@ OIIO::ImageSpec specFor(const Image& image, PixelType type, std::vector<std::uin
 
 }  // namespace
 
-void writeImage(const std::string& path, const Image& image, PixelType type) {
+void writeImage(OutputSet& outputs, const std::string& path, const Image& image, PixelType type) {
   UVTK_CHECK(image.width > 0 && image.height > 0 && image.channels > 0);
   UVTK_CHECK(image.pixels.size() == image.index(0, image.height));
   UVTK_CHECK(image.channelNames.empty() || int(image.channelNames.size()) == image.channels);
 
-  auto out = writerFor(path, type);
+  auto out = writerFor(path, type);  // by the target's extension: the temporary's path may have none
 
   std::vector<std::uint8_t> rounded;
   const OIIO::ImageSpec spec = specFor(image, type, rounded);
   const void* pixels = type == PixelType::UInt8 ? static_cast<const void*>(rounded.data()) : image.pixels.data();
   const OIIO::TypeDesc pixelType = spec.format;
 
-  TemporaryFile temporary(path);
-  if (!out->open(temporary.path(), spec)) throw writeError(path, oneLine(out->geterror()));
+  const TemporaryFile& staged = outputs.stage(path);
+  if (!out->open(staged.path(), spec)) throw writeError(staged.shownName(), oneLine(out->geterror()));
   const bool written = out->write_image(pixelType, pixels);
   const bool closed = out->close();
-  if (!written || !closed) throw writeError(path, oneLine(out->geterror()));
-  temporary.commit();
+  if (!written || !closed) throw writeError(staged.shownName(), oneLine(out->geterror()));
+}
+
+void writeImage(const std::string& path, const Image& image, PixelType type) {
+  OutputSet outputs;
+  writeImage(outputs, path, image, type);
+  outputs.publish();
 }
 
 std::string encodePng(const Image& image) {

@@ -9,6 +9,8 @@
 
 namespace uvtk::io {
 
+class OutputSet;
+
 struct ImageFile {
   Image image;            // values as stored: 8-bit and 16-bit integers scaled to [0, 1]
   bool eightBit = false;  // every channel was stored as 8-bit unsigned integers
@@ -32,10 +34,13 @@ void checkImageType(const std::string& path, PixelType type);
 
 // Writes `image` to `path` in the format its extension names: UInt8 stores round(clamp(c, 0, 1)
 // * 255); Float needs a format that holds floats (.exr, .tif, .tiff) and keeps non-finite values
-// as they are. Channel names come from image.channelNames when given. Written to a temporary
-// file in the same folder, then renamed; throws OutputError (nothing left behind) on failure and
-// UsageError for an extension OpenImageIO cannot write or Float to an 8-bit-only format.
+// as they are. Channel names come from image.channelNames when given. Written as an output
+// (io/temporary_file.h: a temporary beside it, then renamed); throws OutputError (nothing left
+// behind) on failure and UsageError for an extension OpenImageIO cannot write or Float to an
+// 8-bit-only format.
 void writeImage(const std::string& path, const Image& image, PixelType type);
+// The same, staged in `outputs`, which publishes it with the command's other outputs.
+void writeImage(OutputSet& outputs, const std::string& path, const Image& image, PixelType type);
 
 // The 8-bit PNG file `image` would be written as, in memory.
 std::string encodePng(const Image& image);

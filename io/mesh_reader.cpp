@@ -9,9 +9,12 @@
 //   a carriage return anywhere but at the end of a line are errors. Bytes >= 0x80 are allowed
 //   (UTF-8 names and comments).
 // - '#' starts a comment anywhere on a line, in both formats.
-// - Numbers are decimal (no hex floats); a leading '+' is accepted, as strtod does. A value too
-//   small to represent becomes 0; one too large is "not finite", like nan and inf.
+// - Numbers are decimal (no hex floats); a leading '+' is accepted, as strtod does, in counts and
+//   indices too (`f +1 +2 +3` is `f 1 2 3`, as `v +1 0 0` is `v 1 0 0`). A value too small to
+//   represent becomes 0; one too large is "not finite", like nan and inf.
 // - Counts and indices must fit an int: triangles store int indices.
+// - A face of more than three corners is triangulated in its plane (io/polygon_triangulation.h), so
+//   a concave polygon does not fold; one that is not simple is counted in the warnings with its line.
 // - A line longer than 64 MiB is an error: no writer emits one, and it is never held whole.
 // readMesh shows its progress over the file's bytes (core/progress.h), reported every few
 // thousand lines so that the count costs nothing per line but an addition.
@@ -32,6 +35,7 @@
 
 #include "core/error.h"
 #include "core/progress.h"
+#include "io/polygon_triangulation.h"
 
 namespace uvtk::io {
 namespace {
@@ -114,10 +118,15 @@ NumberSyntax parseDouble(std::string_view token, double& value) {
   return std::isfinite(value) ? NumberSyntax::ok : NumberSyntax::notFinite;
 }
 
-// The whole token as a decimal integer (no sign other than '-'); false if malformed or beyond long long.
+// The whole token as a decimal integer, with an optional sign; false if malformed or beyond long long.
 bool parseInteger(std::string_view token, long long& value) {
-  const char* last = token.data() + token.size();
-  const auto [end, error] = std::from_chars(token.data(), last, value);
+  const char* first = token.data();
+  const char* last = first + token.size();
+  if (first != last && *first == '+') {  // from_chars rejects the '+' that strtol accepts
+    ++first;
+    if (first == last || *first < '0' || *first > '9') return false;
+  }
+  const auto [end, error] = std::from_chars(first, last, value);
   return error == std::errc() && end == last;
 }
 
@@ -209,6 +218,8 @@ class LineReader {
     if (!t.empty()) failAt("end of line", t);
   }
 
+  std::size_t lineNumber() const { return lineNumber_; }
+
   [[noreturn]] void fail(const std::string& expected, const std::string& found) const {
     throw expectedError(name_, lineNumber_, expected, found);
   }
@@ -288,9 +299,27 @@ class LineReader {
   const char* end_ = nullptr;
 };
 
-ReadMeshResult withWarnings(Mesh mesh) {
+// What a reader keeps across lines: the triangulator and its scratch space, and what the reader
+// itself warns about (checkMesh adds the rest).
+struct ReaderState {
+  PolygonTriangulator triangulator;
+  std::vector<int> vertices;  // the face's vertex indices
+  std::vector<PolygonTriangle> triangles;
+  MeshWarnings warnings;
+
+  // Triangulates `vertices` into `triangles` (corner numbers), counting a polygon that is not simple.
+  void triangulate(const Mesh& mesh, const LineReader& reader) {
+    if (triangulator.triangulate(mesh.positions, vertices, triangles)) return;
+    if (warnings.nonSimplePolygons++ == 0) warnings.firstNonSimplePolygonLine = reader.lineNumber();
+  }
+};
+
+ReadMeshResult withWarnings(Mesh mesh, const MeshWarnings& readerWarnings) {
   ReadMeshResult result;
-  result.warnings = checkMesh(mesh);
+  result.warnings = readerWarnings;
+  const MeshWarnings checked = checkMesh(mesh);
+  result.warnings.degenerateFaces = checked.degenerateFaces;
+  result.warnings.unreferencedVertices = checked.unreferencedVertices;
   result.mesh = std::move(mesh);
   return result;
 }
@@ -363,7 +392,7 @@ void appendCorners(std::vector<Triangle>& table, std::size_t triangleIndex, bool
   table.push_back(faceHasIt ? corners : kNoCorners);
 }
 
-void readObjFace(LineReader& reader, Mesh& mesh, std::vector<ObjCorner>& corners) {
+void readObjFace(LineReader& reader, Mesh& mesh, std::vector<ObjCorner>& corners, ReaderState& state) {
   corners.clear();
   int faceForm = kVertexOnly;
   for (std::string_view token = reader.token(); !token.empty(); token = reader.token()) {
@@ -381,9 +410,11 @@ void readObjFace(LineReader& reader, Mesh& mesh, std::vector<ObjCorner>& corners
     corners.push_back(c);
   }
   if (corners.size() < 3) reader.fail("at least 3 vertices in a face", std::to_string(corners.size()));
-  // A polygon becomes the fan (0, i, i + 1), in place.
-  for (std::size_t i = 1; i + 1 < corners.size(); ++i) {
-    const ObjCorner &a = corners[0], &b = corners[i], &c = corners[i + 1];
+  state.vertices.clear();
+  for (const ObjCorner& c : corners) state.vertices.push_back(c.v);
+  state.triangulate(mesh, reader);
+  for (const PolygonTriangle& t : state.triangles) {
+    const ObjCorner &a = corners[t[0]], &b = corners[t[1]], &c = corners[t[2]];
     const std::size_t triangle = mesh.triangles.size();
     mesh.triangles.push_back({a.v, b.v, c.v});
     appendCorners(mesh.cornerTexcoords, triangle, faceForm & kWithTexcoord, {a.vt, b.vt, c.vt});
@@ -456,7 +487,8 @@ void readOffVertex(LineReader& reader, const OffLayout& layout, Mesh& mesh) {
   reader.expectEndOfLine();
 }
 
-void readOffFace(LineReader& reader, std::vector<int>& corners, Mesh& mesh) {
+void readOffFace(LineReader& reader, ReaderState& state, Mesh& mesh) {
+  std::vector<int>& corners = state.vertices;
   const std::string_view countToken = reader.token();
   long long n = 0;
   if (!parseInteger(countToken, n) || n < 3) reader.failAt("a face vertex count of at least 3", countToken);
@@ -473,29 +505,35 @@ void readOffFace(LineReader& reader, std::vector<int>& corners, Mesh& mesh) {
   }
   skipColour(reader, 4);  // a colour-map index or r g b [a]
   reader.expectEndOfLine();
-  for (std::size_t i = 1; i + 1 < corners.size(); ++i)
-    mesh.triangles.push_back({corners[0], corners[i], corners[i + 1]});
+  state.triangulate(mesh, reader);
+  for (const PolygonTriangle& t : state.triangles) mesh.triangles.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
 }
 
-// OBJ: `v x y z [w]` (w, a rational weight, means nothing for a polygon mesh: checked as a
-// number, then ignored); `vt u [v [w]]`; `vn x y z`; `f` with corners v, v/vt, v//vn or v/vt/vn,
-// one form per face. A line ending in '\' (a continuation, which few writers emit) is an error
-// rather than joined, so every message names one physical line.
+// OBJ: `v x y z`, `v x y z w` or `v x y z r g b`; `vt u [v [w]]`; `vn x y z`; `vp u [v [w]]`,
+// ignored and counted; `f` with corners v, v/vt, v//vn or v/vt/vn, one form per face. w is the
+// weight of a rational curve's control point, which a polygon mesh has no use for: checked as a
+// number, then ignored, not divided by (as tinyobjloader, which keeps it apart; Assimp divides).
+// r g b are the vertex colours MeshLab and others write: checked as numbers, dropped and counted.
+// A line ending in '\' (a continuation, which few writers emit) is an error rather than joined, so
+// every message names one physical line.
 ReadMeshResult readObjLines(LineReader& reader) {
   Mesh mesh;
   std::vector<ObjCorner> corners;  // reused by every face
+  ReaderState state;
   while (reader.nextLine()) {
     if (reader.endsWithBackslash()) reader.fail("end of line", "a '\\' line continuation");
     const std::string_view keyword = reader.token();
     if (keyword.empty()) continue;
     if (keyword == "v") {
       const Vec3 p = readVector(reader, kPositionNames);
-      double w = 0.0;
-      reader.optionalNumber(w);
-      reader.expectEndOfLine();
+      int more = 0;  // w, or r g b
+      for (double ignored = 0.0; reader.optionalNumber(ignored);) ++more;
+      if (more != 0 && more != 1 && more != 3)
+        reader.fail("x y z, x y z w or x y z r g b", std::to_string(3 + more) + " numbers");
+      if (more == 3) ++state.warnings.vertexColours;
       pushBounded(reader, mesh.positions, p, "vertices");
     } else if (keyword == "f") {
-      readObjFace(reader, mesh, corners);
+      readObjFace(reader, mesh, corners, state);
     } else if (keyword == "vt") {
       Vec3 t = Vec3::Zero();
       t.x() = reader.number("a u coordinate");
@@ -506,12 +544,18 @@ ReadMeshResult readObjLines(LineReader& reader) {
       const Vec3 n = readVector(reader, kNormalNames);
       reader.expectEndOfLine();
       pushBounded(reader, mesh.normals, n, "normals");
+    } else if (keyword == "vp") {
+      double ignored = 0.0;
+      reader.number("a u parameter");
+      if (reader.optionalNumber(ignored)) reader.optionalNumber(ignored);
+      reader.expectEndOfLine();
+      ++state.warnings.parameterVertices;
     } else if (!isIgnoredObjKeyword(keyword)) {
       reader.failAt("a keyword (v, vt, vn, f, ...)", keyword);
     }
   }
   if (mesh.triangles.empty()) reader.failAtEndOfFile("at least one face");
-  return withWarnings(std::move(mesh));
+  return withWarnings(std::move(mesh), state.warnings);
 }
 
 // OFF: a header (OFF, NOFF, COFF, CNOFF or NCOFF), optionally followed on its line by the counts
@@ -540,15 +584,15 @@ ReadMeshResult readOffLines(LineReader& reader) {
     readOffVertex(reader, layout, mesh);
   }
   mesh.triangles.reserve(std::min<std::size_t>(faceCount, kMaxReserve));
-  std::vector<int> corners;  // reused by every face
+  ReaderState state;  // reused by every face
   for (int i = 0; i < faceCount; ++i) {
     if (!reader.nextContentLine()) reader.failAtEndOfFile(countOf(faceCount, "face", "faces"));
-    readOffFace(reader, corners, mesh);
+    readOffFace(reader, state, mesh);
   }
   if (reader.nextContentLine()) reader.failAt("end of file", reader.token());
   // OFF normals are per vertex: every corner uses the normal of its own vertex.
   if (layout.normals) mesh.cornerNormals = mesh.triangles;
-  return withWarnings(std::move(mesh));
+  return withWarnings(std::move(mesh), state.warnings);
 }
 
 }  // namespace

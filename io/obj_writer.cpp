@@ -188,4 +188,9 @@ void writeObj(const std::string& path, const Mesh& mesh, const UvMap* uvs, const
   file.commit();
 }
 
+void writeObj(OutputSet& outputs, const std::string& path, const Mesh& mesh, const UvMap* uvs,
+              const ObjWriteOptions& options) {
+  outputs.write(path, [&](std::ostream& out) { writeObj(out, mesh, uvs, options); });
+}
+
 }  // namespace uvtk::io

@@ -9,6 +9,8 @@
 
 namespace uvtk::io {
 
+class OutputSet;
+
 struct ObjWriteOptions {
   bool floatPrecision = false;  // UVs as the shortest text that round-trips a float (<= 9 digits), not a double (<= 17)
   bool writeW = false;          // write `vt u v w` with the UvMap's third component (0 where it has none)
@@ -24,5 +26,8 @@ void writeObj(std::ostream& out, const Mesh& mesh, const UvMap* uvs, const ObjWr
 
 // The same, atomically into `path` (temporary file + rename); throws OutputError.
 void writeObj(const std::string& path, const Mesh& mesh, const UvMap* uvs, const ObjWriteOptions& options = {});
+// The same, staged in `outputs`, which publishes it with the command's other outputs.
+void writeObj(OutputSet& outputs, const std::string& path, const Mesh& mesh, const UvMap* uvs,
+              const ObjWriteOptions& options = {});
 
 }  // namespace uvtk::io

@@ -3,6 +3,7 @@
 //        uvtk_meshgen --sphere SEGMENTS RINGS FILE   a lat-long sphere of any size, for large-mesh
 //        measurements (3162 x 1582: 10 M triangles)
 //        uvtk_meshgen --like-real FOLDER   a torus knot, a long bone, a bumpy blob and an open scanned patch
+//        uvtk_meshgen --help
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -13,7 +14,21 @@
 #include "io/obj_writer.h"
 #include "meshes/generators.h"
 
+namespace {
+
+const char* const kUsage =
+    "usage: uvtk_meshgen [FOLDER]                        the bundled sample meshes (default: the current folder)\n"
+    "       uvtk_meshgen --sphere SEGMENTS RINGS FILE    a lat-long sphere of any size (3162 1582: 10 M triangles)\n"
+    "       uvtk_meshgen --like-real FOLDER              a torus knot, a long bone, a bumpy blob, a scanned patch\n"
+    "       uvtk_meshgen --help                          this text\n";
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  if (argc == 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+    std::fputs(kUsage, stdout);
+    return 0;
+  }
   if (argc == 5 && std::string(argv[1]) == "--sphere") {
     const int segments = std::atoi(argv[2]), rings = std::atoi(argv[3]);
     if (segments < 3 || rings < 2) {
@@ -47,8 +62,14 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
-  if (argc > 2) {
-    std::fprintf(stderr, "usage: uvtk_meshgen [FOLDER] | --sphere SEGMENTS RINGS FILE | --like-real FOLDER\n");
+  // A folder named like an option is a mistyped option (a folder "-x" is still "./-x").
+  const std::string first = argc > 1 ? argv[1] : "";
+  if (argc > 1 && first[0] == '-' && first != "--sphere" && first != "--like-real") {
+    std::fprintf(stderr, "uvtk_meshgen: error: unknown option '%s' (uvtk_meshgen --help lists them)\n", argv[1]);
+    return 2;
+  }
+  if (argc > 2 || first[0] == '-') {
+    std::fputs("uvtk_meshgen: error: expected [FOLDER] | --sphere SEGMENTS RINGS FILE | --like-real FOLDER\n", stderr);
     return 2;
   }
   const std::string folder = argc == 2 ? argv[1] : ".";

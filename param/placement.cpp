@@ -60,9 +60,11 @@ Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface,
   }
   if (options.fit == Fit::None || positions.empty()) return localFromObject;
 
+  // The fit works on the unit box (no overflow or underflow at any scale), then scales back.
+  const UnitBox box = toUnitBox(positions);
   const Mat3 rotation = fittedRotation(positions, surface, options);
   Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
-  for (const Vec3& p : positions) {
+  for (const Vec3& p : box.unit) {
     const Vec3 r = rotation * p;
     lo = lo.cwiseMin(r);
     hi = hi.cwiseMax(r);
@@ -70,7 +72,7 @@ Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface,
   const Vec3 extent = hi - lo;
   const Vec3 center = 0.5 * (lo + hi);
 
-  // local = scale (rotation p - origin), per axis
+  // local = scale (rotation unit - origin), per axis, all in units of the unit box
   Vec3 origin = center, scale = Vec3::Ones();
   switch (options.fit == Fit::Center ? SurfaceKind::TwoPlane : surface) {  // Center: no surface-specific fit
     case SurfaceKind::Plane: {
@@ -81,7 +83,7 @@ Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface,
     }
     case SurfaceKind::Cylinder: {
       double radius = 0.0;
-      for (const Vec3& p : positions) {
+      for (const Vec3& p : box.unit) {
         const Vec3 r = rotation * p;
         radius = std::max(radius, radialDistance(r.x() - center.x(), r.y() - center.y()));
       }
@@ -92,7 +94,7 @@ Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface,
     }
     case SurfaceKind::Sphere: {
       double radius = 0.0;
-      for (const Vec3& p : positions) radius = std::max(radius, (rotation * p - center).norm());
+      for (const Vec3& p : box.unit) radius = std::max(radius, (rotation * p - center).norm());
       scale = Vec3::Constant(1.0 / positiveOr(radius, 1.0));
       break;
     }
@@ -103,12 +105,55 @@ Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface,
     }
     case SurfaceKind::TwoPlane: break;
   }
-  localFromObject.linear() = scale.asDiagonal() * rotation;
-  localFromObject.translation() = -(scale.asDiagonal() * origin);
+
+  // Back to object units: local = s (rotation p - w), with s = 2^-exponent scale (Center keeps
+  // object units) and w = rotation corner + 2^exponent origin, the local origin in rotated object
+  // coordinates, summed in long double, whose exponent range no finite double can leave.
+  for (int a = 0; a < 3; ++a) {
+    double s = options.fit == Fit::Center ? 1.0 : std::ldexp(scale[a], -box.exponent);
+    // Kept where it and its reciprocal (the frame's size in object units) are finite; only a mesh
+    // wider than about 2^1022, or a mesh or box axis thinner than about 2^-1021, reaches the bounds.
+    s = std::clamp(s, 0x1p-1022, 0x1p1022);
+    long double w = std::ldexp(static_cast<long double>(origin[a]), box.exponent);
+    for (int k = 0; k < 3; ++k) w += static_cast<long double>(rotation(a, k)) * box.corner[k];
+    // A sheet 2^1020 times its size from the object origin: a coarser scale keeps the
+    // translation finite (and every position's local coordinate, which is constant there).
+    const long double t = s * w;
+    if (std::fabs(t) > 0x1p1020L) s = std::ldexp(s, 1019 - std::ilogb(t));
+    localFromObject.linear().row(a) = s * rotation.row(a);
+    localFromObject.translation()[a] = static_cast<double>(-(s * w));
+  }
+  UVTK_CHECK(localFromObject.matrix().allFinite());
   return localFromObject;
 }
 
 }  // namespace
+
+UnitBox toUnitBox(const std::vector<Vec3>& positions) {
+  UnitBox box;
+  if (positions.empty()) return box;
+  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  for (const Vec3& p : positions) {
+    UVTK_CHECK(p.allFinite());  // the readers refuse non-finite coordinates
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  // The box's low corner, not its centre: the centre of a mesh far from the object origin rounds,
+  // while p - corner is exact there (Sterbenz), so the fit is the same as the mesh's at the origin.
+  box.corner = lo;
+  const double half = (0.5 * hi - 0.5 * lo).maxCoeff();  // halves: hi - lo overflows near the largest double
+  box.exponent = half > 0.0 ? std::ilogb(half) + 1 : 0;
+  const bool overflows = !(hi - lo).allFinite();
+  for (int a = 0; a < 3; ++a) box.flat[std::size_t(a)] = lo[a] == hi[a];
+  box.unit.reserve(positions.size());
+  for (const Vec3& p : positions) {
+    Vec3 u;
+    for (int a = 0; a < 3; ++a)
+      u[a] = overflows ? std::ldexp(0.5 * p[a] - 0.5 * lo[a], 1 - box.exponent) : std::ldexp(p[a] - lo[a], -box.exponent);
+    box.unit.push_back(u);
+  }
+  return box;
+}
 
 Affine3 fitPlacement(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options) {
   const Affine3 frame = frameBeforeTurn(positions, surface, options);

@@ -2,6 +2,7 @@
 // which the intermediate surface has its canonical form (docs/conventions.md §2).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -42,14 +43,42 @@ struct PlacementOptions {
 
 // The frame for `surface` over `positions`. Fitted scales: plane, the box's x, y extent to
 // [0,1]^2; cylinder, radius 1 and height to [0,1]; sphere, radius 1; cube, the box to [-1,1]^3.
+// A zero extent takes another: plane x or y the larger of the two, z that one; cylinder height
+// the radius; cube a half extent the largest; and with nothing left (or a zero radius) the
+// UnitBox's unit, half the box's largest extent rounded up to a power of two (1 for a single
+// point). The fits are scale-invariant: the mesh times 2^n has the same frame after it (linear
+// times 2^-n, the same translation). Any finite positions give a finite frame with orthonormal
+// axes: each axis' scale is kept within [2^-1022, 2^1022] and small enough that the translation
+// stays below 2^1020, which only a mesh wider than about 2^1022, a mesh or a box axis thinner than
+// about 2^-1021, or a flat mesh about 2^1020 times its size from the object origin ever needs.
 // Two-plane projectors work in object space, so their placement is the identity.
 // Throws UsageError for an explicit frame with a zero or parallel direction or scale <= 0.
 Affine3 fitPlacement(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options);
 
 // The rotation whose rows are the object-space directions of the fitted frame's axes, ordered
 // by decreasing spread, with signs fixed so that each axis' largest component is positive.
-// Implemented with CGAL (placement_cgal.cpp, the only file that includes it).
+// Implemented with CGAL (placement_cgal.cpp, the only file that includes it). Both fit the
+// positions' UnitBox, so they give the same axes at every scale and any finite coordinates.
+// Zero extent along object axes: one such axis (a sheet) is kept exactly as the last row, the
+// others fitted in its plane; two (an axis-parallel line) or three (one point) keep the object
+// axes, the line's first.
 Mat3 principalAxes(const std::vector<Vec3>& positions);
 Mat3 orientedBoxAxes(const std::vector<Vec3>& positions);
+
+// The positions moved to a unit box, where every fit works so that no overflow, underflow or
+// floating-point trap reaches CGAL or Eigen (coordinates near 1e103 made CGAL's oriented box die
+// of SIGFPE: its predicates' products overflow): unit = 2^-exponent (p - corner), corner the
+// bounding box's low corner, 2^exponent the smallest power of two above the largest half extent,
+// so that every unit coordinate is in [0, 2). A power of two scales exactly: a mesh and the same
+// mesh times 2^n give the same unit positions and so the same fit, and so does the mesh moved far
+// from the origin (p - corner is exact there). All points equal: exponent 0. The positions must
+// be finite (the readers refuse the rest; checked).
+struct UnitBox {
+  std::vector<Vec3> unit;
+  Vec3 corner = Vec3::Zero();
+  int exponent = 0;
+  std::array<bool, 3> flat{};  // the object axes along which every position is the same
+};
+UnitBox toUnitBox(const std::vector<Vec3>& positions);
 
 }  // namespace uvtk::param

@@ -234,7 +234,7 @@ std::optional<Eigen::AlignedBox3d> sensibleBox(const std::vector<Vec3>& position
 }
 
 CylinderCaps::CylinderCaps(const Affine3& localFromObject, double capAngleDegrees)
-    : axis_((localFromObject.linear().inverse() * Vec3::UnitZ()).normalized()),
+    : axis_((inverseAtAnyScale(localFromObject.linear()) * Vec3::UnitZ()).stableNormalized()),
       cosLimit_(std::cos(capAngleDegrees * (kPi / 180.0))) {}
 
 bool CylinderCaps::isCap(const Vec3& objectNormal) const {

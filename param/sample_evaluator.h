@@ -24,13 +24,14 @@ namespace uvtk::param {
 template <class T>
 struct LocalFrameT {
   using Wide = std::conditional_t<(sizeof(T) > sizeof(double)), T, double>;
-  Eigen::Matrix<Wide, 3, 3> linear, normalMatrix;  // normalMatrix: inverse transpose of `linear`
+  Eigen::Matrix<Wide, 3, 3> linear, normalMatrix;  // normalMatrix: inverse transpose of `linear`, times a power of two
   Vec3T<Wide> origin;                              // the object-space point at (about) the local origin
   Vec3T<Wide> residue;                             // its exact local coordinates, the rounding error of `origin`
 
   explicit LocalFrameT(const Affine3& localFromObject) : linear(localFromObject.linear().cast<Wide>()) {
-    const Mat3 inverse = localFromObject.linear().inverse();
-    normalMatrix = inverse.transpose().cast<Wide>();
+    const Mat3 inverse = inverseAtAnyScale(localFromObject.linear());
+    // Normals only need a direction: the inverse transpose at unit scale cannot overflow in norm().
+    normalMatrix = (inverse.transpose() * unitPowerOfTwo(inverse)).cast<Wide>();
     // local = linear (p - origin) + residue: p - origin cancels exactly near the mesh, where
     // linear p + translation would lose the digits of |p| (1e-8 absolute at 1e8 from the origin).
     const Vec3 o = -(inverse * localFromObject.translation());

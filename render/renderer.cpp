@@ -5,18 +5,21 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "core/stopwatch.h"
+#include "render/memory.h"
 
 namespace uvtk::render {
 
 namespace {
 
 constexpr int kRowsPerBand = 8;
+constexpr std::uint64_t kLargeRenderBytes = std::uint64_t(1) << 30;  // announced on stderr
 
 // Texture coordinates of one fragment, (s, t, r) / q, and their screen-space derivatives.
 struct FragmentTexcoords {
@@ -297,6 +300,21 @@ Rendering resolve(const Rendering& samples, const VisibilityBuffer& visible, int
   return out;
 }
 
+// Memory before work: a frame the machine cannot hold is refused before any buffer is allocated,
+// and a large one is announced beside the progress (the bar shows no memory).
+void checkFrameMemory(const Mesh& mesh, const TexcoordSource& source, const RenderOptions& o) {
+  const int width = o.camera.width, height = o.camera.height;
+  if (width <= 0 || height <= 0 || width > kMaxViewport || height > kMaxViewport) return;  // rasterize refuses
+  const MemoryEstimate estimate = estimateMemory(mesh, source, o);
+  std::string what = "rendering " + std::to_string(width) + "x" + std::to_string(height);
+  if (o.samplesPerPixel > 1) what += " at " + std::to_string(o.samplesPerPixel) + " samples per pixel";
+  const std::optional<std::uint64_t> available = availableMemory();
+  if (available) checkMemory(estimate, *available, what);
+  if (estimate.total() > kLargeRenderBytes && progressEnabled())
+    printProgressMessage(what + ": about " + formatBytes(estimate.total()) + " of memory" +
+                         (available ? " (" + formatBytes(*available) + " available)" : ""));
+}
+
 }  // namespace
 
 Rendering render(const Mesh& mesh, const TexcoordSource& source, const RenderOptions& o) {
@@ -305,14 +323,15 @@ Rendering render(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
     throw UsageError("render: expected 3 texture coordinates per triangle");
   UVTK_CHECK(!needsMipmaps(o.sampler.minFilter) || (o.texture ? o.texture->hasMipmaps() : o.cubeTexture->hasMipmaps()));
   const int n = sampleGridSize(o.samplesPerPixel);
-  VisibilityBuffer visible;
-  if (n == 1) return renderFrame(mesh, source, o, visible);
-
   const int width = o.camera.width, height = o.camera.height;
-  if (std::int64_t(width) * n > kMaxViewport || std::int64_t(height) * n > kMaxViewport)
+  if (n > 1 && (std::int64_t(width) * n > kMaxViewport || std::int64_t(height) * n > kMaxViewport))
     throw UsageError("--spp: " + std::to_string(o.samplesPerPixel) + " samples per pixel need a " +
                      std::to_string(std::int64_t(width) * n) + " x " + std::to_string(std::int64_t(height) * n) +
                      " frame, larger than the rasterizer's " + std::to_string(kMaxViewport) + " pixels a side");
+  checkFrameMemory(mesh, source, o);
+  VisibilityBuffer visible;
+  if (n == 1) return renderFrame(mesh, source, o, visible);
+
   // The same projection onto an n times larger viewport puts each sample at a pixel centre.
   RenderOptions big = o;
   big.camera.width = width * n;

@@ -389,7 +389,8 @@ void runBench(const BenchArguments& a) {
   // Every output's folder is checked before the first measurement.
   for (const std::string* path : {&a.json, &a.markdown, &a.plot}) {
     const std::filesystem::path folder = std::filesystem::path(*path).parent_path();
-    if (!path->empty() && !folder.empty() && !std::filesystem::is_directory(folder))
+    std::error_code error;
+    if (!path->empty() && !folder.empty() && !std::filesystem::is_directory(folder, error))
       throw UsageError(*path + ": the folder " + folder.string() + " does not exist");
   }
 
@@ -417,22 +418,23 @@ void runBench(const BenchArguments& a) {
   const std::string md = "Mesh: " + meshName + " (" + std::to_string(mesh.vertexCount()) +
                          " vertices). atan2: " + param::fastMathInstructionSet() + " for fast modes.\n\n" +
                          markdownTables(records, a.textureWidth);
-  if (a.markdown.empty())
-    std::fputs(md.c_str(), stdout);
-  else
-    io::writeFileAtomically(a.markdown, md);
+  io::OutputSet outputs;  // every file, published together; stdout gets the table once they are in place
+  if (!a.markdown.empty()) outputs.writeText(a.markdown, md);
   if (!a.json.empty()) {
     const nlohmann::json j = {{"mesh", meshName},
                               {"texture_width", a.textureWidth},
                               {"fast_math_isa", param::fastMathInstructionSet()},
                               {"records", records}};
-    io::writeFileAtomically(a.json, j.dump(2) + "\n");
+    outputs.writeText(a.json, j.dump(2) + "\n");
   }
   if (!a.plot.empty()) {
-    io::writeImage(a.plot, chartOf(records, false, a.textureWidth), io::PixelType::UInt8);
+    io::writeImage(outputs, a.plot, chartOf(records, false, a.textureWidth), io::PixelType::UInt8);
     if (a.render)
-      io::writeImage(withSuffix(a.plot, "-render"), chartOf(records, true, a.textureWidth), io::PixelType::UInt8);
+      io::writeImage(outputs, withSuffix(a.plot, "-render"), chartOf(records, true, a.textureWidth),
+                     io::PixelType::UInt8);
   }
+  outputs.publish();
+  if (a.markdown.empty()) std::fputs(md.c_str(), stdout);
 }
 
 }  // namespace

@@ -287,6 +287,7 @@ void runCheck(CheckArguments& a) {
   const bool pass = !decided || check.main.max <= *a.tolerance;
   const std::string status = !decided ? "report" : pass ? "pass" : "fail";
 
+  io::OutputSet outputs;  // the record and the view, published together
   if (!a.json.empty()) {
     nlohmann::json worst = nlohmann::json::array(), worstPole = nlohmann::json::array();
     for (const analysis::CornerError& e : check.worst) worst.push_back(cornerJson(report, e));
@@ -321,7 +322,7 @@ void runCheck(CheckArguments& a) {
                               {"status", status},
                               {"stored_uvs_verdict", analysis::toString(judgement.verdict)},
                               {"stored_uvs_reasons", reasonsJson(judgement)}};
-    io::writeFileAtomically(a.json, j.dump(2) + "\n");
+    outputs.writeText(a.json, j.dump(2) + "\n");
   }
 
   if (!a.view.empty()) {
@@ -346,8 +347,9 @@ void runCheck(CheckArguments& a) {
     render.camera =
         render::frameSphere(render::boundingSphere(mesh.positions), parseVec3(a.viewDir, "--view-dir"),
                             parseVec3(a.viewUp, "--view-up"), render::Projection{}, viewSize.first, viewSize.second);
-    io::writeImage(a.view, views::drawCornerError(in, render), io::PixelType::UInt8);
+    io::writeImage(outputs, a.view, views::drawCornerError(in, render), io::PixelType::UInt8);
   }
+  outputs.publish();
 
   std::printf("uvtk check: %s: %zu vertices, %zu faces, %zu corners\n", a.input.c_str(), mesh.vertexCount(),
               mesh.faceCount(), check.error.size());

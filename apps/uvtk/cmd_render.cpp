@@ -72,7 +72,8 @@ void runRender(RenderArguments& a) {
   clock.start(a.frame.view.empty() ? "rendering" : "drawing", a.frame.size);
   analysis::Judgement judgement;
   const auto measured = [&]() -> const analysis::Judgement& { return judgement = mapped.judge(); };
-  nlohmann::json j = drawFrame(a.frame, a.output, mapped,
+  io::OutputSet outputs;  // the picture, its AOVs and the record, published together
+  nlohmann::json j = drawFrame(outputs, a.frame, a.output, mapped,
                                renderOptions(a.frame, a.texture, texture, camera, worldFromObject), measured);
   clock.stop();
 
@@ -83,8 +84,9 @@ void runRender(RenderArguments& a) {
     j["milliseconds"]["read"] = readMs;
     j["milliseconds"]["texcoords"] = uvMs;
     j["milliseconds"]["texture"] = textureMs;
-    io::writeFileAtomically(a.json, j.dump(2) + "\n");
+    outputs.writeText(a.json, j.dump(2) + "\n");
   }
+  outputs.publish();
   printMappingNotes(a.input, input.warnings, mapped);
   if (a.frame.view.empty())
     std::fprintf(stderr,

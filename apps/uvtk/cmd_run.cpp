@@ -17,14 +17,14 @@ namespace {
 
 struct RunArguments {
   std::string scene, outputDir, json;
-  bool plan = false, quiet = false;
+  bool plan = false, quiet = false, allowOutside = false;
   int jobs = 0;
 };
 
 // Fails with the worst failure's status once every mesh has had its turn.
 void runRun(const RunArguments& a) {
   if (a.quiet) setProgressEnabled(false);
-  const Scene scene = loadScene(a.scene, a.outputDir);
+  const Scene scene = loadScene(a.scene, a.outputDir, a.allowOutside);
   const std::vector<Stage> plan = planScene(scene);
   if (a.plan) {
     std::fputs(planText(scene, plan).c_str(), stdout);
@@ -52,6 +52,9 @@ void addRunCommand(CLI::App& root) {
   cmd->add_flag("--plan", a->plan, "Print the stages the outputs need, and run nothing");
   cmd->add_option("-o,--output-dir", a->outputDir,
                   "Folder the scene's output paths are relative to (default: the scene file's folder)");
+  cmd->add_flag("--allow-outside", a->allowOutside,
+               "Let the scene's outputs leave the output folder (absolute paths, .., symbolic links to folders "
+               "outside it)");
   cmd->add_option("--json", a->json, "Write the run report (with --plan: the plan) as JSON");
   cmd->add_option("--jobs", a->jobs, "Meshes worked on at once (0: one per hardware thread)")->capture_default_str();
   cmd->add_flag("-q,--quiet", a->quiet, "No progress and no summary line (failures are still printed)");

@@ -90,7 +90,8 @@ void runTexgen(const TexgenCommandArguments& a) {
                  options.textureMatrix.row(2) != Eigen::RowVector4d(0, 0, 1, 0);
   write.header = "uvtk texgen " + a.input;
   const ProjectiveDivision divided = divideByQ(result);
-  io::writeObj(a.output, input.mesh, divided.applied ? &divided.uv : &result.uv, write);
+  io::OutputSet outputs;  // the OBJ and its summary, published together
+  io::writeObj(outputs, a.output, input.mesh, divided.applied ? &divided.uv : &result.uv, write);
   const double writeMs = clock.stop();
   const std::size_t invalidCorners = result.invalidCorners + divided.qZeroCorners;
 
@@ -119,8 +120,9 @@ void runTexgen(const TexgenCommandArguments& a) {
                         {"output", a.output},
                         {"milliseconds", {{"read", readMs}, {"texgen", texgenMs}, {"write", writeMs}}},
                         {"texcoords", coordinates}};
-    io::writeFileAtomically(a.json, j.dump(2) + "\n");
+    outputs.writeText(a.json, j.dump(2) + "\n");
   }
+  outputs.publish();
   printInputWarnings(a.input, input.warnings);
   if (divided.applied)
     std::fprintf(stderr, "uvtk texgen: q is not 1 at %zu corners: wrote s/q, t/q%s (%zu corners with q = 0 written as 0 and counted invalid)\n",

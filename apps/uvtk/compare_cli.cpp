@@ -228,7 +228,8 @@ void CompareArguments::check() const {
   camera.check();
 }
 
-Comparison compareMappings(const CompareArguments& a, const Mesh& mesh, const nlohmann::json& input) {
+Comparison compareMappings(io::OutputSet& outputs, const CompareArguments& a, const Mesh& mesh,
+                           const nlohmann::json& input) {
   StageClock clock("uvtk compare");
   std::vector<Candidate> ranked;
   nlohmann::json skipped = nlohmann::json::array();
@@ -256,10 +257,10 @@ Comparison compareMappings(const CompareArguments& a, const Mesh& mesh, const nl
 
   Comparison out;
   out.table = markdownTable(ranked, a.by);
-  if (!a.markdown.empty()) io::writeFileAtomically(a.markdown, out.table);
+  if (!a.markdown.empty()) outputs.writeText(a.markdown, out.table);
   if (!a.sheet.empty()) {
     clock.start("drawing", a.sheet);
-    io::writeImage(a.sheet, contactSheetOf(ranked, a), io::PixelType::UInt8);
+    io::writeImage(outputs, a.sheet, contactSheetOf(ranked, a), io::PixelType::UInt8);
     clock.stop();
   }
   static const char* kRankNames[] = {"stretch_l2", "stretch_linf", "angle", "seam_length"};
@@ -274,10 +275,17 @@ Comparison compareMappings(const CompareArguments& a, const Mesh& mesh, const nl
     record["rank"] = i + 1;
     out.record["ranking"].push_back(std::move(record));
   }
-  if (!a.json.empty()) io::writeFileAtomically(a.json, out.record.dump(2) + "\n");
+  if (!a.json.empty()) outputs.writeText(a.json, out.record.dump(2) + "\n");
   out.best = ranked.empty() ? "none" : ranked.front().name;
   out.skipped = skipped.size();
   return out;
+}
+
+Comparison compareMappings(const CompareArguments& a, const Mesh& mesh, const nlohmann::json& input) {
+  io::OutputSet outputs;
+  Comparison comparison = compareMappings(outputs, a, mesh, input);
+  outputs.publish();
+  return comparison;
 }
 
 void addCompareOptions(CLI::App& app, CompareArguments& a) {

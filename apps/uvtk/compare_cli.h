@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/mesh.h"
+#include "io/atomic_file.h"
 #include "mapped_mesh.h"
 
 namespace uvtk::cli {
@@ -32,8 +33,11 @@ struct Comparison {
   std::size_t skipped = 0;
 };
 
-// Maps `mesh` with every configuration, ranks them and writes the outputs `arguments` names;
-// `input` is the "input" record.
+// Maps `mesh` with every configuration, ranks them and writes the outputs `arguments` names,
+// published together; `input` is the "input" record.
 Comparison compareMappings(const CompareArguments& arguments, const Mesh& mesh, const nlohmann::json& input);
+// The same, staged in `outputs` (a scene's).
+Comparison compareMappings(io::OutputSet& outputs, const CompareArguments& arguments, const Mesh& mesh,
+                           const nlohmann::json& input);
 
 }  // namespace uvtk::cli

@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "core/error.h"
 #include "io/image_io.h"
 
 namespace uvtk::cli {
@@ -105,8 +106,11 @@ std::string pageStart(const std::string& title) {
 // The files of the gallery's page: their links relative to the page, and only those that exist.
 class PageFiles {
  public:
-  explicit PageFiles(const std::string& pagePath)
-      : folder_(std::filesystem::weakly_canonical(std::filesystem::absolute(pagePath)).parent_path()) {}
+  explicit PageFiles(const std::string& pagePath) {
+    std::error_code error;
+    folder_ = std::filesystem::weakly_canonical(std::filesystem::absolute(pagePath, error), error).parent_path();
+    if (error) throw OutputError(pagePath + ": error: cannot write: " + error.message());
+  }
   std::optional<std::string> link(const std::string& file) const {
     std::error_code error;
     const std::filesystem::path target = std::filesystem::weakly_canonical(std::filesystem::absolute(file), error);

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/gl_matrices.h"
 #include "core/stopwatch.h"
+#include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "options/arithmetic_cli.h"
 #include "options/cli_values.h"
@@ -54,8 +55,8 @@ Image selectChannels(const Image& all, const std::vector<std::string>& names) {
 }
 
 // The named inspection views: one picture, or a contact sheet of several.
-nlohmann::json drawViews(const FrameArguments& frame, const std::string& output, const MappedMesh& mapped,
-                         const render::RenderOptions& renderOptions,
+nlohmann::json drawViews(io::OutputSet& outputs, const FrameArguments& frame, const std::string& output,
+                         const MappedMesh& mapped, const render::RenderOptions& renderOptions,
                          const std::function<const analysis::Judgement&()>& judgement) {
   const std::vector<views::View> list = frame.views();
   const views::ViewInput in = mapped.viewInput(frame.showsMeasures() ? &judgement() : nullptr);
@@ -81,7 +82,7 @@ nlohmann::json drawViews(const FrameArguments& frame, const std::string& output,
   }
   const Image picture =
       tiles.size() == 1 ? tiles.front().second : views::contactSheet(tiles, std::min<int>(3, int(tiles.size())));
-  io::writeImage(output, picture, io::PixelType::UInt8);
+  io::writeImage(outputs, output, picture, io::PixelType::UInt8);
   j["width"] = picture.width;
   j["height"] = picture.height;
   return j;
@@ -375,20 +376,21 @@ render::RenderOptions renderOptions(const FrameArguments& frame, const TextureAr
   return options;
 }
 
-nlohmann::json drawFrame(const FrameArguments& frame, const std::string& output, const MappedMesh& mapped,
-                         const render::RenderOptions& options,
+nlohmann::json drawFrame(io::OutputSet& outputs, const FrameArguments& frame, const std::string& output,
+                         const MappedMesh& mapped, const render::RenderOptions& options,
                          const std::function<const analysis::Judgement&()>& judgement) {
   UVTK_CHECK(!frame.needsExact() || mapped.exact);  // the callers refuse the file's UVs before any work
-  if (!frame.view.empty()) return drawViews(frame, output, mapped, options, judgement);
+  if (!frame.view.empty()) return drawViews(outputs, frame, output, mapped, options, judgement);
 
   render::RenderOptions withAovs = options;
   withAovs.aovs = !frame.aov.empty();
   const render::Rendering rendering =
       render::render(mapped.mesh, mapped.texcoordSource(frame.uv == FrameArguments::Uv::PerPixel), withAovs);
   const auto writeStart = std::chrono::steady_clock::now();
-  io::writeImage(output, rendering.colour, io::PixelType::UInt8);
+  io::writeImage(outputs, output, rendering.colour, io::PixelType::UInt8);
   if (!frame.aov.empty())
-    io::writeImage(frame.aovOutput, selectChannels(rendering.aovs, aovChannels(frame.aov)), io::PixelType::Float);
+    io::writeImage(outputs, frame.aovOutput, selectChannels(rendering.aovs, aovChannels(frame.aov)),
+                   io::PixelType::Float);
   nlohmann::json j = {
       {"output", output},
       {"texcoords", mapped.source},

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "io/atomic_file.h"
 #include "mapped_mesh.h"
 #include "render/camera.h"
 #include "render/renderer.h"
@@ -105,10 +106,11 @@ render::RenderOptions renderOptions(const FrameArguments& frame, const TextureAr
                                     const Mat4& worldFromObject);
 
 // Draws `mapped` into `output` as `frame` asks: the textured picture (and AOVs), or the inspection
-// views; `judgement` is called only when a view shows measures. Returns the JSON record of the frame.
-// A frame that needs the exact mapping (FrameArguments::needsExact) needs a mapped.exact.
-nlohmann::json drawFrame(const FrameArguments& frame, const std::string& output, const MappedMesh& mapped,
-                         const render::RenderOptions& options,
+// views, staged in `outputs`; `judgement` is called only when a view shows measures. Returns the
+// JSON record of the frame. A frame that needs the exact mapping (FrameArguments::needsExact) needs
+// a mapped.exact.
+nlohmann::json drawFrame(io::OutputSet& outputs, const FrameArguments& frame, const std::string& output,
+                         const MappedMesh& mapped, const render::RenderOptions& options,
                          const std::function<const analysis::Judgement&()>& judgement);
 
 }  // namespace uvtk::cli

@@ -35,8 +35,9 @@ void ReportArguments::check() const {
   camera.check();
 }
 
-nlohmann::json writeReport(const ReportArguments& a, const MappedMesh& mapped, const analysis::Judgement& judgement,
-                           const nlohmann::json& input, const nlohmann::json& milliseconds) {
+nlohmann::json writeReport(io::OutputSet& outputs, const ReportArguments& a, const MappedMesh& mapped,
+                           const analysis::Judgement& judgement, const nlohmann::json& input,
+                           const nlohmann::json& milliseconds) {
   nlohmann::json report = judgementJson(mapped, judgement);
   report["tool"] = {{"name", "uvtk"}, {"version", UVTK_VERSION}};
   report["input"] = input;
@@ -62,8 +63,16 @@ nlohmann::json writeReport(const ReportArguments& a, const MappedMesh& mapped, c
     for (const auto& picture : pictures) report["views"].push_back(picture.first);
   }
   if (!milliseconds.is_null()) report["milliseconds"] = milliseconds;
-  if (!a.json.empty()) io::writeFileAtomically(a.json, report.dump(2) + "\n");
-  if (!a.html.empty()) io::writeFileAtomically(a.html, htmlReport(report, pictures));
+  if (!a.json.empty()) outputs.writeText(a.json, report.dump(2) + "\n");
+  if (!a.html.empty()) outputs.writeText(a.html, htmlReport(report, pictures));
+  return report;
+}
+
+nlohmann::json writeReport(const ReportArguments& a, const MappedMesh& mapped, const analysis::Judgement& judgement,
+                           const nlohmann::json& input, const nlohmann::json& milliseconds) {
+  io::OutputSet outputs;
+  nlohmann::json report = writeReport(outputs, a, mapped, judgement, input, milliseconds);
+  outputs.publish();
   return report;
 }
 

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "io/atomic_file.h"
 #include "mapped_mesh.h"
 
 namespace uvtk::cli {
@@ -23,8 +24,12 @@ void addReportOptions(CLI::App& app, ReportArguments& arguments);
 
 // Writes the report of `mapped` with its `judgement` (taken at arguments.overlapResolution);
 // `input` is the "input" record, `milliseconds` the times of the stages before (none when null).
-// Returns the report.
+// The JSON and the page are published together. Returns the report.
 nlohmann::json writeReport(const ReportArguments& arguments, const MappedMesh& mapped,
+                           const analysis::Judgement& judgement, const nlohmann::json& input,
+                           const nlohmann::json& milliseconds = nullptr);
+// The same, staged in `outputs` (a scene's).
+nlohmann::json writeReport(io::OutputSet& outputs, const ReportArguments& arguments, const MappedMesh& mapped,
                            const analysis::Judgement& judgement, const nlohmann::json& input,
                            const nlohmann::json& milliseconds = nullptr);
 

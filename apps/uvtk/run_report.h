@@ -47,11 +47,20 @@ inline nlohmann::json inputJson(const std::string& path, const io::ReadMeshResul
           {"unreferenced_vertices", input.warnings.unreferencedVertices}};
 }
 
-// One warning line on stderr when the reader counted anything.
+// One warning line on stderr for each kind of thing the reader counted.
 inline void printInputWarnings(const std::string& path, const MeshWarnings& w) {
   if (w.degenerateFaces || w.unreferencedVertices)
     printProgressMessage(path + ": warning: " + std::to_string(w.degenerateFaces) + " degenerate faces, " +
                          std::to_string(w.unreferencedVertices) + " unreferenced vertices");
+  if (w.nonSimplePolygons)
+    printProgressMessage(path + ":" + std::to_string(w.firstNonSimplePolygonLine) +
+                         ": warning: polygons that are not simple (self-intersecting, non-planar or of zero area): " +
+                         std::to_string(w.nonSimplePolygons) + ", the first here; triangulated as given, they may fold");
+  if (w.vertexColours)
+    printProgressMessage(path + ": warning: vertex colours ignored: " + std::to_string(w.vertexColours) + " vertices");
+  if (w.parameterVertices)
+    printProgressMessage(path + ": warning: vp lines (free-form parameter vertices) ignored: " +
+                         std::to_string(w.parameterVertices));
 }
 
 }  // namespace uvtk::cli

@@ -1,6 +1,7 @@
 #include "scene.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -53,12 +54,25 @@ std::string keysForOptions(const std::string& message) {
   return out;
 }
 
+// `path` without a trailing separator ("a/b/" is "a/b"), so that its components compare.
+fs::path withoutTrailingSlash(const fs::path& path) {
+  return path.has_relative_path() && !path.has_filename() ? path.parent_path() : path;
+}
+
+// Whether `path` is `folder` or lies in it, component by component (both absolute or both not).
+bool within(const fs::path& path, const fs::path& folder) {
+  const fs::path p = withoutTrailingSlash(path.lexically_normal()), f = withoutTrailingSlash(folder.lexically_normal());
+  if (f == ".") return p.is_relative() && (p.empty() || *p.begin() != "..");
+  return std::mismatch(f.begin(), f.end(), p.begin(), p.end()).first == f.end();
+}
+
 class SceneReader {
  public:
-  SceneReader(std::string path, const std::string& outputDir)
+  SceneReader(std::string path, const std::string& outputDir, bool allowOutside)
       : path_(std::move(path)),
         inputDir_(fs::path(path_).parent_path()),
-        outputDir_(outputDir.empty() ? inputDir_ : fs::path(outputDir)) {}
+        outputDir_(outputDir.empty() ? inputDir_ : fs::path(outputDir)),
+        allowOutside_(allowOutside) {}
 
   [[noreturn]] void fail(const std::string& pointer, const std::string& message) const {
     throw InputError(path_ + ": " + (pointer.empty() ? "/" : pointer) + ": " + message);
@@ -97,15 +111,24 @@ class SceneReader {
     }
   }
 
+  // Inputs may be anywhere; a NUL would make the system read the file named by the part before it.
   std::string input(const json& value, const std::string& pointer) const {
-    const fs::path file = inputDir_ / value.get<std::string>();
+    const std::string name = value.get<std::string>();
+    if (name.find('\0') != std::string::npos) fail(pointer, quotedName(name) + ": a file name cannot hold a NUL byte");
+    const fs::path file = inputDir_ / name;
     std::error_code error;
-    if (fs::is_directory(file, error)) fail(pointer, "\"" + file.string() + "\" is a folder, not a file");
-    if (!fs::is_regular_file(file, error)) fail(pointer, "no such file \"" + file.string() + "\"");
+    if (fs::is_directory(file, error)) fail(pointer, quotedName(file.string()) + " is a folder, not a file");
+    if (!fs::is_regular_file(file, error)) fail(pointer, "no such file " + quotedName(file.string()));
     return file.lexically_normal().string();
   }
-  std::string output(const std::string& path) const {
-    return path.empty() ? path : (outputDir_ / path).lexically_normal().string();
+  // An output file given at `pointer` (empty: none), as checkOutputPath resolves it.
+  std::string output(const std::string& path, const std::string& pointer) const {
+    if (path.empty()) return path;
+    try {
+      return checkOutputPath(path, outputDir_, allowOutside_);
+    } catch (const InputError& e) {
+      fail(pointer, e.what());
+    }
   }
 
   // The index of the entry named `name` among `entries`, or an error listing the names there are.
@@ -251,13 +274,14 @@ class SceneReader {
     SceneOutput o;
     o.pointer = pointer;
     o.parser = std::make_shared<CLI::App>();
-    o.path = output(j.value("path", ""));
+    o.path = output(j.value("path", ""), pointer + "/path");
     if (j.contains("mapping")) o.mapping = find(scene.mappings, j["mapping"], "mapping", pointer + "/mapping");
     if (j.contains("mesh")) o.mesh = find(scene.meshes, j["mesh"], "mesh", pointer + "/mesh");
     if (j.contains("camera")) o.camera = find(scene.cameras, j["camera"], "camera", pointer + "/camera");
     if (j.contains("texture")) o.texture = find(scene.textures, j["texture"], "texture", pointer + "/texture");
     const std::string kind = j["kind"];
-    if (kind == "obj" || kind == "render") o.json = output(j.value("json", ""));  // report, compare: their own
+    // report, compare: their own json
+    if (kind == "obj" || kind == "render") o.json = output(j.value("json", ""), pointer + "/json");
     if (kind == "obj") {
       o.kind = SceneOutput::Kind::Obj;
       o.writeW = j.value("write_w", false);
@@ -266,7 +290,11 @@ class SceneReader {
       o.kind = SceneOutput::Kind::Render;
       addFrameOptions(*o.parser, o.frame);
       parseOptions(*o.parser, j, {"kind", "mapping", "camera", "texture", "path", "json"}, pointer);
-      o.frame.aovOutput = output(o.frame.aovOutput);
+      // The AOV file by default is the picture's with .exr (as FrameArguments::check names it), checked as given.
+      const bool aovNamed = !o.frame.aovOutput.empty();
+      if (!o.frame.aov.empty() && !aovNamed)
+        o.frame.aovOutput = fs::path(j.value("path", "")).replace_extension(".exr").string();
+      o.frame.aovOutput = output(o.frame.aovOutput, pointer + (aovNamed ? "/aov_output" : "/path"));
       at(pointer, [&] { o.frame.check(o.path); });
       const SceneMapping& mapping = scene.mappings[*o.mapping];
       const TextureArguments& texture = o.texture ? scene.textures[*o.texture].arguments : scene.defaultTexture;
@@ -281,14 +309,16 @@ class SceneReader {
       o.kind = SceneOutput::Kind::Report;
       addReportOptions(*o.parser, o.report);
       parseOptions(*o.parser, j, {"kind", "mapping"}, pointer);
-      o.report.json = output(o.report.json);
-      o.report.html = output(o.report.html);
+      o.report.json = output(o.report.json, pointer + "/json");
+      o.report.html = output(o.report.html, pointer + "/html");
       at(pointer, [&] { o.report.check(); });
     } else if (kind == "compare") {
       o.kind = SceneOutput::Kind::Compare;
       addCompareOptions(*o.parser, o.compare);
       parseOptions(*o.parser, j, {"kind", "mesh"}, pointer);
-      for (std::string* file : {&o.compare.json, &o.compare.markdown, &o.compare.sheet}) *file = output(*file);
+      o.compare.json = output(o.compare.json, pointer + "/json");
+      o.compare.markdown = output(o.compare.markdown, pointer + "/markdown");
+      o.compare.sheet = output(o.compare.sheet, pointer + "/sheet");
       at(pointer, [&] { o.compare.check(); });
     } else {
       o.kind = SceneOutput::Kind::Gallery;
@@ -300,16 +330,24 @@ class SceneReader {
   // No two outputs write the same file, and no output overwrites an input.
   void checkFiles(const Scene& scene) const {
     std::map<std::string, std::string> writers;
-    for (const SceneMesh& m : scene.meshes) writers[fs::weakly_canonical(m.path).string()] = m.pointer;
+    // The paths have been checked; a system refusal here (a folder that cannot be searched) is the scene's.
+    const auto canonical = [&](const std::string& file, const std::string& pointer) {
+      std::error_code error;
+      const fs::path resolved = fs::weakly_canonical(file, error);
+      if (error) fail(pointer, quotedName(file) + ": " + error.message());
+      return resolved.string();
+    };
+    for (const SceneMesh& m : scene.meshes) writers[canonical(m.path, m.pointer)] = m.pointer;
     for (const SceneOutput& o : scene.outputs)
       for (const std::string& file : o.files()) {
-        const auto [where, inserted] = writers.emplace(fs::weakly_canonical(file).string(), o.pointer);
-        if (!inserted) fail(o.pointer, "writes \"" + file + "\", which " + where->second + " names too");
+        const auto [where, inserted] = writers.emplace(canonical(file, o.pointer), o.pointer);
+        if (!inserted) fail(o.pointer, "writes " + quotedName(file) + ", which " + where->second + " names too");
       }
   }
 
   std::string path_;
   fs::path inputDir_, outputDir_;
+  bool allowOutside_ = false;
 };
 
 }  // namespace
@@ -338,6 +376,59 @@ std::vector<std::string> SceneOutput::files() const {
   return out;
 }
 
-Scene loadScene(const std::string& path, const std::string& outputDir) { return SceneReader(path, outputDir).read(); }
+std::string checkOutputPath(const std::string& path, const fs::path& outputDir, bool allowOutside) {
+  const std::string name = quotedName(path);
+  if (path.empty()) throw InputError("expected a file name, found \"\"");
+  if (path.find('\0') != std::string::npos) throw InputError(name + ": a file name cannot hold a NUL byte");
+  for (std::size_t begin = 0; begin <= path.size();) {
+    const std::size_t end = std::min(path.find('/', begin), path.size());
+    if (end - begin > NAME_MAX)
+      throw InputError(name + ": a component of " + std::to_string(end - begin) + " bytes, more than the " +
+                       std::to_string(NAME_MAX) + " a file name can have");
+    begin = end + 1;
+  }
+  const fs::path normal = fs::path(path).lexically_normal();
+  if (!normal.has_filename() || normal.filename() == "." || normal.filename() == ".." || path.back() == '/')
+    throw InputError(name + " names a folder, not a file");
+  const std::string folder = quotedName(outputDir.empty() ? "." : outputDir.string());
+  if (!allowOutside && normal.is_absolute())
+    throw InputError(name + " is an absolute path, outside the output folder " + folder +
+                     " (uvtk run --allow-outside lets outputs leave it)");
+  if (!allowOutside && !within(normal, "."))
+    throw InputError(name + " leads outside the output folder " + folder +
+                     " (uvtk run --allow-outside lets outputs leave it)");
+  const fs::path resolved = (outputDir / normal).lexically_normal();
+  if (resolved.native().size() >= PATH_MAX)
+    throw InputError(name + ": " + std::to_string(resolved.native().size()) +
+                     " bytes joined to the output folder, more than the " + std::to_string(PATH_MAX - 1) +
+                     " a path can have");
+  std::error_code error;
+  if (fs::is_directory(resolved, error))
+    throw InputError(name + ": " + quotedName(resolved.string()) + " is an existing folder");
+  if (!allowOutside) {
+    // The folders on the way, and the output itself, may be symbolic links: an output that is a
+    // link is written where it leads (io/temporary_file.h), so the whole path is resolved.
+    const auto orHere = [](const fs::path& f) { return f.empty() ? fs::path(".") : f; };
+    const fs::path base = fs::weakly_canonical(orHere(outputDir), error);
+    fs::path target = fs::absolute(resolved, error);
+    // weakly_canonical stops at a dangling link, which the output would still be written through.
+    for (int links = 0; !error && links < 40; ++links) {
+      std::error_code missing;  // a name that does not exist yet is no link
+      if (!fs::is_symlink(fs::symlink_status(target, missing))) break;
+      const fs::path next = fs::read_symlink(target, error);
+      target = next.is_absolute() ? next : target.parent_path() / next;
+    }
+    if (!error) target = fs::weakly_canonical(target, error);
+    if (error) throw InputError(name + ": cannot resolve it in the output folder " + folder + ": " + error.message());
+    if (!within(target, base))
+      throw InputError(name + " leads outside the output folder " + folder + " through a symbolic link, to " +
+                       quotedName(target.string()) + " (uvtk run --allow-outside lets outputs leave it)");
+  }
+  return resolved.string();
+}
+
+Scene loadScene(const std::string& path, const std::string& outputDir, bool allowOutside) {
+  return SceneReader(path, outputDir, allowOutside).read();
+}
 
 }  // namespace uvtk::cli

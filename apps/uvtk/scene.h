@@ -5,6 +5,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -87,7 +88,17 @@ struct Scene {
 
 // Reads and checks the scene at `path`: against the schema, then names and references, input
 // files, and every option as its subcommand checks it. Output paths are taken relative to
-// `outputDir` (empty: the scene's folder). Throws InputError "SCENE: /json/pointer: problem".
-Scene loadScene(const std::string& path, const std::string& outputDir);
+// `outputDir` (empty: the scene's folder) and checked by checkOutputPath. Throws InputError
+// "SCENE: /json/pointer: problem".
+Scene loadScene(const std::string& path, const std::string& outputDir, bool allowOutside = false);
+
+// The file an output path of a scene names: `path` relative to `outputDir`, lexically normalised.
+// Refuses (InputError with the problem, naming `path` as quotedName()) what no file system can hold or
+// what is not a file: an empty path, a NUL byte, a component longer than NAME_MAX (255 bytes), a
+// result longer than PATH_MAX - 1, a folder ("." or ".." last, a trailing "/", an existing folder);
+// and, unless `allowOutside`, a path that leaves `outputDir`: absolute, through "..", or through a
+// symbolic link to a folder outside it (weakly_canonical at check time; the last component may be
+// a link, which the atomic rename replaces rather than follows).
+std::string checkOutputPath(const std::string& path, const std::filesystem::path& outputDir, bool allowOutside);
 
 }  // namespace uvtk::cli

@@ -105,7 +105,9 @@ class SceneRunner {
       MeshWork work;
       runStages(groups[groupOrder[std::size_t(g)]], &work, scene_.meshes[groupOrder[std::size_t(g)]].name);
     });
+    publishOutputs();
     runStages(last, nullptr, "gallery");
+    publishOutputs();
     progress.finish();
     progress_ = nullptr;
 
@@ -133,6 +135,24 @@ class SceneRunner {
       }
   }
 
+  // The outputs of the stages that succeeded, all at once. A scene's outputs are staged as their
+  // stages run and published together when every mesh is done, so that an interrupted run or a
+  // failed publish leaves none of them (and the previous versions); the outputs of a stage that
+  // fails are dropped with it (an OBJ never appears without its summary), while the other stages'
+  // are published, as a failing mesh does not stop the others. Each staged output holds an open
+  // file until then (one descriptor each). The gallery, which links only the files that are in
+  // place, is written after them and published alone; the run report (--json) after that, since
+  // it records how publishing went.
+  void publishOutputs() {
+    try {
+      staged_.publish();
+    } catch (const std::exception& e) {
+      printProgressMessage(e.what());
+      failures_.push_back({{"group", "outputs"}, {"stage", "publish"}, {"subject", ""}, {"message", e.what()}});
+      status_ = std::max(status_, statusOf(e));
+    }
+  }
+
   // Runs `stages` one after another; a stage whose needs did not all succeed is skipped.
   void runStages(const std::vector<std::size_t>& stages, MeshWork* work, const std::string& group) {
     for (const std::size_t i : stages) {
@@ -144,7 +164,9 @@ class SceneRunner {
         continue;
       }
       try {
-        runStage(plan_[i], work);
+        io::OutputSet outputs;
+        runStage(plan_[i], work, outputs);
+        staged_.adopt(outputs);
         records_[i]["status"] = "ok";
         records_[i]["milliseconds"] = millisecondsSince(start);
       } catch (const std::exception& e) {
@@ -161,7 +183,7 @@ class SceneRunner {
 
   // A usage error of a stage (the file's UVs missing, say) is reported at the scene entry it comes from.
   std::string messageOf(const Stage& stage, const std::exception& e) const {
-    if (!dynamic_cast<const UsageError*>(&e)) return e.what();
+    if (!dynamic_cast<const UsageError*>(&e)) return errorMessage(e);
     std::string pointer;
     if (stage.kind == Stage::Kind::Map || stage.kind == Stage::Kind::Measure)
       pointer = scene_.mappings[stage.index].pointer;
@@ -171,7 +193,7 @@ class SceneRunner {
     return scene_.path + ": " + (pointer.empty() ? "" : pointer + ": ") + e.what();
   }
 
-  void runStage(const Stage& stage, MeshWork* work) {
+  void runStage(const Stage& stage, MeshWork* work, io::OutputSet& outputs) {
     switch (stage.kind) {
       case Stage::Kind::Texture:
         textures_.insert_or_assign(stage.index, textureOf(scene_, stage.index).load());
@@ -189,14 +211,14 @@ class SceneRunner {
             work->mapped.at(stage.index).judge(scene_.thresholds, stage.overlapResolution);
         return;
       case Stage::Kind::Obj:
-        return writeObj(scene_.outputs[stage.index], stage.index, *work);
+        return writeObj(outputs, scene_.outputs[stage.index], stage.index, *work);
       case Stage::Kind::Render:
-        return renderOutput(scene_.outputs[stage.index], stage.index, *work);
+        return renderOutput(outputs, scene_.outputs[stage.index], stage.index, *work);
       case Stage::Kind::Report: {
         const SceneOutput& o = scene_.outputs[stage.index];
         const MappedMesh& mapped = work->mapped.at(*o.mapping);
         const analysis::Judgement& judgement = work->judgements.at({*o.mapping, o.report.overlapResolution});
-        const json report = writeReport(o.report, mapped, judgement, work->inputSummary);
+        const json report = writeReport(outputs, o.report, mapped, judgement, work->inputSummary);
         outputs_[stage.index] = {{"mapping", scene_.mappings[*o.mapping].name},
                                  {"verdict", report["verdict"]},
                                  {"first_reason", judgement.firstReason()},
@@ -212,7 +234,7 @@ class SceneRunner {
         const SceneOutput& o = scene_.outputs[stage.index];
         CompareArguments arguments = o.compare;
         arguments.thresholds = scene_.thresholds;
-        const Comparison comparison = compareMappings(arguments, work->input.mesh, work->inputSummary);
+        const Comparison comparison = compareMappings(outputs, arguments, work->input.mesh, work->inputSummary);
         json top = json::array();
         for (const json& r : comparison.record["ranking"]) {
           if (top.size() == 5) break;
@@ -232,7 +254,7 @@ class SceneRunner {
                        {"stages", records_},
                        {"outputs", outputsJson()},
                        {"failures", failures_}};
-        io::writeFileAtomically(o.path, galleryHtml(report, o.path));
+        outputs.writeText(o.path, galleryHtml(report, o.path));
         return;
       }
     }
@@ -256,21 +278,21 @@ class SceneRunner {
     return withFileUvs(std::move(mesh), scene_.meshes[m.mesh].path);
   }
 
-  void writeObj(const SceneOutput& o, std::size_t index, const MeshWork& work) {
+  void writeObj(io::OutputSet& outputs, const SceneOutput& o, std::size_t index, const MeshWork& work) {
     const MappedMesh& mapped = work.mapped.at(*o.mapping);
     io::ObjWriteOptions write;
     write.writeW = o.writeW;
     write.floatPrecision = o.floatDigits;
     write.header = "uvtk run " + scene_.path + ": mapping " + scene_.mappings[*o.mapping].name;
-    io::writeObj(o.path, mapped.mesh, &mapped.uv, write);
+    io::writeObj(outputs, o.path, mapped.mesh, &mapped.uv, write);
     const analysis::Judgement& judgement = work.judgements.at({*o.mapping, kViewsOverlapResolution});
     const json summary = mapSummaryJson(mapped, judgement, work.inputSummary, o.path);  // as `uvtk map --json`
-    if (!o.json.empty()) io::writeFileAtomically(o.json, summary.dump(2) + "\n");
+    if (!o.json.empty()) outputs.writeText(o.json, summary.dump(2) + "\n");
     outputs_[index] = {{"mapping", scene_.mappings[*o.mapping].name}, {"summary", summary}};
     addVerdict(outputs_[index], judgement);
   }
 
-  void renderOutput(const SceneOutput& o, std::size_t index, MeshWork& work) {
+  void renderOutput(io::OutputSet& outputs, const SceneOutput& o, std::size_t index, MeshWork& work) {
     const MappedMesh& mapped = work.mapped.at(*o.mapping);
     const Mat4& model = scene_.meshes[scene_.mappings[*o.mapping].mesh].model;
     const auto [width, height] = o.frame.imageSize();
@@ -281,12 +303,12 @@ class SceneRunner {
       return work.judgements.at({*o.mapping, kViewsOverlapResolution});
     };
     json record =
-        drawFrame(o.frame, o.path, mapped,
+        drawFrame(outputs, o.frame, o.path, mapped,
                   renderOptions(o.frame, textureOf(scene_, texture), textures_.at(texture), camera, model), judgement);
     if (work.judgements.count({*o.mapping, kViewsOverlapResolution})) addVerdict(record, judgement());
     record["mapping"] = scene_.mappings[*o.mapping].name;
     record["mesh"] = scene_.meshes[scene_.mappings[*o.mapping].mesh].name;
-    if (!o.json.empty()) io::writeFileAtomically(o.json, record.dump(2) + "\n");
+    if (!o.json.empty()) outputs.writeText(o.json, record.dump(2) + "\n");
     outputs_[index] = record;
   }
 
@@ -311,6 +333,7 @@ class SceneRunner {
   int status_ = 0;
   std::mutex mutex_;
   Progress* progress_ = nullptr;
+  io::OutputSet staged_;  // the outputs of the stages that succeeded, until publishOutputs()
 };
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The bad-input catalogue (tests/data/bad/, described in docs/robustness.md) run through the program as a user runs
 // it: every entry gives its exit status and its exact one-line message, writes nothing, and leaves an existing
-// output file as it was. The few valid entries (CRLF line endings) are accepted. Inputs too large to commit, or
+// output file as it was. The few valid entries (CRLF line endings, OBJ as people write it) are accepted, some with
+// a warning. Inputs too large to commit, or
 // that git cannot hold (a folder, an unreadable file), are generated in the scratch folder.
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -42,8 +43,8 @@ struct Entry {
   Command command;
   const char* file;  // relative to the catalogue; a generated input gets the same name in the scratch folder
   int status;
-  // The whole of stderr without its newline, FILE standing for the input's path and DIR for its folder; nullptr
-  // for a valid input.
+  // The whole of stderr without its newline, FILE standing for the input's path and DIR for its folder. For a
+  // valid input (status 0), a warning line that stderr must hold, or nullptr for none.
   const char* message;
   Source source = Source::kCatalogue;
   const char* text = "";  // what a kText input holds
@@ -68,6 +69,15 @@ const Entry kEntries[] = {
     {Command::kMap, "obj/utf16-be-bom.obj", 3,
      "FILE:1: error: expected ASCII/UTF-8 text, found a UTF-16 byte-order mark"},
     {Command::kMap, "obj/crlf.obj", 0, nullptr},
+    {Command::kMap, "obj/vertex-five-numbers.obj", 3,
+     "FILE:2: error: expected x y z, x y z w or x y z r g b, found 5 numbers"},
+    // Valid, with a warning: what people write.
+    {Command::kMap, "obj/bowtie.obj", 0,
+     "FILE:5: warning: polygons that are not simple (self-intersecting, non-planar or of zero area): 1, the first "
+     "here; triangulated as given, they may fold"},
+    {Command::kMap, "obj/vertex-colours.obj", 0, "FILE: warning: vertex colours ignored: 4 vertices"},
+    {Command::kMap, "obj/vp.obj", 0, "FILE: warning: vp lines (free-form parameter vertices) ignored: 2"},
+    {Command::kMap, "obj/index-plus-sign.obj", 0, nullptr},
     {Command::kMap, "obj/long-line.obj", 3, "FILE:1: error: expected a line of at most 64 MiB, found a longer one",
      Source::kLongLine},
     // `uvtk map` takes a folder for a batch of meshes; `uvtk render` reads one mesh.
@@ -105,6 +115,9 @@ const Entry kEntries[] = {
     {Command::kMap, "off/utf16-be-bom.off", 3,
      "FILE:1: error: expected ASCII/UTF-8 text, found a UTF-16 byte-order mark"},
     {Command::kMap, "off/crlf.off", 0, nullptr},
+    {Command::kMap, "off/bowtie.off", 0,
+     "FILE:7: warning: polygons that are not simple (self-intersecting, non-planar or of zero area): 1, the first "
+     "here; triangulated as given, they may fold"},
     {Command::kMap, "off/long-line.off", 3, "FILE:1: error: expected a line of at most 64 MiB, found a longer one",
      Source::kLongLine},
     {Command::kMap, "off/directory.off", 3, "FILE: error: expected .obj or .off files in the folder, found none",
@@ -211,13 +224,20 @@ class BadInput : public CliTest {
     EXPECT_EQ(r.status, e.status) << r.err;
     // Nothing new in the folder, not even a hidden temporary file.
     EXPECT_EQ(listing(out), std::set<std::string>{outputName(e.command)});
-    if (e.message) {
-      const std::string folder = fs::path(file).parent_path().string();
-      EXPECT_EQ(r.err, replaceAll(replaceAll(e.message, "FILE", file), "DIR", folder) + "\n");
+    const std::string folder = fs::path(file).parent_path().string();
+    const std::string message = e.message ? replaceAll(replaceAll(e.message, "FILE", file), "DIR", folder) : "";
+    if (e.status != 0) {
+      EXPECT_EQ(r.err, message + "\n");
       EXPECT_EQ(readText(output), kSentinel);
       EXPECT_EQ(fs::last_write_time(output), earlier);
     } else {
       EXPECT_NE(readText(output), kSentinel) << "a valid input replaces the output";
+      // The summary line has timings: only the warning is compared, as a whole line.
+      if (e.message) {
+        EXPECT_NE(("\n" + r.err).find("\n" + message + "\n"), std::string::npos) << r.err;
+      } else {
+        EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+      }
     }
     if (e.source != Source::kCatalogue) fs::remove_all(file);  // the 200 MB line goes at once
   }
@@ -253,9 +273,9 @@ class BadInput : public CliTest {
   int checked_ = 0;
 };
 
-TEST_F(BadInput, ObjMeshes) { EXPECT_EQ(checkFolder("obj/"), 17); }
+TEST_F(BadInput, ObjMeshes) { EXPECT_EQ(checkFolder("obj/"), 22); }
 
-TEST_F(BadInput, OffMeshes) { EXPECT_EQ(checkFolder("off/"), 23); }
+TEST_F(BadInput, OffMeshes) { EXPECT_EQ(checkFolder("off/"), 24); }
 
 TEST_F(BadInput, Scenes) { EXPECT_EQ(checkFolder("scene/"), 12); }
 

@@ -1,14 +1,16 @@
 // Outputs appear whole or not at all: a run interrupted by a signal while it writes, or stopped by a
-// full disk or a file-size limit, leaves neither a partial output nor a temporary, and an output
-// that existed before is untouched.
+// full disk or a file-size limit, or one of whose outputs cannot be written, leaves neither a
+// partial output nor a temporary, and an output that existed before is untouched.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -43,28 +45,58 @@ class InterruptedOutput : public CliTest {
 
   static std::string uvtkCommand(const std::string& arguments) { return std::string(UVTK_BINARY) + " " + arguments; }
 
-  bool temporaryExists() const {
+  // Whether the folder's file system takes unnamed temporaries (O_TMPFILE), which nothing leaves behind.
+  bool unnamedTemporaries() const {
+    const int fd = ::open(dir_.c_str(), O_TMPFILE | O_WRONLY, 0600);
+    if (fd >= 0) ::close(fd);
+    return fd >= 0;
+  }
+
+  // Whether process `pid` writes a temporary output: a named one in the folder, or an unnamed one
+  // open in it (/proc/PID/fd/N reads "FOLDER/#INODE (deleted)").
+  bool temporaryExists(pid_t pid) const {
     for (const auto& entry : fs::directory_iterator(dir_))
       if (entry.path().filename().string().find(".tmp.") != std::string::npos) return true;
+    std::error_code error;
+    for (const auto& fd : fs::directory_iterator("/proc/" + std::to_string(pid) + "/fd", error)) {
+      const std::string target = fs::read_symlink(fd.path(), error).string();
+      if (!error && target.rfind((dir_ / "#").string(), 0) == 0) return true;
+    }
     return false;
   }
 
-  // Starts `uvtk ARGS...`, waits until it has created a temporary output, sends `signal`, and
-  // returns the raw wait status. Fails the test if no temporary appears within two minutes.
-  int interruptWhileWriting(const std::vector<std::string>& arguments, int signal) {
+  // Whether process `pid` has a handler for `signal` (the SigCgt mask of /proc/PID/status).
+  static bool catches(pid_t pid, int signal) {
+    std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+    for (std::string line; std::getline(status, line);)
+      if (line.rfind("SigCgt:", 0) == 0) return (std::stoull(line.substr(7), nullptr, 16) >> (signal - 1)) & 1;
+    return false;
+  }
+
+  // Starts `PROGRAM ARGS...` (uvtk by default), waits until it has created a temporary output, sends
+  // `signal`, and returns the raw wait status. Fails the test if no temporary appears within two minutes.
+  int interruptWhileWriting(const std::vector<std::string>& arguments, int signal,
+                            const std::string& program = UVTK_BINARY) {
     const pid_t pid = ::fork();
     if (pid == 0) {
       const int err = ::open(path("stderr.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       ::dup2(err, 2);
-      std::vector<char*> argv{const_cast<char*>(UVTK_BINARY)};
+      const struct rlimit noCore {0, 0};  // SIGQUIT and SIGXCPU dump core by default
+      ::setrlimit(RLIMIT_CORE, &noCore);
+      // Started as from a shell: no signal ignored or blocked (a test runner may ignore SIGPIPE).
+      for (int s = 1; s < NSIG; ++s) ::signal(s, SIG_DFL);
+      sigset_t none;
+      sigemptyset(&none);
+      ::sigprocmask(SIG_SETMASK, &none, nullptr);
+      std::vector<char*> argv{const_cast<char*>(program.c_str())};
       for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
       argv.push_back(nullptr);
-      ::execv(UVTK_BINARY, argv.data());
+      ::execv(program.c_str(), argv.data());
       ::_exit(127);
     }
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
     int status = 0;
-    while (!temporaryExists()) {
+    while (!temporaryExists(pid)) {
       if (::waitpid(pid, &status, WNOHANG) == pid) {
         ADD_FAILURE() << "uvtk ended before it wrote a temporary: " << readText(path("stderr.txt"));
         return status;
@@ -76,21 +108,80 @@ class InterruptedOutput : public CliTest {
       }
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
+    // With unnamed temporaries the kernel removes them whatever ends the process; the handler that
+    // removes named ones (the fallback, and the hidden names while publishing) must be there too.
+    if (signal != SIGKILL) {
+      EXPECT_TRUE(catches(pid, signal)) << "no handler for signal " << signal;
+    }
     ::kill(pid, signal);
     ::waitpid(pid, &status, 0);
     return status;
   }
 };
 
-TEST_F(InterruptedOutput, SigintAndSigtermWhileWritingAnObjLeaveNothing) {
+// Every signal whose default action ends the process, as `kill -QUIT` and the rest send them.
+TEST_F(InterruptedOutput, EveryTerminatingSignalWhileWritingAnObjLeavesNothing) {
   writeInput(true);
-  for (const int signal : {SIGINT, SIGTERM}) {
+  for (const int signal : {SIGINT, SIGTERM, SIGQUIT, SIGPIPE, SIGUSR1, SIGALRM, SIGXCPU}) {
     const int status =
         interruptWhileWriting({"map", path("in.obj"), "--projector", "sphere", "-o", path("out.obj")}, signal);
     ASSERT_TRUE(WIFSIGNALED(status)) << "status " << status;
     EXPECT_EQ(WTERMSIG(status), signal);
     EXPECT_EQ(outputsInFolder(), std::vector<std::string>{}) << "signal " << signal;
   }
+}
+
+// SIGKILL cannot be caught: only an unnamed temporary, which the kernel removes with the process,
+// leaves nothing.
+TEST_F(InterruptedOutput, SigkillWhileWritingAnObjLeavesNothingWithUnnamedTemporaries) {
+  if (!unnamedTemporaries()) GTEST_SKIP() << "no O_TMPFILE in " << dir_ << ": a killed run leaves its temporary";
+  writeInput(true);
+  const int status = interruptWhileWriting(
+      {"map", path("in.obj"), "--projector", "sphere", "-o", path("out.obj"), "--json", path("out.json")}, SIGKILL);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "status " << status;
+  EXPECT_EQ(WTERMSIG(status), SIGKILL);
+  EXPECT_EQ(outputsInFolder(), std::vector<std::string>{});
+}
+
+// Without /proc (hidden in a private mount namespace: root only) the temporary is a named file from
+// the start, and the handler removes it.
+TEST_F(InterruptedOutput, TheNamedTemporaryOfTheFallbackIsRemovedOnASignal) {
+  if (::geteuid() != 0 || shell("unshare --mount sh -c 'mount -t tmpfs tmpfs /proc'").status != 0)
+    GTEST_SKIP() << "hiding /proc needs root, unshare(1) and the right to mount";
+  writeInput(true);
+  const std::string map = uvtkCommand("map " + path("in.obj") + " --projector sphere -o " + path("out.obj"));
+  // unshare execs sh, which execs uvtk: the signal reaches uvtk.
+  const int status = interruptWhileWriting(
+      {"--mount", "sh", "-c", "mount -t tmpfs tmpfs /proc && exec " + map}, SIGQUIT, "/usr/bin/unshare");
+  ASSERT_TRUE(WIFSIGNALED(status)) << "status " << status << ": " << readText(path("stderr.txt"));
+  EXPECT_EQ(WTERMSIG(status), SIGQUIT);
+  EXPECT_EQ(outputsInFolder(), std::vector<std::string>{});
+}
+
+// The outputs of one command are published together: when the last cannot be written, the first,
+// already complete, does not appear either, and its previous version stays.
+TEST_F(InterruptedOutput, AnOutputThatCannotBeWrittenLeavesTheOthersOut) {
+  writeInput(false);
+  const std::string report = "report " + path("in.obj") + " --projector sphere --size 32x32 --json " + path("r.json");
+  CliRun r = uvtk(report + " --html " + path("missing/r.html"));
+  EXPECT_EQ(r.status, 4) << r.err;
+  EXPECT_EQ(r.err.rfind(path("missing/r.html") + ": error: cannot write: ", 0), 0u) << r.err;
+  EXPECT_EQ(outputsInFolder(), std::vector<std::string>{});
+
+  const std::string before = "{\"previous\": true}\n";
+  writeText("r.json", before);
+  const auto written = fs::last_write_time(path("r.json"));
+  fs::create_directory(path("r.html"));  // a folder where the page goes
+  r = uvtk(report + " --html " + path("r.html"));
+  EXPECT_EQ(r.status, 4) << r.err;
+  EXPECT_EQ(r.err, path("r.html") + ": error: cannot write: it is a folder\n");
+  EXPECT_EQ(readText(path("r.json")), before);
+  EXPECT_EQ(fs::last_write_time(path("r.json")), written);
+  EXPECT_EQ(outputsInFolder(), (std::vector<std::string>{"r.html", "r.json"}));
+
+  r = uvtk("map " + path("in.obj") + " --projector sphere -o " + path("out.obj") + " --json " + path("missing/s.json"));
+  EXPECT_EQ(r.status, 4) << r.err;
+  EXPECT_EQ(outputsInFolder(), (std::vector<std::string>{"r.html", "r.json"}));
 }
 
 TEST_F(InterruptedOutput, AnInterruptedRunLeavesTheExistingOutputAsItWas) {

@@ -164,8 +164,35 @@ TEST(ReadObj, TexcoordsWithOneTwoOrThreeComponentsFillMissingOnesWithZero) {
 }
 
 TEST(ReadObj, AcceptsAndIgnoresAVertexWeight) {
-  const Mesh m = obj("v 0 0 0 1\nv 1 0 0 0.5\nv 0 1 0\nf 1 2 3\n").mesh;
-  EXPECT_EQ(m.positions[1], Vec3(1, 0, 0));
+  const ReadMeshResult r = obj("v 0 0 0 1\nv 1 0 0 0.5\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_EQ(r.mesh.positions[1], Vec3(1, 0, 0));  // not divided by w
+  EXPECT_EQ(r.warnings.vertexColours, 0u);
+}
+
+TEST(ReadObj, AcceptsVertexColoursDropsAndCountsThem) {
+  const ReadMeshResult r = obj("v 0 0 0 1 0 0\nv 1 0 0 0 1 0.5\nv 0 1 0\nv 0 0 1 255 128 0\nf 1 2 3\nf 1 2 4\n");
+  ASSERT_EQ(r.mesh.positions.size(), 4u);
+  EXPECT_EQ(r.mesh.positions[1], Vec3(1, 0, 0));
+  EXPECT_EQ(r.mesh.positions[3], Vec3(0, 0, 1));
+  EXPECT_EQ(r.warnings.vertexColours, 3u);
+}
+
+TEST(ReadObj, IgnoresAndCountsParameterSpaceVertices) {
+  const ReadMeshResult r = obj("vp 0.5\nvp 0.5 0.25\n" + kTriangle + "vp 0.1 0.2 1\nf 1 2 3\n");
+  EXPECT_EQ(r.mesh.positions.size(), 3u);
+  EXPECT_EQ(r.mesh.faceCount(), 1u);
+  EXPECT_EQ(r.warnings.parameterVertices, 3u);
+  EXPECT_EQ(objError("vp\n"), "t.obj:1: error: expected a u parameter, found end of line");
+  EXPECT_EQ(objError("vp 1 2 3 4\n"), "t.obj:1: error: expected end of line, found '4'");
+  EXPECT_EQ(objError("vp 1 x\n"), "t.obj:1: error: expected a number, found 'x'");
+}
+
+TEST(ReadObj, AcceptsAPlusSignOnIndicesAsOnNumbers) {
+  const Mesh m = obj(kTriangle + "vt 0 0\nvn 0 0 1\nf +1/+1/+1 +2/1/+1 3/+1/1\n").mesh;
+  EXPECT_EQ(m.triangles, std::vector<Triangle>({{0, 1, 2}}));
+  EXPECT_EQ(m.cornerTexcoords, std::vector<Triangle>({{0, 0, 0}}));
+  EXPECT_EQ(m.cornerNormals, std::vector<Triangle>({{0, 0, 0}}));
+  EXPECT_EQ(off(kOffTriangleHeader + "+3 0 +1 2\n").mesh.triangles, std::vector<Triangle>({{0, 1, 2}}));
 }
 
 TEST(ReadObj, NumbersInEveryDecimalSpelling) {
@@ -211,10 +238,10 @@ TEST(ReadObj, IgnoresTheGlobalLocale) {
 }
 
 TEST(ReadObj, HandlesVeryLongLines) {
-  // A 100 000-gon on one line, and a megabyte of blanks inside a vertex line.
+  // A convex 100 000-gon (corners on a parabola) on one line, and a megabyte of blanks inside a vertex line.
   std::string text = "v 0 0 0" + std::string(1 << 20, ' ') + "\n";
   const int n = 100000;
-  for (int i = 1; i < n; ++i) text += "v " + std::to_string(i) + " " + std::to_string(i % 7) + " 0\n";
+  for (long long i = 1; i < n; ++i) text += "v " + std::to_string(i) + " " + std::to_string(i * i) + " 0\n";
   text += "f";
   for (int i = 1; i <= n; ++i) text += " " + std::to_string(i);
   text += "\n";
@@ -260,8 +287,10 @@ TEST(ReadObj, RejectsTooFewCoordinates) {
 }
 
 TEST(ReadObj, RejectsTooManyCoordinates) {
-  EXPECT_EQ(objError("v 1 2 3 1 5\n"), "t.obj:1: error: expected end of line, found '5'");
-  EXPECT_EQ(objError("v 1 2 3 0.5 0.5 0.5\n"), "t.obj:1: error: expected end of line, found '0.5'");
+  EXPECT_EQ(objError("v 1 2 3 1 5\n"), "t.obj:1: error: expected x y z, x y z w or x y z r g b, found 5 numbers");
+  EXPECT_EQ(objError("v 1 2 3 1 5 6 7\n"),
+            "t.obj:1: error: expected x y z, x y z w or x y z r g b, found 7 numbers");
+  EXPECT_EQ(objError("v 1 2 3 0.5 0.5 x\n"), "t.obj:1: error: expected a number, found 'x'");
   EXPECT_EQ(objError("vn 0 0 1 7\n"), "t.obj:1: error: expected end of line, found '7'");
   EXPECT_EQ(objError("vt 0 0 0 8\n"), "t.obj:1: error: expected end of line, found '8'");
 }
@@ -286,7 +315,7 @@ TEST(ReadObj, RejectsANegativeIndexBeforeTheFirstVertex) {
 }
 
 TEST(ReadObj, RejectsNonIntegerIndices) {
-  for (const std::string bad : {"1.5", "x", "1e0", "+1", "1x", "--1", "0x1"}) {
+  for (const std::string bad : {"1.5", "x", "1e0", "+-1", "++1", "+", "+0", "1x", "--1", "0x1"}) {
     SCOPED_TRACE(bad);
     EXPECT_EQ(objError(kTriangle + "f 1 " + bad + " 3\n"),
               "t.obj:4: error: expected a vertex index in 1..3, found '" + bad + "'");
@@ -348,7 +377,7 @@ TEST(ReadObj, RejectsMalformedCorners) {
 
 TEST(ReadObj, RejectsUnknownKeywords) {
   EXPECT_EQ(objError("v 0 0 0\nxyz 1 2\n"), "t.obj:2: error: expected a keyword (v, vt, vn, f, ...), found 'xyz'");
-  EXPECT_EQ(objError("vp 0.5\n"), "t.obj:1: error: expected a keyword (v, vt, vn, f, ...), found 'vp'");
+  EXPECT_EQ(objError("vpx 0.5\n"), "t.obj:1: error: expected a keyword (v, vt, vn, f, ...), found 'vpx'");
   EXPECT_EQ(objError("V 0 0 0\n"), "t.obj:1: error: expected a keyword (v, vt, vn, f, ...), found 'V'");
   EXPECT_EQ(objError("v1 0 0\n"), "t.obj:1: error: expected a keyword (v, vt, vn, f, ...), found 'v1'");
 }
@@ -640,6 +669,45 @@ TEST(ReadMeshWarnings, CountOffDegenerateFacesAndUnreferencedVertices) {
   const ReadMeshResult r = off("OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n5 5 5\n3 0 1 2\n3 1 1 2\n");
   EXPECT_EQ(r.warnings.degenerateFaces, 1u);
   EXPECT_EQ(r.warnings.unreferencedVertices, 1u);
+}
+
+TEST(ReadMeshWarnings, ConcavePolygonsAreTriangulatedWithoutFolding) {
+  // (0,0) (2,0) (2,2) (1,1) (0,2) started at (2,2): the fan from the first corner folded (areas 2 + 2 + 1, one
+  // of them clockwise); the polygon's area is 3, and every triangle turns its way (counter-clockwise).
+  for (const ReadMeshResult& r : {obj("v 2 2 0\nv 1 1 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\nvt 0 0\nf 1/1 2/1 3/1 4/1 5/1\n"),
+                                  off("OFF\n5 1 0\n2 2 0\n1 1 0\n0 2 0\n0 0 0\n2 0 0\n5 0 1 2 3 4\n")}) {
+    ASSERT_EQ(r.mesh.faceCount(), 3u);
+    double area = 0.0;
+    for (const Triangle& t : r.mesh.triangles) {
+      const Vec3 n = triangleAreaNormal(r.mesh.positions[t[0]], r.mesh.positions[t[1]], r.mesh.positions[t[2]]);
+      EXPECT_GT(n.z(), 0.0);
+      area += 0.5 * n.norm();
+    }
+    EXPECT_DOUBLE_EQ(area, 3.0);
+    EXPECT_EQ(r.warnings.nonSimplePolygons, 0u);
+    EXPECT_EQ(r.warnings.firstNonSimplePolygonLine, 0u);
+  }
+  // The corner tables follow the triangles' corners.
+  const Mesh m = obj("v 2 2 0\nv 1 1 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\nvt 0 0\nvt 1 0\nvt 2 0\nvt 3 0\nvt 4 0\n"
+                     "f 1/1 2/2 3/3 4/4 5/5\n").mesh;
+  EXPECT_EQ(m.cornerTexcoords, m.triangles);
+}
+
+TEST(ReadMeshWarnings, CountPolygonsThatAreNotSimpleAndNameTheFirstLine) {
+  // Line 6 a convex quad, line 7 a bowtie (self-intersecting), line 8 a triangle, line 9 a twisted quad.
+  const std::string vertices = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 1 0.5\n";
+  const ReadMeshResult r = obj(vertices + "f 1 2 3 4\nf 1 3 2 4\nf 1 2 3\nf 1 2 3 5\n");
+  EXPECT_EQ(r.mesh.faceCount(), 7u);
+  EXPECT_EQ(r.warnings.nonSimplePolygons, 2u);
+  EXPECT_EQ(r.warnings.firstNonSimplePolygonLine, 7u);
+  const ReadMeshResult planar = obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n# comment\n\nf 1 3 2 4\n");
+  EXPECT_EQ(planar.warnings.nonSimplePolygons, 1u);
+  EXPECT_EQ(planar.warnings.firstNonSimplePolygonLine, 8u);
+  const ReadMeshResult fromOff = off("OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n4 0 2 1 3\n");
+  EXPECT_EQ(fromOff.mesh.faceCount(), 4u);
+  EXPECT_EQ(fromOff.warnings.nonSimplePolygons, 1u);
+  EXPECT_EQ(fromOff.warnings.firstNonSimplePolygonLine, 8u);
+  EXPECT_EQ(obj(vertices + "f 1 2 3\n").warnings.nonSimplePolygons, 0u);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -117,7 +117,7 @@ TEST_F(AtomicOutput, AFileNotCommittedLeavesNothingBehind) {
   {
     AtomicFile file(path);
     file.stream() << "partial";
-    EXPECT_EQ(entries(), 1u);  // only the temporary
+    EXPECT_LE(entries(), 1u);  // the temporary, only where it has a name (no O_TMPFILE)
   }
   EXPECT_EQ(entries(), 0u);
 }

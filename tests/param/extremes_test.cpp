@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 #include <random>
@@ -596,6 +597,249 @@ TEST(ParamExtremes, ZeroLengthNormalsGiveInvalidCornersThroughProject) {
         EXPECT_TRUE(p.uv.faceHas(0, kFaceInvalid));
         EXPECT_EQ(p.summary.invalidVertices, 3u);
       }
+}
+
+// ---- issue 23: every fit on any finite input ----
+// The fits work on the mesh moved to a unit box by a power of two (placement.h, UnitBox), so a
+// mesh times 2^n has the same frame after it and the same UVs. The sample meshes are snapped to
+// multiples of 2^-32 first: then every coordinate times 2^n (|n| <= 1000) is exact, subnormals
+// included, and the scaled mesh is the same mesh, not a rounded one.
+
+constexpr Fit kEveryFit[] = {Fit::None, Fit::BBox, Fit::Center, Fit::Pca, Fit::Obb};
+constexpr Fit kScaleFreeFits[] = {Fit::BBox, Fit::Pca, Fit::Obb};  // none and center keep object units
+constexpr SurfaceKind kEverySurface[] = {kPlane, kTwoPlane, kCylinder, kSphere, kCube};
+
+const char* nameOf(Fit f) {
+  return f == Fit::None ? "none" : f == Fit::BBox ? "bbox" : f == Fit::Center ? "center" : f == Fit::Pca ? "pca" : "obb";
+}
+const char* nameOf(SurfaceKind s) {
+  return s == kPlane ? "plane" : s == kTwoPlane ? "two-plane" : s == kCylinder ? "cylinder" : s == kSphere ? "sphere" : "cube";
+}
+
+Mesh snapped(Mesh mesh) {
+  for (Vec3& p : mesh.positions)
+    for (int a = 0; a < 3; ++a) p[a] = std::ldexp(std::nearbyint(std::ldexp(p[a], 32)), -32);
+  return mesh;
+}
+
+// The mesh times 2^exponent, then moved by `offset` (rounded where the offset is large).
+Mesh placed(Mesh mesh, int exponent, const Vec3& offset = Vec3::Zero()) {
+  for (Vec3& p : mesh.positions)
+    for (int a = 0; a < 3; ++a) p[a] = std::ldexp(p[a], exponent) + offset[a];
+  return mesh;
+}
+
+struct NamedMesh {
+  const char* name;
+  Mesh mesh;
+};
+
+const std::vector<NamedMesh>& sampleMeshes() {
+  static const std::vector<NamedMesh> meshes = {
+      {"torusKnot(2, 3)", snapped(meshes::torusKnot(2, 3, 48, 8))},
+      {"bone", snapped(meshes::bone(12, 8))},
+      {"bumpyBlob(1)", snapped(meshes::bumpyBlob(1))},
+      {"scannedPatch(2)", snapped(meshes::scannedPatch(2))},
+  };
+  return meshes;
+}
+
+// The contract of every placement: finite, and its rows (the local axes in object space times
+// their scales) orthogonal with finite, non-zero lengths whose reciprocals (the scales in object
+// units) are finite too. Two-plane's identity passes.
+void expectValidPlacement(const Affine3& frame) {
+  ASSERT_TRUE(frame.matrix().allFinite()) << frame.matrix();
+  Mat3 axes;
+  for (int r = 0; r < 3; ++r) {
+    const double length = frame.linear().row(r).stableNorm();  // norm() squares 1e300 to inf
+    ASSERT_TRUE(length > 0.0 && std::isfinite(1.0 / length)) << "row " << r << " of\n" << frame.matrix();
+    axes.row(r) = frame.linear().row(r) / length;
+  }
+  EXPECT_LE((axes * axes.transpose() - Mat3::Identity()).cwiseAbs().maxCoeff(), 1e-12) << frame.matrix();
+  EXPECT_GT(axes.determinant(), 0.0) << "left-handed:\n" << frame.matrix();
+}
+
+// The largest difference between two mappings of the same mesh, u to the nearest period on the
+// wrapping surfaces; corners must agree in validity. UVs must be finite.
+double worstUvDifference(const Projection& got, const Projection& want, bool wraps) {
+  EXPECT_EQ(got.uv.uv.size(), want.uv.uv.size());
+  double worst = 0.0;
+  for (std::size_t c = 0; c < std::min(got.uv.uv.size(), want.uv.uv.size()); ++c) {
+    EXPECT_TRUE(got.uv.uv[c].allFinite()) << "corner " << c;
+    EXPECT_EQ(got.uv.cornerInvalid[c] != 0, want.uv.cornerInvalid[c] != 0) << "corner " << c;
+    double du = std::fabs(got.uv.uv[c].x() - want.uv.uv[c].x());
+    if (wraps) du = std::fabs(du - std::nearbyint(du));
+    worst = std::max({worst, du, std::fabs(got.uv.uv[c].y() - want.uv.uv[c].y())});
+  }
+  return worst;
+}
+
+TEST(FitExtremes, EveryFitIsScaleInvariantFrom1eMinus300To1e300) {
+  // 2^-997 ~ 1e-300, 2^-498 ~ 1e-150, 1, 2^498 ~ 1e150, 2^997 ~ 1e300: powers of two, so each
+  // scaled mesh is exactly the sample mesh (1e300 itself would round it, and the oriented box's
+  // randomized search may then take another path to another, equally small box).
+  const int exponents[] = {-997, -498, 0, 498, 997};
+  // Tolerance: the frame is the scale-1 frame times 2^-n exactly (checked first), so the local
+  // coordinates differ only in how LocalFrameT rounds them (its inverse is taken at unit scale, so
+  // the same path at every scale): a few ulps of coordinates of order 1, 1e-15. The
+  // arctangents amplify that by 1/(2 pi rho) for a vertex at distance rho from the axis, above
+  // the pole limit 1e-6: at most 2e-10, so 1e-9.
+  constexpr double kTolerance = 1e-9;
+  double measured = 0.0;
+  for (const NamedMesh& sample : sampleMeshes())
+    for (Fit fit : kScaleFreeFits)
+      for (SurfaceKind surface : {kPlane, kCylinder, kSphere, kCube}) {
+        ProjectorOptions o;
+        o.surface = surface;
+        o.placement.fit = fit;
+        const Projection atOne = project(sample.mesh, o);
+        for (int exponent : exponents) {
+          SCOPED_TRACE(std::string(sample.name) + " times 2^" + std::to_string(exponent) + ", --fit " + nameOf(fit) +
+                       ", " + nameOf(surface) + " isn: the same frame and UVs as at scale 1");
+          const Mesh mesh = placed(sample.mesh, exponent);
+          const Affine3 frame = fitPlacement(mesh.positions, surface, o.placement);
+          expectValidPlacement(frame);
+          EXPECT_EQ(frame.translation(), atOne.localFromObject.translation());
+          const Mat3 back = frame.linear().unaryExpr([&](double x) { return std::ldexp(x, exponent); });
+          EXPECT_LE((back - atOne.localFromObject.linear()).cwiseAbs().maxCoeff(),
+                    1e-15 * atOne.localFromObject.linear().cwiseAbs().maxCoeff());
+          // Normal and reflection rays need the frame's inverse (the normal matrix), which at 2^+-498
+          // and beyond over- or underflowed until it was taken at unit scale; the eye scales with the mesh.
+          for (RayKind ray : {kIsn, kCentroid, kNormal, kReflection}) {
+            o.ray = ray;
+            o.eye = ray == kReflection ? std::optional<Vec3>(Vec3(0.5, -3.0, 2.0)) : std::nullopt;
+            const Projection reference = ray == kIsn ? atOne : project(sample.mesh, o);
+            if (o.eye) o.eye = o.eye->unaryExpr([&](double x) { return std::ldexp(x, exponent); });
+            const Projection p = project(mesh, o);
+            const double worst = worstUvDifference(p, reference, usesArctangent(surface));
+            EXPECT_LE(worst, kTolerance) << "ray " << int(ray);
+            measured = std::max(measured, worst);
+          }
+          o.ray = kIsn;
+          o.eye.reset();
+        }
+      }
+  std::printf("scale invariance: largest UV difference %.3g\n", measured);
+}
+
+TEST(FitExtremes, AMeshFarFromTheOriginFitsAsAtTheOrigin) {
+  struct Offset {
+    const char* expected;
+    int exponent;  // the mesh's scale, 2^exponent
+    Vec3 offset;
+    double tolerance;
+  };
+  // The offset mesh p = 2^n m + o is rounded; the reference is that rounded mesh moved back,
+  // 2^-n (p - o), exact (Sterbenz): the same mesh at scale 1. The fit sees identical unit
+  // positions (p - corner is exact too), so only the frame's translation differs: about
+  // r = |o| / 2^n times the mesh's local size, rounded to double (an Affine3 holds no more), an
+  // error of r 2^-53 in the local coordinates, amplified by the arctangents (1/(2 pi rho); these
+  // meshes' vertices keep it below 1000): tolerance 1000 r 2^-53. Measured: 1.6e-5 at r = 1e10,
+  // 2.6e-11 at r = 1e5, 2.5e-8 at r = 1e8.
+  const Offset offsets[] = {
+      {"centred at 1e300, extent 1e290 (2^963)", 963, Vec3(1e300, -1e300, 1e300), 1e3 * 1e10 * 0x1p-53},
+      {"centred at -1e150, extent 1e145 (2^482)", 482, Vec3(-1e150, 3e149, 0.0), 1e3 * 1e5 * 0x1p-53},
+      {"centred at 1e-290, extent 1e-300 (2^-997)", -997, Vec3(1e-290, 1e-290, -1e-290), 1e3 * 1e10 * 0x1p-53},
+      {"centred at 1e8, extent 1", 0, Vec3(1e8, 1e8, 1e8), 1e3 * 1e8 * 0x1p-53},
+  };
+  double measured[std::size(offsets)] = {};
+  for (const Offset& row : offsets)
+    for (const NamedMesh& sample : sampleMeshes())
+      for (Fit fit : kScaleFreeFits)
+        for (SurfaceKind surface : {kPlane, kCylinder, kSphere, kCube}) {
+          SCOPED_TRACE(std::string(sample.name) + " " + row.expected + ", --fit " + nameOf(fit) + ", " +
+                       nameOf(surface) + ": the UVs of the mesh at the origin");
+          const Mesh far = placed(sample.mesh, row.exponent, row.offset);
+          Mesh reference = far;
+          for (Vec3& p : reference.positions)
+            for (int a = 0; a < 3; ++a) p[a] = std::ldexp(p[a] - row.offset[a], -row.exponent);
+          ProjectorOptions o;
+          o.surface = surface;
+          o.placement.fit = fit;
+          const Projection p = project(far, o);
+          expectValidPlacement(p.localFromObject);
+          const double worst = worstUvDifference(p, project(reference, o), usesArctangent(surface));
+          EXPECT_LE(worst, row.tolerance);
+          measured[&row - offsets] = std::max(measured[&row - offsets], worst);
+        }
+  for (const Offset& row : offsets) std::printf("%s: largest UV difference %.3g\n", row.expected, measured[&row - offsets]);
+}
+
+// Zero extent along one, two or three object axes, at any scale and far from the origin: every
+// fit, every surface gives a valid frame and finite UVs; a flat axis is kept exactly.
+TEST(FitExtremes, FlatLinearAndSinglePointMeshesGetAValidFrameAtEveryScale) {
+  const Mesh grid = snapped(meshes::planeGrid(6, 4, 2.0, 1.0));  // z = 0
+  Mesh line = grid;                                               // along x: y = z = 0
+  for (Vec3& p : line.positions) p.y() = 0.0;
+  Mesh point = grid;  // every vertex at (0.5, -0.25, 2)
+  for (Vec3& p : point.positions) p = Vec3(0.5, -0.25, 2.0);
+  Mesh slanted = grid;  // a line along (1, 1, 1): no object axis is flat
+  for (Vec3& p : slanted.positions) p = Vec3::Constant(p.x());
+  const NamedMesh shapes[] = {{"flat sheet", grid}, {"line", line}, {"single point", point}, {"slanted line", slanted}};
+  const int exponents[] = {-997, -498, 0, 498, 997};
+  const Vec3 offsets[] = {Vec3::Zero(), Vec3(1e300, -1e300, 1e300), Vec3(0.0, 0.0, -1e300)};
+  for (const NamedMesh& shape : shapes)
+    for (int exponent : exponents)
+      for (const Vec3& offset : offsets)
+        for (Fit fit : kEveryFit)
+          for (SurfaceKind surface : kEverySurface)
+            for (RayKind ray : {kIsn, kCentroid, kNormal}) {
+              SCOPED_TRACE(std::string(shape.name) + " times 2^" + std::to_string(exponent) + " at (" +
+                           std::to_string(offset.x()) + ", ...), --fit " + nameOf(fit) + ", " + nameOf(surface) +
+                           ", ray " + std::to_string(int(ray)) + ": a valid frame, finite UVs");
+              const Mesh mesh = placed(shape.mesh, exponent, offset);
+              ProjectorOptions o;
+              o.surface = surface;
+              o.ray = ray;
+              o.placement.fit = fit;
+              const Projection p = project(mesh, o);
+              expectValidPlacement(p.localFromObject);
+              for (const Vec2& uv : p.uv.uv) ASSERT_TRUE(uv.allFinite());
+              // A sheet's normal is its flat object axis, exactly, in every fitted frame (unless
+              // the offset rounded the sheet to a line or a point).
+              const std::array<bool, 3> sheet{false, false, true};
+              if (toUnitBox(mesh.positions).flat == sheet && (fit == Fit::Pca || fit == Fit::Obb) &&
+                  surface == kPlane) {
+                const Vec3 z = p.localFromObject.linear().row(2);
+                EXPECT_EQ(z.x(), 0.0);
+                EXPECT_EQ(z.y(), 0.0);
+              }
+            }
+}
+
+TEST(FitExtremes, TheUnitBoxIsExactAndFlatAxesAreFound) {
+  // Hand-computed: box [1e300, 1e300 + 3 2^944] x {-7} x [0, 2^-1000]; half extent 1.5 2^944, so
+  // the unit is 2^945 and the corner (1e300, -7, 0).
+  const double ulp = std::ldexp(1.0, 944);  // the spacing of doubles at 1e300
+  const UnitBox box = toUnitBox({Vec3(1e300, -7, 0), Vec3(1e300 + 3 * ulp, -7, 0x1p-1000), Vec3(1e300 + ulp, -7, 0)});
+  EXPECT_EQ(box.exponent, 945);
+  EXPECT_EQ(box.corner, Vec3(1e300, -7, 0));
+  EXPECT_EQ(box.unit[1], Vec3(1.5, 0, 0));  // 2^-1000 / 2^945 underflows to 0
+  EXPECT_EQ(box.unit[2], Vec3(0.5, 0, 0));
+  EXPECT_EQ(box.flat, (std::array<bool, 3>{false, true, false}));
+  // The largest doubles: hi - lo overflows, the halves do not.
+  const UnitBox wide = toUnitBox({Vec3(-kMax, 0, 0), Vec3(kMax, 0, 0)});
+  EXPECT_EQ(wide.exponent, 1024);
+  EXPECT_EQ(wide.unit[1], Vec3(std::ldexp(kMax, -1023), 0, 0));  // (kMax/2 + kMax/2) 2^-1023
+  EXPECT_EQ(wide.flat, (std::array<bool, 3>{false, true, true}));
+  // One point: unit 1.
+  const UnitBox single = toUnitBox({Vec3(kDenormMin, 0, 0)});
+  EXPECT_EQ(single.exponent, 0);
+  EXPECT_EQ(single.unit[0], Vec3::Zero());
+}
+
+TEST(FitExtremes, CoordinatesNear1e103DoNotTrapInTheOrientedBox) {
+  // Issue 23: 1e103 cubed overflows in CGAL's predicates, which died of SIGFPE (1e102 worked).
+  for (double size : {1e102, 1e103, 1e200, 1e300, kMax / 4}) {
+    SCOPED_TRACE(size);
+    Mesh mesh = meshes::torusKnot(2, 3, 48, 8);
+    for (Vec3& p : mesh.positions) p *= size / 4;
+    for (Fit fit : {Fit::Pca, Fit::Obb}) {
+      const Mat3 axes = fit == Fit::Pca ? principalAxes(mesh.positions) : orientedBoxAxes(mesh.positions);
+      ASSERT_TRUE(axes.allFinite());
+      EXPECT_LE((axes * axes.transpose() - Mat3::Identity()).cwiseAbs().maxCoeff(), 1e-12);
+    }
+  }
 }
 
 }  // namespace
