@@ -25,8 +25,14 @@ double longestSquared(const Point& a, const Point& b, const Point& c) {
   return std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
 }
 
-TriangleAreas triangleAreas(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec2& t0, const Vec2& t1,
-                            const Vec2& t2) {
+// The corners' positions relative to p0, times the mesh's length scale (exact: a power of two).
+struct Edges {
+  Vec3 e1, e2;
+  Edges(const Vec3& p0, const Vec3& p1, const Vec3& p2, double scale) : e1((p1 - p0) * scale), e2((p2 - p0) * scale) {}
+};
+
+TriangleAreas triangleAreas(const Edges& p, const Vec2& t0, const Vec2& t1, const Vec2& t2) {
+  const Vec3 p0 = Vec3::Zero(), &p1 = p.e1, &p2 = p.e2;
   TriangleAreas a;
   a.normal = triangleAreaNormal(p0, p1, p2);
   a.area3d = 0.5 * a.normal.stableNorm();  // norm() would square to 0 or inf for edges below 1e-154 or above 1e154
@@ -40,8 +46,8 @@ TriangleAreas triangleAreas(const Vec3& p0, const Vec3& p1, const Vec3& p2, cons
 // The Jacobian J of the linear map surface -> UV of a triangle with non-zero 3D area, in the
 // orthonormal frame (e1, e2) of its plane with p0 at the origin. With e2 = n x e1 the corners
 // run counter-clockwise in that frame, so det J has the sign of the UV triangle's area.
-Eigen::Matrix2d jacobian(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec2& t0, const Vec2& t1,
-                         const Vec2& t2) {
+Eigen::Matrix2d jacobian(const Edges& p, const Vec2& t0, const Vec2& t1, const Vec2& t2) {
+  const Vec3 p0 = Vec3::Zero(), &p1 = p.e1, &p2 = p.e2;
   // Scaled normalisation: the squares of tiny or huge edges and normals would underflow or overflow.
   const Vec3 e1 = (p1 - p0).stableNormalized();
   const Vec3 e2 = triangleAreaNormal(p0, p1, p2).stableNormalized().cross(e1);
@@ -82,11 +88,26 @@ bool isMeasured(FaceStatus status) {
          status == FaceStatus::Flipped;
 }
 
+double measureLengthScale(const Mesh& mesh) {
+  Eigen::AlignedBox3d box;
+  for (const Vec3& p : mesh.positions) box.extend(p);
+  if (box.isEmpty()) return 1.0;
+  // Halves: the extent of a mesh spanning -1e308 .. 1e308 does not overflow.
+  const double extent = (0.5 * box.max() - 0.5 * box.min()).maxCoeff();
+  constexpr double kLow = 0x1p-500, kHigh = 0x1p500;  // about 1e-150 .. 1e150
+  if (!(extent > 0.0) || (extent >= kLow && extent <= kHigh)) return 1.0;
+  return std::ldexp(1.0, -std::ilogb(extent));
+}
+
 std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const DistortionOptions& options) {
   const std::size_t faceCount = mesh.triangles.size();
   UVTK_CHECK(uv.uv.size() == 3 * faceCount && uv.faceFlags.size() == faceCount);
   UVTK_CHECK(uv.cornerInvalid.empty() || uv.cornerInvalid.size() == 3 * faceCount);
-  auto position = [&](std::size_t f, int k) -> const Vec3& { return mesh.positions[mesh.triangles[f][k]]; };
+  const double scale = measureLengthScale(mesh);
+  auto edges = [&](std::size_t f) {
+    const Triangle& t = mesh.triangles[f];
+    return Edges(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], scale);
+  };
 
   std::vector<TriangleAreas> areas(faceCount);
   std::vector<FaceDistortion> faces(faceCount);
@@ -99,7 +120,7 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
   double vote = 0.0;  // 3D area voting for counter-clockwise UV winding minus area against it
   for (std::size_t f = 0; f < faceCount; ++f) {
     const Vec2* t = &uv.uv[3 * f];
-    const TriangleAreas& a = areas[f] = triangleAreas(position(f, 0), position(f, 1), position(f, 2), t[0], t[1], t[2]);
+    const TriangleAreas& a = areas[f] = triangleAreas(edges(f), t[0], t[1], t[2]);
     bool invalid = uv.faceHas(f, kFaceInvalid);
     for (int k = 0; k < 3 && !uv.cornerInvalid.empty(); ++k) invalid = invalid || uv.cornerInvalid[3 * f + k] != 0;
     FaceDistortion& face = faces[f];
@@ -126,7 +147,7 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
     if (uv.faceHas(f, kFacePole)) face.status = FaceStatus::PoleFace;
     else if (mirrored) face.status = turnedAway(f) ? FaceStatus::Backfacing : FaceStatus::Flipped;
     const Vec2* t = &uv.uv[3 * f];
-    const Eigen::Matrix2d j = jacobian(position(f, 0), position(f, 1), position(f, 2), t[0], t[1], t[2]);
+    const Eigen::Matrix2d j = jacobian(edges(f), t[0], t[1], t[2]);
     singularValues(j, face.sigmaMax, face.sigmaMin);
     face.sigmaMin *= majority;
     // Sander et al. 2001, "Texture stretch metric": UV -> surface has singular values G = 1/|s2|, g = 1/s1.

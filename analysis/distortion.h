@@ -48,7 +48,7 @@ bool isMeasured(FaceStatus status);
 // Jacobian's measures only where isMeasured(status), else they are 0. Nothing is NaN or infinite.
 struct FaceDistortion {
   FaceStatus status = FaceStatus::Invalid;
-  double area3d = 0.0;  // A3, the triangle's area in object space
+  double area3d = 0.0;  // A3, the triangle's area in object space (times measureLengthScale squared)
   double areaUv = 0.0;  // Auv, the absolute area of its UV triangle
   double sigmaMax = 0.0;  // s1, the larger singular value of J
   double sigmaMin = 0.0;  // s2, |s2| <= s1; negative when the face is mirrored against the majority
@@ -64,6 +64,14 @@ struct DistortionOptions {
   // of local +z: localFromObject.inverse().linear().col(2)). Unset: no face is backfacing.
   std::optional<Vec3> projectionDirection;
 };
+
+// The factor every 3D length is measured in: 1 for a mesh whose extent lies within 2^-500 .. 2^500
+// (about 1e-150 .. 1e150, where areas and stretches are representable: object units), else the
+// power of two that brings the extent to about 1, so that the areas of meshes at 1e-300 or 1e300
+// neither underflow to 0 (every face zero_area_3d) nor overflow (NaN stretches). The normalised measures (area
+// distortion, the summary's stretches, the verdict) do not depend on it; A3, the singular values
+// and the raw stretches are in object units times it.
+double measureLengthScale(const Mesh& mesh);
 
 // One FaceDistortion per triangle of `mesh`. Precondition: `uv` has 3 corners per triangle.
 std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const DistortionOptions& options = {});

@@ -105,7 +105,7 @@ std::vector<SeamEdge> seamEdgeList(const Mesh& mesh, const UvMap& uv, const std:
 SeamEdges classifySeamEdges(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices) {
   SeamEdges seams;
   for (const SeamEdge& e : seamEdgeList(mesh, uv, poleVertices)) {
-    const double length = (mesh.positions[e.a] - mesh.positions[e.b]).norm();
+    const double length = (mesh.positions[e.a] - mesh.positions[e.b]).stableNorm();  // norm() squares 1e200 to inf
     if (e.wrap) ++seams.wrapEdges, seams.wrapLength += length;
     else ++seams.cutEdges, seams.cutLength += length;
   }

@@ -9,7 +9,10 @@
 #include <vector>
 
 #include "analysis/distortion.h"
+#include "analysis/judgement.h"
 #include "analysis/layout.h"
+#include "meshes/generators.h"
+#include "param/projector.h"
 
 namespace uvtk::analysis {
 namespace {
@@ -141,6 +144,47 @@ TEST_P(SliverExtremes, FiniteMeasuresOrAZeroAreaStatus) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Rows, SliverExtremes, testing::Range<std::size_t>(0, rows().size()));
+
+}  // namespace
+}  // namespace uvtk::analysis
+
+namespace uvtk::analysis {
+namespace {
+
+// A mesh at 1e-200 or 1e200 gets the verdict it gets at scale 1: its areas would underflow to 0
+// (every face zero_area_3d) or overflow to inf (NaN stretches, an internal error in the
+// statistics), so they are measured at unit scale (measureLengthScale). Scaling by a power of two
+// is exact, so statuses and normalised measures must agree exactly.
+TEST(AnalysisExtremes, AJudgementDoesNotDependOnTheMeshScale) {
+  const Mesh knot = meshes::torusKnot(2, 3, 64, 8);
+  param::ProjectorOptions o;
+  o.surface = param::SurfaceKind::Cylinder;
+  o.placement.fit = param::Fit::BBox;
+  const param::Projection atOne = param::project(knot, o);
+  const Judgement reference = judge(knot, atOne.uv);
+  ASSERT_GT(reference.reasons.size(), 1u);  // a mapping with flipped faces, overlap and stretch to compare
+  EXPECT_EQ(measureLengthScale(knot), 1.0);
+  for (const int exponent : {-997, -664, -510, 510, 664, 997}) {
+    SCOPED_TRACE("the knot times 2^" + std::to_string(exponent));
+    Mesh scaled = knot;
+    for (Vec3& p : scaled.positions) p = p.unaryExpr([&](double x) { return std::ldexp(x, exponent); });
+    EXPECT_NE(measureLengthScale(scaled), 1.0);
+    const Judgement j = judge(scaled, atOne.uv);  // the same UVs: only the 3D lengths scale
+    EXPECT_EQ(j.verdict, reference.verdict);
+    ASSERT_EQ(j.reasons.size(), reference.reasons.size());
+    for (std::size_t r = 0; r < j.reasons.size(); ++r) {
+      EXPECT_EQ(j.reasons[r].rule, reference.reasons[r].rule);
+      EXPECT_EQ(j.reasons[r].value, reference.reasons[r].value);
+      EXPECT_EQ(j.reasons[r].faces, reference.reasons[r].faces);
+    }
+    for (std::size_t f = 0; f < j.faces.size(); ++f) {
+      EXPECT_EQ(j.faces[f].status, reference.faces[f].status) << "face " << f;
+      EXPECT_EQ(j.faces[f].areaDistortion, reference.faces[f].areaDistortion) << "face " << f;
+      EXPECT_TRUE(std::isfinite(j.faces[f].l2Stretch) && std::isfinite(j.faces[f].area3d)) << "face " << f;
+    }
+    EXPECT_EQ(j.summary.l2Stretch, reference.summary.l2Stretch);
+  }
+}
 
 }  // namespace
 }  // namespace uvtk::analysis
