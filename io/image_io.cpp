@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <vector>
@@ -128,7 +129,9 @@ std::unique_ptr<OIIO::ImageOutput> writerFor(const std::string& path, PixelType 
 
 }  // namespace
 
-ImageFile readImage(const std::string& path, std::int64_t maxValues, std::int64_t maxPixels) {
+namespace {
+
+ImageFile readLimited(const std::string& path, std::int64_t maxValues, std::int64_t maxPixels, int maxChannels) {
   checkReadable(path);
   checkPngChunks(path);
   // Keep alpha as stored: by default PNG and TIFF readers premultiply colour by it.
@@ -147,6 +150,12 @@ ImageFile readImage(const std::string& path, std::int64_t maxValues, std::int64_
                                 ", larger than the " + std::to_string(kMaxSide) + " x " + std::to_string(kMaxSide) +
                                 " limit");
 
+  if (spec.nchannels > maxChannels) {
+    std::string names;
+    for (int c = 0; c < spec.nchannels; ++c) names += (c ? ", " : "") + std::string(spec.channel_name(c));
+    throw readFailure(path, "image has " + std::to_string(spec.nchannels) + " channels (" + printable(names) +
+                                "); a texture takes 1 to 4 (grey, grey and alpha, RGB, RGBA)");
+  }
   const int channels = std::min(spec.nchannels, kMaxChannels);
   const std::int64_t pixelCount = std::int64_t(spec.width) * spec.height, values = pixelCount * channels;
   if (pixelCount > maxPixels)
@@ -181,6 +190,16 @@ ImageFile readImage(const std::string& path, std::int64_t maxValues, std::int64_
   if (!read) throw readFailure(path, "cannot read: " + oneLine(in->geterror(), "the pixels are missing or corrupt"));
   in->close();
   return file;
+}
+
+}  // namespace
+
+ImageFile readImage(const std::string& path, std::int64_t maxValues, std::int64_t maxPixels) {
+  return readLimited(path, maxValues, maxPixels, std::numeric_limits<int>::max());
+}
+
+ImageFile readTexture(const std::string& path, std::int64_t maxPixels) {
+  return readLimited(path, kMaxImageValues, maxPixels, 4);
 }
 
 void checkImageType(const std::string& path, PixelType type) { writerFor(path, type); }

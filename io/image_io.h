@@ -27,6 +27,10 @@ constexpr std::int64_t kMaxImageValues = std::int64_t(1) << 29;
 ImageFile readImage(const std::string& path, std::int64_t maxValues = kMaxImageValues,
                     std::int64_t maxPixels = kMaxImageValues);
 
+// readImage for a texture: also refuses, from the header, an image of more than 4 channels (a
+// texture is grey, grey + alpha, RGB or RGBA), naming its channels.
+ImageFile readTexture(const std::string& path, std::int64_t maxPixels = kMaxImageValues);
+
 enum class PixelType { UInt8, Float };
 
 // Throws the UsageError writeImage would for `path` and `type`, before any work is done.

@@ -260,7 +260,7 @@ BoundTexture TextureArguments::load() const {
     std::vector<Image> images;
     bool eightBit = true;
     for (const std::string& file : list) {
-      io::ImageFile read = io::readImage(file, io::kMaxImageValues, render::kMaxTexels / std::int64_t(list.size()));
+      io::ImageFile read = io::readTexture(file, render::kMaxTexels / std::int64_t(list.size()));
       eightBit = eightBit && read.eightBit;
       images.push_back(std::move(read.image));
     }

@@ -113,6 +113,27 @@ TEST_F(ImageIoTest, ExrRoundTripIsBitExactWithNames) {
   }
 }
 
+// A texture is grey, grey + alpha, RGB or RGBA: a fifth channel is refused from the header, as an
+// input error naming the file and its channels (it was a usage error without the file's name).
+TEST_F(ImageIoTest, ATextureOfMoreThanFourChannelsIsAnInputError) {
+  Image image(2, 1, 5);
+  image.channelNames = {"R", "G", "B", "A", "Z"};
+  writeImage(path("five.exr"), image, PixelType::Float);
+  EXPECT_EQ(readImage(path("five.exr")).image.channels, 5);
+  try {
+    readTexture(path("five.exr"));
+    FAIL() << "a five-channel texture was read";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()), path("five.exr") +
+                                             ": error: image has 5 channels (R, G, B, A, Z); a texture takes 1 to 4 "
+                                             "(grey, grey and alpha, RGB, RGBA)");
+  }
+  image = Image(2, 1, 4);
+  image.channelNames = {"R", "G", "B", "A"};
+  writeImage(path("four.exr"), image, PixelType::Float);
+  EXPECT_EQ(readTexture(path("four.exr")).image.channels, 4);
+}
+
 TEST_F(ImageIoTest, TiffHoldsFloats) {
   Image image(2, 2, 2);
   image.pixels = {-1.0f, 0.5f, 1e20f, 2.0f, 3.0f, -4.0f, 0.125f, std::numeric_limits<float>::infinity()};
