@@ -2,11 +2,21 @@
 // readers and writers (io/image_io.h) exchange. Row 0 is the top row, as in every image file.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace uvtk {
+
+// A value as an 8-bit image stores it: round(clamp(c, 0, 1) * 255), NaN as 0 (io::writeImage's
+// rounding, defined for NaN and the halfway cases).
+inline std::uint8_t toUInt8(float c) {
+  if (!(c > 0.0f)) return 0;
+  if (c >= 1.0f) return 255;
+  return static_cast<std::uint8_t>(std::lround(static_cast<double>(c) * 255.0));
+}
 
 struct Image {
   int width = 0, height = 0, channels = 0;

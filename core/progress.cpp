@@ -18,6 +18,7 @@ constexpr std::int64_t kPlainInterval = 5'000'000'000;   // ns: a log line every
 constexpr int kMinBar = 10, kMaxBar = 30;
 
 std::atomic<bool> gEnabled{false};
+std::atomic<bool> gQuiet{false};
 std::mutex gDisplay;
 Progress* gOwner = nullptr;  // the Progress shown; guarded by gDisplay
 
@@ -50,6 +51,8 @@ int terminalColumns() {
 
 void setProgressEnabled(bool enabled) { gEnabled = enabled; }
 bool progressEnabled() { return gEnabled; }
+void setQuiet(bool quiet) { gQuiet = quiet; }
+bool quiet() { return gQuiet; }
 
 std::string progressBarLine(const std::string& label, std::uint64_t done, std::uint64_t total, const std::string& unit,
                             double seconds, int width, std::uint64_t unitSize) {

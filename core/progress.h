@@ -13,6 +13,11 @@ namespace uvtk {
 void setProgressEnabled(bool enabled);
 bool progressEnabled();
 
+// Whether the user asked for quiet (uvtk's -q): commands then print no summary lines (errors and
+// verdicts they exist to print still go out). Off by default; it does not touch progress.
+void setQuiet(bool quiet);
+bool quiet();
+
 // Progress of counted work. On a terminal (isatty(stderr)), once the work has lasted 0.1 s, a bar
 // redrawn in place at most 10 times a second, "LABEL [#########.........] 1234/5000 UNIT  2.3 s",
 // cleared by finish().

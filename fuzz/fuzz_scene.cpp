@@ -4,7 +4,7 @@
 
 #include "core/error.h"
 #include "io/image_io.h"
-#include "scene.h"
+#include "scene/scene.h"
 #include "scratch_file.h"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
@@ -17,7 +17,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string path = uvtk::fuzz::writeInput("scene.json", data, size);
   try {
-    uvtk::cli::loadScene(path, (uvtk::fuzz::scratchFolder() / "out").string());
+    uvtk::scene::loadScene(path, (uvtk::fuzz::scratchFolder() / "out").string());
   } catch (const uvtk::InputError&) {
     // the expected way to refuse a scene
   }

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
-#include "scene.h"
+#include "scene/scene.h"
 #include "scratch_file.h"
 
 namespace {
@@ -52,7 +52,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string value(reinterpret_cast<const char*>(data + 1), size - 1);
   try {
     if (!throughScene) {
-      checkAccepted(uvtk::cli::checkOutputPath(value, outputDir(), allowOutside), allowOutside);
+      checkAccepted(uvtk::scene::checkOutputPath(value, outputDir(), allowOutside), allowOutside);
       return 0;
     }
     const nlohmann::json scene = {
@@ -62,7 +62,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string text = scene.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     const std::string path = uvtk::fuzz::writeInput("scene.json", reinterpret_cast<const std::uint8_t*>(text.data()),
                                                     text.size());
-    const uvtk::cli::Scene loaded = uvtk::cli::loadScene(path, outputDir().string(), allowOutside);
+    const uvtk::scene::Scene loaded = uvtk::scene::loadScene(path, outputDir().string(), allowOutside);
     for (const std::string& file : loaded.outputs.at(0).files()) checkAccepted(file, allowOutside);
   } catch (const uvtk::InputError&) {
     // the expected way to refuse a path

@@ -1,8 +1,5 @@
 #include "io/image_io.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-#include <OpenImageIO/strutil.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -22,6 +19,8 @@
 
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "io/image_backend.h"
+#include "io/image_plugin.h"
 
 namespace uvtk::io {
 
@@ -97,34 +96,31 @@ void checkPngChunks(const std::string& path) {
   }
 }
 
-// Integer pixels divided by their maximum here rather than by OpenImageIO, whose conversion
-// multiplies by the reciprocal and so may differ from v / 255 in the last bit.
-template <typename T>
-bool readScaled(OIIO::ImageInput& in, int channels, float maximum, std::vector<float>& pixels) {
-  std::vector<T> stored(pixels.size());
-  if (!in.read_image(0, 0, 0, channels, OIIO::BaseTypeFromC<T>::value, stored.data())) return false;
-  std::transform(stored.begin(), stored.end(), pixels.begin(), [&](T v) { return float(v) / maximum; });
-  return true;
-}
-
 std::uint8_t toUInt8(float c) {
   if (!(c > 0.0f)) return 0;  // also NaN
   if (c >= 1.0f) return 255;
   return static_cast<std::uint8_t>(std::lround(static_cast<double>(c) * 255.0));
 }
 
-// The writer for `path`'s format; throws UsageError when there is none or it cannot hold `type`.
-std::unique_ptr<OIIO::ImageOutput> writerFor(const std::string& path, PixelType type) {
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) {
-    OIIO::geterror();  // drop OpenImageIO's own message so it is not printed at exit
-    throw UsageError(path + ": error: cannot write images of this type");
-  }
+// The image plugin, or `fail(reason)` thrown: the error class of the caller's operation.
+template <typename Fail>
+const backend::Functions& plugin(Fail fail) {
+  std::string error;
+  const backend::Functions* functions = imagePlugin(error);
+  if (!functions) throw fail(error);
+  return *functions;
+}
+
+// The plugin and the format of `path`'s writer; throws UsageError when there is none or it cannot
+// hold `type`.
+const backend::Functions& writerFor(const std::string& path, PixelType type) {
+  const backend::Functions& functions = plugin([&](const std::string& why) { return writeError(path, why); });
+  const std::string format = functions.writerFormat(path);
+  if (format.empty()) throw UsageError(path + ": error: cannot write images of this type");
   // OpenImageIO has no query for float support; writers of other formats silently convert.
-  const std::string format = out->format_name();
   if (type == PixelType::Float && format != "openexr" && format != "tiff")
     throw UsageError(path + ": error: cannot write float pixels to a " + format + " file (use .exr, .tif or .tiff)");
-  return out;
+  return functions;
 }
 
 }  // namespace
@@ -134,29 +130,30 @@ namespace {
 ImageFile readLimited(const std::string& path, std::int64_t maxValues, std::int64_t maxPixels, int maxChannels) {
   checkReadable(path);
   checkPngChunks(path);
-  // Keep alpha as stored: by default PNG and TIFF readers premultiply colour by it.
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(path, &config);
-  if (!in) throw readFailure(path, "cannot read: " + oneLine(OIIO::geterror()));
+  const backend::Functions& functions =
+      plugin([&](const std::string& why) { return readFailure(path, "cannot read: " + why); });
+  backend::Header spec;  // the first subimage, level 0
+  std::string error;
+  const std::unique_ptr<backend::Reader, void (*)(backend::Reader*)> in(functions.open(path, spec, error),
+                                                                        functions.close);
+  if (!in) throw readFailure(path, "cannot read: " + oneLine(error));
 
-  const OIIO::ImageSpec spec = in->spec();  // the first subimage, level 0
-  if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1 || spec.nchannels <= 0)
+  if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1 || spec.channels <= 0)
     throw readFailure(path, "image is empty or not two-dimensional (" + std::to_string(spec.width) + " x " +
                                 std::to_string(spec.height) + " x " + std::to_string(spec.depth) + ", " +
-                                std::to_string(spec.nchannels) + " channels)");
+                                std::to_string(spec.channels) + " channels)");
   if (spec.width > kMaxSide || spec.height > kMaxSide)
     throw readFailure(path, "image is " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
                                 ", larger than the " + std::to_string(kMaxSide) + " x " + std::to_string(kMaxSide) +
                                 " limit");
 
-  if (spec.nchannels > maxChannels) {
+  if (spec.channels > maxChannels) {
     std::string names;
-    for (int c = 0; c < spec.nchannels; ++c) names += (c ? ", " : "") + std::string(spec.channel_name(c));
-    throw readFailure(path, "image has " + std::to_string(spec.nchannels) + " channels (" + printable(names) +
+    for (int c = 0; c < spec.channels; ++c) names += (c ? ", " : "") + spec.channelNames[std::size_t(c)];
+    throw readFailure(path, "image has " + std::to_string(spec.channels) + " channels (" + printable(names) +
                                 "); a texture takes 1 to 4 (grey, grey and alpha, RGB, RGBA)");
   }
-  const int channels = std::min(spec.nchannels, kMaxChannels);
+  const int channels = std::min(spec.channels, kMaxChannels);
   const std::int64_t pixelCount = std::int64_t(spec.width) * spec.height, values = pixelCount * channels;
   if (pixelCount > maxPixels)
     throw readFailure(path, "image is " + std::to_string(spec.width) + " x " + std::to_string(spec.height) + ", " +
@@ -172,23 +169,10 @@ ImageFile readLimited(const std::string& path, std::int64_t maxValues, std::int6
 
   ImageFile file;
   file.image = Image(spec.width, spec.height, channels);
-  for (int c = 0; c < channels; ++c) file.image.channelNames.push_back(spec.channel_name(c));
-  const auto storedAs = [&](OIIO::TypeDesc type) {
-    return spec.format == type && std::all_of(spec.channelformats.begin(), spec.channelformats.end(),
-                                              [&](OIIO::TypeDesc t) { return t == type; });
-  };
-  file.eightBit = storedAs(OIIO::TypeDesc::UINT8);
-  std::vector<float>& pixels = file.image.pixels;
-  bool read = false;
-  if (file.eightBit) {
-    read = readScaled<std::uint8_t>(*in, channels, 255.0f, pixels);
-  } else if (storedAs(OIIO::TypeDesc::UINT16)) {
-    read = readScaled<std::uint16_t>(*in, channels, 65535.0f, pixels);
-  } else {
-    read = in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data());
-  }
-  if (!read) throw readFailure(path, "cannot read: " + oneLine(in->geterror(), "the pixels are missing or corrupt"));
-  in->close();
+  file.image.channelNames.assign(spec.channelNames.begin(), spec.channelNames.begin() + channels);
+  file.eightBit = spec.stored == backend::Stored::UInt8;
+  if (!functions.read(in.get(), channels, file.image.pixels.data(), error))
+    throw readFailure(path, "cannot read: " + oneLine(error, "the pixels are missing or corrupt"));
   return file;
 }
 
@@ -206,23 +190,17 @@ void checkImageType(const std::string& path, PixelType type) { writerFor(path, t
 
 namespace {
 
-// The spec of `image` stored as `type`; for UInt8 also its rounded pixels, by our own rounding
+// `image` as the plugin writes it; for UInt8 its pixels rounded into `rounded` by our own rounding
 // rather than OpenImageIO's conversion, so that NaN and the halfway cases are defined.
-OIIO::ImageSpec specFor(const Image& image, PixelType type, std::vector<std::uint8_t>& rounded) {
-  const OIIO::TypeDesc pixelType = type == PixelType::UInt8 ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
+backend::Pixels pixelsFor(const Image& image, PixelType type, std::vector<std::uint8_t>& rounded) {
+  backend::Pixels pixels{image.width, image.height, image.channels, &image.channelNames, type == PixelType::Float,
+                         image.pixels.data()};
   if (type == PixelType::UInt8) {
     rounded.resize(image.pixels.size());
     std::transform(image.pixels.begin(), image.pixels.end(), rounded.begin(), toUInt8);
+    pixels.data = rounded.data();
   }
-  OIIO::ImageSpec spec(image.width, image.height, image.channels, pixelType);
-  if (!image.channelNames.empty()) {
-    spec.channelnames = image.channelNames;
-    const auto alpha = std::find(spec.channelnames.begin(), spec.channelnames.end(), "A");
-    spec.alpha_channel = alpha == spec.channelnames.end() ? -1 : int(alpha - spec.channelnames.begin());
-  }
-  // Store alpha as given: by default PNG and TIFF writers divide colour by it.
-  spec.attribute("oiio:UnassociatedAlpha", 1);
-  return spec;
+  return pixels;
 }
 
 }  // namespace
@@ -232,18 +210,15 @@ void writeImage(OutputSet& outputs, const std::string& path, const Image& image,
   UVTK_CHECK(image.pixels.size() == image.index(0, image.height));
   UVTK_CHECK(image.channelNames.empty() || int(image.channelNames.size()) == image.channels);
 
-  auto out = writerFor(path, type);  // by the target's extension: the temporary's path may have none
+  const backend::Functions& functions = writerFor(path, type);
 
   std::vector<std::uint8_t> rounded;
-  const OIIO::ImageSpec spec = specFor(image, type, rounded);
-  const void* pixels = type == PixelType::UInt8 ? static_cast<const void*>(rounded.data()) : image.pixels.data();
-  const OIIO::TypeDesc pixelType = spec.format;
+  const backend::Pixels pixels = pixelsFor(image, type, rounded);
 
   const TemporaryFile& staged = outputs.stage(path);
-  if (!out->open(staged.path(), spec)) throw writeError(staged.shownName(), oneLine(out->geterror()));
-  const bool written = out->write_image(pixelType, pixels);
-  const bool closed = out->close();
-  if (!written || !closed) throw writeError(staged.shownName(), oneLine(out->geterror()));
+  std::string error;
+  // The format by the target's extension: the temporary's path may have none.
+  if (!functions.write(path, staged.path(), pixels, error)) throw writeError(staged.shownName(), oneLine(error));
 }
 
 void writeImage(const std::string& path, const Image& image, PixelType type) {
@@ -254,19 +229,26 @@ void writeImage(const std::string& path, const Image& image, PixelType type) {
 
 std::string encodePng(const Image& image) {
   UVTK_CHECK(image.width > 0 && image.height > 0 && image.channels > 0);
+  const backend::Functions& functions =
+      plugin([](const std::string& why) { return OutputError("error: cannot encode a PNG: " + why); });
   std::vector<std::uint8_t> rounded;
-  const OIIO::ImageSpec spec = specFor(image, PixelType::UInt8, rounded);
-  std::vector<unsigned char> bytes;
-  OIIO::Filesystem::IOVecOutput memory(bytes);
-  auto out = OIIO::ImageOutput::create("memory.png", &memory);
-  if (!out || !out->open("memory.png", spec) || !out->write_image(OIIO::TypeDesc::UINT8, rounded.data()) ||
-      !out->close())
-    throw std::runtime_error("OpenImageIO: cannot encode a PNG in memory: " + OIIO::geterror());
-  return std::string(bytes.begin(), bytes.end());
+  std::string bytes, error;
+  if (!functions.encodePng(pixelsFor(image, PixelType::UInt8, rounded), bytes, error))
+    throw std::runtime_error("OpenImageIO: cannot encode a PNG in memory: " + oneLine(error));
+  return bytes;
 }
 
 std::string pngDataUri(const Image& image) {
-  return "data:image/png;base64," + OIIO::Strutil::base64_encode(encodePng(image));
+  static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  const std::string bytes = encodePng(image);
+  std::string uri = "data:image/png;base64,";
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
+    std::uint32_t group = 0;
+    for (std::size_t k = 0; k < 3; ++k) group = group << 8 | (k < n ? std::uint8_t(bytes[i + k]) : 0u);
+    for (std::size_t k = 0; k < 4; ++k) uri += k <= n ? kDigits[group >> (18 - 6 * k) & 63] : '=';
+  }
+  return uri;
 }
 
 }  // namespace uvtk::io

@@ -33,7 +33,7 @@ constexpr std::size_t kMaxPath = 4096;
 
 struct Slot {
   std::atomic<int> state{0};  // 0 free, 1 being filled, 2 published
-  char path[kMaxPath];
+  char path[kMaxPath] = {};  // initialised, so the table is constant-initialised: no page touched at start
 };
 std::array<Slot, kSlots> gSlots;
 

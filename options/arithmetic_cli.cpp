@@ -4,14 +4,6 @@
 
 namespace uvtk::cli {
 
-const std::vector<std::pair<std::string, Precision>> kPrecisionNames = {{"double", Precision::Double},
-                                                                        {"float", Precision::Float}};
-const std::vector<std::pair<std::string, MathMode>> kMathNames = {
-    {"exact", MathMode::Exact}, {"fast", MathMode::Fast}, {"fast-u10", MathMode::FastU10}};
-
-const std::string& precisionName(Precision precision) { return nameOf(kPrecisionNames, precision); }
-const std::string& mathName(MathMode math) { return nameOf(kMathNames, math); }
-
 void addArithmeticOptions(CLI::App& app, Arithmetic& arithmetic, bool withMath) {
   addChoice<Precision>(app, "--precision", arithmetic.precision, kPrecisionNames,
                        "Arithmetic of the per-vertex evaluation: double, or float after the move to the local frame")

@@ -9,14 +9,9 @@
 #include <vector>
 
 #include "core/arithmetic.h"
+#include "options/option_names.h"  // the names of --precision and --math
 
 namespace uvtk::cli {
-
-extern const std::vector<std::pair<std::string, Precision>> kPrecisionNames;
-extern const std::vector<std::pair<std::string, MathMode>> kMathNames;
-
-const std::string& precisionName(Precision precision);
-const std::string& mathName(MathMode math);
 
 // Adds --precision (and --math unless `withMath` is false: texgen has no transcendental function).
 void addArithmeticOptions(CLI::App& app, Arithmetic& arithmetic, bool withMath = true);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -20,15 +21,39 @@ inline Vec2 parseVec2(const std::string& text, const std::string& option) { retu
 inline Vec3 parseVec3(const std::string& text, const std::string& option) { return parseNumbers(text, 3, option); }
 inline Vec4 parseVec4(const std::string& text, const std::string& option) { return parseNumbers(text, 4, option); }
 
-// A named choice: the help shows the names (a|b|c), not the enumerators they map to.
+// The name among `names` that a mistyped `typed` most likely meant, ignoring case: the nearest by
+// Damerau-Levenshtein distance when it is at most a third of the longer one's length, else the only
+// name that `typed` (3 characters or more) begins; "" when none is that close.
+std::string nearestName(const std::string& typed, const std::vector<std::string>& names);
+
+// "'sphera' is not one of: plane, two-plane, cylinder, sphere, cube; did you mean 'sphere'?", the
+// question only when nearestName finds one.
+std::string notOneOf(const std::string& typed, const std::vector<std::string>& names);
+
+// Accepts exactly the strings in `names`, refusing others with notOneOf's text (CLI11 puts the
+// option's name before it): for a string option checked against a list of names.
+CLI::Validator nameCheck(std::vector<std::string> names);
+
+// A named choice: the help shows the names (a|b|c), not the enumerators they map to. Only the
+// names are accepted (in any case): not the numbers behind them.
 template <class Enum>
 inline CLI::Option* addChoice(CLI::App& app, const std::string& name, Enum& target,
                        const std::vector<std::pair<std::string, Enum>>& table, const std::string& help) {
-  std::string names;
-  for (const auto& [text, value] : table) names += (names.empty() ? "" : "|") + text;
-  return app.add_option(name, target, help)
-      ->transform(CLI::CheckedTransformer(table, CLI::ignore_case).description(""))
-      ->type_name(names);
+  std::vector<std::string> names;
+  for (const auto& entry : table) names.push_back(entry.first);
+  // Hands CLI11 the value as the number it converts an enum (or int, or bool) from.
+  const auto toValue = [table, names](std::string& text) -> std::string {
+    for (const auto& [choice, value] : table)
+      if (CLI::detail::to_lower(choice) == CLI::detail::to_lower(text)) {
+        if constexpr (std::is_enum_v<Enum>)
+          text = std::to_string(static_cast<std::underlying_type_t<Enum>>(value));
+        else
+          text = std::to_string(value);
+        return "";
+      }
+    return notOneOf(text, names);
+  };
+  return app.add_option(name, target, help)->transform(CLI::Validator(toValue, ""))->type_name(CLI::detail::join(names, "|"));
 }
 
 // The name `table` gives `value`.

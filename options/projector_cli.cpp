@@ -1,11 +1,9 @@
 #include "options/projector_cli.h"
 
-#include <cstdio>
-
 #include "core/error.h"
-#include "core/progress.h"
 #include "options/arithmetic_cli.h"
 #include "options/cli_values.h"
+#include "options/option_names.h"
 
 namespace uvtk::cli {
 
@@ -13,30 +11,6 @@ using namespace uvtk::param;
 
 namespace {
 
-// The option names of each choice, shared by the options and the JSON record of a run.
-const std::vector<std::pair<std::string, SurfaceKind>> kSurfaceNames = {{"plane", SurfaceKind::Plane},
-                                                                        {"two-plane", SurfaceKind::TwoPlane},
-                                                                        {"cylinder", SurfaceKind::Cylinder},
-                                                                        {"sphere", SurfaceKind::Sphere},
-                                                                        {"cube", SurfaceKind::Cube}};
-const std::vector<std::pair<std::string, RayKind>> kRayNames = {{"isn", RayKind::SurfaceNormal},
-                                                                {"centroid", RayKind::Centroid},
-                                                                {"normal", RayKind::ObjectNormal},
-                                                                {"reflection", RayKind::Reflection}};
-const std::vector<std::pair<std::string, Fit>> kFitNames = {
-    {"none", Fit::None}, {"bbox", Fit::BBox}, {"center", Fit::Center}, {"pca", Fit::Pca}, {"obb", Fit::Obb}};
-const std::vector<std::pair<std::string, int>> kAxisNames = {{"x", 0}, {"y", 1}, {"z", 2}};
-const std::vector<std::pair<std::string, SpherePreset>> kSpherePresetNames = {
-    {"default", SpherePreset::Default}, {"glu", SpherePreset::Glu}, {"seed004", SpherePreset::Seed004}};
-const std::vector<std::pair<std::string, CubeConvention>> kCubeConventionNames = {{"gl", CubeConvention::Gl},
-                                                                                  {"direct", CubeConvention::Direct}};
-const std::vector<std::pair<std::string, CubeLayout>> kCubeLayoutNames = {{"faces", CubeLayout::Faces},
-                                                                          {"cross", CubeLayout::Cross},
-                                                                          {"strip", CubeLayout::Strip},
-                                                                          {"3x2", CubeLayout::ThreeByTwo}};
-const std::vector<std::pair<std::string, SeamMode>> kSeamNames = {
-    {"none", SeamMode::None}, {"shift", SeamMode::Shift}, {"cut", SeamMode::Cut}};
-const std::vector<std::pair<std::string, PoleMode>> kPoleNames = {{"none", PoleMode::None}, {"fan", PoleMode::Fan}};
 const std::vector<std::pair<std::string, Convention>> kConventionNames = {
     {"uvtk", Convention::Uvtk},
     {"blender", Convention::Blender},
@@ -225,55 +199,6 @@ ProjectorOptions projectorNamed(const std::string& projector, const std::string&
   o.surface = parseNameList(projector, kSurfaceNames, "--projector").at(0);
   o.ray = parseNameList(omap, kRayNames, "--omap").at(0);
   return o;
-}
-
-nlohmann::json projectorOptionsJson(const ProjectorOptions& o) {
-  nlohmann::json j = {{"projector", nameOf(kSurfaceNames, o.surface)},
-                      {"omap", nameOf(kRayNames, o.ray)},
-                      {"fit", nameOf(kFitNames, o.placement.fit)},
-                      {"axis", nameOf(kAxisNames, o.placement.axis)},
-                      {"turn_degrees", o.placement.turnDegrees},
-                      {"seam", nameOf(kSeamNames, o.seam)},
-                      {"pole", nameOf(kPoleNames, o.pole)},
-                      {"pole_eps", o.poleEpsilon},
-                      {"sphere_preset", nameOf(kSpherePresetNames, o.spherePreset)},
-                      {"cube_convention", nameOf(kCubeConventionNames, o.cubeConvention)},
-                      {"cube_layout", nameOf(kCubeLayoutNames, o.cubeLayout)},
-                      {"caps", o.cylinderCaps},
-                      {"cap_angle", o.capAngleDegrees},
-                      {"plane_u", {o.planeU[0], o.planeU[1], o.planeU[2], o.planeU[3]}},
-                      {"plane_v", {o.planeV[0], o.planeV[1], o.planeV[2], o.planeV[3]}},
-                      {"uv_scale", {o.uvTransform.scale.x(), o.uvTransform.scale.y()}},
-                      {"uv_offset", {o.uvTransform.offset.x(), o.uvTransform.offset.y()}},
-                      {"uv_rotate", o.uvTransform.rotateDegrees},
-                      {"flip_u", o.uvTransform.flipU},
-                      {"flip_v", o.uvTransform.flipV},
-                      {"precision", precisionName(o.arithmetic.precision)},
-                      {"math", mathName(o.arithmetic.math)}};
-  if (const auto& f = o.placement.frame)
-    j["frame"] = {{"center", {f->center.x(), f->center.y(), f->center.z()}},
-                  {"axis_dir", {f->axisDir.x(), f->axisDir.y(), f->axisDir.z()}},
-                  {"ref_dir", {f->refDir.x(), f->refDir.y(), f->refDir.z()}},
-                  {"scale", f->scale}};
-  if (o.eye) j["eye"] = {o.eye->x(), o.eye->y(), o.eye->z()};
-  if (o.ray == RayKind::Reflection) j["at_infinity"] = o.atInfinity;
-  return j;
-}
-
-void printSeamPlacement(const SeamPlacement& p) {
-  char line[256];
-  std::snprintf(line, sizeof line,
-                "uvtk: seam placed at %.6g degrees: it crosses %zu faces (%zu before), seam length %.6g (%.6g before)",
-                p.turnDegrees, p.facesCrossed, p.facesCrossedBefore, p.seamLength, p.seamLengthBefore);
-  printProgressMessage(line);  // above a progress bar, not through it
-}
-
-nlohmann::json seamPlacementJson(const SeamPlacement& p) {
-  return {{"turn_degrees", p.turnDegrees},
-          {"faces_crossed", p.facesCrossed},
-          {"faces_crossed_before", p.facesCrossedBefore},
-          {"seam_length", p.seamLength},
-          {"seam_length_before", p.seamLengthBefore}};
 }
 
 }  // namespace uvtk::cli

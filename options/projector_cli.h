@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "options/option_names.h"
 #include "param/projector.h"
 
 namespace uvtk::cli {
@@ -43,14 +44,7 @@ param::ProjectorOptions projectorNamed(const std::string& projector, const std::
 
 const std::string& conventionName(Convention convention);
 
-// Every option as a JSON object, named as on the command line.
-nlohmann::json projectorOptionsJson(const param::ProjectorOptions& options);
 
-// One line on stderr: where --seam-place auto put the seam and what it gained.
-void printSeamPlacement(const param::SeamPlacement& placement);
-
-// The JSON record of a seam placement.
-nlohmann::json seamPlacementJson(const param::SeamPlacement& placement);
 
 // Adds --projector, --omap, --fit and all the other mapping options to `app`. With
 // `cameraOwnsEye` (uvtk render) the placement's origin is --frame-center and the reflection

@@ -5,6 +5,7 @@
 
 #include "options/arithmetic_cli.h"
 #include "options/cli_values.h"
+#include "options/option_names.h"
 #include "core/error.h"
 
 namespace uvtk::cli {
@@ -12,11 +13,6 @@ namespace uvtk::cli {
 namespace {
 
 using texgen::TexgenMode;
-
-const std::vector<std::pair<std::string, TexgenMode>> kModeNames = {
-    {"object_linear", TexgenMode::ObjectLinear}, {"eye_linear", TexgenMode::EyeLinear},
-    {"sphere_map", TexgenMode::SphereMap},       {"normal_map", TexgenMode::NormalMap},
-    {"reflection_map", TexgenMode::ReflectionMap}, {"off", TexgenMode::Off}};
 
 const char* const kCoordinateOptions[4] = {"--s", "--t", "--r", "--q"};
 
@@ -27,7 +23,7 @@ texgen::TexgenCoordinate parseCoordinate(const std::string& text, const std::str
   const std::string name = text.substr(0, colon);
   texgen::TexgenCoordinate c = defaults;
   bool known = false;
-  for (const auto& [modeText, value] : kModeNames)
+  for (const auto& [modeText, value] : kTexgenModeNames)
     if (name == modeText) {
       c.mode = value;
       known = true;
@@ -40,12 +36,6 @@ texgen::TexgenCoordinate parseCoordinate(const std::string& text, const std::str
 }
 
 }  // namespace
-
-const char* texgenModeName(TexgenMode mode) {
-  for (const auto& [name, value] : kModeNames)
-    if (value == mode) return name.c_str();
-  return "?";
-}
 
 bool TexgenArguments::given() const {
   if (!mode.empty()) return true;

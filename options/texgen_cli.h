@@ -7,6 +7,7 @@
 #include <array>
 #include <string>
 
+#include "options/option_names.h"
 #include "texgen/texgen.h"
 
 namespace uvtk::cli {
@@ -28,7 +29,5 @@ struct TexgenArguments {
 // `shortcut` names the mode shortcut option: "--mode" in `uvtk texgen`, "--texgen" in `uvtk
 // render`, where it also takes object_linear and eye_linear (s and t with GL's default planes).
 void addTexgenOptions(CLI::App& app, TexgenArguments& arguments, const std::string& shortcut);
-
-const char* texgenModeName(texgen::TexgenMode mode);
 
 }  // namespace uvtk::cli

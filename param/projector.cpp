@@ -238,7 +238,9 @@ CylinderCaps::CylinderCaps(const Affine3& localFromObject, double capAngleDegree
       cosLimit_(std::cos(capAngleDegrees * (kPi / 180.0))) {}
 
 bool CylinderCaps::isCap(const Vec3& objectNormal) const {
-  const double length = objectNormal.norm();  // the cosine of the angle with the axis line: |n.a| / |n|
+  // The cosine of the angle with the axis line, |n.a| / |n|; stableNorm: an area normal of a mesh
+  // at 1e150 or 1e-150 has a norm whose square overflows or underflows.
+  const double length = objectNormal.stableNorm();
   return length > 0.0 && std::fabs(objectNormal.dot(axis_)) >= cosLimit_ * length;
 }
 

@@ -9,7 +9,8 @@ packages=(cmake ninja-build g++ pkg-config
           libeigen3-dev libopenmesh-dev libcgal-dev libgmp-dev libmpfr-dev
           libopenimageio-dev openimageio-tools
           libssl-dev zlib1g-dev libsleef-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
-          libosmesa6-dev)  # Mesa's software OpenGL: the reference the texgen tests compare with
+          libosmesa6-dev   # Mesa's software OpenGL: the reference the texgen tests compare with
+          python3-dev pybind11-dev python3-numpy python3-pytest)  # the Python module (docs/python.md) and its tests
 preset=""
 build_dir=${1:-build}
 if [ "${1:-}" = "--fuzz" ]; then

@@ -2,7 +2,8 @@
 # Set up, build, and run every test: the release build's suite; its install, with examples/ built
 # and run against the installed package alone (docs/point-api.md); the same suite built by clang under
 # AddressSanitizer and UndefinedBehaviorSanitizer (the fuzz preset); every fuzz target for
-# UVTK_FUZZ_SECONDS (default 60) each. docs/robustness.md says what each part checks.
+# UVTK_FUZZ_SECONDS (default 60) each; the Python module's tests (pytest) against its install.
+# docs/robustness.md says what each part checks.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh build
@@ -21,6 +22,19 @@ case "$uvtk_dir" in
 esac
 cmake --build build/examples >&2
 ctest --test-dir build/examples --output-on-failure
+
+# The same program built with pkg-config alone (docs/library.md), and the Python module as installed
+# (docs/python.md): its tests compare it with the installed program.
+c++ -O1 examples/map_verdict/map_verdict.cpp $(PKG_CONFIG_PATH="$PWD/build/install/lib/pkgconfig" pkg-config --cflags --libs uvtk) \
+  -o build/examples/map_verdict_pkgconfig
+verdict=$(build/examples/map_verdict_pkgconfig examples/map_verdict/sphere.off || true)  # exit 1: a warning
+case "$verdict" in
+  *"80 faces, verdict warn"*) ;;
+  *) echo "test: map_verdict built with pkg-config printed '$verdict'" >&2; exit 1 ;;
+esac
+site=$(ls -d build/install/lib/python3*/site-packages)
+ls "$site"/uvtk*.so > /dev/null  # the module must have been built and installed
+PYTHONPATH="$PWD/$site" UVTK_BIN="$PWD/build/install/bin/uvtk" /usr/bin/python3 -m pytest -q -p no:cacheprovider tests/python
 
 scripts/setup.sh --fuzz
 # Leaks are errors (but those scripts/lsan.supp lists); any sanitizer report fails the test that made it.

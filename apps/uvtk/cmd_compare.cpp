@@ -6,13 +6,17 @@
 #include <string>
 
 #include "commands.h"
-#include "compare_cli.h"
+#include "core/progress.h"
+#include "options/compare_cli.h"
 #include "io/mesh_reader.h"
 #include "core/error.h"
-#include "run_report.h"
-#include "verdict_cli.h"
+#include "inspect/run_report.h"
+#include "options/verdict_cli.h"
+#include "inspect/verdict.h"
 
 namespace uvtk::cli {
+
+using namespace uvtk::inspect;
 
 namespace {
 
@@ -23,17 +27,18 @@ struct CompareCommandArguments {
 };
 
 void runCompare(CompareCommandArguments& a) {
-  a.compare.check();
+  CompareOptions options = a.compare.resolve();
   if (a.verdict.exitFrom()) throw UsageError("--fail-on: compare takes RULE=VALUE, not warn or fail");
-  a.compare.thresholds = a.verdict.thresholds();
+  options.thresholds = a.verdict.thresholds();
   StageClock clock("uvtk compare");
   clock.start("reading", a.input);
   const io::ReadMeshResult input = io::readMesh(a.input);
   clock.stop();
-  const Comparison comparison = compareMappings(a.compare, input.mesh, inputJson(a.input, input));
+  const Comparison comparison = compareMappings(options, input.mesh, inputJson(a.input, input));
   std::fputs(comparison.table.c_str(), stdout);
   printInputWarnings(a.input, input.warnings);
-  std::fprintf(stderr, "uvtk compare: %zu mappings ranked, %zu skipped; best: %s\n",
+  if (!quiet())
+    std::fprintf(stderr, "uvtk compare: %zu mappings ranked, %zu skipped; best: %s\n",
                comparison.record["ranking"].size(), comparison.skipped, comparison.best.c_str());
 }
 

@@ -7,18 +7,21 @@
 #include <string>
 
 #include "commands.h"
+#include "core/progress.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
-#include "mapped_mesh.h"
+#include "inspect/mapped_mesh.h"
 #include "options/arithmetic_cli.h"
 #include "options/cli_values.h"
 #include "options/projector_cli.h"
 #include "options/texgen_cli.h"
-#include "render_cli.h"
-#include "run_report.h"
+#include "options/render_cli.h"
+#include "inspect/run_report.h"
 
 namespace uvtk::cli {
+
+using namespace uvtk::inspect;
 
 namespace {
 
@@ -73,8 +76,9 @@ void runRender(RenderArguments& a) {
   analysis::Judgement judgement;
   const auto measured = [&]() -> const analysis::Judgement& { return judgement = mapped.judge(); };
   io::OutputSet outputs;  // the picture, its AOVs and the record, published together
-  nlohmann::json j = drawFrame(outputs, a.frame, a.output, mapped,
-                               renderOptions(a.frame, a.texture, texture, camera, worldFromObject), measured);
+  const FrameOptions frame = a.frame.options();
+  nlohmann::json j = writeFrame(outputs, frame, a.output, a.frame.aovOutput, mapped,
+                                renderOptions(frame, a.texture.options(), texture, camera, worldFromObject), measured);
   clock.stop();
 
   if (!a.json.empty()) {
@@ -88,7 +92,7 @@ void runRender(RenderArguments& a) {
   }
   outputs.publish();
   printMappingNotes(a.input, input.warnings, mapped);
-  if (a.frame.view.empty())
+  if (a.frame.view.empty() && !quiet())
     std::fprintf(stderr,
                  "uvtk render: %dx%d, %zu faces drawn, %zu culled, %zu clipped, %zu pixels covered, raster %.1f ms, "
                  "shade %.1f ms\n",

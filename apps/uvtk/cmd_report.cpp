@@ -7,15 +7,19 @@
 
 #include "options/cli_values.h"
 #include "commands.h"
+#include "core/progress.h"
 #include "io/checksum.h"
 #include "io/mesh_reader.h"
-#include "mapped_mesh.h"
+#include "inspect/mapped_mesh.h"
 #include "options/projector_cli.h"
-#include "report_cli.h"
-#include "run_report.h"
-#include "verdict_cli.h"
+#include "options/report_cli.h"
+#include "inspect/run_report.h"
+#include "options/verdict_cli.h"
+#include "inspect/verdict.h"
 
 namespace uvtk::cli {
+
+using namespace uvtk::inspect;
 
 namespace {
 
@@ -50,12 +54,13 @@ void runReport(const ReportCommandArguments& a) {
   const double measureMs = clock.stop();
 
   clock.start("writing", a.report.html.empty() ? a.report.json : a.report.html);
-  writeReport(a.report, mapped, judgement, inputSummary,
+  writeReport(a.report.options(), mapped, judgement, inputSummary,
               {{"read", readMs}, {"texcoords", mapMs}, {"measure", measureMs}});
   clock.stop();
   printMappingNotes(a.input, input.warnings, mapped);
   const analysis::Summary& summary = judgement.summary;
-  std::fprintf(stderr,
+  if (!quiet())
+    std::fprintf(stderr,
                "uvtk report: %zu faces, L2 stretch %.6g, Linf stretch %.6g, %zu seam edges, overlap %.4g%%; %s\n",
                mapped.mesh.faceCount(), summary.l2Stretch, summary.linfStretch,
                summary.seams.wrapEdges + summary.seams.cutEdges, 100.0 * summary.overlap.fraction(),

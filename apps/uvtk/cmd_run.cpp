@@ -8,10 +8,12 @@
 #include "core/error.h"
 #include "core/progress.h"
 #include "io/atomic_file.h"
-#include "scene.h"
-#include "scene_run.h"
+#include "scene/scene.h"
+#include "scene/scene_run.h"
 
 namespace uvtk::cli {
+
+using namespace uvtk::scene;
 
 namespace {
 
@@ -23,7 +25,7 @@ struct RunArguments {
 
 // Fails with the worst failure's status once every mesh has had its turn.
 void runRun(const RunArguments& a) {
-  if (a.quiet) setProgressEnabled(false);
+  if (a.quiet) setProgressEnabled(false), setQuiet(true);
   const Scene scene = loadScene(a.scene, a.outputDir, a.allowOutside);
   const std::vector<Stage> plan = planScene(scene);
   if (a.plan) {

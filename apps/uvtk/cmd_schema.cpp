@@ -2,9 +2,11 @@
 #include <cstdio>
 
 #include "commands.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 namespace uvtk::cli {
+
+using namespace uvtk::scene;
 
 void addSchemaCommand(CLI::App& root) {
   CLI::App* cmd = root.add_subcommand("schema", "Print the JSON Schema of scene files (uvtk run)");

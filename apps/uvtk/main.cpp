@@ -2,18 +2,74 @@
 // 1 a check failed (uvtk check) or a bug, 2 usage, 3 bad input, 4 cannot write output.
 #include <sys/resource.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <exception>
 #include <string>
+#include <vector>
 
 #include "commands.h"
 #include "core/error.h"
 #include "core/progress.h"
+#include "help_examples.h"
 #include "io/temporary_file.h"
+#include "options/cli_values.h"
+
+namespace {
+
+// "; did you mean 'NAME'?" for the nearest of `names` to `typed`, or "".
+std::string didYouMean(const std::string& typed, const std::vector<std::string>& names) {
+  const std::string nearest = uvtk::cli::nearestName(typed, names);
+  return nearest.empty() ? "" : "; did you mean '" + nearest + "'?";
+}
+
+bool looksLikeOption(const std::string& argument) {
+  // "-3" and "-.5" are negative numbers; "--" ends the options.
+  return argument.size() >= 2 && argument[0] == '-' && argument != "--" &&
+         !(std::isdigit(static_cast<unsigned char>(argument[1])) || argument[1] == '.');
+}
+
+// The message for the first argument that `app`, or a subcommand it ran, could not place: an
+// option it does not have, or at the top a command that does not exist; "" when there is none.
+// CLI11 reports a missing required option before such an argument, the less useful of the two.
+std::string unplacedArgument(const CLI::App& app) {
+  for (const std::string& argument : app.remaining(false)) {
+    if (!looksLikeOption(argument)) continue;
+    const std::string typed = argument.substr(0, argument.find('='));
+    std::vector<std::string> names;
+    for (const CLI::Option* option : app.get_options()) {
+      for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+      for (const std::string& name : option->get_snames()) names.push_back("-" + name);
+    }
+    // Compared without their dashes: "-quiet" finds "--quiet".
+    const auto bare = [](const std::string& name) { return name.substr(std::min(name.find_first_not_of('-'), name.size())); };
+    std::vector<std::string> bareNames;
+    for (const std::string& name : names) bareNames.push_back(bare(name));
+    const std::string nearest = uvtk::cli::nearestName(bare(typed), bareNames);
+    std::string hint;
+    for (std::size_t i = 0; i < names.size() && !nearest.empty() && hint.empty(); ++i)
+      if (bareNames[i] == nearest) hint = "; did you mean '" + names[i] + "'?";
+    return "unknown option '" + typed + "'" + hint;
+  }
+  const std::vector<CLI::App*> ran = app.get_subcommands();
+  if (app.get_parent() == nullptr && ran.empty() && !app.remaining(false).empty()) {
+    const std::string typed = app.remaining(false).front();
+    std::vector<std::string> commands;
+    for (const CLI::App* command : app.get_subcommands({})) commands.push_back(command->get_name());
+    return "unknown command '" + typed + "'" + didYouMean(typed, commands);
+  }
+  for (const CLI::App* command : ran)
+    if (std::string message = unplacedArgument(*command); !message.empty()) return message;
+  return "";
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"uvtk: texture coordinates for triangle meshes, and proof that they are right"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", "uvtk " UVTK_VERSION, "Print the version and exit");
   uvtk::cli::addMapCommand(app);
   uvtk::cli::addTexgenCommand(app);
   uvtk::cli::addRenderCommand(app);
@@ -25,6 +81,17 @@ int main(int argc, char** argv) {
   uvtk::cli::addMergeReportsCommand(app);
   uvtk::cli::addEvalCommand(app);
   uvtk::cli::addCheckCommand(app);
+  // -q everywhere, for the commands that do not bring their own.
+  for (CLI::App* command : app.get_subcommands({}))
+    if (!command->get_option_no_throw("-q") && !command->get_option_no_throw("--quiet"))
+      command->add_flag_callback(
+          "-q,--quiet",
+          [] {
+            uvtk::setQuiet(true);
+            uvtk::setProgressEnabled(false);
+          },
+          "No progress and no summary lines; errors are still printed");
+  uvtk::cli::addHelpExamples(app);
   uvtk::setProgressEnabled(true);  // a command with --quiet turns it off
   uvtk::io::installInterruptHandlers();
   uvtk::io::divertStdoutForOutputs();  // `-o -`: stdout carries the output, summaries go to stderr
@@ -38,8 +105,12 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int status = app.exit(e);
-    return status == 0 ? 0 : 2;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    // One line, as every refusal (docs/robustness.md).
+    std::string message = unplacedArgument(app);
+    if (message.empty()) message = e.what();
+    std::fprintf(stderr, "uvtk: error: %s\n", message.c_str());
+    return 2;
   } catch (const uvtk::CheckFailure&) {
     return 1;  // the command printed its verdict
   } catch (const std::exception& e) {

@@ -9,7 +9,7 @@
 
 #include "apps/cli_test.h"
 #include "core/error.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 namespace uvtk {
 namespace {
@@ -150,15 +150,19 @@ TEST_F(ScenePaths, InputsMayBeAnywhereButHoldNoNul) {
 
 // The check itself, as the fuzz target calls it.
 TEST(CheckOutputPath, ResolvesInsideAndRefusesTheRest) {
-  EXPECT_EQ(cli::checkOutputPath("a/./b/../c.obj", "/o", false), "/o/a/c.obj");
-  EXPECT_EQ(cli::checkOutputPath("c.obj", "", false), "c.obj");
-  EXPECT_EQ(cli::checkOutputPath("../c.obj", "/o/p", true), "/o/c.obj");
-  EXPECT_EQ(cli::checkOutputPath("/x/c.obj", "/o", true), "/x/c.obj");
-  EXPECT_EQ(cli::checkOutputPath(std::string(255, 'n'), "/o", false), "/o/" + std::string(255, 'n'));
+  EXPECT_EQ(scene::checkOutputPath("a/./b/../c.obj", "/o", false), "/o/a/c.obj");
+  EXPECT_EQ(scene::checkOutputPath("c.obj", "", false), "c.obj");
+  EXPECT_EQ(scene::checkOutputPath("../c.obj", "/o/p", true), "/o/c.obj");
+  EXPECT_EQ(scene::checkOutputPath("/x/c.obj", "/o", true), "/x/c.obj");
+  EXPECT_EQ(scene::checkOutputPath(std::string(255, 'n'), "/o", false), "/o/" + std::string(255, 'n'));
+  // A relative output folder that does not exist yet (`uvtk run -o demo`) holds its outputs.
+  EXPECT_EQ(scene::checkOutputPath("obj/c.obj", "uvtk-no-such-folder/demo", false), "uvtk-no-such-folder/demo/obj/c.obj");
+  EXPECT_EQ(scene::checkOutputPath("c.obj", "uvtk-no-such-folder", false), "uvtk-no-such-folder/c.obj");
+  EXPECT_THROW(scene::checkOutputPath("../../c.obj", "uvtk-no-such-folder/demo", false), InputError);
   const std::vector<std::string> bad = {"", "..", ".", "a/", "a/..", "../c", "a/../../c", "/c", std::string("\0", 1),
                                        std::string(256, 'n'), "a/" + std::string(256, 'n') + "/b"};
   for (const std::string& path : bad)
-    EXPECT_THROW(cli::checkOutputPath(path, "/o", false), InputError) << quotedName(path);
+    EXPECT_THROW(scene::checkOutputPath(path, "/o", false), InputError) << quotedName(path);
 }
 
 }  // namespace

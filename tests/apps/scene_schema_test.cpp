@@ -8,17 +8,18 @@
 #include <sstream>
 
 #include "options/arithmetic_cli.h"
-#include "compare_cli.h"
+#include "options/compare_cli.h"
 #include "options/projector_cli.h"
-#include "render_cli.h"
-#include "report_cli.h"
-#include "scene.h"
+#include "options/render_cli.h"
+#include "options/report_cli.h"
+#include "scene/scene.h"
 #include "options/texgen_cli.h"
 
 namespace uvtk::cli {
 namespace {
 
 using nlohmann::json;
+using scene::sceneSchemaText;
 
 const json& schema() {
   static const json parsed = json::parse(sceneSchemaText());

@@ -271,5 +271,35 @@ TEST_F(ImageIoTest, FailedWriteLeavesTheTargetAlone) {
   EXPECT_EQ(listing(), std::set<std::string>{"keep.png"});
 }
 
+// The data URI is "data:image/png;base64," and encodePng's bytes in base64 (RFC 4648, padded),
+// whose PNG reads back as the image. Sizes 1, 2 and 3 mod 3 of the last group all occur.
+TEST_F(ImageIoTest, PngDataUriIsTheEncodedPngInBase64) {
+  const std::string kDigits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  const std::string prefix = "data:image/png;base64,";
+  std::set<std::size_t> tails;
+  for (int width = 1; width <= 9 && tails.size() < 3; ++width) {
+    const Image image = gradient(width, 2, 3);
+    const std::string uri = pngDataUri(image), png = encodePng(image);
+    ASSERT_EQ(uri.rfind(prefix, 0), 0u);
+    const std::string digits = uri.substr(prefix.size());
+    ASSERT_EQ(digits.size(), (png.size() + 2) / 3 * 4);
+    std::string decoded;
+    std::uint32_t bits = 0;
+    int count = 0;
+    for (char c : digits) {
+      if (c == '=') break;
+      const std::size_t value = kDigits.find(c);
+      ASSERT_NE(value, std::string::npos) << c;
+      bits = bits << 6 | std::uint32_t(value);
+      if ((count += 6) >= 8) decoded += char(bits >> (count -= 8) & 255);
+    }
+    EXPECT_EQ(decoded, png);
+    tails.insert(png.size() % 3);
+    writeText("uri.png", decoded);
+    EXPECT_EQ(readImage(path("uri.png")).image.pixels, image.pixels);
+  }
+  EXPECT_EQ(tails.size(), 3u);
+}
+
 }  // namespace
 }  // namespace uvtk::io

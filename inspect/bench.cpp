@@ -1,0 +1,387 @@
+#include "inspect/bench.h"
+
+#include "core/progress.h"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+#include "io/atomic_file.h"
+#include "io/image_io.h"
+#include "io/mesh_reader.h"
+#include "meshes/generators.h"
+#include "options/cli_values.h"
+#include "options/option_names.h"
+#include "options/render_cli.h"
+#include "param/batch_atan2.h"
+#include "param/reference.h"
+#include "peers/assimp_peer.h"
+#include "views/pareto.h"
+
+namespace uvtk::inspect {
+
+namespace {
+
+// Collects Google Benchmark's runs: seconds of wall time per iteration, by benchmark name.
+class CollectingReporter : public benchmark::BenchmarkReporter {
+ public:
+  bool ReportContext(const Context&) override { return true; }
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const Run& run : runs)
+      if (!run.error_occurred && run.iterations > 0)
+        seconds_.emplace_back(run.benchmark_name(), run.real_accumulated_time / double(run.iterations));
+  }
+  // Google Benchmark appends the run's settings to the name ("map/3/min_time:0.300/real_time").
+  double secondsOf(const std::string& name) const {
+    for (const auto& [n, s] : seconds_)
+      if (n == name || n.rfind(name + "/", 0) == 0) return s;
+    throw std::logic_error("benchmark " + name + " did not run");
+  }
+
+ private:
+  std::vector<std::pair<std::string, double>> seconds_;
+};
+
+// Runs the registered benchmarks (each for at least `minTime` seconds of wall time) and clears them.
+CollectingReporter runBenchmarks() {
+  CollectingReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::ClearRegisteredBenchmarks();
+  return reporter;
+}
+
+// ---- Mapping ----
+
+struct MappingCase {
+  param::ProjectorOptions options;
+  int threads = 1;
+  std::string name;
+  param::MappingError error;
+};
+
+std::vector<nlohmann::json> benchMapping(const BenchOptions& a, const Mesh& mesh) {
+  const std::vector<Precision>& precisions = a.precisions;
+  const std::vector<MathMode>& maths = a.maths;
+  const std::vector<int>& threadCounts = a.threads;
+  std::vector<MappingCase> cases;
+  // One output buffer for every configuration (they run one after another), paged in before timing.
+  std::vector<param::VertexUv> buffer(mesh.vertexCount());
+  // Normals once, for the O-mappings that read them (one O-mapping for every projector).
+  const bool readsNormals = std::any_of(a.projectors.begin(), a.projectors.end(), [](const BenchProjector& p) {
+    return p.options.ray == param::RayKind::ObjectNormal || p.options.ray == param::RayKind::Reflection;
+  });
+  const std::vector<Vec3> normals = readsNormals ? areaWeightedVertexNormals(mesh) : std::vector<Vec3>();
+  for (const auto& [projector, base] : a.projectors) {
+    UVTK_CHECK(base.surface != param::SurfaceKind::Cube);  // it chooses its face per triangle
+    const Affine3 frame = param::fitPlacement(mesh.positions, base.surface, base.placement);
+    if (!quiet()) std::fprintf(stderr, "uvtk bench: %s: the long-double reference ...\n", projector.c_str());
+    std::vector<param::ReferenceUv> reference;
+    param::mapVerticesReference(base, frame, mesh.positions, normals, reference);
+    const bool wraps = base.surface == param::SurfaceKind::Cylinder || base.surface == param::SurfaceKind::Sphere;
+    for (Precision precision : precisions)
+      for (MathMode math : maths) {
+        if (!wraps && math != maths.front()) continue;  // no arctangent: the math mode changes nothing
+        param::ProjectorOptions options = base;
+        options.arithmetic = {precision, wraps ? math : MathMode::Exact};
+        std::vector<param::VertexUv> out;
+        param::mapVertices(options, frame, mesh.positions, normals, out);
+        const param::MappingError error = param::mappingError(out, reference, precision, wraps);
+        for (int threads : threadCounts) {
+          MappingCase c{options, threads, "map/" + std::to_string(cases.size()), error};
+          cases.push_back(c);
+          benchmark::RegisterBenchmark(c.name.c_str(),
+                                       [&mesh, &buffer, &normals, options, frame, threads](benchmark::State& state) {
+                                         for (auto _ : state) {
+                                           param::mapVertices(options, frame, mesh.positions, normals, buffer, threads);
+                                           benchmark::DoNotOptimize(buffer.data());
+                                         }
+                                       })
+              ->MinTime(a.minTime)
+              ->UseRealTime();
+        }
+      }
+  }
+  if (!quiet()) std::fprintf(stderr, "uvtk bench: timing %zu mapping configurations ...\n", cases.size());
+  const CollectingReporter timings = runBenchmarks();
+
+  std::vector<nlohmann::json> records;
+  const double vertices = double(mesh.vertexCount());
+  for (const MappingCase& c : cases) {
+    const param::ProjectorOptions& o = c.options;
+    records.push_back({{"section", "mapping"},
+                       {"projector", cli::projectorOptionsJson(o)["projector"]},
+                       {"omap", a.omap},
+                       {"precision", cli::precisionName(o.arithmetic.precision)},
+                       {"math", cli::mathName(o.arithmetic.math)},
+                       {"threads", c.threads},
+                       {"vertices", mesh.vertexCount()},
+                       {"ns_per_vertex", timings.secondsOf(c.name) * 1e9 / vertices},
+                       {"max_err_ulp", c.error.maxUlp},
+                       {"p99_err_ulp", c.error.p99Ulp},
+                       {"max_err_texels", c.error.maxUv * a.textureWidth},
+                       {"p99_err_texels", c.error.p99Uv * a.textureWidth},
+                       {"mean_err_texels", c.error.meanUv * a.textureWidth},
+                       {"state_mismatches", c.error.stateMismatches}});
+  }
+  return records;
+}
+
+// ---- The peer ----
+
+std::vector<nlohmann::json> benchPeers(const BenchOptions& a, const Mesh& mesh) {
+  std::vector<nlohmann::json> records;
+  if (!a.peers || !peers::assimpAvailable()) return records;
+  const std::pair<const char*, peers::AssimpMapping> mappings[] = {{"plane", peers::AssimpMapping::Plane},
+                                                                   {"cylinder", peers::AssimpMapping::Cylinder},
+                                                                   {"sphere", peers::AssimpMapping::Sphere}};
+  for (const auto& [name, mapping] : mappings) {
+    if (!quiet()) std::fprintf(stderr, "uvtk bench: assimp %s ...\n", name);
+    const std::optional<peers::PeerTiming> t = peers::measureAssimpGenUvCoords(mesh, mapping, 5);
+    if (!t) continue;
+    records.push_back({{"section", "peer"},
+                       {"projector", std::string("assimp-") + name},
+                       {"omap", "isn"},
+                       {"precision", "float"},
+                       {"math", "libm"},
+                       {"threads", 1},
+                       {"vertices", mesh.vertexCount()},
+                       {"ns_per_vertex", t->nsPerMeshVertex},
+                       {"ns_per_corner", t->nsPerVertex},
+                       {"max_err_ulp", nullptr},
+                       {"max_err_texels", nullptr},
+                       {"note",
+                        "aiProcess_GenUVCoords on one vertex per corner (assimp's layout); per vertex of "
+                        "the mesh for comparison; its own conventions, so no error is measured"}});
+  }
+  return records;
+}
+
+// ---- Rendering ----
+
+std::vector<nlohmann::json> benchRendering(const BenchOptions& a, const Mesh& mesh) {
+  const int width = a.width, height = a.height;
+  const std::vector<int>& threadCounts = a.threads;
+  const std::vector<int>& sampleCounts = a.samples;
+  const std::vector<render::Filter>& filters = a.filters;
+  render::Texture texture = *a.texture;
+  texture.buildMipmaps();
+
+  const MappedMesh mapped = mapByProjector(mesh, a.renderProjector.options, false);
+  const render::TexcoordSource perVertex = mapped.texcoordSource(false), perPixel = mapped.texcoordSource(true);
+  render::RenderOptions base;
+  base.camera = a.camera.frame(mapped.mesh, width, height);
+  base.texture = &texture;
+
+  struct RenderCase {
+    std::string name, uv;
+    render::Filter filter;
+    int spp, threads;
+    double rmse = 0, maxError = 0;
+  };
+  std::vector<RenderCase> cases;
+  std::vector<std::unique_ptr<render::RenderOptions>> optionStore;
+  auto add = [&](const std::string& uv, render::Filter filter, int spp, int threads) {
+    auto options = std::make_unique<render::RenderOptions>(base);
+    options->sampler = render::samplerFor(filter, render::Wrap::Repeat);
+    options->samplesPerPixel = spp;
+    options->raster.threads = threads;
+    cases.push_back({"render/" + std::to_string(cases.size()), uv, filter, spp, threads});
+    const render::TexcoordSource* source = uv == "per-pixel" ? &perPixel : &perVertex;
+    const render::RenderOptions* o = options.get();
+    optionStore.push_back(std::move(options));
+    benchmark::RegisterBenchmark(cases.back().name.c_str(),
+                                 [&mapped, source, o](benchmark::State& state) {
+                                   for (auto _ : state)
+                                     benchmark::DoNotOptimize(render::render(mapped.mesh, *source, *o));
+                                 })
+        ->MinTime(a.minTime)
+        ->UseRealTime()
+        ->Unit(benchmark::kMillisecond);
+  };
+  for (int threads : threadCounts) {
+    for (const char* uv : {"per-vertex", "per-pixel"}) add(uv, render::Filter::LinearMipmapLinear, 1, threads);
+    for (render::Filter filter : filters)
+      if (filter != render::Filter::LinearMipmapLinear) add("per-vertex", filter, 1, threads);  // the row above
+    for (int spp : sampleCounts)
+      if (spp > 1) add("per-vertex", render::Filter::LinearMipmapLinear, spp, threads);
+  }
+  if (!quiet()) std::fprintf(stderr, "uvtk bench: the 64-sample reference frame ...\n");
+  render::RenderOptions referenceOptions = base;
+  referenceOptions.sampler = render::samplerFor(render::Filter::LinearMipmapLinear, render::Wrap::Repeat);
+  referenceOptions.samplesPerPixel = 64;
+  const Image reference = render::render(mapped.mesh, perPixel, referenceOptions).colour;
+  for (RenderCase& c : cases) {
+    const Image image = render::render(mapped.mesh, c.uv == "per-pixel" ? perPixel : perVertex,
+                                       *optionStore[std::size_t(&c - cases.data())])
+                            .colour;
+    double sum = 0;
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+      const double d = double(image.pixels[i]) - double(reference.pixels[i]);
+      sum += d * d;
+      c.maxError = std::max(c.maxError, std::fabs(d));
+    }
+    c.rmse = std::sqrt(sum / double(image.pixels.size()));
+  }
+
+  // The UV error of interpolation, once: it depends on neither filter nor threads.
+  views::ViewOptions viewOptions;
+  viewOptions.render = base;
+  const views::UvErrorMap uvError = views::uvErrorMap(mapped.viewInput(nullptr), viewOptions);
+
+  if (!quiet()) std::fprintf(stderr, "uvtk bench: timing %zu rendering configurations ...\n", cases.size());
+  const CollectingReporter timings = runBenchmarks();
+  std::vector<nlohmann::json> records;
+  for (const RenderCase& c : cases) {
+    const bool perPixelUv = c.uv == "per-pixel";
+    records.push_back({{"section", "rendering"},
+                       {"projector", a.renderProjector.name},
+                       {"triangles", mapped.mesh.faceCount()},
+                       {"width", width},
+                       {"height", height},
+                       {"filter", cli::nameOf(cli::kFilterNames, c.filter)},
+                       {"uv", c.uv},
+                       {"spp", c.spp},
+                       {"threads", c.threads},
+                       {"ms_per_frame", timings.secondsOf(c.name) * 1e3},
+                       {"rmse", c.rmse},
+                       {"max_err", c.maxError},
+                       {"uv_err_max_texels", perPixelUv ? 0.0 : uvError.max},
+                       {"uv_err_mean_texels", perPixelUv ? 0.0 : uvError.mean}});
+  }
+  return records;
+}
+
+// ---- Output ----
+
+std::string formatNumber(const nlohmann::json& value, const char* format) {
+  if (value.is_null()) return "-";
+  char text[64];
+  std::snprintf(text, sizeof text, format, value.get<double>());
+  return text;
+}
+
+std::string markdownTables(const std::vector<nlohmann::json>& records, int textureWidth) {
+  std::string md;
+  bool mappingHeader = false, renderHeader = false;
+  for (const nlohmann::json& r : records) {
+    if (r["section"] != "rendering") {
+      if (!mappingHeader)
+        md +=
+            "| projector | omap | precision | math | threads | ns/vertex | max err (ulp) | p99 err (ulp) | max err "
+            "(texels @" +
+            std::to_string(textureWidth) + ") | p99 err (texels) |\n|---|---|---|---|---|---|---|---|---|---|\n",
+            mappingHeader = true;
+      md += "| " + r["projector"].get<std::string>() + " | " + r["omap"].get<std::string>() + " | " +
+            r["precision"].get<std::string>() + " | " + r["math"].get<std::string>() + " | " +
+            std::to_string(r["threads"].get<int>()) + " | " + formatNumber(r["ns_per_vertex"], "%.2f") + " | " +
+            formatNumber(r["max_err_ulp"], "%.3g") + " | " +
+            formatNumber(r.value("p99_err_ulp", nlohmann::json()), "%.3g") + " | " +
+            formatNumber(r["max_err_texels"], "%.3g") + " | " +
+            formatNumber(r.value("p99_err_texels", nlohmann::json()), "%.3g") + " |\n";
+    } else {
+      if (!renderHeader)
+        md +=
+            "\n| triangles | size | uv | filter | spp | threads | ms/frame | RMSE vs 64 spp | max err | UV err max "
+            "(texels) | UV err mean (texels) |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
+            renderHeader = true;
+      md += "| " + std::to_string(r["triangles"].get<std::size_t>()) + " | " + std::to_string(r["width"].get<int>()) +
+            "x" + std::to_string(r["height"].get<int>()) + " | " + r["uv"].get<std::string>() + " | " +
+            r["filter"].get<std::string>() + " | " + std::to_string(r["spp"].get<int>()) + " | " +
+            std::to_string(r["threads"].get<int>()) + " | " + formatNumber(r["ms_per_frame"], "%.1f") + " | " +
+            formatNumber(r["rmse"], "%.4f") + " | " + formatNumber(r["max_err"], "%.3f") + " | " +
+            formatNumber(r["uv_err_max_texels"], "%.3g") + " | " + formatNumber(r["uv_err_mean_texels"], "%.3g") +
+            " |\n";
+    }
+  }
+  return md;
+}
+
+// Speed against accuracy, one point per configuration of `section`, grouped by projector.
+Image chartOf(const std::vector<nlohmann::json>& records, bool rendering, int textureWidth) {
+  std::vector<views::ChartPoint> points;
+  views::ParetoChartOptions options;
+  for (const nlohmann::json& r : records) {
+    if ((r["section"] == "rendering") != rendering || r["section"] == "peer") continue;
+    const std::string group = rendering ? r["uv"].get<std::string>() : r["projector"].get<std::string>();
+    auto found = std::find(options.groupNames.begin(), options.groupNames.end(), group);
+    if (found == options.groupNames.end()) found = options.groupNames.insert(found, group);
+    views::ChartPoint p;
+    p.group = int(found - options.groupNames.begin());
+    if (rendering) {
+      p.label = r["filter"].get<std::string>() + " " + std::to_string(r["spp"].get<int>()) + "SPP T" +
+                std::to_string(r["threads"].get<int>());
+      p.x = r["ms_per_frame"].get<double>();
+      p.y = r["rmse"].get<double>();
+    } else {
+      p.label = r["projector"].get<std::string>() + " " + r["precision"].get<std::string>() + " " +
+                r["math"].get<std::string>() + " T" + std::to_string(r["threads"].get<int>());
+      p.x = r["ns_per_vertex"].get<double>();
+      p.y = r["max_err_texels"].get<double>();
+    }
+    points.push_back(p);
+  }
+  options.title = rendering ? "RENDERING: TIME PER FRAME AGAINST RMSE TO A 64-SAMPLE REFERENCE"
+                            : "MAPPING: TIME PER VERTEX AGAINST MAX ERROR";
+  options.xLabel = rendering ? "MS PER FRAME" : "NS PER VERTEX";
+  options.yLabel = rendering ? "RMSE" : "MAX ERROR, TEXELS AT " + std::to_string(textureWidth);
+  return views::paretoChart(points, options);
+}
+
+// `path` with `suffix` before its extension.
+std::string withSuffix(const std::string& path, const std::string& suffix) {
+  const std::size_t dot = path.find_last_of('.');
+  return dot == std::string::npos ? path + suffix : path.substr(0, dot) + suffix + path.substr(dot);
+}
+
+}  // namespace
+
+std::string bench(const BenchOptions& a) {
+  Mesh mesh;
+  std::string meshName;
+  if (a.mesh.empty()) {
+    if (!quiet()) std::fprintf(stderr, "uvtk bench: building the 2048 x 1024 lat-long sphere ...\n");
+    mesh = meshes::latLongSphere(2048, 1024);
+    meshName = "built-in lat-long sphere 2048 x 1024";
+  } else {
+    mesh = io::readMesh(a.mesh).mesh;
+    meshName = a.mesh;
+  }
+  char* argv0 = const_cast<char*>("uvtk bench");
+  int argc = 1;
+  benchmark::Initialize(&argc, &argv0);
+
+  std::vector<nlohmann::json> records = benchMapping(a, mesh);
+  for (nlohmann::json& r : benchPeers(a, mesh)) records.push_back(std::move(r));
+  if (a.rendering) {
+    const Mesh renderMesh = a.mesh.empty() ? meshes::latLongSphere(64, 32) : mesh;
+    for (nlohmann::json& r : benchRendering(a, renderMesh)) records.push_back(std::move(r));
+  }
+
+  const std::string md = "Mesh: " + meshName + " (" + std::to_string(mesh.vertexCount()) +
+                         " vertices). atan2: " + param::fastMathInstructionSet() + " for fast modes.\n\n" +
+                         markdownTables(records, a.textureWidth);
+  io::OutputSet outputs;  // every file, published together (stdout gets the table once they are in place)
+  if (!a.markdown.empty()) outputs.writeText(a.markdown, md);
+  if (!a.json.empty()) {
+    const nlohmann::json j = {{"mesh", meshName},
+                              {"texture_width", a.textureWidth},
+                              {"fast_math_isa", param::fastMathInstructionSet()},
+                              {"records", records}};
+    outputs.writeText(a.json, j.dump(2) + "\n");
+  }
+  if (!a.plot.empty()) {
+    io::writeImage(outputs, a.plot, chartOf(records, false, a.textureWidth), io::PixelType::UInt8);
+    if (a.rendering)
+      io::writeImage(outputs, withSuffix(a.plot, "-render"), chartOf(records, true, a.textureWidth),
+                     io::PixelType::UInt8);
+  }
+  outputs.publish();
+  return md;
+}
+
+}  // namespace uvtk::inspect

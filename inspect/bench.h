@@ -1,0 +1,56 @@
+// The speed-accuracy trade measured in one run on the same data, as `uvtk bench` runs it. Mapping:
+// every projector x precision x math mode x thread count, nanoseconds per vertex (Google
+// Benchmark) and the error against the long-double reference. Rendering: per-vertex against
+// per-pixel UVs, and each filter and sample count against a 64-sample supersampled reference. The
+// peer, assimp's aiProcess_GenUVCoords, in the same run when it was built in. A Markdown table,
+// JSON records and Pareto charts (docs/precision.md). Its own target, uvtk_timing: only the
+// program links Google Benchmark.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/arithmetic.h"
+#include "inspect/mapped_mesh.h"
+#include "param/projector.h"
+#include "render/texture.h"
+
+namespace uvtk::inspect {
+
+// A projector as named on the command line (the progress lines and records use the name) and its
+// default options.
+struct BenchProjector {
+  std::string name;
+  param::ProjectorOptions options;
+};
+
+struct BenchOptions {
+  std::string mesh;  // empty: the built-in 2048 x 1024 lat-long sphere (64 x 32 for rendering)
+  // Mapping: per-vertex projectors (not the cube), all with the O-mapping named `omap`.
+  std::vector<BenchProjector> projectors;
+  std::string omap = "isn";
+  std::vector<Precision> precisions;
+  std::vector<MathMode> maths;  // the first only for surfaces without an arctangent
+  std::vector<int> threads;
+  int textureWidth = 4096;  // texels across the texture errors are measured in
+  double minTime = 0.3;     // seconds each configuration runs at least
+  bool peers = true;
+  // Rendering, when `rendering`.
+  bool rendering = false;
+  BenchProjector renderProjector;
+  int width = 512, height = 512;
+  std::optional<render::Texture> texture;  // set; its mipmaps are built here
+  std::vector<render::Filter> filters;
+  std::vector<int> samples;  // per pixel
+  ViewCamera camera;
+  // Outputs, none when empty; published together.
+  std::string json, markdown, plot;  // plot: the mapping's Pareto chart, and FILE-render.png with `rendering`
+};
+
+// Measures, writes the outputs, and returns the Markdown tables (after a line naming the mesh).
+// Progress goes to stderr.
+std::string bench(const BenchOptions& options);
+
+}  // namespace uvtk::inspect

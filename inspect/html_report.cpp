@@ -1,0 +1,262 @@
+#include "inspect/html_report.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <sstream>
+
+#include "core/error.h"
+#include "io/image_io.h"
+
+namespace uvtk::inspect {
+
+namespace {
+
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+// A JSON leaf as table text.
+std::string cell(const nlohmann::json& value) {
+  if (value.is_number_float()) return number(value.get<double>());
+  if (value.is_string()) return escaped(value.get<std::string>());
+  if (value.is_array() && value.size() > 8) return std::to_string(value.size()) + " entries (see the JSON report)";
+  return escaped(value.dump());
+}
+
+// A bar chart of a histogram record of statisticsJson: bar heights are the weight fractions.
+std::string histogramSvg(const std::string& title, const nlohmann::json& statistics) {
+  const nlohmann::json& h = statistics.at("histogram");
+  const std::vector<double> fractions = h.at("weight_fraction").get<std::vector<double>>();
+  const std::vector<double> edges = h.at("edges").get<std::vector<double>>();
+  const int width = 320, height = 120, bars = int(fractions.size());
+  double highest = 0.0;
+  for (double f : fractions) highest = std::max(highest, f);
+  std::ostringstream svg;
+  svg << "<figure><svg width=\"" << width << "\" height=\"" << height + 20 << "\" role=\"img\" aria-label=\""
+      << escaped(title) << "\">";
+  for (int i = 0; i < bars && highest > 0.0; ++i) {
+    const double barHeight = height * fractions[std::size_t(i)] / highest;
+    svg << "<rect x=\"" << number(double(width) * i / bars) << "\" y=\"" << number(height - barHeight) << "\" width=\""
+        << number(double(width) / bars - 1.0) << "\" height=\"" << number(barHeight) << "\" fill=\"#4a7ab8\"><title>["
+        << number(edges[std::size_t(i)]) << ", " << number(edges[std::size_t(i) + 1])
+        << "): " << number(100.0 * fractions[std::size_t(i)]) << "% of the area</title></rect>";
+  }
+  svg << "<text x=\"0\" y=\"" << height + 15 << "\" font-size=\"11\">" << number(edges.front()) << "</text>"
+      << "<text x=\"" << width << "\" y=\"" << height + 15 << "\" font-size=\"11\" text-anchor=\"end\">"
+      << number(edges.back()) << "</text></svg><figcaption>" << escaped(title) << " ("
+      << h.at("spacing").get<std::string>() << " bins, bar height: fraction of the surface area)</figcaption></figure>";
+  return svg.str();
+}
+
+// Rows "key | value" for every leaf of `object`, nested keys joined with '.'.
+void tableRows(std::ostringstream& html, const nlohmann::json& object, const std::string& prefix) {
+  for (const auto& [key, value] : object.items()) {
+    if (key == "histogram") continue;
+    if (value.is_object()) {
+      tableRows(html, value, prefix + key + ".");
+    } else {
+      html << "<tr><th>" << escaped(prefix + key) << "</th><td>" << cell(value) << "</td></tr>\n";
+    }
+  }
+}
+
+}  // namespace
+
+namespace {
+
+constexpr const char* kStyle =
+    "<style>body{font-family:sans-serif;margin:2em;max-width:80em}table{border-collapse:collapse}"
+    "th,td{border:1px solid #ccc;padding:2px 8px;text-align:left}td{font-family:monospace}"
+    "figure{display:inline-block;margin:0 1em 1em 0;vertical-align:top}img{max-width:36em}"
+    ".failed{color:#b00}.verdict{display:inline-block;padding:2px 10px;border-radius:4px;color:#fff;"
+    "font-weight:bold;text-transform:uppercase}.verdict.pass{background:#2a7d2a}.verdict.warn{background:#b07800}"
+    ".verdict.fail{background:#b00}</style>";
+
+std::string pageStart(const std::string& title) {
+  return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + escaped(title) + "</title>\n" +
+         kStyle + "</head><body>\n<h1>" + escaped(title) + "</h1>\n";
+}
+
+// The files of the gallery's page: their links relative to the page, and only those that exist.
+class PageFiles {
+ public:
+  explicit PageFiles(const std::string& pagePath) {
+    std::error_code error;
+    folder_ = std::filesystem::weakly_canonical(std::filesystem::absolute(pagePath, error), error).parent_path();
+    if (error) throw OutputError(pagePath + ": error: cannot write: " + error.message());
+  }
+  std::optional<std::string> link(const std::string& file) const {
+    std::error_code error;
+    const std::filesystem::path target = std::filesystem::weakly_canonical(std::filesystem::absolute(file), error);
+    if (error || !std::filesystem::is_regular_file(target, error)) return std::nullopt;
+    return target.lexically_relative(folder_).generic_string();
+  }
+  // Links to those of `files` that exist.
+  std::string links(const nlohmann::json& files) const {
+    std::string html;
+    for (const nlohmann::json& file : files)
+      if (const std::optional<std::string> href = link(file.get<std::string>()))
+        html += "<a href=\"" + escaped(*href) + "\">" + escaped(*href) + "</a> ";
+    return html;
+  }
+
+ private:
+  std::filesystem::path folder_;
+};
+
+// A verdict badge ("pass", "warn", "fail"), coloured.
+std::string verdictBadge(const std::string& verdict) {
+  return "<span class=\"verdict " + escaped(verdict) + "\">" + escaped(verdict) + "</span>";
+}
+
+// The first screen of a report: the verdict and every reason, as a list.
+std::string verdictSection(const nlohmann::json& report) {
+  std::ostringstream html;
+  html << "<h2>Verdict " << verdictBadge(report.at("verdict").get<std::string>()) << "</h2>\n";
+  const nlohmann::json& reasons = report.at("reasons");
+  if (reasons.empty()) {
+    html << "<p>No rule triggered (docs/conventions.md section 11 lists the rules and thresholds).</p>\n";
+  } else {
+    html << "<ul class=\"reasons\">\n";
+    for (const nlohmann::json& r : reasons)
+      html << "<li>" << verdictBadge(r.at("severity").get<std::string>()) << " " << escaped(r.at("text").get<std::string>())
+           << "</li>\n";
+    html << "</ul>\n";
+  }
+  return html.str();
+}
+
+bool isPicture(const std::string& file) {
+  const std::string extension = std::filesystem::path(file).extension().string();
+  return extension == ".png" || extension == ".jpg" || extension == ".jpeg";
+}
+
+}  // namespace
+
+std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath) {
+  const PageFiles files(pagePath);
+  std::ostringstream html;
+  html << pageStart(run.at("title").get<std::string>());
+  html << "<p>Scene <code>" << escaped(run.at("scene").get<std::string>()) << "</code>, written by uvtk "
+       << UVTK_VERSION << " (<code>uvtk run</code>).</p>\n";
+  if (!run.at("failures").empty()) {
+    html << "<h2 class=\"failed\">Failures</h2>\n<ul>\n";
+    for (const nlohmann::json& failure : run.at("failures"))
+      html << "<li class=\"failed\">" << escaped(failure.at("message").get<std::string>()) << "</li>\n";
+    html << "</ul>\n";
+  }
+  const nlohmann::json& outputs = run.at("outputs");
+  const auto kind = [](const nlohmann::json& o) { return o.at("kind").get<std::string>(); };
+
+  html << "<h2>Pictures</h2>\n";
+  for (const nlohmann::json& o : outputs)
+    for (const nlohmann::json& file : o.at("files")) {
+      const std::optional<std::string> src = files.link(file.get<std::string>());
+      if (!src || !isPicture(*src)) continue;
+      std::string caption =
+          kind(o) == "compare" ? "ranking of " + o.value("mesh", std::string()) : o.value("mapping", std::string());
+      if (o.contains("views")) caption += ": " + o.at("views").dump();
+      std::string verdict;  // each mapping's picture says how its mapping was judged
+      if (o.contains("verdict"))
+        verdict = verdictBadge(o.at("verdict").get<std::string>()) + " " +
+                  escaped(o.value("first_reason", std::string())) + "<br>";
+      html << "<figure><a href=\"" << escaped(*src) << "\"><img alt=\"" << escaped(caption) << "\" src=\""
+           << escaped(*src) << "\"></a><figcaption>" << verdict << escaped(caption) << "<br><code>" << escaped(*src)
+           << "</code></figcaption></figure>\n";
+    }
+
+  html << "<h2>Measures</h2>\n<table>\n<tr><th>mesh</th><th>mapping</th><th>verdict</th><th>L2 stretch</th><th>Linf stretch</th>"
+          "<th>angle (mean)</th><th>seam length</th><th>overlap</th><th>files</th></tr>\n";
+  for (const nlohmann::json& o : outputs)
+    if (kind(o) == "report" && o.contains("stretch_l2"))
+      html << "<tr><td>" << cell(o.at("mesh")) << "</td><td>" << cell(o.at("mapping")) << "</td><td>"
+           << verdictBadge(o.at("verdict").get<std::string>()) << " " << cell(o.at("first_reason")) << "</td><td>"
+           << cell(o.at("stretch_l2")) << "</td><td>" << cell(o.at("stretch_linf")) << "</td><td>"
+           << cell(o.at("angle_mean")) << "</td><td>" << cell(o.at("seam_length")) << "</td><td>"
+           << cell(o.at("overlap_fraction")) << "</td><td>" << files.links(o.at("files")) << "</td></tr>\n";
+  html << "</table>\n";
+
+  html << "<h2>Rankings</h2>\n";
+  for (const nlohmann::json& o : outputs)
+    if (kind(o) == "compare" && o.contains("top")) {
+      html << "<h3>" << cell(o.at("mesh")) << "</h3>\n<p>" << files.links(o.at("files"))
+           << "</p>\n<table>\n<tr><th>rank</th><th>mapping</th><th>verdict</th><th>L2 stretch</th><th>why</th></tr>\n";
+      for (const nlohmann::json& r : o.at("top"))
+        html << "<tr><td>" << cell(r.at("rank")) << "</td><td>" << cell(r.at("name")) << "</td><td>"
+             << verdictBadge(r.at("verdict").get<std::string>()) << "</td><td>" << cell(r.at("stretch_l2"))
+             << "</td><td>" << cell(r.at("first_reason")) << "</td></tr>\n";
+      html << "</table>\n";
+    }
+
+  html << "<h2>Meshes with UVs</h2>\n<table>\n<tr><th>mapping</th><th>verdict</th><th>seam edges</th><th>pole faces</th>"
+          "<th>invalid vertices</th><th>files</th></tr>\n";
+  for (const nlohmann::json& o : outputs)
+    if (kind(o) == "obj" && o.contains("summary")) {
+      const nlohmann::json& summary = o.at("summary");
+      const nlohmann::json& seams = summary.at("judgement").at("seams");
+      html << "<tr><td>" << cell(o.value("mapping", nlohmann::json())) << "</td><td>"
+           << verdictBadge(o.at("verdict").get<std::string>()) << " " << cell(o.at("first_reason")) << "</td><td>"
+           << cell(seams.at("wrap_edges").get<std::size_t>() + seams.at("cut_edges").get<std::size_t>()) << "</td><td>"
+           << cell(summary.value("pole_faces", nlohmann::json())) << "</td><td>"
+           << cell(summary.value("invalid_vertices", nlohmann::json())) << "</td><td>" << files.links(o.at("files"))
+           << "</td></tr>\n";
+    }
+  html << "</table>\n";
+
+  html << "<h2>Stages</h2>\n<p>Only what the outputs need was computed.</p>\n<table>\n<tr><th>stage</th>"
+          "<th>subject</th><th>computes</th><th>ms</th><th>status</th></tr>\n";
+  for (const nlohmann::json& stage : run.at("stages"))
+    html << "<tr><td>" << cell(stage.at("stage")) << "</td><td>" << cell(stage.at("subject")) << "</td><td>"
+         << cell(stage.at("computes")) << "</td><td>" << cell(stage.value("milliseconds", nlohmann::json()))
+         << "</td><td>" << cell(stage.at("status")) << "</td></tr>\n";
+  html << "</table>\n</body></html>\n";
+  return html.str();
+}
+
+std::string htmlReport(const nlohmann::json& report, const std::vector<std::pair<std::string, Image>>& views) {
+  const std::string title = "uvtk report: " + report.at("input").at("path").get<std::string>();
+  std::ostringstream html;
+  html << pageStart(title);
+  html << verdictSection(report);
+  html << "<h2>Views</h2>\n";
+  for (const auto& [name, image] : views)
+    html << "<figure><img alt=\"" << escaped(name) << " view\" src=\"" << io::pngDataUri(image) << "\" width=\""
+         << image.width << "\" height=\"" << image.height << "\"><figcaption>" << escaped(name)
+         << "</figcaption></figure>\n";
+  html << "<h2>Histograms</h2>\n";
+  for (const char* key : {"stretch_l2_faces", "stretch_linf_faces", "angle", "area"})
+    html << histogramSvg(key, report.at(key)) << "\n";
+  html << "<h2>Measures</h2>\n<table>\n";
+  tableRows(html, report, "");
+  html << "</table>\n<p>Measures: docs/conventions.md section 8 (Sander et al. 2001 stretch; area-weighted "
+          "statistics over the faces of status ok).</p>\n</body></html>\n";
+  return html.str();
+}
+
+}  // namespace uvtk::inspect

@@ -1,0 +1,262 @@
+#include "inspect/map_job.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "core/error.h"
+#include "core/memory.h"
+#include "core/parallel.h"
+#include "core/progress.h"
+#include "core/stopwatch.h"
+#include "inspect/mapped_mesh.h"
+#include "inspect/run_report.h"
+#include "inspect/verdict.h"
+#include "io/atomic_file.h"
+#include "io/mesh_reader.h"
+#include "io/obj_writer.h"
+#include "options/option_names.h"
+
+namespace uvtk::inspect {
+
+namespace fs = std::filesystem;
+
+// The peak of a map, measured, is 2.8 bytes per byte of OBJ (3.12 GB for a 1.13 GB file of 20 M
+// triangles, docs/robustness.md).
+void checkMapMemory(const std::string& input) {
+  constexpr std::uint64_t kBytesPerFileByte = 3;
+  constexpr std::uint64_t kLargeMapBytes = std::uint64_t(1) << 30;
+  std::error_code error;
+  const std::uintmax_t fileBytes = std::filesystem::file_size(input, error);
+  if (error) return;  // the reader says what is wrong with the file
+  const std::uint64_t needed = kBytesPerFileByte * fileBytes;
+  const std::optional<std::uint64_t> available = availableMemory();
+  if (available && needed > *available)
+    throw InputError(input + ": error: mapping it needs about " + formatBytes(needed) + " of memory, more than the " +
+                     formatBytes(*available) + " available");
+  if (needed > kLargeMapBytes && progressEnabled())
+    printProgressMessage("uvtk map " + input + ": about " + formatBytes(needed) + " of memory" +
+                         (available ? " (" + formatBytes(*available) + " available)" : ""));
+}
+
+MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
+  StageClock clock("uvtk map", showStages);
+  checkMapMemory(paths.input);
+  clock.start("reading", paths.input);
+  io::ReadMeshResult input = io::readMesh(paths.input);
+  const double readMs = clock.stop();
+  const nlohmann::json inputSummary = inputJson(paths.input, input);
+
+  clock.start("mapping", std::to_string(input.mesh.faceCount()) + " faces");
+  const MappedMesh mapped = mapByProjector(std::move(input.mesh), job.projector, job.seamPlaceAuto);
+  const double mapMs = clock.stop();
+  const param::MappingSummary& s = mapped.projection->summary;
+
+  clock.start("judging", std::to_string(mapped.mesh.faceCount()) + " faces");
+  const analysis::Judgement judgement = mapped.judge(job.thresholds, job.overlapResolution);
+  const double judgeMs = clock.stop();
+
+  clock.start("writing", paths.output);
+  io::ObjWriteOptions write;
+  write.writeW = job.writeW;
+  write.floatPrecision = job.floatDigits;
+  write.header = "uvtk map " + paths.input;
+  io::OutputSet outputs;
+  io::writeObj(outputs, paths.output, mapped.mesh, &mapped.uv, write);
+  const double writeMs = clock.stop();
+
+  if (!paths.json.empty()) {
+    nlohmann::json j = mapSummaryJson(mapped, judgement, inputSummary, paths.output);
+    j["milliseconds"] = {{"read", readMs}, {"map", mapMs}, {"judge", judgeMs}, {"write", writeMs}};
+    outputs.writeText(paths.json, j.dump(2) + "\n");
+  }
+  outputs.publish();
+  printMappingNotes(paths.input, input.warnings, mapped);
+  const analysis::Summary& measured = judgement.summary;
+  char numbers[256];
+  std::snprintf(numbers, sizeof numbers,
+                "%zu vertices, %zu faces, %zu seam edges, %zu pole vertices, %zu pole faces, %zu invalid vertices, "
+                "%.1f ms; ",
+                s.vertices, s.faces, measured.seams.wrapEdges + measured.seams.cutEdges, measured.poleVertices.size(),
+                measured.poleFaces, s.invalidVertices, mapMs);
+  return {numbers + verdictLine(judgement), judgement.verdict};
+}
+
+namespace {
+
+std::string lowercaseExtension(const fs::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](char c) { return c >= 'A' && c <= 'Z' ? char(c - 'A' + 'a') : c; });
+  return extension;
+}
+
+}  // namespace
+
+std::vector<std::string> meshesInFolder(const std::string& folder) {
+  std::vector<fs::path> found;
+  try {
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+      const std::string extension = lowercaseExtension(entry.path());
+      if (entry.is_regular_file() && (extension == ".obj" || extension == ".off")) found.push_back(entry.path());
+    }
+  } catch (const fs::filesystem_error& e) {
+    throw InputError(folder + ": error: cannot read the folder: " + e.code().message());
+  }
+  std::sort(found.begin(), found.end(),
+            [](const fs::path& x, const fs::path& y) { return x.filename() < y.filename(); });
+  std::vector<std::string> meshes;
+  for (const fs::path& path : found) meshes.push_back(path.string());
+  if (meshes.empty()) throw InputError(folder + ": error: expected .obj or .off files in the folder, found none");
+  return meshes;
+}
+
+std::vector<std::string> meshesInList(const std::string& list) {
+  std::error_code ignored;
+  std::ifstream in(list);
+  if (fs::is_directory(list, ignored) || !in) throw InputError(list + ": error: cannot open the list of meshes");
+  const fs::path folder = fs::path(list).parent_path();
+  std::vector<std::string> meshes;
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    const fs::path path = line.substr(first, line.find_last_not_of(" \t\r") + 1 - first);
+    meshes.push_back((path.is_absolute() ? path : folder / path).string());
+  }
+  if (meshes.empty()) throw InputError(list + ": error: expected mesh paths in the list, found none");
+  return meshes;
+}
+
+namespace {
+
+// The paths of every mesh of a batch: OUTDIR/STEM.obj and JSONDIR/STEM.json. Throws UsageError
+// before any work when two inputs share a stem, when an output would replace an input, or when a
+// summary would be named like the batch's own batch.json.
+std::vector<MeshPaths> batchPaths(const std::vector<std::string>& inputs, const std::string& output,
+                                  const std::string& json) {
+  std::map<std::string, std::string> inputOfStem;
+  std::set<fs::path> inputFiles;
+  std::error_code ignored;
+  for (const std::string& input : inputs) inputFiles.insert(fs::weakly_canonical(input, ignored));
+  std::vector<MeshPaths> paths;
+  for (const std::string& input : inputs) {
+    const std::string stem = fs::path(input).stem().string();
+    MeshPaths p{input, (fs::path(output) / (stem + ".obj")).string(), ""};
+    const auto [other, fresh] = inputOfStem.emplace(stem, input);
+    if (!fresh) throw UsageError("two meshes would be written to " + p.output + ": " + other->second + " and " + input);
+    if (inputFiles.count(fs::weakly_canonical(p.output, ignored)))
+      throw UsageError(p.output + " would replace an input mesh: choose another output folder");
+    if (!json.empty()) {
+      if (stem == "batch") throw UsageError(input + ": its summary would replace batch.json in " + json);
+      p.json = (fs::path(json) / (stem + ".json")).string();
+    }
+    paths.push_back(std::move(p));
+  }
+  return paths;
+}
+
+void createFolder(const std::string& folder) {
+  std::error_code error;
+  fs::create_directories(folder, error);
+  if (error || !fs::is_directory(folder))
+    throw OutputError(folder + ": error: cannot create the folder: " +
+                      (error ? error.message() : std::string("a file has that name")));
+}
+
+// How one mesh of a batch ended: its exit status (0, or that of its error's class as main maps
+// them), the error's one-line message, and its time.
+struct MeshOutcome {
+  int status = 0;
+  std::string error;
+  double milliseconds = 0.0;
+  analysis::Verdict verdict = analysis::Verdict::Pass;
+};
+
+// Maps one mesh of a batch; a failure is recorded and printed, never thrown.
+MeshOutcome mapBatchMesh(const MeshPaths& paths, const MapJob& job, bool quiet) {
+  const auto start = std::chrono::steady_clock::now();
+  MeshOutcome outcome;
+  try {
+    const MeshResult result = mapMesh(paths, job, false);
+    outcome.verdict = result.verdict;
+    if (!quiet) printProgressMessage("uvtk map: " + paths.input + ": " + result.numbers);
+  } catch (const std::exception& e) {
+    // A usage error here is a check of the options that only mapping the mesh makes.
+    const int status = exitStatus(e);
+    outcome = {status, status == 3 || status == 4
+                           ? std::string(e.what())
+                           : paths.input + (status == 2 ? ": error: " : ": internal error: ") + e.what()};
+  }
+  if (outcome.status != 0) printProgressMessage(outcome.error);
+  outcome.milliseconds = millisecondsSince(start);
+  return outcome;
+}
+
+// The record of a batch: every mesh with its status, error and time (the per-mesh numbers are in
+// the summaries beside it, so that merging the folder whole counts each once).
+nlohmann::json batchJson(const std::vector<MeshPaths>& paths, const std::vector<MeshOutcome>& outcomes,
+                         const param::ProjectorOptions& options, int threads, double wallMs) {
+  nlohmann::json meshes = nlohmann::json::array();
+  std::size_t failed = 0;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const bool ok = outcomes[i].status == 0;
+    nlohmann::json mesh = {{"input", paths[i].input},
+                           {"output", paths[i].output},
+                           {"status", ok ? "ok" : "failed"},
+                           {"milliseconds", outcomes[i].milliseconds}};
+    if (ok) {
+      mesh["summary"] = paths[i].json;
+      mesh["verdict"] = analysis::toString(outcomes[i].verdict);
+    } else
+      mesh["error"] = outcomes[i].error;
+    failed += !ok;
+    meshes.push_back(std::move(mesh));
+  }
+  return {{"tool", {{"name", "uvtk"}, {"version", UVTK_VERSION}}},
+          {"options", cli::projectorOptionsJson(options)},
+          {"jobs", threads},
+          {"meshes", std::move(meshes)},
+          {"mapped", paths.size() - failed},
+          {"failed", failed},
+          {"milliseconds", {{"wall", wallMs}}}};
+}
+
+}  // namespace
+
+BatchResult mapBatch(const std::vector<std::string>& inputs, const std::string& output, const std::string& json,
+                     int jobs, bool quiet, const MapJob& job) {
+  // Each mesh's OBJ and summary are published together when it is done, and batch.json at the
+  // end: a batch is many independent runs (an interrupted one leaves the meshes done so far, each
+  // whole), not one output.
+  const std::vector<MeshPaths> paths = batchPaths(inputs, output, json);
+  createFolder(output);
+  if (!json.empty()) createFolder(json);
+  const auto start = std::chrono::steady_clock::now();
+  const int threads = std::min(threadCount(jobs), int(paths.size()));
+  std::vector<MeshOutcome> outcomes(paths.size());
+  {
+    Progress progress("mapping", paths.size(), "meshes");
+    parallelFor(int(paths.size()), threads, [&](int i) {
+      outcomes[std::size_t(i)] = mapBatchMesh(paths[std::size_t(i)], job, quiet);
+      progress.advance();
+    });
+  }
+  BatchResult result;
+  for (const MeshOutcome& o : outcomes) {
+    result.status = std::max(result.status, o.status);
+    result.failed += o.status != 0;
+    if (o.status == 0) result.worst = std::max(result.worst, o.verdict);
+  }
+  result.mapped = paths.size() - result.failed;
+  if (!json.empty())
+    io::writeFileAtomically((fs::path(json) / "batch.json").string(),
+                            batchJson(paths, outcomes, job.projector, threads, millisecondsSince(start)).dump(2) + "\n");
+  return result;
+}
+
+}  // namespace uvtk::inspect

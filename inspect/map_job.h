@@ -1,0 +1,66 @@
+// A projector over mesh files, as `uvtk map` runs it: one mesh read, mapped, judged and written
+// with its JSON summary, or every mesh of a folder or a list, several at once, into an output
+// folder (docs/scale-out.md).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "analysis/judgement.h"
+#include "param/projector.h"
+
+namespace uvtk::inspect {
+
+// How the meshes are mapped, written and judged.
+struct MapJob {
+  param::ProjectorOptions projector;
+  bool seamPlaceAuto = false;  // --seam-place auto: the seam placed on each mesh first
+  bool writeW = false;         // the third UV component (the cube face id)
+  bool floatDigits = false;    // UV text that round-trips a float, not a double
+  analysis::Thresholds thresholds;
+  int overlapResolution = 1024;
+};
+
+// Memory before work: a file the machine cannot map is refused (InputError) before it is read,
+// and a large one announced.
+void checkMapMemory(const std::string& input);
+
+// Where one mesh is read and written; no JSON summary when `json` is empty.
+struct MeshPaths {
+  std::string input, output, json;
+};
+
+// One mesh's summary line ("N vertices, ...; verdict ...") and its verdict.
+struct MeshResult {
+  std::string numbers;
+  analysis::Verdict verdict = analysis::Verdict::Pass;
+};
+
+// Reads, maps, judges and writes one mesh (and its JSON summary, published together with it),
+// prints the input's notes, and returns its summary line. The stages are shown on a terminal only
+// with `showStages`.
+MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages);
+
+// Every .obj and .off file directly in `folder`, sorted by name; InputError when there is none.
+std::vector<std::string> meshesInFolder(const std::string& folder);
+
+// The paths of a list file, one a line, relative to the list's folder; blank lines and lines whose
+// first non-blank character is '#' are skipped (a '#' later on a line belongs to the file name).
+std::vector<std::string> meshesInList(const std::string& list);
+
+// How a batch ended.
+struct BatchResult {
+  int status = 0;  // the highest exit status of the failed meshes (0: none failed)
+  std::size_t mapped = 0, failed = 0;
+  analysis::Verdict worst = analysis::Verdict::Pass;  // of the meshes mapped
+};
+
+// Every mesh of `inputs` into the folder `output` as STEM.obj (and STEM.json with batch.json in
+// the folder `json` unless it is empty), `jobs` at a time (0: one per hardware thread), each
+// mapped on one thread; a failing mesh does not stop the others, and is printed. Unless `quiet`,
+// each mesh's summary line is printed too. Throws UsageError before any work when two inputs share
+// a stem, when an output would replace an input, or when a summary would be named batch.json.
+BatchResult mapBatch(const std::vector<std::string>& inputs, const std::string& output, const std::string& json,
+                     int jobs, bool quiet, const MapJob& job);
+
+}  // namespace uvtk::inspect

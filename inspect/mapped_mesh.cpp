@@ -1,0 +1,184 @@
+#include "inspect/mapped_mesh.h"
+
+#include <limits>
+#include <memory>
+
+#include "core/error.h"
+#include "options/option_names.h"
+#include "param/projector.h"
+#include "inspect/measures_json.h"
+#include "inspect/run_report.h"
+#include "inspect/summary_json.h"
+
+namespace uvtk::inspect {
+
+analysis::DistortionOptions MappedMesh::distortionOptions() const {
+  analysis::DistortionOptions options;
+  if (projector && projector->surface == param::SurfaceKind::Plane)
+    options.projectionDirection = projection->localFromObject.inverse().linear().col(2);
+  return options;
+}
+
+analysis::Judgement MappedMesh::judge(const analysis::Thresholds& thresholds, int overlapResolution) const {
+  analysis::JudgementOptions options;
+  options.distortion = distortionOptions();
+  if (projection) options.poleVertices = projection->summary.poleVertexList;
+  options.wrapsU = projector && exact && exact->wrapsS;  // a wrapping projector's seam is expected
+  options.overlapResolution = overlapResolution;
+  options.thresholds = thresholds;
+  return analysis::judge(mesh, uv, options);
+}
+
+views::ViewInput MappedMesh::viewInput(const analysis::Judgement* judgement) const {
+  views::ViewInput in;
+  in.mesh = &mesh;
+  in.uv = &uv;
+  in.judgement = judgement;
+  in.exact = exact;
+  in.wrapsU = exact && exact->wrapsS;
+  in.q = q.empty() ? nullptr : &q;
+  in.cubeFaceIds = cubeFaceIds();
+  return in;
+}
+
+bool MappedMesh::cubeFaceIds() const { return projector && writesCubeFaceIds(*projector); }
+
+render::TexcoordSource MappedMesh::texcoordSource(bool perPixel) const {
+  render::TexcoordSource out;
+  if (perPixel) {
+    out.pixelMapping = exact;
+  } else {
+    out.corners = corners();
+  }
+  out.cubeFaceIds = cubeFaceIds();
+  return out;
+}
+
+bool writesCubeFaceIds(const param::ProjectorOptions& options) {
+  return options.surface == param::SurfaceKind::Cube && options.cubeLayout == CubeLayout::Faces;
+}
+
+std::vector<Vec4> MappedMesh::corners() const {
+  std::vector<Vec4> out(uv.uv.size());
+  for (std::size_t c = 0; c < out.size(); ++c)
+    out[c] = Vec4(uv.uv[c].x(), uv.uv[c].y(), uv.w.empty() ? 0.0 : uv.w[c], q.empty() ? 1.0 : q[c]);
+  return out;
+}
+
+namespace {
+
+// The projector evaluated at every pixel (docs/conventions.md §9).
+render::PixelMapping projectorPixelMapping(const param::ProjectorOptions& options, const Affine3& localFromObject,
+                                           const Mesh& mesh, const UvMap& uv) {
+  // The range rule as project() applied it, so that per-pixel and per-vertex values agree on it.
+  auto mapping = std::make_shared<param::PointMapping>(options, localFromObject,
+                                                       param::sensibleBox(mesh.positions, options, localFromObject));
+  // A cap face maps by the side its own normal faces, as project() decided (param/projector.h).
+  auto capNormals = std::make_shared<std::vector<Vec3>>(uv.faceCount(), Vec3::Zero());
+  for (std::size_t f = 0; f < uv.faceCount(); ++f)
+    if (uv.faceHas(f, kFaceCap)) {
+      const Triangle& t = mesh.triangles[f];
+      (*capNormals)[f] = triangleAreaNormal(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
+    }
+  // The cube's faces layout keeps the face id as r: per pixel the face of the pixel's own probe.
+  const bool faceIds = writesCubeFaceIds(options);
+  return render::PixelMapping{[mapping, capNormals, faceIds](const Vec3& p, const Vec3& n, std::int32_t face) -> Vec4 {
+                                const Vec3& capNormal = (*capNormals)[std::size_t(face)];
+                                const bool cap = !capNormal.isZero();
+                                const param::VertexUv mapped = mapping->at(p, cap ? capNormal : n, cap);
+                                const double nan = std::numeric_limits<double>::quiet_NaN();
+                                if (mapped.state == param::CornerState::Invalid) return Vec4(nan, nan, 0, 1);
+                                if (!faceIds) return Vec4(mapped.uv.x(), mapped.uv.y(), 0, 1);
+                                const std::optional<CubeFace> cubeFace = mapping->cubeFaceAt(p, n);
+                                return Vec4(mapped.uv.x(), mapped.uv.y(), cubeFace ? double(*cubeFace) : nan, 1);
+                              },
+                              mapping->wrapsU(), mapping->needsNormal()};
+}
+
+}  // namespace
+
+UvMap fileUvs(const Mesh& mesh, const std::string& path) {
+  if (!mesh.hasTexcoords()) throw UsageError(path + " has no texture coordinates (vt): give --projector");
+  UvMap uv;
+  uv.uv.resize(3 * mesh.faceCount(), Vec2::Zero());
+  uv.faceFlags.assign(mesh.faceCount(), kFaceOk);
+  uv.w.assign(3 * mesh.faceCount(), 0.0);
+  uv.cornerInvalid.assign(3 * mesh.faceCount(), 0);
+  for (std::size_t f = 0; f < mesh.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t corner = 3 * f + std::size_t(k);
+      const int t = mesh.cornerTexcoords[f][k];
+      if (t >= 0) {
+        uv.uv[corner] = mesh.texcoords[std::size_t(t)].head<2>();
+        uv.w[corner] = mesh.texcoords[std::size_t(t)].z();
+      } else {
+        uv.cornerInvalid[corner] = kCornerNoTexcoord;
+        uv.faceFlags[f] |= kFaceInvalid;
+      }
+    }
+  return uv;
+}
+
+MappedMesh mapByProjector(Mesh mesh, param::ProjectorOptions options, bool seamPlaceAuto) {
+  MappedMesh out;
+  if (seamPlaceAuto) {
+    out.seamPlacement = param::placeSeam(mesh, options);
+    options.placement.turnDegrees = out.seamPlacement->turnDegrees;
+  }
+  out.projection = param::project(std::move(mesh), options);
+  out.mesh = std::move(out.projection->mesh);
+  out.uv = std::move(out.projection->uv);
+  out.projector = options;
+  out.source = "projector";
+  out.exact = projectorPixelMapping(options, out.projection->localFromObject, out.mesh, out.uv);
+  return out;
+}
+
+MappedMesh mapByTexgen(Mesh mesh, const texgen::TexgenOptions& options) {
+  MappedMesh out;
+  texgen::TexgenResult generated = texgen::generateTexcoords(mesh, options);
+  out.uv = std::move(generated.uv);
+  out.q = std::move(generated.q);
+  out.mesh = std::move(mesh);
+  out.source = "texgen";
+  out.exact = render::PixelMapping{
+      [options](const Vec3& p, const Vec3& n, std::int32_t) { return texgen::texgenAt(p, n, options); }, false, true};
+  return out;
+}
+
+MappedMesh withFileUvs(Mesh mesh, const std::string& path) {
+  MappedMesh out;
+  out.uv = fileUvs(mesh, path);
+  out.mesh = std::move(mesh);
+  out.source = "file";
+  return out;
+}
+
+void addMappingOrigin(nlohmann::json& record, const MappedMesh& mapped) {
+  if (mapped.projector) record["options"] = cli::projectorOptionsJson(*mapped.projector);
+  if (mapped.seamPlacement) record["seam_placement"] = cli::seamPlacementJson(*mapped.seamPlacement);
+}
+
+nlohmann::json mapSummaryJson(const MappedMesh& mapped, const analysis::Judgement& judgement,
+                              const nlohmann::json& input, const std::string& output) {
+  nlohmann::json j = mapped.projection ? summaryJson(mapped.projection->summary) : nlohmann::json::object();
+  j["judgement"] = judgementJson(mapped, judgement);
+  j["verdict"] = j["judgement"]["verdict"];
+  j["reasons"] = j["judgement"]["reasons"];
+  j["texcoords"] = mapped.source;
+  j["input"] = input;
+  j["output"] = output;
+  addMappingOrigin(j, mapped);
+  return j;
+}
+
+void printMappingNotes(const std::string& inputPath, const MeshWarnings& warnings, const MappedMesh& mapped) {
+  printInputWarnings(inputPath, warnings);
+  if (mapped.seamPlacement) cli::printSeamPlacement(*mapped.seamPlacement);
+}
+
+render::Camera ViewCamera::frame(const Mesh& mesh, int width, int height) const {
+  return render::frameSphere(render::boundingSphere(mesh.positions), viewDir, up, render::Projection{}, width, height);
+}
+
+}  // namespace uvtk::inspect

@@ -1,0 +1,109 @@
+#include "inspect/measures_json.h"
+
+#include <cmath>
+
+namespace uvtk::inspect {
+
+nlohmann::json statisticsJson(const analysis::Statistics& s) {
+  const analysis::Histogram& h = s.histogram;
+  nlohmann::json edges = nlohmann::json::array();
+  for (int i = 0; i <= int(h.weightFraction.size()); ++i) edges.push_back(h.edge(i));
+  return {{"mean", s.mean},
+          {"p50", s.p50},
+          {"p90", s.p90},
+          {"p99", s.p99},
+          {"min", s.min},
+          {"max", s.max},
+          {"histogram",
+           {{"spacing", h.spacing == analysis::BinSpacing::Log2 ? "log2" : "linear"},
+            {"edges", edges},
+            {"weight_fraction", h.weightFraction}}}};
+}
+
+namespace {
+
+nlohmann::json reasonJson(const analysis::Reason& r) {
+  return {{"code", analysis::toString(r.rule)},
+          {"severity", analysis::toString(r.severity)},
+          {"value", r.value},
+          {"threshold", r.threshold},
+          {"faces", r.faces},
+          {"text", r.text()}};
+}
+
+}  // namespace
+
+nlohmann::json reasonsJson(const analysis::Judgement& judgement) {
+  nlohmann::json reasons = nlohmann::json::array();
+  for (const analysis::Reason& r : judgement.reasons) reasons.push_back(reasonJson(r));
+  return reasons;
+}
+
+namespace {
+
+// A threshold of infinity ("never") as JSON's null.
+nlohmann::json thresholdJson(double threshold) {
+  return std::isinf(threshold) ? nlohmann::json(nullptr) : nlohmann::json(threshold);
+}
+
+}  // namespace
+
+nlohmann::json judgementJson(const MappedMesh& mapped, const analysis::Judgement& j) {
+  using analysis::FaceStatus;
+  const analysis::Summary& s = j.summary;
+  nlohmann::json counts;
+  for (int k = 0; k < analysis::kFaceStatusCount; ++k)
+    counts[analysis::toString(FaceStatus(k))] = s.statusCounts.faces[std::size_t(k)];
+  nlohmann::json values, warn, fail, corners;
+  for (int k = 0; k < analysis::kRuleCount; ++k) {
+    const auto rule = analysis::Rule(k);
+    values[analysis::toString(rule)] = j.values[std::size_t(k)];
+    warn[analysis::toString(rule)] = thresholdJson(j.thresholds.of(rule, analysis::Verdict::Warn));
+    fail[analysis::toString(rule)] = thresholdJson(j.thresholds.of(rule, analysis::Verdict::Fail));
+  }
+  for (int reason = 1; reason < kCornerInvalidCount; ++reason)
+    corners[cornerInvalidName(reason)] = j.invalidCorners[std::size_t(reason)];
+  nlohmann::json bounds = nullptr;
+  if (!s.uvBounds.isEmpty())
+    bounds = {{"min", {s.uvBounds.min().x(), s.uvBounds.min().y()}},
+              {"max", {s.uvBounds.max().x(), s.uvBounds.max().y()}}};
+  return {{"verdict", analysis::toString(j.verdict)},
+          {"reasons", reasonsJson(j)},
+          {"rule_values", values},
+          {"thresholds", {{"warn", warn}, {"fail", fail}}},
+          {"vertices", mapped.mesh.vertexCount()},
+          {"faces", mapped.mesh.faceCount()},
+          {"stretch_l2", s.l2Stretch},
+          {"stretch_linf", s.linfStretch},
+          {"angle", statisticsJson(s.angleDistortion)},
+          {"area", statisticsJson(s.areaDistortion)},
+          {"stretch_l2_faces", statisticsJson(s.l2Stretches)},
+          {"stretch_linf_faces", statisticsJson(s.linfStretches)},
+          {"status_counts", counts},
+          {"face_flags",
+           {{"invalid", j.invalidFaces},
+            {"out_of_range", j.outOfRangeFaces},
+            {"seam_straddling", j.straddlingFaces},
+            {"unrepaired_seam", j.unrepairedSeamFaces},
+            {"pole", s.poleFaces},
+            {"cap", j.capFaces},
+            {"cube_seam", j.cubeSeamFaces},
+            {"sphere_map_singular", j.sphereMapSingularFaces},
+            {"overlapping", j.overlappedFaces}}},
+          {"invalid_corners", corners},
+          {"seams",
+           {{"wrap_edges", s.seams.wrapEdges},
+            {"cut_edges", s.seams.cutEdges},
+            {"length", s.seams.length()},
+            {"wrap_length", s.seams.wrapLength},
+            {"cut_length", s.seams.cutLength}}},
+          {"poles", {{"vertices", s.poleVertices.size()}, {"faces", s.poleFaces}}},
+          {"uv_bounds", bounds},
+          {"overlap_fraction", s.overlap.fraction()},
+          {"overlap",
+           {{"resolution", s.overlap.resolution},
+            {"covered_pixels", s.overlap.coveredPixels},
+            {"overlapped_pixels", s.overlap.overlappedPixels}}}};
+}
+
+}  // namespace uvtk::inspect

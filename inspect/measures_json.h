@@ -1,0 +1,24 @@
+// The measures of a UV layout (analysis/summary.h) as JSON: the record `uvtk report` writes and
+// `uvtk compare` ranks. Key names are part of the interface (docs/views.md, README).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/judgement.h"
+#include "inspect/mapped_mesh.h"
+
+namespace uvtk::inspect {
+
+// mean, p50, p90, p99, min, max (area-weighted) and the histogram.
+nlohmann::json statisticsJson(const analysis::Statistics& statistics);
+
+// The judgement of a mapping: verdict, reasons ({code, severity, value, threshold, faces}), rule_values,
+// thresholds, vertices, faces, stretch_l2, stretch_linf, angle, area, stretch_l2_faces,
+// stretch_linf_faces, status_counts, face_flags, invalid_corners, seams, poles, uv_bounds,
+// overlap_fraction, overlap. Every number is read from `judgement`.
+nlohmann::json judgementJson(const MappedMesh& mapped, const analysis::Judgement& judgement);
+
+// A judgement's reasons, each as {code, severity, value, threshold, faces, text}.
+nlohmann::json reasonsJson(const analysis::Judgement& judgement);
+
+}  // namespace uvtk::inspect

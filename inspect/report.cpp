@@ -1,0 +1,77 @@
+#include "inspect/report.h"
+
+#include "core/error.h"
+#include "inspect/html_report.h"
+#include "inspect/measures_json.h"
+#include "inspect/summary_json.h"
+#include "io/atomic_file.h"
+#include "render/procedural.h"
+
+namespace uvtk::inspect {
+
+void ReportOptions::check() const {
+  if (json.empty() && html.empty()) throw UsageError("expected --json OUT.json, --html OUT.html or both");
+  if (overlapResolution < 1 || overlapResolution > 16384)
+    throw UsageError("--overlap-resolution: expected 1 to 16384 pixels");
+  if (textureSize < 1 || textureSize > 16384) throw UsageError("--texture-size: expected 1 to 16384 texels");
+}
+
+namespace {
+
+// The views the page shows: the file's UVs have no exact mapping to compare with.
+std::vector<views::View> pageViews(const MappedMesh& mapped, const ReportOptions& options) {
+  std::vector<views::View> out;
+  if (options.html.empty()) return out;
+  for (const views::View view : options.views)
+    if (!views::needsExactMapping(view) || mapped.exact) out.push_back(view);
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json reportJson(const MappedMesh& mapped, const analysis::Judgement& judgement, const ReportOptions& options,
+                          const nlohmann::json& input) {
+  nlohmann::json report = judgementJson(mapped, judgement);
+  report["tool"] = {{"name", "uvtk"}, {"version", UVTK_VERSION}};
+  report["input"] = input;
+  report["texcoords"] = mapped.source;
+  if (mapped.projection) report["mapping"] = summaryJson(mapped.projection->summary);
+  addMappingOrigin(report, mapped);
+  if (!options.html.empty()) {
+    report["views"] = nlohmann::json::array();
+    for (const views::View view : pageViews(mapped, options)) report["views"].push_back(views::toString(view));
+  }
+  return report;
+}
+
+nlohmann::json writeReport(io::OutputSet& outputs, const ReportOptions& o, const MappedMesh& mapped,
+                           const analysis::Judgement& judgement, const nlohmann::json& input,
+                           const nlohmann::json& milliseconds) {
+  nlohmann::json report = reportJson(mapped, judgement, o, input);
+  std::vector<std::pair<std::string, Image>> pictures;
+  if (!o.html.empty()) {
+    const render::Texture texture = render::checkerTexture(o.textureSize, std::max(1, o.textureSize / 8));
+    const views::ViewInput in = mapped.viewInput(&judgement);
+    views::ViewOptions options;
+    options.render.camera = o.camera.frame(mapped.mesh, o.width, o.height);
+    options.render.raster.threads = o.threads;
+    options.render.raster.cull = render::Cull::None;
+    options.render.texture = &texture;
+    for (const views::View view : pageViews(mapped, o))
+      pictures.emplace_back(views::toString(view), views::drawView(view, in, options));
+  }
+  if (!milliseconds.is_null()) report["milliseconds"] = milliseconds;
+  if (!o.json.empty()) outputs.writeText(o.json, report.dump(2) + "\n");
+  if (!o.html.empty()) outputs.writeText(o.html, htmlReport(report, pictures));
+  return report;
+}
+
+nlohmann::json writeReport(const ReportOptions& o, const MappedMesh& mapped, const analysis::Judgement& judgement,
+                           const nlohmann::json& input, const nlohmann::json& milliseconds) {
+  io::OutputSet outputs;
+  nlohmann::json report = writeReport(outputs, o, mapped, judgement, input, milliseconds);
+  outputs.publish();
+  return report;
+}
+
+}  // namespace uvtk::inspect

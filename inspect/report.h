@@ -1,0 +1,46 @@
+// The report of one mapping (`uvtk report`, a scene's report output, uvtk.report() in Python):
+// every measure as JSON, and one self-contained HTML page with the views.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "io/atomic_file.h"
+#include "inspect/mapped_mesh.h"
+#include "views/views.h"
+
+namespace uvtk::inspect {
+
+struct ReportOptions {
+  std::string json;                 // the JSON file to write; empty: none
+  std::string html;                 // the HTML page to write; empty: none
+  std::vector<views::View> views{   // the views on the HTML page
+      views::View::Checker, views::View::Uvgrid, views::View::Stretch, views::View::Linf,
+      views::View::Angle,   views::View::Area,   views::View::Seams,   views::View::Layout};
+  int width = 384, height = 384;    // pixels of each view
+  ViewCamera camera;                // the views' camera
+  int overlapResolution = 1024;     // pixels across the layout raster that measures overlap
+  int textureSize = 1024;           // texels across the texture whose texels uverror counts
+  int threads = 0;                  // threads for the views (0: one per hardware thread)
+
+  void check() const;  // throws UsageError for a value out of range, before any work
+};
+
+// The report of `mapped` with its `judgement` (taken at options.overlapResolution), writing
+// nothing: every measure, the tool, `input` (the "input" record), the mapping's origin, and with
+// an HTML page the names of the views it shows. `uvtk report --json` writes this, with the times.
+nlohmann::json reportJson(const MappedMesh& mapped, const analysis::Judgement& judgement, const ReportOptions& options,
+                          const nlohmann::json& input);
+
+// Writes the report to options.json and the page to options.html, published together;
+// `milliseconds` are the times of the stages before (none when null). Returns the report.
+nlohmann::json writeReport(const ReportOptions& options, const MappedMesh& mapped,
+                           const analysis::Judgement& judgement, const nlohmann::json& input,
+                           const nlohmann::json& milliseconds = nullptr);
+// The same, staged in `outputs` (a scene's).
+nlohmann::json writeReport(io::OutputSet& outputs, const ReportOptions& options, const MappedMesh& mapped,
+                           const analysis::Judgement& judgement, const nlohmann::json& input,
+                           const nlohmann::json& milliseconds = nullptr);
+
+}  // namespace uvtk::inspect

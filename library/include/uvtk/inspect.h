@@ -1,0 +1,102 @@
+// Looking at a mapping: its report (every measure and the verdict), pictures of it (the
+// inspection views, or the mesh rendered with a texture as OpenGL would), and the ranking of every
+// projector on one mesh. Part of <uvtk/uvtk.h> (docs/library.md, docs/views.md).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "uvtk/export.h"
+#include "uvtk/mapping.h"
+
+namespace uvtk::api {
+
+// The options of `uvtk report`.
+struct ReportOptions {
+  std::string json;  // --json: also write the report as JSON here ("" none)
+  std::string html;  // --html: also write the self-contained page with the views here ("" none)
+  std::string views = "checker,uvgrid,stretch,linf,angle,area,seams,layout";  // --views: the page's views
+  std::string size = "384x384";  // --size: each view's pixels, WxH
+  Vector3 viewDir{1, -1.5, 0.8};  // --view-dir: the direction from the mesh to the views' camera
+  Vector3 up{0, 0, 1};            // --up: the views' camera's up
+  int textureSize = 1024;        // --texture-size: texels across the texture whose texels uverror counts
+  int overlapResolution = 1024;  // --overlap-resolution: the mapping is judged again when it differs from map()'s
+  int threads = 0;               // --threads: 0, one per hardware thread
+
+  // From `uvtk report`'s syntax, e.g. "--views checker,seams --size 256x256".
+  UVTK_API static ReportOptions parse(const std::string& commandLine);
+  UVTK_API std::string commandLine() const;  // the options that differ from the defaults
+};
+
+// The report of `mapping` as JSON text: the document `uvtk report --json` writes (verdict first,
+// every measure, seams, poles, overlap), and the files `options` names, published together.
+UVTK_API std::string report(const Mapping& mapping, const ReportOptions& options = {});
+
+// An image in memory: values in [0, 1], row 0 at the top.
+struct Image {
+  int width = 0, height = 0, channels = 0;
+  std::vector<float> pixels;  // (y * width + x) * channels + c
+
+  // The 8-bit values a PNG of this image holds: round(clamp(value, 0, 1) * 255), NaN as 0.
+  UVTK_API std::vector<std::uint8_t> bytes() const;
+};
+
+// The options of `uvtk render` (its defaults: the camera frames the mesh from +z).
+struct RenderOptions {
+  std::string view;  // --view: checker, uvgrid, stretch, linf, angle, area, seams, uverror, layout;
+                     // several, comma-separated: a contact sheet; "" (the default): the textured picture
+  std::string size = "512x512";   // --size: WxH
+  Vector3 viewDir{0, 0, 1};       // --view-dir: the direction from the mesh to the camera, which frames the mesh
+  Vector3 up{0, 1, 0};            // --up: the camera's up
+  std::string cull = "back";      // --cull: back, front, none
+  std::string texture = "checker:64:8";  // --texture (view ""): checker:N[:C], uvgrid[:N], or an image file
+  std::string filter = "nearest";        // --filter: GL's minification filter (view "")
+  int checks = 16;                // --checks: checks across the unit square in the checker view
+  std::string layoutFill = "stretch";  // --layout-fill: stretch, linf, angle, area
+  int layoutSize = 512;           // --layout-size: pixels across the layout view's UV square
+  int spp = 1;                    // --spp: samples per pixel (1, 4, 9, ...), box-filtered
+  Vector3 background{0, 0, 0};    // --background: r, g, b in [0, 1]
+  std::string uv = "per-vertex";  // --uv: per-vertex (interpolated), per-pixel (the mapping evaluated exactly)
+  int threads = 0;                // --threads: 0, one per hardware thread; the image does not depend on it
+
+  // From `uvtk render`'s syntax, e.g. "--view seams --size 640x480".
+  UVTK_API static RenderOptions parse(const std::string& commandLine);
+  UVTK_API std::string commandLine() const;  // the options that differ from the defaults
+};
+
+// A picture of `mapping`: the image `uvtk render` writes with these options and the mapping's
+// (before it is stored as 8 bits: bytes() gives the PNG's values). Views with measures show the
+// mapping's judgement.
+UVTK_API Image render(const Mapping& mapping, const RenderOptions& options = {});
+
+// The options of `uvtk compare`.
+struct CompareOptions {
+  std::string by = "stretch_l2";  // --by: stretch_l2, stretch_linf, angle, seam_length (among mappings with the same verdict)
+  int top = 8;                    // --top: mappings in the contact sheet
+  bool baselines = true;          // false: --no-baselines (CGAL's LSCM and ARAP)
+  int tileSize = 256;             // --tile-size: pixels across each picture of the contact sheet
+  Vector3 viewDir{1, -1.5, 0.8};  // --view-dir: the sheet's camera
+  Vector3 up{0, 0, 1};            // --up
+  int overlapResolution = 512;    // --overlap-resolution: pixels across the overlap raster
+  bool seamPlaceAuto = false;     // --seam-place-auto: every wrapping projector with its seam placed
+  int baselineMaxFaces = 200000;  // --baseline-max-faces: LSCM and ARAP only up to this many faces
+  std::vector<std::string> failOn, warnOn;  // --fail-on, --warn-on: the verdict's thresholds
+  std::string json, markdown, sheet;        // --json, --markdown, --sheet: files to write ("" none)
+  int threads = 0;                // --threads: 0, one per hardware thread
+
+  // From `uvtk compare`'s syntax, e.g. "--by angle --no-baselines".
+  UVTK_API static CompareOptions parse(const std::string& commandLine);
+  UVTK_API std::string commandLine() const;  // the options that differ from the defaults
+};
+
+struct Comparison {
+  std::string json;   // the document `uvtk compare --json` writes
+  std::string table;  // the Markdown table
+  std::string best;   // the first-ranked mapping's name
+};
+
+// Every projector configuration on `mesh`, ranked (verdict first): `uvtk compare`.
+UVTK_API Comparison compare(const Mesh& mesh, const CompareOptions& options = {});
+
+}  // namespace uvtk::api

@@ -1,0 +1,221 @@
+// Reports, pictures and rankings of a public mapping, through the engine's inspect/ module with
+// the options parsed by the command line's own option groups.
+#include <nlohmann/json.hpp>
+
+#include "detail.h"
+#include "inspect/compare.h"
+#include "inspect/frame.h"
+#include "inspect/report.h"
+#include "option_fields.h"
+#include "options/compare_cli.h"
+#include "options/render_cli.h"
+#include "options/report_cli.h"
+#include "options/verdict_cli.h"
+
+namespace uvtk::api {
+
+namespace {
+
+const std::vector<Field<ReportOptions>>& reportFields() {
+  using O = ReportOptions;
+  static const std::vector<Field<O>> fields = {
+      textField("--json", &O::json),
+      textField("--html", &O::html),
+      textField("--views", &O::views),
+      textField("--size", &O::size),
+      arrayField("--view-dir", &O::viewDir),
+      arrayField("--up", &O::up),
+      integerField("--texture-size", &O::textureSize),
+      integerField("--overlap-resolution", &O::overlapResolution),
+      integerField("--threads", &O::threads),
+  };
+  return fields;
+}
+
+const std::vector<Field<RenderOptions>>& renderFields() {
+  using O = RenderOptions;
+  static const std::vector<Field<O>> fields = {
+      textField("--view", &O::view),
+      textField("--size", &O::size),
+      arrayField("--view-dir", &O::viewDir),
+      arrayField("--up", &O::up),
+      textField("--cull", &O::cull),
+      textField("--texture", &O::texture),
+      textField("--filter", &O::filter),
+      integerField("--checks", &O::checks),
+      textField("--layout-fill", &O::layoutFill),
+      integerField("--layout-size", &O::layoutSize),
+      integerField("--spp", &O::spp),
+      arrayField("--background", &O::background),
+      textField("--uv", &O::uv),
+      integerField("--threads", &O::threads),
+  };
+  return fields;
+}
+
+const std::vector<Field<CompareOptions>>& compareFields() {
+  using O = CompareOptions;
+  static const std::vector<Field<O>> fields = {
+      textField("--by", &O::by),
+      integerField("--top", &O::top),
+      flagField("--no-baselines", &O::baselines, false),
+      integerField("--tile-size", &O::tileSize),
+      arrayField("--view-dir", &O::viewDir),
+      arrayField("--up", &O::up),
+      integerField("--overlap-resolution", &O::overlapResolution),
+      flagField("--seam-place-auto", &O::seamPlaceAuto),
+      integerField("--baseline-max-faces", &O::baselineMaxFaces),
+      listField("--fail-on", &O::failOn),
+      listField("--warn-on", &O::warnOn),
+      textField("--json", &O::json),
+      textField("--markdown", &O::markdown),
+      textField("--sheet", &O::sheet),
+      integerField("--threads", &O::threads),
+  };
+  return fields;
+}
+
+struct ReportCommand {
+  CLI::App app;
+  cli::ReportArguments report;
+  explicit ReportCommand(const std::vector<std::string>& words) {
+    cli::addReportOptions(app, report);
+    parseWords(app, words);
+  }
+  // The engine's options; unlike `uvtk report`, the library's report may write no file at all.
+  inspect::ReportOptions options() const {
+    cli::ReportArguments checked = report;
+    if (checked.json.empty() && checked.html.empty()) checked.json = "report.json";
+    inspect::ReportOptions o = checked.options();
+    o.json = report.json;
+    return o;
+  }
+};
+
+struct RenderCommand {
+  CLI::App app;
+  cli::CameraArguments camera;
+  cli::FrameArguments frame;
+  cli::TextureArguments texture;
+  explicit RenderCommand(const std::vector<std::string>& words) {
+    cli::addCameraOptions(app, camera);
+    cli::addFrameOptions(app, frame);
+    cli::addTextureOptions(app, texture, "--texture");
+    parseWords(app, words);
+    frame.check("picture.png");
+    camera.check();
+    texture.check();
+  }
+};
+
+struct CompareCommand {
+  CLI::App app;
+  cli::CompareArguments compare;
+  cli::VerdictArguments verdict;
+  explicit CompareCommand(const std::vector<std::string>& words) {
+    cli::addCompareOptions(app, compare);
+    cli::addVerdictOptions(app, verdict);
+    parseWords(app, words);
+  }
+  inspect::CompareOptions options() const {
+    inspect::CompareOptions o = compare.resolve();
+    o.thresholds = verdict.thresholds();
+    return o;
+  }
+};
+
+}  // namespace
+
+ReportOptions ReportOptions::parse(const std::string& commandLine) {
+  return translatingErrors([&] {
+    const std::vector<std::string> words = splitCommandLine(commandLine);
+    ReportCommand(words).options();
+    return fromWords(words, reportFields());
+  });
+}
+
+RenderOptions RenderOptions::parse(const std::string& commandLine) {
+  return translatingErrors([&] {
+    const std::vector<std::string> words = splitCommandLine(commandLine);
+    RenderCommand{words};
+    return fromWords(words, renderFields());
+  });
+}
+
+CompareOptions CompareOptions::parse(const std::string& commandLine) {
+  return translatingErrors([&] {
+    const std::vector<std::string> words = splitCommandLine(commandLine);
+    CompareCommand(words).options();
+    return fromWords(words, compareFields());
+  });
+}
+
+std::string ReportOptions::commandLine() const { return joinCommandLine(wordsOf(*this, reportFields())); }
+std::string RenderOptions::commandLine() const { return joinCommandLine(wordsOf(*this, renderFields())); }
+std::string CompareOptions::commandLine() const { return joinCommandLine(wordsOf(*this, compareFields())); }
+
+std::string report(const Mapping& mapping, const ReportOptions& options) {
+  UVTK_CHECK(mapping.detail != nullptr);
+  return translatingErrors([&] {
+    const ReportCommand command(wordsOf(options, reportFields()));
+    const inspect::ReportOptions o = command.options();
+    const inspect::MappedMesh& mapped = mapping.detail->mapped;
+    const analysis::Judgement& judged = mapping.detail->judgement;
+    const analysis::Judgement judgement = o.overlapResolution == mapping.detail->overlapResolution
+                                              ? judged
+                                              : mapped.judge(judged.thresholds, o.overlapResolution);
+    const nlohmann::json& input = mapping.detail->input;
+    const nlohmann::json record = o.json.empty() && o.html.empty() ? inspect::reportJson(mapped, judgement, o, input)
+                                                                    : inspect::writeReport(o, mapped, judgement, input);
+    return record.dump(2);
+  });
+}
+
+std::vector<std::uint8_t> Image::bytes() const {
+  std::vector<std::uint8_t> out(pixels.size());
+  for (std::size_t i = 0; i < pixels.size(); ++i) out[i] = toUInt8(pixels[i]);
+  return out;
+}
+
+Image render(const Mapping& mapping, const RenderOptions& options) {
+  UVTK_CHECK(mapping.detail != nullptr);
+  return translatingErrors([&] {
+    const RenderCommand command(wordsOf(options, renderFields()));
+    const inspect::MappedMesh& mapped = mapping.detail->mapped;
+    const inspect::FrameOptions frame = command.frame.options();
+    if (frame.needsExact() && !mapped.exact)
+      throw UsageError(frame.perPixel ? "--uv per-pixel evaluates a mapping: the file's texture coordinates have none"
+                                      : "--view uverror compares with the exact mapping: the file's texture coordinates "
+                                        "have none");
+    cli::checkTextureUse(command.frame, command.texture,
+                         mapped.projector ? &*mapped.projector : nullptr);
+    const render::Camera camera = command.camera.make(mapped.mesh, Mat4::Identity(), frame.width, frame.height);
+    const inspect::BoundTexture texture = command.texture.load();
+    const render::RenderOptions renderOptions =
+        inspect::renderOptions(frame, command.texture.options(), texture, camera, Mat4::Identity());
+    const analysis::Judgement& judgement = mapping.detail->judgement;
+    const inspect::DrawnFrame drawn =
+        inspect::drawFrame(frame, mapped, renderOptions, [&]() -> const analysis::Judgement& { return judgement; });
+    Image image;
+    image.width = drawn.picture.width;
+    image.height = drawn.picture.height;
+    image.channels = drawn.picture.channels;
+    image.pixels = drawn.picture.pixels;
+    return image;
+  });
+}
+
+Comparison compare(const Mesh& mesh, const CompareOptions& options) {
+  const nlohmann::json input = inputRecord(mesh);
+  return translatingErrors([&] {
+    const CompareCommand command(wordsOf(options, compareFields()));
+    const inspect::CompareOptions o = command.options();
+    const uvtk::Mesh engine = toEngine(mesh);
+    const bool writes = !o.json.empty() || !o.markdown.empty() || !o.sheet.empty();
+    const inspect::Comparison ranked =
+        writes ? inspect::compareMappings(o, engine, input) : inspect::rankMappings(o, engine, input);
+    return Comparison{ranked.record.dump(2), ranked.table, ranked.best};
+  });
+}
+
+}  // namespace uvtk::api

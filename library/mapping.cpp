@@ -1,0 +1,234 @@
+// Mapping a public mesh: the options of `uvtk map` and `uvtk texgen` as structs and as command
+// lines, and map(), texgen(), fileUvs() over the engine's mapped-mesh step.
+#include <cstdio>
+#include <functional>
+#include <nlohmann/json.hpp>
+
+#include "core/math.h"
+#include "detail.h"
+#include "option_fields.h"
+#include "inspect/texgen_job.h"
+#include "io/obj_writer.h"
+#include "options/cli_values.h"
+#include "options/projector_cli.h"
+#include "options/texgen_cli.h"
+#include "options/verdict_cli.h"
+
+namespace uvtk::api {
+
+namespace {
+
+const std::vector<Field<MapOptions>>& mapFields() {
+  using O = MapOptions;
+  static const std::vector<Field<O>> fields = {
+      textField("--projector", &O::projector),
+      textField("--omap", &O::omap),
+      textField("--fit", &O::fit),
+      textField("--axis", &O::axis),
+      optionalArrayField("--center", &O::center),
+      arrayField("--axis-dir", &O::axisDir),
+      arrayField("--ref-dir", &O::refDir),
+      numberField("--scale", &O::scale),
+      arrayField("--plane-u", &O::planeU),
+      arrayField("--plane-v", &O::planeV),
+      flagField("--caps", &O::caps),
+      numberField("--cap-angle", &O::capAngle),
+      textField("--sphere-preset", &O::spherePreset),
+      textField("--cube-convention", &O::cubeConvention),
+      textField("--cube-layout", &O::cubeLayout),
+      optionalArrayField("--eye", &O::eye),
+      flagField("--at-infinity", &O::atInfinity),
+      textField("--seam", &O::seam),
+      textField("--pole", &O::pole),
+      numberField("--pole-eps", &O::poleEps),
+      textField("--seam-place", &O::seamPlace),
+      arrayField("--uv-scale", &O::uvScale),
+      arrayField("--uv-offset", &O::uvOffset),
+      numberField("--uv-rotate", &O::uvRotate),
+      flagField("--flip-u", &O::flipU),
+      flagField("--flip-v", &O::flipV),
+      textField("--precision", &O::precision),
+      textField("--math", &O::math),
+      textField("--convention", &O::convention),
+      listField("--fail-on", &O::failOn),
+      listField("--warn-on", &O::warnOn),
+      integerField("--overlap-resolution", &O::overlapResolution),
+  };
+  return fields;
+}
+
+const std::vector<Field<TexgenOptions>>& texgenFields() {
+  using O = TexgenOptions;
+  static const std::vector<Field<O>> fields = {
+      textField("--s", &O::s),
+      textField("--t", &O::t),
+      textField("--r", &O::r),
+      textField("--q", &O::q),
+      textField("--mode", &O::mode),
+      optionalArrayField("--texmatrix", &O::texmatrix),
+      flagField("--no-normalize", &O::normalize, false),
+      arrayField("--eye", &O::eye),
+      arrayField("--center", &O::center),
+      arrayField("--up", &O::up),
+      optionalArrayField("--model", &O::model),
+      textField("--precision", &O::precision),
+  };
+  return fields;
+}
+
+// `uvtk map`'s options, parsed as the command parses them.
+struct MapCommand {
+  CLI::App app;
+  cli::ProjectorArguments projector;
+  cli::VerdictArguments verdict;
+  int overlapResolution = 1024;
+
+  explicit MapCommand(const std::vector<std::string>& words) {
+    cli::addProjectorOptions(app, projector);
+    cli::addVerdictOptions(app, verdict);
+    app.add_option("--overlap-resolution", overlapResolution)->check(CLI::Range(16, 8192));
+    parseWords(app, words);
+    verdict.check();
+  }
+};
+
+struct TexgenCommand {
+  CLI::App app;
+  cli::TexgenArguments texgen;
+  std::string eye = "0,0,0", center = "0,0,-1", up = "0,1,0", model;
+
+  explicit TexgenCommand(const std::vector<std::string>& words) {
+    cli::addTexgenOptions(app, texgen, "--mode");
+    app.add_option("--eye", eye);
+    app.add_option("--center", center);
+    app.add_option("--up", up);
+    app.add_option("--model", model);
+    parseWords(app, words);
+  }
+
+  texgen::TexgenOptions resolve() const {
+    const Mat4 view = lookAt(cli::parseVec3(eye, "--eye"), cli::parseVec3(center, "--center"), cli::parseVec3(up, "--up"));
+    const Mat4 modelMatrix = model.empty() ? Mat4::Identity() : cli::parseMatrix(model, "--model");
+    return texgen.resolve(view, modelMatrix);
+  }
+};
+
+Reason reasonOf(const analysis::Reason& reason) {
+  return {analysis::toString(reason.rule), analysis::toString(reason.severity), reason.value, reason.threshold,
+          reason.faces, reason.text()};
+}
+
+}  // namespace
+
+MapOptions MapOptions::parse(const std::string& commandLine) {
+  return translatingErrors([&] {
+    const std::vector<std::string> words = splitCommandLine(commandLine);
+    MapCommand(words).projector.resolve();
+    return fromWords(words, mapFields());
+  });
+}
+
+std::string MapOptions::commandLine() const { return joinCommandLine(wordsOf(*this, mapFields())); }
+
+TexgenOptions TexgenOptions::parse(const std::string& commandLine) {
+  return translatingErrors([&] {
+    const std::vector<std::string> words = splitCommandLine(commandLine);
+    TexgenCommand(words).resolve();
+    return fromWords(words, texgenFields());
+  });
+}
+
+std::string TexgenOptions::commandLine() const { return joinCommandLine(wordsOf(*this, texgenFields())); }
+
+nlohmann::json inputRecord(const Mesh& mesh) {
+  const MeshWarnings warnings = checkMesh(mesh);
+  return {{"vertices", mesh.positions.size()},
+          {"faces", mesh.triangles.size()},
+          {"degenerate_faces", warnings.degenerateFaces},
+          {"unreferenced_vertices", warnings.unreferencedVertices}};
+}
+
+Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thresholds, int overlapResolution,
+                    nlohmann::json input, std::optional<texgen::TexgenOptions> texgen) {
+  auto detail = std::make_shared<MappingDetail>();
+  detail->judgement = mapped.judge(thresholds, overlapResolution);
+  detail->overlapResolution = overlapResolution;
+  detail->input = std::move(input);
+  detail->texgen = std::move(texgen);
+  detail->mapped = std::move(mapped);
+  const inspect::MappedMesh& m = detail->mapped;
+  const analysis::Judgement& judgement = detail->judgement;
+
+  Mapping mapping;
+  mapping.mesh = fromEngine(m.mesh);
+  const std::size_t corners = m.uv.uv.size();
+  mapping.uv.resize(corners);
+  for (std::size_t c = 0; c < corners; ++c) mapping.uv[c] = {m.uv.uv[c].x(), m.uv.uv[c].y()};
+  mapping.w = m.uv.w;
+  mapping.q = m.q;
+  mapping.faceFlags = m.uv.faceFlags;
+  mapping.invalidReason.resize(corners);
+  mapping.state.resize(corners, CornerState::Ok);
+  std::vector<bool> pole(m.mesh.vertexCount(), false);
+  for (const int v : judgement.summary.poleVertices)
+    if (v >= 0 && std::size_t(v) < pole.size()) pole[std::size_t(v)] = true;
+  for (std::size_t c = 0; c < corners; ++c) {
+    mapping.invalidReason[c] = InvalidReason(m.uv.cornerInvalid[c]);
+    if (m.uv.cornerInvalid[c] != kCornerValid)
+      mapping.state[c] = CornerState::Invalid;
+    else if (pole[std::size_t(m.mesh.triangles[c / 3][c % 3])])
+      mapping.state[c] = CornerState::Pole;
+  }
+  mapping.source = m.source;
+  mapping.verdict.status = analysis::toString(judgement.verdict);
+  for (const analysis::Reason& reason : judgement.reasons) mapping.verdict.reasons.push_back(reasonOf(reason));
+  nlohmann::json summary = inspect::mapSummaryJson(m, judgement, detail->input, "");
+  summary.erase("output");
+  mapping.summaryJson = summary.dump();
+  mapping.detail = std::move(detail);
+  return mapping;
+}
+
+Mapping map(const Mesh& mesh, const MapOptions& options) {
+  nlohmann::json input = inputRecord(mesh);
+  return translatingErrors([&] {
+    const MapCommand command(wordsOf(options, mapFields()));
+    const param::ProjectorOptions resolved = command.projector.resolve();
+    return makeMapping(inspect::mapByProjector(toEngine(mesh), resolved, command.projector.seamPlaceAuto()),
+                       command.verdict.thresholds(), command.overlapResolution, std::move(input));
+  });
+}
+
+Mapping texgen(const Mesh& mesh, const TexgenOptions& options) {
+  nlohmann::json input = inputRecord(mesh);
+  return translatingErrors([&] {
+    const TexgenCommand command(wordsOf(options, texgenFields()));
+    const texgen::TexgenOptions resolved = command.resolve();
+    return makeMapping(inspect::mapByTexgen(toEngine(mesh), resolved), {}, 1024, std::move(input), resolved);
+  });
+}
+
+Mapping fileUvs(const Mesh& mesh) {
+  nlohmann::json input = inputRecord(mesh);
+  return translatingErrors(
+      [&] { return makeMapping(inspect::withFileUvs(toEngine(mesh), "mesh"), {}, 1024, std::move(input)); });
+}
+
+void writeMesh(const std::string& path, const Mapping& mapping, const WriteOptions& options) {
+  if (options.uvDigits != "double" && options.uvDigits != "float")
+    throw std::invalid_argument("writeMesh: uvDigits is '" + options.uvDigits + "', expected double or float");
+  UVTK_CHECK(mapping.detail != nullptr);
+  translatingErrors([&] {
+    const inspect::MappedMesh& mapped = mapping.detail->mapped;
+    io::ObjWriteOptions write;
+    write.writeW = options.writeW;
+    write.floatPrecision = options.uvDigits == "float";
+    if (!mapping.detail->texgen) return io::writeObj(path, mapped.mesh, &mapped.uv, write);
+    // As `uvtk texgen -o`: r when generated, and (s, t, r) divided by q where q is not 1.
+    write.writeW = write.writeW || inspect::texgenWritesR(*mapping.detail->texgen);
+    const inspect::ProjectiveDivision divided = inspect::divideByQ(mapped.uv, mapped.q);
+    io::writeObj(path, mapped.mesh, divided.applied ? &divided.uv : &mapped.uv, write);
+  });
+}
+
+}  // namespace uvtk::api

@@ -1,0 +1,154 @@
+// How a public options struct meets the command line: one Field per option, which sets the
+// struct's field from the option's parsed results (parse()) and gives the words of the option
+// (commandLine(), nothing at the default). The command line's own parser checks the words.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "options/cli_values.h"
+
+namespace uvtk::api {
+
+// Shortest text that reads back as the same double.
+inline std::string number(double value) {
+  char text[32];
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, value);
+    if (std::strtod(text, nullptr) == value) break;
+  }
+  return text;
+}
+
+template <std::size_t N>
+std::string numbers(const std::array<double, N>& values) {
+  std::string text;
+  for (std::size_t i = 0; i < N; ++i) text += (i ? "," : "") + number(values[i]);
+  return text;
+}
+
+template <std::size_t N>
+std::array<double, N> arrayFrom(const std::string& text, const std::string& option) {
+  const Eigen::VectorXd parsed = cli::parseNumbers(text, int(N), option);
+  std::array<double, N> values;
+  for (std::size_t i = 0; i < N; ++i) values[i] = parsed[Eigen::Index(i)];
+  return values;
+}
+
+// One option of a struct: how parse() sets its field from the option's results, and the words
+// commandLine() gives for it (none at its default).
+template <class Options>
+struct Field {
+  const char* name;
+  std::function<void(Options&, const std::vector<std::string>&)> set;
+  std::function<std::vector<std::string>(const Options&)> words;
+};
+
+template <class Options, class Value>
+Field<Options> textField(const char* name, Value Options::*member) {
+  return {name, [member](Options& o, const std::vector<std::string>& r) { o.*member = r.back(); },
+          [name, member](const Options& o) {
+            return o.*member == Options{}.*member ? std::vector<std::string>{}
+                                                  : std::vector<std::string>{name, o.*member};
+          }};
+}
+
+template <class Options>
+Field<Options> numberField(const char* name, double Options::*member) {
+  return {name, [member, name](Options& o, const std::vector<std::string>& r) { o.*member = std::stod(r.back()); },
+          [name, member](const Options& o) {
+            return o.*member == Options{}.*member ? std::vector<std::string>{}
+                                                  : std::vector<std::string>{name, number(o.*member)};
+          }};
+}
+
+template <class Options>
+Field<Options> integerField(const char* name, int Options::*member) {
+  return {name, [member](Options& o, const std::vector<std::string>& r) { o.*member = std::stoi(r.back()); },
+          [name, member](const Options& o) {
+            return o.*member == Options{}.*member ? std::vector<std::string>{}
+                                                  : std::vector<std::string>{name, std::to_string(o.*member)};
+          }};
+}
+
+template <class Options>
+Field<Options> flagField(const char* name, bool Options::*member, bool whenGiven = true) {
+  return {name, [member, whenGiven](Options& o, const std::vector<std::string>&) { o.*member = whenGiven; },
+          [name, member, whenGiven](const Options& o) {
+            return o.*member == whenGiven ? std::vector<std::string>{name} : std::vector<std::string>{};
+          }};
+}
+
+template <class Options, std::size_t N>
+Field<Options> arrayField(const char* name, std::array<double, N> Options::*member) {
+  return {name,
+          [member, name](Options& o, const std::vector<std::string>& r) { o.*member = arrayFrom<N>(r.back(), name); },
+          [name, member](const Options& o) {
+            return o.*member == Options{}.*member ? std::vector<std::string>{}
+                                                  : std::vector<std::string>{name, numbers(o.*member)};
+          }};
+}
+
+template <class Options, std::size_t N>
+Field<Options> optionalArrayField(const char* name, std::optional<std::array<double, N>> Options::*member) {
+  return {name,
+          [member, name](Options& o, const std::vector<std::string>& r) { o.*member = arrayFrom<N>(r.back(), name); },
+          [name, member](const Options& o) {
+            return o.*member ? std::vector<std::string>{name, numbers(*(o.*member))} : std::vector<std::string>{};
+          }};
+}
+
+template <class Options>
+Field<Options> listField(const char* name, std::vector<std::string> Options::*member) {
+  return {name, [member](Options& o, const std::vector<std::string>& r) { o.*member = r; },
+          [name, member](const Options& o) {
+            std::vector<std::string> words;
+            for (const std::string& value : o.*member) words.insert(words.end(), {name, value});
+            return words;
+          }};
+}
+
+template <class Options>
+std::vector<std::string> wordsOf(const Options& options, const std::vector<Field<Options>>& fields) {
+  std::vector<std::string> words;
+  for (const Field<Options>& field : fields) {
+    const std::vector<std::string> more = field.words(options);
+    words.insert(words.end(), more.begin(), more.end());
+  }
+  return words;
+}
+
+// The options `words` give (already checked by the command line's parser), set on a default
+// struct through `fields`. Read from the words, not from the parser's results, which hold a
+// choice's value rather than its name. "--name value...", "--name=value"; a value never starts
+// with "--" (negative numbers start with one dash).
+template <class Options>
+Options fromWords(const std::vector<std::string>& words, const std::vector<Field<Options>>& fields) {
+  std::map<std::string, std::vector<std::string>> given;
+  std::vector<std::string>* values = nullptr;
+  for (const std::string& word : words) {
+    if (word.rfind("--", 0) == 0) {
+      const std::size_t equals = word.find('=');
+      values = &given[word.substr(0, equals)];
+      if (equals != std::string::npos) values->push_back(word.substr(equals + 1));
+    } else if (values) {
+      values->push_back(word);
+    }
+  }
+  Options options;
+  for (const Field<Options>& field : fields) {
+    const auto found = given.find(field.name);
+    if (found != given.end()) field.set(options, found->second);
+  }
+  return options;
+}
+
+}  // namespace uvtk::api

@@ -1,0 +1,117 @@
+#include "options/option_names.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "core/progress.h"
+
+namespace uvtk::cli {
+
+using namespace uvtk::param;
+
+// The option names of each choice, shared by the options and the JSON record of a run.
+const std::vector<std::pair<std::string, SurfaceKind>> kSurfaceNames = {{"plane", SurfaceKind::Plane},
+                                                                        {"two-plane", SurfaceKind::TwoPlane},
+                                                                        {"cylinder", SurfaceKind::Cylinder},
+                                                                        {"sphere", SurfaceKind::Sphere},
+                                                                        {"cube", SurfaceKind::Cube}};
+const std::vector<std::pair<std::string, RayKind>> kRayNames = {{"isn", RayKind::SurfaceNormal},
+                                                                {"centroid", RayKind::Centroid},
+                                                                {"normal", RayKind::ObjectNormal},
+                                                                {"reflection", RayKind::Reflection}};
+const std::vector<std::pair<std::string, Fit>> kFitNames = {
+    {"none", Fit::None}, {"bbox", Fit::BBox}, {"center", Fit::Center}, {"pca", Fit::Pca}, {"obb", Fit::Obb}};
+const std::vector<std::pair<std::string, int>> kAxisNames = {{"x", 0}, {"y", 1}, {"z", 2}};
+const std::vector<std::pair<std::string, SpherePreset>> kSpherePresetNames = {
+    {"default", SpherePreset::Default}, {"glu", SpherePreset::Glu}, {"seed004", SpherePreset::Seed004}};
+const std::vector<std::pair<std::string, CubeConvention>> kCubeConventionNames = {{"gl", CubeConvention::Gl},
+                                                                                  {"direct", CubeConvention::Direct}};
+const std::vector<std::pair<std::string, CubeLayout>> kCubeLayoutNames = {{"faces", CubeLayout::Faces},
+                                                                          {"cross", CubeLayout::Cross},
+                                                                          {"strip", CubeLayout::Strip},
+                                                                          {"3x2", CubeLayout::ThreeByTwo}};
+const std::vector<std::pair<std::string, SeamMode>> kSeamNames = {
+    {"none", SeamMode::None}, {"shift", SeamMode::Shift}, {"cut", SeamMode::Cut}};
+const std::vector<std::pair<std::string, PoleMode>> kPoleNames = {{"none", PoleMode::None}, {"fan", PoleMode::Fan}};
+const std::vector<std::pair<std::string, Precision>> kPrecisionNames = {{"double", Precision::Double},
+                                                                        {"float", Precision::Float}};
+const std::vector<std::pair<std::string, MathMode>> kMathNames = {
+    {"exact", MathMode::Exact}, {"fast", MathMode::Fast}, {"fast-u10", MathMode::FastU10}};
+
+namespace {
+
+// The name `table` gives `value` (cli_values.h has the same for the parser's side).
+template <class Enum>
+const std::string& nameOf(const std::vector<std::pair<std::string, Enum>>& table, Enum value) {
+  for (const auto& [name, v] : table)
+    if (v == value) return name;
+  throw std::logic_error("a choice without a name");
+}
+
+}  // namespace
+
+const std::string& precisionName(Precision precision) { return nameOf(kPrecisionNames, precision); }
+const std::string& mathName(MathMode math) { return nameOf(kMathNames, math); }
+
+nlohmann::json projectorOptionsJson(const ProjectorOptions& o) {
+  nlohmann::json j = {{"projector", nameOf(kSurfaceNames, o.surface)},
+                      {"omap", nameOf(kRayNames, o.ray)},
+                      {"fit", nameOf(kFitNames, o.placement.fit)},
+                      {"axis", nameOf(kAxisNames, o.placement.axis)},
+                      {"turn_degrees", o.placement.turnDegrees},
+                      {"seam", nameOf(kSeamNames, o.seam)},
+                      {"pole", nameOf(kPoleNames, o.pole)},
+                      {"pole_eps", o.poleEpsilon},
+                      {"sphere_preset", nameOf(kSpherePresetNames, o.spherePreset)},
+                      {"cube_convention", nameOf(kCubeConventionNames, o.cubeConvention)},
+                      {"cube_layout", nameOf(kCubeLayoutNames, o.cubeLayout)},
+                      {"caps", o.cylinderCaps},
+                      {"cap_angle", o.capAngleDegrees},
+                      {"plane_u", {o.planeU[0], o.planeU[1], o.planeU[2], o.planeU[3]}},
+                      {"plane_v", {o.planeV[0], o.planeV[1], o.planeV[2], o.planeV[3]}},
+                      {"uv_scale", {o.uvTransform.scale.x(), o.uvTransform.scale.y()}},
+                      {"uv_offset", {o.uvTransform.offset.x(), o.uvTransform.offset.y()}},
+                      {"uv_rotate", o.uvTransform.rotateDegrees},
+                      {"flip_u", o.uvTransform.flipU},
+                      {"flip_v", o.uvTransform.flipV},
+                      {"precision", precisionName(o.arithmetic.precision)},
+                      {"math", mathName(o.arithmetic.math)}};
+  if (const auto& f = o.placement.frame)
+    j["frame"] = {{"center", {f->center.x(), f->center.y(), f->center.z()}},
+                  {"axis_dir", {f->axisDir.x(), f->axisDir.y(), f->axisDir.z()}},
+                  {"ref_dir", {f->refDir.x(), f->refDir.y(), f->refDir.z()}},
+                  {"scale", f->scale}};
+  if (o.eye) j["eye"] = {o.eye->x(), o.eye->y(), o.eye->z()};
+  if (o.ray == RayKind::Reflection) j["at_infinity"] = o.atInfinity;
+  return j;
+}
+
+nlohmann::json seamPlacementJson(const SeamPlacement& p) {
+  return {{"turn_degrees", p.turnDegrees},
+          {"faces_crossed", p.facesCrossed},
+          {"faces_crossed_before", p.facesCrossedBefore},
+          {"seam_length", p.seamLength},
+          {"seam_length_before", p.seamLengthBefore}};
+}
+
+const std::vector<std::pair<std::string, texgen::TexgenMode>> kTexgenModeNames = {
+    {"object_linear", texgen::TexgenMode::ObjectLinear}, {"eye_linear", texgen::TexgenMode::EyeLinear},
+    {"sphere_map", texgen::TexgenMode::SphereMap},       {"normal_map", texgen::TexgenMode::NormalMap},
+    {"reflection_map", texgen::TexgenMode::ReflectionMap}, {"off", texgen::TexgenMode::Off}};
+
+const char* texgenModeName(texgen::TexgenMode mode) {
+  for (const auto& [name, value] : kTexgenModeNames)
+    if (value == mode) return name.c_str();
+  return "?";
+}
+
+void printSeamPlacement(const SeamPlacement& p) {
+  if (quiet()) return;  // a note, not a warning
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "uvtk: seam placed at %.6g degrees: it crosses %zu faces (%zu before), seam length %.6g (%.6g before)",
+                p.turnDegrees, p.facesCrossed, p.facesCrossedBefore, p.seamLength, p.seamLengthBefore);
+  printProgressMessage(line);  // above a progress bar, not through it
+}
+
+}  // namespace uvtk::cli

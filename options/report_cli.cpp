@@ -1,0 +1,46 @@
+#include "options/report_cli.h"
+
+#include "options/cli_values.h"
+
+namespace uvtk::cli {
+
+inspect::ViewCamera ViewCameraArguments::resolve() const {
+  inspect::ViewCamera camera;
+  camera.viewDir = parseVec3(viewDir, "--view-dir");
+  camera.up = parseVec3(up, "--up");
+  return camera;
+}
+
+void addViewCameraOptions(CLI::App& app, ViewCameraArguments& a) {
+  app.add_option("--view-dir", a.viewDir, "Direction from the mesh to the camera of the views")->capture_default_str();
+  app.add_option("--up", a.up, "The up direction of the views' camera")->capture_default_str();
+}
+
+void addReportOptions(CLI::App& app, ReportArguments& a) {
+  app.add_option("--json", a.json, "Write every measure as JSON");
+  app.add_option("--html", a.html, "Write one self-contained HTML page with the views, measures and histograms");
+  app.add_option("--views", a.views, "The views on the HTML page")->capture_default_str();
+  app.add_option("--size", a.size, "Size of each view WxH")->capture_default_str();
+  addViewCameraOptions(app, a.camera);
+  app.add_option("--texture-size", a.textureSize, "Texels across the texture whose texels uverror counts")
+      ->capture_default_str();
+  app.add_option("--overlap-resolution", a.overlapResolution, "Pixels across the layout raster that measures overlap")
+      ->capture_default_str();
+  app.add_option("--threads", a.threads, "Threads for the views (0: one per hardware thread)")->capture_default_str();
+}
+
+inspect::ReportOptions ReportArguments::options() const {
+  inspect::ReportOptions o;
+  o.json = json;
+  o.html = html;
+  o.overlapResolution = overlapResolution;
+  o.textureSize = textureSize;
+  o.threads = threads;
+  o.check();
+  if (!html.empty()) o.views = views::parseViewList(views);  // the page's views: read only for a page
+  std::tie(o.width, o.height) = parseImageSize(size, "--size");
+  o.camera = camera.resolve();
+  return o;
+}
+
+}  // namespace uvtk::cli

@@ -1,0 +1,708 @@
+// The Python module uvtk (docs/python.md): a thin face over the public C++ libraries, uvtk/uvtk.h
+// and uvtk/point.h, and nothing else. Options arrive as keywords and become the command line's
+// words, so every option of the CLI works here, parsed and rejected with the CLI's messages.
+// Arrays go out as read-only numpy views of the C++ object's vectors, which the view keeps alive.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "uvtk/point.h"
+#include "uvtk/uvtk.h"
+
+namespace py = pybind11;
+namespace api = uvtk::api;
+
+namespace {
+
+// A mapping and the uvtk.Mesh it was made from: with --seam cut the mapping's own mesh has more
+// faces, and report(mesh, m) must still accept the mesh the user passed.
+struct PyMapping {
+  api::Mapping mapping;
+  py::object input;
+};
+
+// What uvtk.eval returns: one entry per point.
+struct EvalResult {
+  py::object u, v, w, q, status;
+  py::list reason;
+  std::string mapping;
+};
+
+using Shape = std::vector<py::ssize_t>;
+
+Shape cStrides(const Shape& shape, py::ssize_t itemSize) {
+  Shape strides(shape.size(), itemSize);
+  for (std::size_t i = shape.size(); i-- > 1;) strides[i - 1] = strides[i] * shape[i];
+  return strides;
+}
+
+// A read-only array over `data` that keeps `owner` alive.
+template <class T>
+py::array view(py::handle owner, const T* data, const Shape& shape) {
+  py::array array(py::dtype::of<T>(), shape, cStrides(shape, sizeof(T)), data, owner);
+  array.attr("flags").attr("writeable") = false;
+  return array;
+}
+
+// An array that owns `values` (moved, not copied): a capsule deletes them with the array.
+template <class T>
+py::array owning(std::vector<T>&& values, const Shape& shape) {
+  auto* owned = new std::vector<T>(std::move(values));
+  const py::capsule capsule(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  return py::array(py::dtype::of<T>(), shape, cStrides(shape, sizeof(T)), owned->data(), capsule);
+}
+
+py::ssize_t count(std::size_t n) { return py::ssize_t(n); }
+
+// ---- keywords -> the command line's words ----
+
+// `word` as splitCommandLine reads it back: plain, or in single quotes.
+std::string quoted(const std::string& word) {
+  if (!word.empty() && word.find_first_of(" \t\n'\"\\") == std::string::npos) return word;
+  std::string text = "'";
+  for (const char c : word) text += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return text + "'";
+}
+
+// numpy scalars and arrays become Python numbers and lists, paths (os.PathLike) strings.
+py::object plain(py::handle value) {
+  if (py::hasattr(value, "__fspath__")) return py::module_::import("os").attr("fspath")(value);
+  if (!py::isinstance<py::str>(value) && py::hasattr(value, "tolist")) return value.attr("tolist")();
+  return py::reinterpret_borrow<py::object>(value);
+}
+
+// A number as the command line spells it: repr() of a float reads back as the same double.
+std::string numberText(const std::string& option, py::handle value) {
+  if (py::isinstance<py::bool_>(value) || !(py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value)))
+    throw py::type_error(option + ": expected numbers, got " + py::repr(value).cast<std::string>());
+  return py::isinstance<py::int_>(value) ? py::str(value).cast<std::string>() : py::repr(value).cast<std::string>();
+}
+
+// The keywords as a command line: cap_angle=30 -> "--cap-angle=30", True -> the flag, False and
+// None -> nothing, numbers -> "a,b,c" (size=(w, h) -> "WxH"), a list of strings -> the option
+// repeated. "--name=value" keeps a value such as "-1,0,0" from reading as an option.
+std::string commandLine(const py::kwargs& kwargs) {
+  std::string line;
+  auto add = [&line](const std::string& word) { line += (line.empty() ? "" : " ") + quoted(word); };
+  for (const auto& [key, rawValue] : kwargs) {
+    std::string name = key.cast<std::string>();
+    const bool isSize = name == "size";
+    for (char& c : name) c = c == '_' ? '-' : c;
+    name = "--" + name;
+    const py::object value = plain(rawValue);
+    if (value.is_none()) continue;
+    if (py::isinstance<py::bool_>(value)) {
+      if (value.cast<bool>()) add(name);
+    } else if (py::isinstance<py::str>(value)) {
+      add(name + "=" + value.cast<std::string>());
+    } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+      const py::sequence items = value;
+      if (items.size() > 0 && py::isinstance<py::str>(items[0])) {
+        for (const py::handle item : items) add(name + "=" + py::str(item).cast<std::string>());
+      } else if (items.size() > 0) {
+        std::string text;
+        for (const py::handle item : items) text += (text.empty() ? "" : isSize ? "x" : ",") + numberText(name, item);
+        add(name + "=" + text);
+      }
+    } else {
+      add(name + "=" + numberText(name, value));
+    }
+  }
+  return line;
+}
+
+// The options from either an options object or keywords (not both: which would win is unclear).
+template <class Options>
+Options optionsFrom(const py::object& options, const py::kwargs& kwargs) {
+  if (!options.is_none() && kwargs.size() > 0)
+    throw py::type_error("give the options either as an options object or as keywords, not both");
+  if (!options.is_none()) return options.cast<Options>();
+  return Options::parse(commandLine(kwargs));
+}
+
+// ---- meshes ----
+
+const api::Mesh& meshOf(py::handle object) {
+  if (!py::isinstance<api::Mesh>(object))
+    throw py::type_error("expected a uvtk.Mesh, got " + py::repr(py::type::handle_of(object)).cast<std::string>());
+  return object.cast<const api::Mesh&>();
+}
+
+std::string shapeText(const py::array& array) {
+  std::string text = "(";
+  for (py::ssize_t i = 0; i < array.ndim(); ++i) text += (i ? ", " : "") + std::to_string(array.shape(i));
+  return text + (array.ndim() == 1 ? ",)" : ")");
+}
+
+void requireShape(const char* what, const py::array& array, const Shape& shape, const char* expected) {
+  bool ok = array.ndim() == py::ssize_t(shape.size());
+  for (std::size_t i = 0; ok && i < shape.size(); ++i) ok = shape[i] < 0 || array.shape(py::ssize_t(i)) == shape[i];
+  if (!ok) throw py::value_error(std::string(what) + ": expected an array of shape " + expected + ", got " + shapeText(array));
+}
+
+using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// Triangles of any integer dtype, as int32 (an index that does not fit is a ValueError).
+std::vector<api::Triangle> trianglesFrom(const py::object& object) {
+  const py::array any = py::module_::import("numpy").attr("asarray")(object);
+  const char kind = any.dtype().kind();
+  if (kind != 'i' && kind != 'u')
+    throw py::type_error("triangles: expected an integer array, got dtype " + py::str(any.dtype()).cast<std::string>());
+  requireShape("triangles", any, {-1, 3}, "(F, 3)");
+  const auto indices = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(any);
+  std::vector<api::Triangle> triangles(std::size_t(indices.shape(0)));
+  const std::int64_t* data = indices.data();
+  for (std::size_t i = 0; i < triangles.size() * 3; ++i) {
+    if (data[i] < std::numeric_limits<int>::min() || data[i] > std::numeric_limits<int>::max() ||
+        (kind == 'u' && data[i] < 0))
+      throw py::value_error("triangles: face " + std::to_string(i / 3) + " has index " +
+                            py::str(any.attr("flat")[py::int_(i)]).cast<std::string>() + ", beyond int32");
+    triangles[i / 3][i % 3] = int(data[i]);
+  }
+  return triangles;
+}
+
+api::Mesh meshFrom(const Doubles& positions, const py::object& triangles, const py::object& uv, const py::object& normals) {
+  requireShape("positions", positions, {-1, 3}, "(N, 3)");
+  api::Mesh mesh;
+  mesh.positions.resize(std::size_t(positions.shape(0)));
+  std::copy_n(positions.data(), mesh.positions.size() * 3, mesh.positions.data()->data());
+  mesh.triangles = trianglesFrom(triangles);
+  const py::ssize_t faces = count(mesh.triangles.size());
+  if (!uv.is_none()) {
+    const auto corners = Doubles::ensure(uv);
+    if (!corners) throw py::type_error("uv: expected an array of numbers");
+    requireShape("uv", corners, {faces, 3, 2}, "(F, 3, 2)");
+    mesh.cornerTexcoords.assign(mesh.triangles.size(), {-1, -1, -1});
+    for (std::size_t c = 0; c < mesh.triangles.size() * 3; ++c) {
+      const double u = corners.data()[2 * c], v = corners.data()[2 * c + 1];
+      if (std::isnan(u) && std::isnan(v)) continue;  // this corner has none
+      mesh.cornerTexcoords[c / 3][c % 3] = int(mesh.texcoords.size());
+      mesh.texcoords.push_back({u, v, 0.0});
+    }
+  }
+  if (!normals.is_none()) {
+    const auto given = Doubles::ensure(normals);
+    if (!given) throw py::type_error("normals: expected an array of numbers");
+    if (given.ndim() == 2) {  // per vertex
+      requireShape("normals", given, {count(mesh.positions.size()), 3}, "(N, 3) or (F, 3, 3)");
+      mesh.normals.resize(mesh.positions.size());
+      mesh.cornerNormals = mesh.triangles;
+    } else {  // per corner
+      requireShape("normals", given, {faces, 3, 3}, "(N, 3) or (F, 3, 3)");
+      mesh.normals.resize(mesh.triangles.size() * 3);
+      mesh.cornerNormals.resize(mesh.triangles.size());
+      for (std::size_t c = 0; c < mesh.normals.size(); ++c) mesh.cornerNormals[c / 3][c % 3] = int(c);
+    }
+    std::copy_n(given.data(), mesh.normals.size() * 3, mesh.normals.data()->data());
+  }
+  api::checkMesh(mesh);
+  return mesh;
+}
+
+// A corner table's values as (F, 3, K), NaN where a corner has none; None without a table.
+py::object perCorner(const std::vector<api::Vector3>& values, const std::vector<api::Triangle>& corners, std::size_t k) {
+  if (corners.empty()) return py::none();
+  py::array_t<double> array(Shape{count(corners.size()), 3, count(k)});
+  double* out = array.mutable_data();
+  for (std::size_t c = 0; c < corners.size() * 3; ++c) {
+    const int index = corners[c / 3][c % 3];
+    for (std::size_t i = 0; i < k; ++i)
+      out[c * k + i] = index >= 0 && std::size_t(index) < values.size() ? values[std::size_t(index)][i]
+                                                                         : std::numeric_limits<double>::quiet_NaN();
+  }
+  return std::move(array);
+}
+
+py::dict warningsDict(const api::MeshWarnings& w) {
+  py::dict d;
+  d["degenerate_faces"] = w.degenerateFaces;
+  d["unreferenced_vertices"] = w.unreferencedVertices;
+  d["non_simple_polygons"] = w.nonSimplePolygons;
+  d["first_non_simple_polygon_line"] = w.firstNonSimplePolygonLine;
+  d["vertex_colours"] = w.vertexColours;
+  d["parameter_vertices"] = w.parameterVertices;
+  return d;
+}
+
+// ---- mappings ----
+
+py::object jsonLoads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
+
+py::dict verdictDict(const api::Verdict& verdict) {
+  py::list reasons;
+  for (const api::Reason& r : verdict.reasons) {
+    py::dict reason;
+    reason["rule"] = r.rule;
+    reason["severity"] = r.severity;
+    reason["value"] = r.value;
+    reason["threshold"] = r.threshold;
+    reason["faces"] = r.faces;
+    reason["text"] = r.text;
+    reasons.append(reason);
+  }
+  py::dict d;
+  d["status"] = verdict.status;
+  d["reasons"] = reasons;
+  return d;
+}
+
+std::unique_ptr<PyMapping> wrap(api::Mapping&& mapping, py::object input) {
+  return std::make_unique<PyMapping>(PyMapping{std::move(mapping), std::move(input)});
+}
+
+// The mapping, after checking that `mesh` is what it maps: the mesh it was made from, its own
+// mesh, or a mesh of as many faces.
+const api::Mapping& mappingFor(const char* what, py::handle mesh, const PyMapping& m) {
+  if (mesh.is(m.input) || mesh.is_none()) return m.mapping;
+  const api::Mesh& given = meshOf(mesh);
+  if (&given != &m.mapping.mesh && given.triangles.size() != m.mapping.mesh.triangles.size())
+    throw py::value_error(std::string(what) + ": the mesh has " + std::to_string(given.triangles.size()) +
+                          " faces and the mapping's " + std::to_string(m.mapping.mesh.triangles.size()) +
+                          ": pass the mesh the mapping was made from");
+  return m.mapping;
+}
+
+api::WriteOptions writeOptions(const std::string& uvDigits, bool writeW) {
+  api::WriteOptions options;
+  options.uvDigits = uvDigits;
+  options.writeW = writeW;
+  return options;
+}
+
+// ---- single points ----
+
+EvalResult evaluate(const Doubles& points, const py::object& normals, const py::object& mesh, const py::kwargs& kwargs) {
+  if (points.ndim() < 1 || points.shape(points.ndim() - 1) != 3)
+    throw py::value_error("points: expected an array of shape (..., 3), got " + shapeText(points));
+  Shape shape(points.shape(), points.shape() + points.ndim() - 1);
+  const std::size_t n = std::size_t(points.size() / 3);
+  Doubles normalArray;
+  if (!normals.is_none()) {
+    normalArray = Doubles::ensure(normals);
+    if (!normalArray) throw py::type_error("normals: expected an array of numbers");
+    if (normalArray.size() != 3 && normalArray.size() != points.size())
+      throw py::value_error("normals: expected one normal (3,) or one per point " + shapeText(points) + ", got " +
+                            shapeText(normalArray));
+  }
+  std::vector<uvtk::point::Vector3> positions;
+  if (!mesh.is_none()) positions = meshOf(mesh).positions;
+  const std::string options = commandLine(kwargs);
+
+  py::array_t<double> u(shape), v(shape), w(shape), q(shape);
+  py::array_t<std::uint8_t> status(shape);
+  std::vector<const char*> reasons(n);
+  std::string mappingText;
+  {
+    py::gil_scoped_release release;
+    const uvtk::point::Mapping mapping(options, positions);
+    mappingText = mapping.options();
+    const double* p = points.data();
+    const double* normal = normalArray ? normalArray.data() : nullptr;
+    const std::size_t normalStep = normalArray && normalArray.size() != 3 ? 3 : 0;
+    double *uOut = u.mutable_data(), *vOut = v.mutable_data(), *wOut = w.mutable_data(), *qOut = q.mutable_data();
+    std::uint8_t* statusOut = status.mutable_data();
+    for (std::size_t i = 0; i < n; ++i) {
+      const uvtk::point::Vector3 at{p[3 * i], p[3 * i + 1], p[3 * i + 2]};
+      const uvtk::point::Vector3 nAt = normal ? uvtk::point::Vector3{normal[normalStep * i], normal[normalStep * i + 1],
+                                                                     normal[normalStep * i + 2]}
+                                              : uvtk::point::Vector3{0.0, 0.0, 0.0};
+      const uvtk::point::Result r = mapping.at(at, nAt);
+      uOut[i] = r.u, vOut[i] = r.v, wOut[i] = r.w, qOut[i] = r.q;
+      statusOut[i] = std::uint8_t(r.status);
+      reasons[i] = r.reason;
+    }
+  }
+  EvalResult result{u, v, w, q, status, py::list(), mappingText};
+  for (const char* reason : reasons) result.reason.append(reason);
+  return result;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(uvtk, m) {
+  m.doc() = R"(uvtk: texture coordinates for triangle meshes, and proof that they are right.
+
+The Python face of the C++ library (docs/python.md): the numbers are those of the `uvtk` command
+line, bit for bit. Options are keywords named as the command line's options (cap_angle=30 is
+--cap-angle 30), parsed by the command line's own parser, so its messages are the errors here.)";
+
+  py::register_exception<api::InputError>(m, "InputError", PyExc_Exception)
+      .doc() = "A file could not be read: 'PATH:LINE: error: ...' (the command line's exit 3).";
+  py::register_exception<api::OutputError>(m, "OutputError", PyExc_OSError)
+      .doc() = "An output could not be written, and nothing was left behind: 'PATH: error: cannot write: ...'.";
+
+  m.attr("__version__") = api::version();
+  m.def("version", &api::version, "The library's version, as `uvtk --version` prints it.");
+
+  // Corner states (Mapping.state), face flags (Mapping.face_flags), invalid reasons, point statuses.
+  m.attr("OK") = int(api::CornerState::Ok);
+  m.attr("POLE") = int(api::CornerState::Pole);
+  m.attr("INVALID") = int(api::CornerState::Invalid);
+  m.attr("INVALID_REASONS") = py::make_tuple("valid", "miss", "behind", "out_of_range", "not_finite", "no_texcoord");
+  m.attr("FACE_INVALID") = int(api::kFaceInvalid);
+  m.attr("FACE_POLE") = int(api::kFacePole);
+  m.attr("FACE_SEAM_STRADDLE") = int(api::kFaceSeamStraddle);
+  m.attr("FACE_CUBE_SEAM") = int(api::kFaceCubeSeam);
+  m.attr("FACE_CAP") = int(api::kFaceCap);
+  m.attr("FACE_SPHERE_MAP_SINGULAR") = int(api::kFaceSphereMapSingular);
+  m.attr("POINT_OK") = int(uvtk::point::Status::Ok);
+  m.attr("POINT_POLE") = int(uvtk::point::Status::Pole);
+  m.attr("POINT_ON_SEAM") = int(uvtk::point::Status::OnSeam);
+  m.attr("POINT_INVALID") = int(uvtk::point::Status::Invalid);
+  m.attr("POINT_STATUS_NAMES") = py::make_tuple("ok", "pole", "on-seam", "invalid");
+
+  // ---- Mesh ----
+  py::class_<api::Mesh>(m, "Mesh", R"(A triangle mesh: positions, triangles, and optional per-corner UVs and normals.
+
+Mesh(positions, triangles, uv=None, normals=None): positions (N, 3) numbers, triangles (F, 3) of any
+integer dtype (stored as int32), uv (F, 3, 2) per corner (NaN: that corner has none), normals (N, 3)
+per vertex or (F, 3, 3) per corner. Checked as a file reader checks a file: ValueError names the
+first problem. The arrays are copied in; the properties are read-only views.)")
+      .def(py::init(&meshFrom), py::arg("positions"), py::arg("triangles"), py::arg("uv") = py::none(),
+           py::arg("normals") = py::none())
+      .def_property_readonly(
+          "positions",
+          [](py::object self) {
+            const api::Mesh& mesh = self.cast<const api::Mesh&>();
+            return view(self, mesh.positions.data()->data(), {count(mesh.positions.size()), 3});
+          },
+          "(N, 3) float64, a read-only view.")
+      .def_property_readonly(
+          "triangles",
+          [](py::object self) {
+            const api::Mesh& mesh = self.cast<const api::Mesh&>();
+            return view(self, mesh.triangles.data()->data(), {count(mesh.triangles.size()), 3});
+          },
+          "(F, 3) int32 vertex indices, counter-clockwise seen from the front; a read-only view.")
+      .def_property_readonly(
+          "uv", [](const api::Mesh& mesh) { return perCorner(mesh.texcoords, mesh.cornerTexcoords, 2); },
+          "(F, 3, 2) float64 per-corner texture coordinates (NaN where a corner has none), or None.")
+      .def_property_readonly(
+          "normals", [](const api::Mesh& mesh) { return perCorner(mesh.normals, mesh.cornerNormals, 3); },
+          "(F, 3, 3) float64 per-corner normals (NaN where a corner has none), or None.")
+      .def_property_readonly("vertex_count", [](const api::Mesh& mesh) { return mesh.positions.size(); })
+      .def_property_readonly("face_count", [](const api::Mesh& mesh) { return mesh.triangles.size(); })
+      .def("__repr__", [](const api::Mesh& mesh) {
+        return "<uvtk.Mesh " + std::to_string(mesh.positions.size()) + " vertices, " +
+               std::to_string(mesh.triangles.size()) + " faces" + (mesh.cornerTexcoords.empty() ? "" : ", uv") + ">";
+      });
+
+  m.def(
+      "read_mesh",
+      [](const std::filesystem::path& path, bool withWarnings) -> py::object {
+        api::MeshWarnings warnings;
+        api::Mesh mesh;
+        {
+          py::gil_scoped_release release;
+          mesh = api::readMesh(path.string(), &warnings);
+        }
+        py::object result = py::cast(std::move(mesh));
+        return withWarnings ? py::make_tuple(result, warningsDict(warnings)) : result;
+      },
+      py::arg("path"), py::arg("with_warnings") = false,
+      R"(Reads an OBJ or OFF file as `uvtk map` does: strictly, polygons ear-clipped into triangles.
+Raises uvtk.InputError "PATH:LINE: error: ...". with_warnings=True returns (mesh, warnings dict).)");
+  m.def("check_mesh", [](const api::Mesh& mesh) { return warningsDict(api::checkMesh(mesh)); }, py::arg("mesh"),
+        "What a reader would accept with a warning (degenerate faces, unreferenced vertices, ...), as a dict.");
+
+  // ---- Options objects: the structs' fields, snake_case ----
+  py::class_<api::MapOptions>(m, "MapOptions", "The options of `uvtk map` as fields; MapOptions.parse(command_line).")
+      .def(py::init<>())
+      .def_static("parse", &api::MapOptions::parse, py::arg("command_line"),
+                  "From `uvtk map`'s syntax, e.g. '--projector cylinder --caps'. ValueError with the CLI's message.")
+      .def("command_line", &api::MapOptions::commandLine, "The options as `uvtk map` takes them (those not at their default).")
+      .def("__repr__", [](const api::MapOptions& o) { return "uvtk.MapOptions.parse(" + py::repr(py::str(o.commandLine())).cast<std::string>() + ")"; })
+      .def_readwrite("projector", &api::MapOptions::projector)
+      .def_readwrite("omap", &api::MapOptions::omap)
+      .def_readwrite("fit", &api::MapOptions::fit)
+      .def_readwrite("axis", &api::MapOptions::axis)
+      .def_readwrite("center", &api::MapOptions::center)
+      .def_readwrite("axis_dir", &api::MapOptions::axisDir)
+      .def_readwrite("ref_dir", &api::MapOptions::refDir)
+      .def_readwrite("scale", &api::MapOptions::scale)
+      .def_readwrite("plane_u", &api::MapOptions::planeU)
+      .def_readwrite("plane_v", &api::MapOptions::planeV)
+      .def_readwrite("caps", &api::MapOptions::caps)
+      .def_readwrite("cap_angle", &api::MapOptions::capAngle)
+      .def_readwrite("sphere_preset", &api::MapOptions::spherePreset)
+      .def_readwrite("cube_convention", &api::MapOptions::cubeConvention)
+      .def_readwrite("cube_layout", &api::MapOptions::cubeLayout)
+      .def_readwrite("eye", &api::MapOptions::eye)
+      .def_readwrite("at_infinity", &api::MapOptions::atInfinity)
+      .def_readwrite("seam", &api::MapOptions::seam)
+      .def_readwrite("pole", &api::MapOptions::pole)
+      .def_readwrite("pole_eps", &api::MapOptions::poleEps)
+      .def_readwrite("seam_place", &api::MapOptions::seamPlace)
+      .def_readwrite("uv_scale", &api::MapOptions::uvScale)
+      .def_readwrite("uv_offset", &api::MapOptions::uvOffset)
+      .def_readwrite("uv_rotate", &api::MapOptions::uvRotate)
+      .def_readwrite("flip_u", &api::MapOptions::flipU)
+      .def_readwrite("flip_v", &api::MapOptions::flipV)
+      .def_readwrite("precision", &api::MapOptions::precision)
+      .def_readwrite("math", &api::MapOptions::math)
+      .def_readwrite("convention", &api::MapOptions::convention)
+      .def_readwrite("fail_on", &api::MapOptions::failOn)
+      .def_readwrite("warn_on", &api::MapOptions::warnOn)
+      .def_readwrite("overlap_resolution", &api::MapOptions::overlapResolution);
+
+  py::class_<api::TexgenOptions>(m, "TexgenOptions", "The options of `uvtk texgen` as fields; TexgenOptions.parse(command_line).")
+      .def(py::init<>())
+      .def_static("parse", &api::TexgenOptions::parse, py::arg("command_line"),
+                  "From `uvtk texgen`'s syntax, e.g. '--s object_linear:1,0,0,0'. ValueError with the CLI's message.")
+      .def("command_line", &api::TexgenOptions::commandLine)
+      .def("__repr__", [](const api::TexgenOptions& o) { return "uvtk.TexgenOptions.parse(" + py::repr(py::str(o.commandLine())).cast<std::string>() + ")"; })
+      .def_readwrite("s", &api::TexgenOptions::s)
+      .def_readwrite("t", &api::TexgenOptions::t)
+      .def_readwrite("r", &api::TexgenOptions::r)
+      .def_readwrite("q", &api::TexgenOptions::q)
+      .def_readwrite("mode", &api::TexgenOptions::mode)
+      .def_readwrite("texmatrix", &api::TexgenOptions::texmatrix)
+      .def_readwrite("normalize", &api::TexgenOptions::normalize)
+      .def_readwrite("eye", &api::TexgenOptions::eye)
+      .def_readwrite("center", &api::TexgenOptions::center)
+      .def_readwrite("up", &api::TexgenOptions::up)
+      .def_readwrite("model", &api::TexgenOptions::model)
+      .def_readwrite("precision", &api::TexgenOptions::precision);
+
+  // ---- Mapping ----
+  py::class_<PyMapping>(m, "Mapping", R"(A mesh with texture coordinates per corner, and their judgement.
+
+Made by uvtk.map, uvtk.texgen or uvtk.file_uvs. Arrays are read-only views of the mapping's own
+memory, per corner (F, 3) in face order: corner k of face f. With seam="cut", .mesh is the mesh cut
+along the seam (more vertices and faces than the input).)")
+      .def_property_readonly(
+          "uv",
+          [](py::object self) {
+            const api::Mapping& mapping = self.cast<const PyMapping&>().mapping;
+            return view(self, mapping.uv.data()->data(), {count(mapping.uv.size() / 3), 3, 2});
+          },
+          "(F, 3, 2) float64: (u, v) per corner; (0, 0) where the corner is invalid.")
+      .def_property_readonly(
+          "w",
+          [](py::object self) -> py::object {
+            const api::Mapping& mapping = self.cast<const PyMapping&>().mapping;
+            if (mapping.w.empty()) return py::none();
+            return view(self, mapping.w.data(), {count(mapping.w.size() / 3), 3});
+          },
+          "(F, 3) float64: the cube face id (cube_layout='faces') or texgen's r; None when there is none.")
+      .def_property_readonly(
+          "q",
+          [](py::object self) -> py::object {
+            const api::Mapping& mapping = self.cast<const PyMapping&>().mapping;
+            if (mapping.q.empty()) return py::none();
+            return view(self, mapping.q.data(), {count(mapping.q.size() / 3), 3});
+          },
+          "(F, 3) float64: texgen's q, not divided out; None means 1.")
+      .def_property_readonly(
+          "state",
+          [](py::object self) {
+            const api::Mapping& mapping = self.cast<const PyMapping&>().mapping;
+            static_assert(sizeof(api::CornerState) == 1);
+            return view(self, reinterpret_cast<const std::uint8_t*>(mapping.state.data()), {count(mapping.state.size() / 3), 3});
+          },
+          "(F, 3) uint8: uvtk.OK, uvtk.POLE (u repaired or 0) or uvtk.INVALID (no coordinate).")
+      .def_property_readonly(
+          "invalid_reason",
+          [](py::object self) {
+            const api::Mapping& mapping = self.cast<const PyMapping&>().mapping;
+            static_assert(sizeof(api::InvalidReason) == 1);
+            return view(self, reinterpret_cast<const std::uint8_t*>(mapping.invalidReason.data()),
+                        {count(mapping.invalidReason.size() / 3), 3});
+          },
+          "(F, 3) uint8: why a corner is invalid, an index into uvtk.INVALID_REASONS (0: valid).")
+      .def_property_readonly(
+          "face_flags",
+          [](py::object self) {
+            const api::Mapping& mapping = self.cast<const PyMapping&>().mapping;
+            return view(self, mapping.faceFlags.data(), {count(mapping.faceFlags.size())});
+          },
+          "(F,) uint8: bits uvtk.FACE_INVALID, FACE_POLE, FACE_SEAM_STRADDLE, FACE_CUBE_SEAM, FACE_CAP, FACE_SPHERE_MAP_SINGULAR.")
+      .def_property_readonly(
+          "mesh", [](const PyMapping& self) -> const api::Mesh& { return self.mapping.mesh; },
+          py::return_value_policy::reference_internal,
+          "The uvtk.Mesh the coordinates belong to: the input, or cut along the seam (seam='cut').")
+      .def_property_readonly("source", [](const PyMapping& self) { return self.mapping.source; },
+                             "'projector', 'texgen' or 'file'.")
+      .def_property_readonly("verdict", [](const PyMapping& self) { return verdictDict(self.mapping.verdict); },
+                             "{'status': 'pass'|'warn'|'fail', 'reasons': [{rule, severity, value, threshold, faces, text}]}.")
+      .def_property_readonly("summary", [](const PyMapping& self) { return jsonLoads(self.mapping.summaryJson); },
+                             "The record `uvtk map --json` writes (without times and output), as a dict.")
+      .def("__repr__", [](const PyMapping& self) {
+        const api::Mapping& mapping = self.mapping;
+        return "<uvtk.Mapping " + mapping.source + ": " + std::to_string(mapping.mesh.positions.size()) + " vertices, " +
+               std::to_string(mapping.mesh.triangles.size()) + " faces, verdict " + mapping.verdict.status + ">";
+      });
+
+  m.def(
+      "map",
+      [](py::object mesh, py::object options, py::kwargs kwargs) {
+        const api::MapOptions resolved = optionsFrom<api::MapOptions>(options, kwargs);
+        const api::Mesh& input = meshOf(mesh);
+        api::Mapping mapping;
+        {
+          py::gil_scoped_release release;
+          mapping = api::map(input, resolved);
+        }
+        return wrap(std::move(mapping), mesh);
+      },
+      py::arg("mesh"), py::arg("options") = py::none(),
+      R"(Maps `mesh` by a projector, as `uvtk map` does (the same numbers, bit for bit).
+
+Every option of `uvtk map` is a keyword: projector="cylinder", fit="obb", caps=True, cap_angle=30,
+center=(0, 0, 1), fail_on=["flipped_area=0.01"], ... (or options=uvtk.MapOptions(...)). Returns a
+uvtk.Mapping. Bad options raise ValueError with the command line's message.)");
+  m.def(
+      "texgen",
+      [](py::object mesh, py::object options, py::kwargs kwargs) {
+        const api::TexgenOptions resolved = optionsFrom<api::TexgenOptions>(options, kwargs);
+        const api::Mesh& input = meshOf(mesh);
+        api::Mapping mapping;
+        {
+          py::gil_scoped_release release;
+          mapping = api::texgen(input, resolved);
+        }
+        return wrap(std::move(mapping), mesh);
+      },
+      py::arg("mesh"), py::arg("options") = py::none(),
+      R"(OpenGL texgen's (s, t, r, q) on `mesh`, as `uvtk texgen` computes them.
+
+Keywords are the options of `uvtk texgen`: s="object_linear:1,0,0,0", t="eye_linear:0,1,0,0",
+mode="sphere_map", eye=(0, 0, 5), no_normalize=True, ... Returns a uvtk.Mapping (r in .w, q in .q).)");
+  m.def(
+      "file_uvs",
+      [](py::object mesh) {
+        const api::Mesh& input = meshOf(mesh);
+        api::Mapping mapping;
+        {
+          py::gil_scoped_release release;
+          mapping = api::fileUvs(input);
+        }
+        return wrap(std::move(mapping), mesh);
+      },
+      py::arg("mesh"), "The mesh's own texture coordinates, judged. ValueError when it has none.");
+
+  m.def(
+      "write_mesh",
+      [](const std::filesystem::path& path, py::object mesh, py::object mapping, const std::string& uvDigits, bool writeW) {
+        if (mapping.is_none() && py::isinstance<PyMapping>(mesh)) std::swap(mesh, mapping);
+        if (mapping.is_none()) {
+          const api::Mesh& own = meshOf(mesh);
+          py::gil_scoped_release release;
+          api::writeMesh(path.string(), own);
+          return;
+        }
+        const api::Mapping& mapped = mappingFor("write_mesh", mesh, mapping.cast<const PyMapping&>());
+        const api::WriteOptions options = writeOptions(uvDigits, writeW);
+        py::gil_scoped_release release;
+        api::writeMesh(path.string(), mapped, options);
+      },
+      py::arg("path"), py::arg("mesh"), py::arg("m") = py::none(), py::arg("uv_digits") = "double",
+      py::arg("write_w") = false,
+      R"(Writes an OBJ, whole or not at all (uvtk.OutputError).
+
+write_mesh(path, mesh, m): the mapping's mesh with its per-corner UVs, as `uvtk map -o` writes it
+(uv_digits='double' round-trips every double, 'float' every float; write_w=True writes vt u v w).
+write_mesh(path, mesh): the mesh with its own texture coordinates and normals.)");
+
+  m.def(
+      "report",
+      [](py::object mesh, py::object mapping, py::kwargs kwargs) {
+        const api::Mapping& mapped = mappingFor("report", mesh, mapping.cast<const PyMapping&>());
+        const api::ReportOptions options = api::ReportOptions::parse(commandLine(kwargs));
+        std::string json;
+        {
+          py::gil_scoped_release release;
+          json = api::report(mapped, options);
+        }
+        return jsonLoads(json);
+      },
+      py::arg("mesh"), py::arg("m"),
+      R"(The report of mapping `m` as a dict: the document `uvtk report --json` writes, verdict first.
+
+Keywords are the options of `uvtk report`: json="r.json" and html="r.html" also write those files;
+views=, size=(w, h), texture_size=, threads=.)");
+  m.def(
+      "render",
+      [](py::object mesh, py::object mapping, const std::string& dtype, py::kwargs kwargs) {
+        if (dtype != "uint8" && dtype != "float32")
+          throw py::value_error("render: dtype is '" + dtype + "', expected uint8 or float32");
+        const api::Mapping& mapped = mappingFor("render", mesh, mapping.cast<const PyMapping&>());
+        const api::RenderOptions options = api::RenderOptions::parse(commandLine(kwargs));
+        api::Image image;
+        std::vector<std::uint8_t> bytes;
+        {
+          py::gil_scoped_release release;
+          image = api::render(mapped, options);
+          if (dtype == "uint8") bytes = image.bytes();
+        }
+        const Shape shape{image.height, image.width, image.channels};
+        return dtype == "uint8" ? owning(std::move(bytes), shape) : owning(std::move(image.pixels), shape);
+      },
+      py::arg("mesh"), py::arg("m"), py::arg("dtype") = "uint8",
+      R"(A picture of mapping `m` as a numpy array (H, W, C), row 0 at the top.
+
+Keywords are the options of `uvtk render`: view="checker" (uvgrid, stretch, linf, angle, area,
+seams, uverror, layout; several comma-separated make a contact sheet; "" renders the texture),
+size=(width, height), view_dir=(x, y, z), texture="checker:64:8", spp=4, ... dtype="uint8" gives
+the PNG's 8-bit values, dtype="float32" the values in [0, 1].)");
+  m.def(
+      "compare",
+      [](py::object mesh, py::kwargs kwargs) {
+        const api::Mesh& input = meshOf(mesh);
+        const api::CompareOptions options = api::CompareOptions::parse(commandLine(kwargs));
+        api::Comparison comparison;
+        {
+          py::gil_scoped_release release;
+          comparison = api::compare(input, options);
+        }
+        py::dict result;
+        result["json"] = jsonLoads(comparison.json);
+        result["table"] = comparison.table;
+        result["best"] = comparison.best;
+        return result;
+      },
+      py::arg("mesh"),
+      R"(Every projector configuration on `mesh`, ranked, as `uvtk compare` ranks them.
+
+Keywords are the options of `uvtk compare` (by="angle", top=8, no_baselines=True, fail_on=[...]).
+Returns {'json': the --json document as a dict, 'table': the Markdown table, 'best': the name}.)");
+  // ---- single points ----
+  py::class_<EvalResult>(m, "EvalResult", "uvtk.eval's values, one per point: arrays u, v, w, q, status; list reason.")
+      .def_readonly("u", &EvalResult::u, "u (texgen: s)")
+      .def_readonly("v", &EvalResult::v, "v (texgen: t)")
+      .def_readonly("w", &EvalResult::w, "the cube face id (faces layout) or texgen's r, else 0")
+      .def_readonly("q", &EvalResult::q, "texgen's q, else 1")
+      .def_readonly("status", &EvalResult::status, "uint8: uvtk.POINT_OK, POINT_POLE, POINT_ON_SEAM, POINT_INVALID")
+      .def_readonly("reason", &EvalResult::reason, "why a status is not ok, one sentence ('' when ok)")
+      .def_readonly("mapping", &EvalResult::mapping, "the options string of the mapping that evaluated them")
+      .def("keys", [](const EvalResult&) { return py::make_tuple("u", "v", "w", "q", "status", "reason"); })
+      .def("__getitem__", [](py::object self, const std::string& key) {
+        if (key != "u" && key != "v" && key != "w" && key != "q" && key != "status" && key != "reason")
+          throw py::key_error(key);
+        return self.attr(key.c_str());
+      })
+      .def("__repr__", [](const EvalResult& r) {
+        return "<uvtk.EvalResult " + std::to_string(r.reason.size()) + " points, " + r.mapping + ">";
+      });
+
+  m.def("eval", &evaluate, py::arg("points"), py::arg("normals") = py::none(), py::arg("mesh") = py::none(),
+        R"(The mapping at single points, as `uvtk eval` computes it (before seam and pole repair).
+
+points (..., 3); normals None, one (3,) for all, or one per point (read by the normal and
+reflection O-mappings, cylinder caps and texgen). Keywords are `uvtk eval`'s mapping options:
+projector="cylinder", omap="normal", texgen="sphere_map", eye=(0, 0, 5), ...; the placement is
+fit="none" unless given; mesh=uvtk.Mesh fits a fitted placement to that mesh as `uvtk map` does.
+Returns a uvtk.EvalResult: arrays u, v, w, q (float64) and status (uint8) of the points' shape,
+and the list reason.)");
+}

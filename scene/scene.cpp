@@ -1,0 +1,438 @@
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "core/error.h"
+#include "io/json_file.h"
+#include "io/json_schema.h"
+#include "options/arithmetic_cli.h"
+#include "options/cli_values.h"
+#include "options/projector_cli.h"
+#include "render/procedural.h"
+
+namespace uvtk::scene {
+
+using namespace uvtk::cli;
+using namespace uvtk::inspect;
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// The text a command-line option takes for a JSON value: arrays as comma-separated lists, integral
+// numbers without a fraction (so that 4.0 reads as the integer 4), others in round-trip digits.
+std::string optionText(const json& value) {
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_array()) {
+    std::string text;
+    for (const json& item : value) text += (text.empty() ? "" : ",") + optionText(item);
+    return text;
+  }
+  if (value.is_number_float()) {
+    const double d = value.get<double>();
+    if (std::isfinite(d) && d == std::floor(d) && std::abs(d) < 9007199254740992.0) return json(std::int64_t(d)).dump();
+  }
+  return value.dump();
+}
+
+// "--axis-dir" in a message becomes the scene's key "axis_dir".
+std::string keysForOptions(const std::string& message) {
+  std::string out;
+  for (std::size_t i = 0; i < message.size();) {
+    if (message.compare(i, 2, "--") == 0 && i + 2 < message.size() &&
+        std::islower(static_cast<unsigned char>(message[i + 2]))) {
+      i += 2;
+      while (i < message.size() && (std::isalnum(static_cast<unsigned char>(message[i])) || message[i] == '-'))
+        out += message[i] == '-' ? '_' : message[i], ++i;
+    } else {
+      out += message[i++];
+    }
+  }
+  return out;
+}
+
+// `path` without a trailing separator ("a/b/" is "a/b"), so that its components compare.
+fs::path withoutTrailingSlash(const fs::path& path) {
+  return path.has_relative_path() && !path.has_filename() ? path.parent_path() : path;
+}
+
+// Whether `path` is `folder` or lies in it, component by component (both absolute or both not).
+bool within(const fs::path& path, const fs::path& folder) {
+  const fs::path p = withoutTrailingSlash(path.lexically_normal()), f = withoutTrailingSlash(folder.lexically_normal());
+  if (f == ".") return p.is_relative() && (p.empty() || *p.begin() != "..");
+  return std::mismatch(f.begin(), f.end(), p.begin(), p.end()).first == f.end();
+}
+
+class SceneReader {
+ public:
+  SceneReader(std::string path, const std::string& outputDir, bool allowOutside)
+      : path_(std::move(path)),
+        inputDir_(fs::path(path_).parent_path()),
+        outputDir_(outputDir.empty() ? inputDir_ : fs::path(outputDir)),
+        allowOutside_(allowOutside) {}
+
+  [[noreturn]] void fail(const std::string& pointer, const std::string& message) const {
+    throw InputError(path_ + ": " + (pointer.empty() ? "/" : pointer) + ": " + message);
+  }
+
+  // Runs `check`, reporting a UsageError from the option code at `pointer`, in the scene's names.
+  template <class F>
+  auto at(const std::string& pointer, F&& check) const {
+    try {
+      return check();
+    } catch (const UsageError& e) {
+      fail(pointer, keysForOptions(e.what()));
+    }
+  }
+
+  // Parses the keys of `object` (but `sceneKeys`) as the options of `parser`: key "k_l" is --k-l,
+  // true sets a flag.
+  void parseOptions(CLI::App& parser, const json& object, const std::set<std::string>& sceneKeys,
+                    const std::string& pointer) const {
+    std::vector<std::string> arguments;
+    for (const auto& [key, value] : object.items()) {
+      if (sceneKeys.count(key)) continue;
+      std::string option = "--" + key;
+      std::replace(option.begin(), option.end(), '_', '-');
+      if (value.is_boolean()) {
+        if (value.get<bool>()) arguments.push_back(option);
+      } else {
+        arguments.push_back(option + "=" + optionText(value));
+      }
+    }
+    std::reverse(arguments.begin(), arguments.end());  // CLI11 takes them last first
+    try {
+      parser.parse(arguments);
+    } catch (const CLI::ParseError& e) {
+      fail(pointer, keysForOptions(e.what()));
+    }
+  }
+
+  // Inputs may be anywhere; a NUL would make the system read the file named by the part before it.
+  std::string input(const json& value, const std::string& pointer) const {
+    const std::string name = value.get<std::string>();
+    if (name.find('\0') != std::string::npos) fail(pointer, quotedName(name) + ": a file name cannot hold a NUL byte");
+    const fs::path file = inputDir_ / name;
+    std::error_code error;
+    if (fs::is_directory(file, error)) fail(pointer, quotedName(file.string()) + " is a folder, not a file");
+    if (!fs::is_regular_file(file, error)) fail(pointer, "no such file " + quotedName(file.string()));
+    return file.lexically_normal().string();
+  }
+  // An output file given at `pointer` (empty: none), as checkOutputPath resolves it.
+  std::string output(const std::string& path, const std::string& pointer) const {
+    if (path.empty()) return path;
+    try {
+      return checkOutputPath(path, outputDir_, allowOutside_);
+    } catch (const InputError& e) {
+      fail(pointer, e.what());
+    }
+  }
+
+  // The index of the entry named `name` among `entries`, or an error listing the names there are.
+  template <class Entry>
+  std::size_t find(const std::vector<Entry>& entries, const json& name, const char* what,
+                   const std::string& pointer) const {
+    std::string known;
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+      if (entries[i].name == name.get<std::string>()) return i;
+      known += (known.empty() ? "" : ", ") + entries[i].name;
+    }
+    fail(pointer, std::string("no ") + what + " named " + name.dump() +
+                      (known.empty() ? "; the scene defines none" : "; the scene has: " + known));
+  }
+
+  template <class Entry>
+  void checkUnique(const std::vector<Entry>& entries, const char* what) const {
+    for (std::size_t i = 0; i < entries.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (entries[i].name == entries[j].name)
+          fail(entries[i].pointer + "/name", std::string("duplicate ") + what + " name \"" + entries[i].name +
+                                                 "\" (also at " + entries[j].pointer + ")");
+  }
+
+  // The schema has checked the names and the values' types.
+  analysis::Thresholds thresholds(const json& j) const {
+    analysis::Thresholds t;
+    for (const auto severity : {analysis::Verdict::Warn, analysis::Verdict::Fail}) {
+      const char* key = analysis::toString(severity);
+      for (const auto& [rule, value] : j.value(key, json::object()).items()) {
+        const std::string text = value.is_string() ? value.get<std::string>() : value.dump();
+        t.set(rule + "=" + text, severity, path_ + ": /thresholds/" + key + "/" + rule);
+      }
+    }
+    return t;
+  }
+
+  Scene read() const {
+    const json doc = io::readJsonFile(path_);
+    static const json schema = json::parse(sceneSchemaText());
+    const std::vector<io::SchemaError> errors = io::validateJson(doc, schema);
+    if (!errors.empty()) {
+      std::string message;
+      for (const io::SchemaError& e : errors) message += (message.empty() ? "" : "\n" + path_ + ": ") + io::toString(e);
+      throw InputError(path_ + ": " + message);
+    }
+    Scene scene;
+    scene.path = path_;
+    scene.title = doc.value("title", fs::path(path_).stem().string());
+    if (doc.contains("thresholds")) scene.thresholds = thresholds(doc["thresholds"]);
+    const json none = json::array();
+    for (std::size_t i = 0; i < doc.value("cameras", none).size(); ++i)
+      scene.cameras.push_back(camera(doc["cameras"][i], "/cameras/" + std::to_string(i)));
+    checkUnique(scene.cameras, "camera");
+    for (std::size_t i = 0; i < doc.value("textures", none).size(); ++i)
+      scene.textures.push_back(texture(doc["textures"][i], "/textures/" + std::to_string(i)));
+    checkUnique(scene.textures, "texture");
+    scene.defaultTextureParser = std::make_shared<CLI::App>();
+    addTextureOptions(*scene.defaultTextureParser, scene.defaultTexture, "--source");
+    for (std::size_t i = 0; i < doc["meshes"].size(); ++i) mesh(doc["meshes"][i], i, scene);
+    checkUnique(scene.meshes, "mesh");
+    checkUnique(scene.mappings, "mapping");
+    for (std::size_t i = 0; i < doc["outputs"].size(); ++i)
+      scene.outputs.push_back(output(doc["outputs"][i], "/outputs/" + std::to_string(i), scene));
+    checkFiles(scene);
+    return scene;
+  }
+
+ private:
+  SceneCamera camera(const json& j, const std::string& pointer) const {
+    SceneCamera c;
+    c.name = j["name"];
+    c.pointer = pointer;
+    c.parser = std::make_shared<CLI::App>();
+    addCameraOptions(*c.parser, c.arguments);
+    parseOptions(*c.parser, j, {"name"}, pointer);
+    at(pointer, [&] { c.arguments.check(); });
+    return c;
+  }
+
+  SceneTexture texture(const json& j, const std::string& pointer) const {
+    SceneTexture t;
+    t.name = j["name"];
+    t.pointer = pointer;
+    t.parser = std::make_shared<CLI::App>();
+    addTextureOptions(*t.parser, t.arguments, "--source");
+    parseOptions(*t.parser, j, {"name"}, pointer);
+    at(pointer + "/source", [&] {
+      t.arguments.resolveFiles([&](const std::string& file) { return input(file, pointer + "/source"); });
+      t.arguments.check();
+    });
+    at(pointer + "/env_color", [&] { parseVec4(t.arguments.envColour, "--env-color"); });
+    return t;
+  }
+
+  void mesh(const json& j, std::size_t index, Scene& scene) const {
+    SceneMesh m;
+    m.pointer = "/meshes/" + std::to_string(index);
+    m.name = j["name"];
+    m.path = input(j["path"], m.pointer + "/path");
+    if (j.contains("model"))
+      for (int k = 0; k < 16; ++k) m.model(k % 4, k / 4) = j["model"][std::size_t(k)].get<double>();
+    scene.meshes.push_back(m);
+    const json& mappings = j.value("mappings", json::array());
+    for (std::size_t k = 0; k < mappings.size(); ++k)
+      scene.mappings.push_back(mapping(mappings[k], m.pointer + "/mappings/" + std::to_string(k), index, scene));
+  }
+
+  SceneMapping mapping(const json& j, const std::string& pointer, std::size_t mesh, const Scene& scene) const {
+    SceneMapping m;
+    m.name = j["name"];
+    m.pointer = pointer;
+    m.mesh = mesh;
+    m.parser = std::make_shared<CLI::App>();
+    const std::string kind = j["kind"];
+    if (kind == "projector") {
+      m.kind = SceneMapping::Kind::Projector;
+      ProjectorArguments arguments;
+      addProjectorOptions(*m.parser, arguments);
+      parseOptions(*m.parser, j, {"kind", "name"}, pointer);
+      m.projector = at(pointer, [&] { return arguments.resolve(); });
+      m.seamPlaceAuto = arguments.seamPlaceAuto();
+    } else if (kind == "texgen") {
+      m.kind = SceneMapping::Kind::Texgen;
+      addTexgenOptions(*m.parser, m.texgen, "--texgen");
+      addArithmeticOptions(*m.parser, m.texgen.arithmetic, false);
+      parseOptions(*m.parser, j, {"kind", "name", "camera", "eye", "center", "up"}, pointer);
+      const bool lookAtGiven = j.contains("eye") || j.contains("center") || j.contains("up");
+      if (j.contains("camera") && lookAtGiven) fail(pointer, "camera and eye, center, up exclude each other");
+      if (j.contains("camera")) m.camera = find(scene.cameras, j["camera"], "camera", pointer + "/camera");
+      const auto vec3 = [&](const char* key, Vec3 fallback) {
+        return j.contains(key) ? Vec3(j[key][0].get<double>(), j[key][1].get<double>(), j[key][2].get<double>())
+                               : fallback;
+      };
+      // As `uvtk texgen`: GL's initial view, the eye at the origin looking down -z.
+      m.viewFromWorld = lookAt(vec3("eye", Vec3::Zero()), vec3("center", Vec3(0, 0, -1)), vec3("up", Vec3(0, 1, 0)));
+      at(pointer, [&] { m.texgen.resolve(Mat4::Identity(), Mat4::Identity()); });
+    }
+    return m;
+  }
+
+  SceneOutput output(const json& j, const std::string& pointer, const Scene& scene) const {
+    SceneOutput o;
+    o.pointer = pointer;
+    o.parser = std::make_shared<CLI::App>();
+    o.path = output(j.value("path", ""), pointer + "/path");
+    if (j.contains("mapping")) o.mapping = find(scene.mappings, j["mapping"], "mapping", pointer + "/mapping");
+    if (j.contains("mesh")) o.mesh = find(scene.meshes, j["mesh"], "mesh", pointer + "/mesh");
+    if (j.contains("camera")) o.camera = find(scene.cameras, j["camera"], "camera", pointer + "/camera");
+    if (j.contains("texture")) o.texture = find(scene.textures, j["texture"], "texture", pointer + "/texture");
+    const std::string kind = j["kind"];
+    // report, compare: their own json
+    if (kind == "obj" || kind == "render") o.json = output(j.value("json", ""), pointer + "/json");
+    if (kind == "obj") {
+      o.kind = SceneOutput::Kind::Obj;
+      o.writeW = j.value("write_w", false);
+      o.floatDigits = j.value("uv_digits", "double") == "float";
+    } else if (kind == "render") {
+      o.kind = SceneOutput::Kind::Render;
+      addFrameOptions(*o.parser, o.frame);
+      parseOptions(*o.parser, j, {"kind", "mapping", "camera", "texture", "path", "json"}, pointer);
+      // The AOV file by default is the picture's with .exr (as FrameArguments::check names it), checked as given.
+      const bool aovNamed = !o.frame.aovOutput.empty();
+      if (!o.frame.aov.empty() && !aovNamed)
+        o.frame.aovOutput = fs::path(j.value("path", "")).replace_extension(".exr").string();
+      o.frame.aovOutput = output(o.frame.aovOutput, pointer + (aovNamed ? "/aov_output" : "/path"));
+      at(pointer, [&] { o.frame.check(o.path); });
+      const SceneMapping& mapping = scene.mappings[*o.mapping];
+      const TextureArguments& texture = o.texture ? scene.textures[*o.texture].arguments : scene.defaultTexture;
+      at(pointer, [&] {
+        checkTextureUse(o.frame, texture, mapping.kind == SceneMapping::Kind::Projector ? &mapping.projector : nullptr);
+      });
+      if (o.frame.needsExact() && scene.mappings[*o.mapping].kind == SceneMapping::Kind::File)
+        fail(pointer, std::string(o.frame.uv == FrameArguments::Uv::PerPixel ? "uv per-pixel" : "view uverror") +
+                          " evaluates the mapping at every pixel, and mapping \"" + scene.mappings[*o.mapping].name +
+                          "\" is the file's own UVs");
+    } else if (kind == "report") {
+      o.kind = SceneOutput::Kind::Report;
+      addReportOptions(*o.parser, o.report);
+      parseOptions(*o.parser, j, {"kind", "mapping"}, pointer);
+      o.report.json = output(o.report.json, pointer + "/json");
+      o.report.html = output(o.report.html, pointer + "/html");
+      at(pointer, [&] { o.report.check(); });
+    } else if (kind == "compare") {
+      o.kind = SceneOutput::Kind::Compare;
+      addCompareOptions(*o.parser, o.compare);
+      parseOptions(*o.parser, j, {"kind", "mesh"}, pointer);
+      o.compare.options.json = output(o.compare.options.json, pointer + "/json");
+      o.compare.options.markdown = output(o.compare.options.markdown, pointer + "/markdown");
+      o.compare.options.sheet = output(o.compare.options.sheet, pointer + "/sheet");
+      at(pointer, [&] { o.compare.check(); });
+    } else {
+      o.kind = SceneOutput::Kind::Gallery;
+      o.title = j.value("title", scene.title);
+    }
+    return o;
+  }
+
+  // No two outputs write the same file, and no output overwrites an input.
+  void checkFiles(const Scene& scene) const {
+    std::map<std::string, std::string> writers;
+    // The paths have been checked; a system refusal here (a folder that cannot be searched) is the scene's.
+    const auto canonical = [&](const std::string& file, const std::string& pointer) {
+      std::error_code error;
+      const fs::path resolved = fs::weakly_canonical(file, error);
+      if (error) fail(pointer, quotedName(file) + ": " + error.message());
+      return resolved.string();
+    };
+    for (const SceneMesh& m : scene.meshes) writers[canonical(m.path, m.pointer)] = m.pointer;
+    for (const SceneOutput& o : scene.outputs)
+      for (const std::string& file : o.files()) {
+        const auto [where, inserted] = writers.emplace(canonical(file, o.pointer), o.pointer);
+        if (!inserted) fail(o.pointer, "writes " + quotedName(file) + ", which " + where->second + " names too");
+      }
+  }
+
+  std::string path_;
+  fs::path inputDir_, outputDir_;
+  bool allowOutside_ = false;
+};
+
+}  // namespace
+
+bool SceneMapping::needsNormals() const {
+  if (kind == Kind::Projector)
+    return projector.ray == param::RayKind::ObjectNormal || projector.ray == param::RayKind::Reflection;
+  if (kind == Kind::File) return false;
+  const texgen::TexgenOptions options = texgen.resolve(Mat4::Identity(), Mat4::Identity());
+  return std::any_of(options.coordinates.begin(), options.coordinates.end(), [](const texgen::TexgenCoordinate& c) {
+    return c.mode == texgen::TexgenMode::SphereMap || c.mode == texgen::TexgenMode::NormalMap ||
+           c.mode == texgen::TexgenMode::ReflectionMap;
+  });
+}
+
+std::vector<std::string> SceneOutput::files() const {
+  std::vector<std::string> out;
+  const auto add = [&out](const std::string& file) {
+    if (!file.empty()) out.push_back(file);
+  };
+  add(path);
+  add(json);
+  if (kind == Kind::Render && !frame.aov.empty()) add(frame.aovOutput);
+  if (kind == Kind::Report) add(report.json), add(report.html);
+  if (kind == Kind::Compare) add(compare.options.json), add(compare.options.markdown), add(compare.options.sheet);
+  return out;
+}
+
+std::string checkOutputPath(const std::string& path, const fs::path& outputDir, bool allowOutside) {
+  const std::string name = quotedName(path);
+  if (path.empty()) throw InputError("expected a file name, found \"\"");
+  if (path.find('\0') != std::string::npos) throw InputError(name + ": a file name cannot hold a NUL byte");
+  for (std::size_t begin = 0; begin <= path.size();) {
+    const std::size_t end = std::min(path.find('/', begin), path.size());
+    if (end - begin > NAME_MAX)
+      throw InputError(name + ": a component of " + std::to_string(end - begin) + " bytes, more than the " +
+                       std::to_string(NAME_MAX) + " a file name can have");
+    begin = end + 1;
+  }
+  const fs::path normal = fs::path(path).lexically_normal();
+  if (!normal.has_filename() || normal.filename() == "." || normal.filename() == ".." || path.back() == '/')
+    throw InputError(name + " names a folder, not a file");
+  const std::string folder = quotedName(outputDir.empty() ? "." : outputDir.string());
+  if (!allowOutside && normal.is_absolute())
+    throw InputError(name + " is an absolute path, outside the output folder " + folder +
+                     " (uvtk run --allow-outside lets outputs leave it)");
+  if (!allowOutside && !within(normal, "."))
+    throw InputError(name + " leads outside the output folder " + folder +
+                     " (uvtk run --allow-outside lets outputs leave it)");
+  const fs::path resolved = (outputDir / normal).lexically_normal();
+  if (resolved.native().size() >= PATH_MAX)
+    throw InputError(name + ": " + std::to_string(resolved.native().size()) +
+                     " bytes joined to the output folder, more than the " + std::to_string(PATH_MAX - 1) +
+                     " a path can have");
+  std::error_code error;
+  if (fs::is_directory(resolved, error))
+    throw InputError(name + ": " + quotedName(resolved.string()) + " is an existing folder");
+  if (!allowOutside) {
+    // The folders on the way, and the output itself, may be symbolic links: an output that is a
+    // link is written where it leads (io/temporary_file.h), so the whole path is resolved.
+    const auto orHere = [](const fs::path& f) { return f.empty() ? fs::path(".") : f; };
+    // Absolute first: weakly_canonical keeps a relative folder that does not exist yet relative.
+    const fs::path base = fs::weakly_canonical(fs::absolute(orHere(outputDir)), error);
+    fs::path target = fs::absolute(resolved, error);
+    // weakly_canonical stops at a dangling link, which the output would still be written through.
+    for (int links = 0; !error && links < 40; ++links) {
+      std::error_code missing;  // a name that does not exist yet is no link
+      if (!fs::is_symlink(fs::symlink_status(target, missing))) break;
+      const fs::path next = fs::read_symlink(target, error);
+      target = next.is_absolute() ? next : target.parent_path() / next;
+    }
+    if (!error) target = fs::weakly_canonical(target, error);
+    if (error) throw InputError(name + ": cannot resolve it in the output folder " + folder + ": " + error.message());
+    if (!within(target, base))
+      throw InputError(name + " leads outside the output folder " + folder + " through a symbolic link, to " +
+                       quotedName(target.string()) + " (uvtk run --allow-outside lets outputs leave it)");
+  }
+  return resolved.string();
+}
+
+Scene loadScene(const std::string& path, const std::string& outputDir, bool allowOutside) {
+  return SceneReader(path, outputDir, allowOutside).read();
+}
+
+}  // namespace uvtk::scene

@@ -1,0 +1,104 @@
+// A scene file (schema/scene.schema.json): meshes with their mappings, cameras, textures and the
+// outputs to write, read and checked completely before any work starts. Every option object is
+// parsed by the very option parser of the subcommand it mirrors (key "axis_dir" is --axis-dir),
+// so a scene can say exactly what the command line can, and is checked the same way.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/judgement.h"
+#include "options/compare_cli.h"
+#include "core/math.h"
+#include "param/projector.h"
+#include "options/render_cli.h"
+#include "options/report_cli.h"
+#include "options/texgen_cli.h"
+
+namespace uvtk::scene {
+
+// The scene schema, as shipped in schema/scene.schema.json (embedded at build time).
+const char* sceneSchemaText();
+
+struct SceneMesh {
+  std::string name, path, pointer;  // path resolved against the scene's folder; pointer: JSON Pointer
+  Mat4 model = Mat4::Identity();
+};
+
+struct SceneMapping {
+  enum class Kind { Projector, Texgen, File };
+  std::string name, pointer;
+  std::size_t mesh = 0;
+  Kind kind = Kind::File;
+  param::ProjectorOptions projector;
+  bool seamPlaceAuto = false;
+  cli::TexgenArguments texgen;             // resolved with the view when it runs
+  std::optional<std::size_t> camera;  // texgen: the view of this camera, else viewFromWorld
+  Mat4 viewFromWorld = Mat4::Identity();
+  std::shared_ptr<CLI::App> parser;  // owns what the texgen arguments refer to
+
+  // Whether computing the mapping reads vertex normals (an O-mapping or texgen mode that needs them).
+  bool needsNormals() const;
+};
+
+struct SceneCamera {
+  std::string name, pointer;
+  cli::CameraArguments arguments;
+  std::shared_ptr<CLI::App> parser;
+};
+
+struct SceneTexture {
+  std::string name, pointer;
+  cli::TextureArguments arguments;
+  std::shared_ptr<CLI::App> parser;
+};
+
+struct SceneOutput {
+  enum class Kind { Obj, Render, Report, Compare, Gallery };
+  Kind kind = Kind::Obj;
+  std::string pointer;
+  std::optional<std::size_t> mapping, mesh, camera, texture;
+  std::string path, json;                    // obj, render, gallery: the file; obj, render: the summary JSON
+  bool writeW = false, floatDigits = false;  // obj
+  cli::FrameArguments frame;                      // render
+  cli::ReportArguments report;                    // report
+  cli::CompareArguments compare;                  // compare
+  std::string title;                         // gallery
+  std::shared_ptr<CLI::App> parser;
+
+  std::vector<std::string> files() const;  // every file it writes
+};
+
+struct Scene {
+  std::string path, title;
+  std::vector<SceneMesh> meshes;
+  std::vector<SceneMapping> mappings;
+  std::vector<SceneCamera> cameras;
+  std::vector<SceneTexture> textures;
+  std::vector<SceneOutput> outputs;
+  analysis::Thresholds thresholds;  // the verdict's, for every mapping ("thresholds")
+  cli::TextureArguments defaultTexture;  // for render outputs that name none
+  std::shared_ptr<CLI::App> defaultTextureParser;
+};
+
+// Reads and checks the scene at `path`: against the schema, then names and references, input
+// files, and every option as its subcommand checks it. Output paths are taken relative to
+// `outputDir` (empty: the scene's folder) and checked by checkOutputPath. Throws InputError
+// "SCENE: /json/pointer: problem".
+Scene loadScene(const std::string& path, const std::string& outputDir, bool allowOutside = false);
+
+// The file an output path of a scene names: `path` relative to `outputDir`, lexically normalised.
+// Refuses (InputError with the problem, naming `path` as quotedName()) what no file system can hold or
+// what is not a file: an empty path, a NUL byte, a component longer than NAME_MAX (255 bytes), a
+// result longer than PATH_MAX - 1, a folder ("." or ".." last, a trailing "/", an existing folder);
+// and, unless `allowOutside`, a path that leaves `outputDir`: absolute, through "..", or through a
+// symbolic link to a folder outside it (weakly_canonical at check time; the last component may be
+// a link, which the atomic rename replaces rather than follows).
+std::string checkOutputPath(const std::string& path, const std::filesystem::path& outputDir, bool allowOutside);
+
+}  // namespace uvtk::scene

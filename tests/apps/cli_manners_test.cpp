@@ -1,0 +1,201 @@
+// The command line a person expects: --version, a suggestion for a mistyped command or option, the
+// accepted names for a bad choice, examples at the end of every --help, and -q everywhere.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "apps/cli_test.h"
+#include "options/cli_values.h"
+
+namespace uvtk {
+namespace {
+
+class CliManners : public CliTest {
+ protected:
+  // What `uvtk ARGUMENTS` prints on stdout (and its status), run in the scratch folder.
+  CliRun stdoutOf(const std::string& arguments) const { return shell(std::string(UVTK_BINARY) + " " + arguments + " 1>&2"); }
+
+  // The names under "Subcommands:" in `uvtk --help`.
+  std::vector<std::string> commands() const {
+    const std::string help = stdoutOf("--help").err;
+    std::vector<std::string> names;
+    std::istringstream in(help.substr(help.find("Subcommands:\n")));
+    std::string line;
+    std::getline(in, line);
+    while (std::getline(in, line) && line.rfind("  ", 0) == 0) names.push_back(line.substr(2, line.find(' ', 2) - 2));
+    return names;
+  }
+
+  // The command lines under "Examples:" at the end of `help`.
+  static std::vector<std::string> examples(const std::string& help) {
+    std::vector<std::string> lines;
+    const std::size_t at = help.rfind("\nExamples:\n");
+    if (at == std::string::npos) return lines;
+    std::istringstream in(help.substr(at + 11));
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("      ", 0) != 0 && !line.empty()) lines.push_back(line.substr(2));
+    return lines;
+  }
+
+  std::string sphereMesh() const { return std::string(UVTK_SOURCE_DIR) + "/meshes/sphere_latlong.obj"; }
+};
+
+TEST_F(CliManners, VersionPrintsTheProjectVersion) {
+  std::ifstream cmake(std::string(UVTK_SOURCE_DIR) + "/CMakeLists.txt");
+  std::stringstream text;
+  text << cmake.rdbuf();
+  std::smatch version;
+  const std::string cmakeText = text.str();
+  ASSERT_TRUE(std::regex_search(cmakeText, version, std::regex(R"(project\(uvtk VERSION ([0-9.]+))")));
+  const CliRun r = stdoutOf("--version");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.err, "uvtk " + version[1].str() + "\n");
+}
+
+TEST_F(CliManners, AMistypedCommandGetsTheNearestName) {
+  const CliRun r = uvtk("mapp x.obj");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "uvtk: error: unknown command 'mapp'; did you mean 'map'?\n");
+  EXPECT_EQ(uvtk("merge x.json").err, "uvtk: error: unknown command 'merge'; did you mean 'merge-reports'?\n");
+  EXPECT_EQ(uvtk("texgne x.obj").err, "uvtk: error: unknown command 'texgne'; did you mean 'texgen'?\n");
+  const CliRun far = uvtk("frobnicate x.obj");
+  EXPECT_EQ(far.status, 2);
+  EXPECT_EQ(far.err, "uvtk: error: unknown command 'frobnicate'\n");
+}
+
+TEST_F(CliManners, AMistypedOptionGetsTheNearestNameOfItsCommand) {
+  // Before the missing -o: the unknown option is the mistake to fix first.
+  const CliRun r = uvtk("map x.obj --projektor sphere");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "uvtk: error: unknown option '--projektor'; did you mean '--projector'?\n");
+  EXPECT_EQ(uvtk("map x.obj --projektor=sphere -o o.obj").err,
+            "uvtk: error: unknown option '--projektor'; did you mean '--projector'?\n");
+  EXPECT_EQ(uvtk("texgen x.obj --texmatrx 1 -o o.obj").err,
+            "uvtk: error: unknown option '--texmatrx'; did you mean '--texmatrix'?\n");
+  EXPECT_EQ(uvtk("--verison").err, "uvtk: error: unknown option '--verison'; did you mean '--version'?\n");
+  const CliRun far = uvtk("map x.obj --colour red -o o.obj");
+  EXPECT_EQ(far.status, 2);
+  EXPECT_EQ(far.err, "uvtk: error: unknown option '--colour'\n");
+  // Other refusals keep CLI11's words, on one line.
+  const CliRun missing = uvtk("map x.obj");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_EQ(missing.err, "uvtk: error: --output is required\n");
+  EXPECT_EQ(uvtk("").err, "uvtk: error: A subcommand is required\n");
+}
+
+TEST_F(CliManners, ABadChoiceListsTheNames) {
+  const std::string map = "map " + sphereMesh() + " -o " + path("o.obj");
+  const CliRun r = uvtk(map + " --projector sphera");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err,
+            "uvtk: error: --projector: 'sphera' is not one of: plane, two-plane, cylinder, sphere, cube; did you mean "
+            "'sphere'?\n");
+  // The numbers behind the names are not names.
+  const CliRun number = uvtk(map + " --projector 3");
+  EXPECT_EQ(number.status, 2);
+  EXPECT_EQ(number.err, "uvtk: error: --projector: '3' is not one of: plane, two-plane, cylinder, sphere, cube\n");
+  EXPECT_EQ(uvtk(map + " --axis 2").err, "uvtk: error: --axis: '2' is not one of: x, y, z\n");    // an int choice
+  EXPECT_EQ(uvtk(map + " --uv-digits 1").err, "uvtk: error: --uv-digits: '1' is not one of: double, float\n");  // a bool
+  EXPECT_FALSE(std::filesystem::exists(path("o.obj")));
+}
+
+TEST_F(CliManners, AChoiceSetsTheValueItNamesInAnyCase) {
+  // (0.3, 0.4, 0.5) under three projectors with the placement at the origin: the plane's and the
+  // cylinder's (u, v) differ, and the name's case does not matter.
+  const auto uvs = [&](const std::string& projector) {
+    const std::string out = path(projector + ".csv");
+    const CliRun r = uvtk("eval --point 0.3,0.4,0.5 --projector " + projector + " -q -o " + out);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return readText(out);
+  };
+  const std::string plane = uvs("plane");
+  EXPECT_EQ(uvs("PLANE"), plane);
+  EXPECT_EQ(uvs("Plane"), plane);
+  EXPECT_NE(uvs("cylinder"), plane);
+  EXPECT_EQ(uvs("CYLINDER"), uvs("cylinder"));
+  EXPECT_EQ(uvtk("map " + sphereMesh() + " --axis Y --uv-digits FLOAT -q -o " + path("o.obj")).status, 0);
+}
+
+TEST_F(CliManners, NearestNameIsCloseOrNothing) {
+  const std::vector<std::string> projectors = {"plane", "two-plane", "cylinder", "sphere", "cube"};
+  EXPECT_EQ(cli::nearestName("sphera", projectors), "sphere");  // a substitution
+  EXPECT_EQ(cli::nearestName("SPHERE", projectors), "sphere");  // case only
+  EXPECT_EQ(cli::nearestName("two-plnae", projectors), "two-plane");  // neighbours swapped: one edit
+  EXPECT_EQ(cli::nearestName("cyl", projectors), "cylinder");         // the only name it begins
+  EXPECT_EQ(cli::nearestName("cub", projectors), "cube");             // one insertion
+  EXPECT_EQ(cli::nearestName("torus", projectors), "");
+  EXPECT_EQ(cli::nearestName("x", {"q", "o"}), "");  // one letter for one: not close
+  EXPECT_EQ(cli::nearestName("pla", {"plane", "planar"}), "");  // begins two: which?
+  EXPECT_EQ(cli::nearestName("", projectors), "");
+  // A third of the longer name: 2 edits in 6 letters are close, 3 are not.
+  EXPECT_EQ(cli::nearestName("spxxre", {"sphere"}), "sphere");
+  EXPECT_EQ(cli::nearestName("sxxxre", {"sphere"}), "");
+}
+
+TEST_F(CliManners, NameCheckAcceptsExactlyTheNames) {
+  const CLI::Validator check = cli::nameCheck({"repeat", "clamp_to_edge", "mirrored_repeat"});
+  std::string value = "repeat";
+  EXPECT_EQ(check(value), "");
+  value = "REPEAT";  // a string option's value is used as typed: no case folding
+  EXPECT_EQ(check(value), "'REPEAT' is not one of: repeat, clamp_to_edge, mirrored_repeat; did you mean 'repeat'?");
+  value = "clamp";
+  EXPECT_EQ(check(value), "'clamp' is not one of: repeat, clamp_to_edge, mirrored_repeat; did you mean 'clamp_to_edge'?");
+}
+
+TEST_F(CliManners, EveryHelpEndsWithExamplesThatWork) {
+  const std::vector<std::string> names = commands();
+  ASSERT_GE(names.size(), 11u);
+  // The examples expect the source folder's meshes/ and run in this order (later ones read what
+  // earlier ones wrote).
+  std::filesystem::copy(std::string(UVTK_SOURCE_DIR) + "/meshes", path("meshes"));
+  std::vector<std::string> lines = examples(stdoutOf("--help").err);
+  EXPECT_EQ(lines.size(), 2u);
+  for (const std::string& name : names) {
+    const CliRun help = stdoutOf(name + " --help");
+    ASSERT_EQ(help.status, 0) << name;
+    const std::vector<std::string> own = examples(help.err);
+    EXPECT_TRUE(own.size() == 1 || own.size() == 2) << name << ":\n" << help.err;
+    for (const std::string& line : own) {
+      EXPECT_NE(line.find("uvtk " + name + " "), std::string::npos) << line;
+      lines.push_back(line);
+    }
+  }
+  for (const std::string& line : lines) {
+    const std::string command = std::regex_replace(line, std::regex("(^|\\| )uvtk "), "$1" + std::string(UVTK_BINARY) + " ");
+    const CliRun r = shell("cd " + dir_.string() + " && " + command);
+    EXPECT_EQ(r.status, 0) << line << "\n" << r.err;
+  }
+  EXPECT_TRUE(std::filesystem::exists(path("demo/obj/sphere_sphere.obj")));
+  EXPECT_TRUE(std::filesystem::exists(path("all.json")));
+  // The footer that eval had is kept, the examples after it.
+  const std::string eval = stdoutOf("eval --help").err;
+  EXPECT_LT(eval.find("Exit status: 0 ok"), eval.find("\nExamples:\n"));
+  const std::string merge = stdoutOf("merge-reports --help").err;
+  EXPECT_EQ(merge.substr(merge.rfind("\nExamples:")),
+            "\nExamples:\n"
+            "  uvtk merge-reports mapped -o all.json\n"
+            "      one report, with totals, of the JSON files that uvtk map wrote into mapped/\n");
+}
+
+TEST_F(CliManners, EveryCommandTakesQ) {
+  for (const std::string& name : commands()) {
+    const std::string help = stdoutOf(name + " --help").err;
+    EXPECT_NE(help.find("\n  -q,--quiet "), std::string::npos) << name << ":\n" << help;
+  }
+  // texgen's -q (quiet) and --q (the q coordinate) are two options.
+  const CliRun texgen = uvtk("texgen " + sphereMesh() + " --q object_linear:0,0,0,1 -q -o " + path("t.obj"));
+  EXPECT_EQ(texgen.status, 0) << texgen.err;
+  EXPECT_EQ(uvtk("schema -q").status, 0);
+  // map brings its own: no summary line.
+  const CliRun map = uvtk("map " + sphereMesh() + " -q -o " + path("m.obj"));
+  EXPECT_EQ(map.status, 0);
+  EXPECT_EQ(map.err, "");
+}
+
+}  // namespace
+}  // namespace uvtk

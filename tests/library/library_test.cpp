@@ -1,0 +1,315 @@
+// The installed C++ library (<uvtk/uvtk.h>) through its public interface only: options as structs
+// and as command lines, mapping in memory with hand-computed values, the verdict, errors as the
+// public exception types, and files written and read back.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <string>
+
+#include "scratch_dir.h"
+#include "uvtk/uvtk.h"
+
+namespace uvtk::api {
+namespace {
+
+class LibraryTest : public ScratchDirTest {};
+
+Mesh triangle() {
+  Mesh mesh;
+  mesh.positions = {{0, 0, 0}, {2, 0, 0}, {0, 3, 0}};
+  mesh.triangles = {{0, 1, 2}};
+  return mesh;
+}
+
+// An octahedron: its two apexes lie on the sphere projector's axis (poles), its four equator
+// vertices at azimuths 0, 90, 180 and 270 degrees.
+Mesh octahedron() {
+  Mesh mesh;
+  mesh.positions = {{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (int i = 0; i < 4; ++i) {
+    mesh.triangles.push_back({i, (i + 1) % 4, 4});
+    mesh.triangles.push_back({(i + 1) % 4, i, 5});
+  }
+  return mesh;
+}
+
+template <class Work>
+std::string messageOf(Work&& work) {
+  try {
+    work();
+  } catch (const std::exception& error) {
+    return error.what();
+  }
+  return "(nothing thrown)";
+}
+
+TEST(MapOptions, DefaultsAreTheCommandLinesAndSayNothing) {
+  const MapOptions defaults;
+  EXPECT_EQ(defaults.projector, "sphere");
+  EXPECT_EQ(defaults.fit, "bbox");
+  EXPECT_EQ(defaults.seam, "shift");
+  EXPECT_EQ(defaults.commandLine(), "");
+  const MapOptions parsed = MapOptions::parse("");
+  EXPECT_EQ(parsed.commandLine(), "");
+}
+
+TEST(MapOptions, ParseFillsTheFieldsAndCommandLineGivesThemBack) {
+  const MapOptions o = MapOptions::parse(
+      "--projector cylinder --fit none --caps --cap-angle 30 --uv-scale 2,0.5 --center 1,2,3 "
+      "--fail-on overlap=0.5 --fail-on stretch_p99=4 --seam cut --seam-place auto --flip-v");
+  EXPECT_EQ(o.projector, "cylinder");
+  EXPECT_EQ(o.fit, "none");
+  EXPECT_TRUE(o.caps);
+  EXPECT_EQ(o.capAngle, 30.0);
+  EXPECT_EQ(o.uvScale, (Vector2{2.0, 0.5}));
+  ASSERT_TRUE(o.center.has_value());
+  EXPECT_EQ(*o.center, (Vector3{1, 2, 3}));
+  EXPECT_EQ(o.failOn, (std::vector<std::string>{"overlap=0.5", "stretch_p99=4"}));
+  EXPECT_EQ(o.seam, "cut");
+  EXPECT_EQ(o.seamPlace, "auto");
+  EXPECT_TRUE(o.flipV);
+  EXPECT_FALSE(o.flipU);
+  EXPECT_EQ(o.commandLine(),
+            "--projector cylinder --fit none --center 1,2,3 --caps --cap-angle 30 --seam cut --seam-place auto "
+            "--uv-scale 2,0.5 --flip-v --fail-on overlap=0.5 --fail-on stretch_p99=4");
+  EXPECT_EQ(MapOptions::parse(o.commandLine()).commandLine(), o.commandLine());
+}
+
+TEST(MapOptions, ANumberKeepsEveryBitThroughTheCommandLine) {
+  MapOptions o;
+  o.poleEps = 0.1 + 0.2;  // 0.30000000000000004
+  o.uvOffset = {1.0 / 3.0, -2e-300};
+  const MapOptions back = MapOptions::parse(o.commandLine());
+  EXPECT_EQ(back.poleEps, o.poleEps);
+  EXPECT_EQ(back.uvOffset, o.uvOffset);
+}
+
+TEST(MapOptions, BadOptionsThrowInvalidArgumentWithTheCommandLinesMessage) {
+  EXPECT_NE(messageOf([] { MapOptions::parse("--projector sphera"); }).find("--projector"), std::string::npos);
+  EXPECT_THROW(MapOptions::parse("--projector sphera"), std::invalid_argument);
+  EXPECT_THROW(MapOptions::parse("-o out.obj"), std::invalid_argument);  // an output is not a mapping option
+  EXPECT_THROW(MapOptions::parse("--fail-on nonsense=1"), std::invalid_argument);
+  EXPECT_THROW(MapOptions::parse("--projector 'sphere"), std::invalid_argument);  // unterminated quote
+  MapOptions bad;
+  bad.omap = "sideways";
+  EXPECT_THROW(map(triangle(), bad), std::invalid_argument);
+}
+
+TEST(Map, APlaneInObjectCoordinatesGivesXAndY) {
+  MapOptions o;
+  o.projector = "plane";
+  o.fit = "none";
+  const Mapping m = map(triangle(), o);
+  ASSERT_EQ(m.uv.size(), 3u);
+  EXPECT_EQ(m.uv[0], (Vector2{0, 0}));
+  EXPECT_EQ(m.uv[1], (Vector2{2, 0}));
+  EXPECT_EQ(m.uv[2], (Vector2{0, 3}));
+  EXPECT_EQ(m.source, "projector");
+  EXPECT_EQ(m.verdict.status, "pass");
+  EXPECT_TRUE(m.verdict.reasons.empty());
+  for (const CornerState s : m.state) EXPECT_EQ(s, CornerState::Ok);
+  EXPECT_EQ(m.faceFlags, (std::vector<std::uint8_t>{0}));
+  EXPECT_NE(m.summaryJson.find("\"verdict\":\"pass\""), std::string::npos);
+}
+
+TEST(Map, TheSphereOnAnOctahedronGivesTheAzimuthsAndMarksThePoles) {
+  MapOptions o;
+  o.fit = "none";
+  o.seam = "none";
+  o.pole = "none";
+  const Mapping m = map(octahedron(), o);
+  // docs/conventions.md: u = atan2(y, x) / 2 pi wrapped to [0, 1), v = 1/2 + asin(z) / pi.
+  const double expectedU[4] = {0.0, 0.25, 0.5, 0.75};
+  for (std::size_t f = 0; f < 8; f += 2) {
+    const int i = int(f / 2);
+    EXPECT_DOUBLE_EQ(m.uv[3 * f][0], expectedU[i]) << "face " << f;
+    EXPECT_DOUBLE_EQ(m.uv[3 * f][1], 0.5);
+    EXPECT_EQ(m.state[3 * f + 2], CornerState::Pole);  // the apex (0, 0, 1)
+    EXPECT_DOUBLE_EQ(m.uv[3 * f + 2][1], 1.0);
+    EXPECT_EQ(m.state[3 * f], CornerState::Ok);
+    EXPECT_TRUE(m.faceFlags[f] & kFacePole);
+  }
+}
+
+TEST(Map, ACutSeamGivesTheCutMesh) {
+  // Turned by 45 degrees, the octahedron has a face across the seam (from 315 to 45 degrees)
+  // above and below the equator.
+  Mesh turned = octahedron();
+  for (Vector3& p : turned.positions) p = {(p[0] - p[1]) * std::sqrt(0.5), (p[0] + p[1]) * std::sqrt(0.5), p[2]};
+  MapOptions o;
+  o.fit = "none";
+  o.seam = "cut";
+  const Mapping m = map(turned, o);
+  EXPECT_GT(m.mesh.triangles.size(), 8u);
+  EXPECT_EQ(m.uv.size(), 3 * m.mesh.triangles.size());
+  for (const Vector2& uv : m.uv) {
+    EXPECT_GE(uv[0], 0.0);
+    EXPECT_LE(uv[0], 1.0);
+  }
+}
+
+TEST(Map, AMappingThatFoldsFailsWithItsReasons) {
+  // A plane seen edge-on: every face's UV triangle has zero area.
+  Mesh wall = triangle();
+  for (Vector3& p : wall.positions) p = {p[0], 0.0, p[1]};
+  MapOptions o;
+  o.projector = "plane";
+  o.fit = "none";
+  const Mapping m = map(wall, o);
+  EXPECT_EQ(m.verdict.status, "fail");
+  ASSERT_FALSE(m.verdict.reasons.empty());
+  EXPECT_EQ(m.verdict.reasons.front().severity, "fail");
+  EXPECT_FALSE(m.verdict.reasons.front().text.empty());
+}
+
+TEST(Texgen, ObjectLinearIsThePlaneEquation) {
+  const Mapping m = texgen(triangle(), TexgenOptions::parse("--s object_linear:1,0,0,0.5 --t object_linear:0,2,0,0"));
+  EXPECT_EQ(m.source, "texgen");
+  EXPECT_EQ(m.uv[0], (Vector2{0.5, 0}));
+  EXPECT_EQ(m.uv[1], (Vector2{2.5, 0}));
+  EXPECT_EQ(m.uv[2], (Vector2{0.5, 6}));
+  const TexgenOptions o = TexgenOptions::parse("--s eye_linear:0,1,0,0 --no-normalize --eye 0,0,5");
+  EXPECT_EQ(o.s, "eye_linear:0,1,0,0");
+  EXPECT_FALSE(o.normalize);
+  EXPECT_EQ(o.eye, (Vector3{0, 0, 5}));
+  EXPECT_EQ(o.commandLine(), "--s eye_linear:0,1,0,0 --no-normalize --eye 0,0,5");
+}
+
+TEST(FileUvs, AMeshWithoutTexcoordsIsRefused) {
+  EXPECT_THROW(fileUvs(triangle()), std::invalid_argument);
+  Mesh mesh = triangle();
+  mesh.texcoords = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  mesh.cornerTexcoords = {{0, 1, -1}};
+  const Mapping m = fileUvs(mesh);
+  EXPECT_EQ(m.uv[1], (Vector2{1, 0}));
+  EXPECT_EQ(m.state[2], CornerState::Invalid);
+  EXPECT_EQ(m.invalidReason[2], InvalidReason::NoTexcoord);
+}
+
+TEST(CheckMesh, NamesTheFirstProblem) {
+  Mesh mesh = triangle();
+  mesh.triangles[0][2] = 7;
+  EXPECT_EQ(messageOf([&] { checkMesh(mesh); }),
+            "mesh: the position index of triangle 0, corner 2: index 7 is outside 0..3 - 1");
+  EXPECT_THROW(map(mesh), std::invalid_argument);
+  mesh = triangle();
+  mesh.positions[1][0] = std::nan("");
+  EXPECT_EQ(messageOf([&] { checkMesh(mesh); }), "mesh: position 1 is not finite");
+  mesh = triangle();
+  mesh.cornerTexcoords = {{0, 0, 0}, {0, 0, 0}};
+  EXPECT_THROW(checkMesh(mesh), std::invalid_argument);
+  mesh = triangle();
+  mesh.triangles.push_back({0, 0, 1});
+  EXPECT_EQ(checkMesh(mesh).degenerateFaces, 1u);
+}
+
+TEST_F(LibraryTest, AMissingFileIsAnInputErrorNamingIt) {
+  const std::string missing = path("missing.obj");
+  try {
+    readMesh(missing);
+    FAIL() << "read a missing file";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()).rfind(missing + ":", 0), 0u) << error.what();
+  }
+}
+
+TEST_F(LibraryTest, AnUnwritablePathIsAnOutputError) {
+  EXPECT_THROW(writeMesh(path("no/such/folder/x.obj"), triangle()), OutputError);
+}
+
+TEST_F(LibraryTest, AMappingWrittenAndReadBackHasTheSameTexcoords) {
+  MapOptions o;
+  o.projector = "cylinder";
+  o.seam = "cut";
+  const Mapping m = map(octahedron(), o);
+  writeMesh(path("m.obj"), m);
+  MeshWarnings warnings;
+  const Mesh back = readMesh(path("m.obj"), &warnings);
+  ASSERT_EQ(back.triangles.size(), m.mesh.triangles.size());
+  ASSERT_EQ(back.cornerTexcoords.size(), back.triangles.size());
+  for (std::size_t c = 0; c < m.uv.size(); ++c) {
+    const Vector3& t = back.texcoords[std::size_t(back.cornerTexcoords[c / 3][c % 3])];
+    EXPECT_EQ(t[0], m.uv[c][0]) << c;
+    EXPECT_EQ(t[1], m.uv[c][1]) << c;
+  }
+  EXPECT_EQ(back.positions, m.mesh.positions);
+  const Mapping again = fileUvs(back);
+  EXPECT_EQ(again.uv, m.uv);
+  EXPECT_EQ(warnings.degenerateFaces, 0u);
+}
+
+TEST_F(LibraryTest, TheReportIsTheJsonItWritesAndCarriesTheVerdict) {
+  MapOptions o;
+  o.projector = "cylinder";
+  const Mapping m = map(octahedron(), o);
+  ReportOptions options;
+  const std::string inMemory = report(m, options);
+  EXPECT_NE(inMemory.find("\"verdict\": \"" + m.verdict.status + "\""), std::string::npos);
+  options.json = path("r.json");
+  const std::string written = report(m, options);
+  std::ifstream file(options.json);
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text, written + "\n");
+  EXPECT_EQ(written, inMemory);
+  EXPECT_THROW(report(m, ReportOptions::parse("--views checker,nonsense --html x.html")), std::invalid_argument);
+}
+
+TEST(Render, AViewIsTheSizeAskedForAndDrawsTheMesh) {
+  const Mapping m = map(octahedron());
+  RenderOptions options = RenderOptions::parse("--view checker --size 64x48");
+  EXPECT_EQ(options.view, "checker");
+  EXPECT_EQ(options.size, "64x48");
+  const Image image = render(m, options);
+  EXPECT_EQ(image.width, 64);
+  EXPECT_EQ(image.height, 48);
+  ASSERT_GE(image.channels, 3);
+  const std::vector<std::uint8_t> bytes = image.bytes();
+  ASSERT_EQ(bytes.size(), image.pixels.size());
+  // The octahedron covers the middle of the frame and leaves its corner to the background.
+  const std::size_t centre = (std::size_t(24) * 64 + 32) * std::size_t(image.channels);
+  const std::size_t corner = 0;
+  EXPECT_NE(bytes[centre] + bytes[centre + 1] + bytes[centre + 2], bytes[corner] + bytes[corner + 1] + bytes[corner + 2]);
+  EXPECT_THROW(RenderOptions::parse("--view sideways"), std::invalid_argument);
+}
+
+TEST(ImageBytes, RoundAsAPngStores) {
+  Image image;
+  image.width = 5, image.height = 1, image.channels = 1;
+  image.pixels = {-1.0f, 0.5f, 1.0f / 255.0f * 0.5f, 2.0f, std::nanf("")};
+  EXPECT_EQ(image.bytes(), (std::vector<std::uint8_t>{0, 128, 1, 255, 0}));
+}
+
+TEST(Compare, RanksEveryProjectorAndNamesTheBest) {
+  CompareOptions options;
+  options.baselines = false;
+  const Comparison c = compare(octahedron(), options);
+  EXPECT_FALSE(c.best.empty());
+  EXPECT_NE(c.table.find(c.best), std::string::npos);
+  EXPECT_NE(c.json.find("\"ranking\""), std::string::npos);
+  EXPECT_EQ(CompareOptions::parse("--by angle --no-baselines").commandLine(), "--by angle --no-baselines");
+}
+
+// The README's "Library" program is examples/map_verdict/map_verdict.cpp, which the test command
+// builds against the installed package.
+TEST(Readme, TheLibraryProgramIsTheExampleBuiltAgainstTheInstall) {
+  const auto read = [](const std::string& file) {
+    std::ifstream in(std::string(UVTK_SOURCE_DIR) + "/" + file);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  const std::string readme = read("README.md"), program = read("examples/map_verdict/map_verdict.cpp");
+  ASSERT_FALSE(program.empty());
+  const std::size_t section = readme.find("\n## Library\n");
+  ASSERT_NE(section, std::string::npos);
+  const std::size_t start = readme.find("```cpp\n", section);
+  ASSERT_NE(start, std::string::npos);
+  EXPECT_EQ(readme.substr(start + 7, program.size()), program);
+  EXPECT_EQ(readme.substr(start + 7 + program.size(), 4), "```\n");
+}
+
+TEST(Version, IsTheProjects) { EXPECT_EQ(version(), UVTK_VERSION); }
+
+}  // namespace
+}  // namespace uvtk::api
