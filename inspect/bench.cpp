@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -17,10 +18,12 @@
 #include "meshes/generators.h"
 #include "options/cli_values.h"
 #include "options/option_names.h"
+#include "options/projector_cli.h"
 #include "options/render_cli.h"
 #include "param/batch_atan2.h"
 #include "param/reference.h"
 #include "peers/assimp_peer.h"
+#include "render/procedural.h"
 #include "views/pareto.h"
 
 namespace uvtk::inspect {
@@ -338,7 +341,55 @@ std::string withSuffix(const std::string& path, const std::string& suffix) {
   return dot == std::string::npos ? path + suffix : path.substr(0, dot) + suffix + path.substr(dot);
 }
 
+// A comma-separated list of whole numbers in [low, high].
+std::vector<int> parseCounts(const std::string& text, const std::string& option, int low, int high) {
+  std::vector<int> values;
+  for (double v : cli::parseNumbers(text, int(std::count(text.begin(), text.end(), ',')) + 1, option)) {
+    if (v != std::floor(v) || v < low || v > high)
+      throw UsageError(option + ": expected whole numbers in [" + std::to_string(low) + ", " + std::to_string(high) +
+                       "]");
+    values.push_back(int(v));
+  }
+  return values;
+}
+
 }  // namespace
+
+BenchOptions BenchArguments::resolve() const {
+  camera.check();
+  if (!(minTime > 0)) throw UsageError("--min-time: expected seconds > 0");
+  if (textureWidth < 1) throw UsageError("--texture-width: expected a positive number of texels");
+  // Every output's folder is checked before the first measurement.
+  for (const std::string* path : {&json, &markdown, &plot}) {
+    const std::filesystem::path folder = std::filesystem::path(*path).parent_path();
+    std::error_code error;
+    if (!path->empty() && !folder.empty() && !std::filesystem::is_directory(folder, error))
+      throw UsageError(*path + ": the folder " + folder.string() + " does not exist");
+  }
+  BenchOptions o;
+  o.precisions = cli::parseNameList(precisions, cli::kPrecisionNames, "--precision");
+  o.maths = cli::parseNameList(maths, cli::kMathNames, "--math");
+  o.threads = parseCounts(threads, "--threads", 1, 256);
+  cli::projectorNamed("plane", omap);  // a bad --omap is named before a bad projector
+  for (const std::string& projector : cli::splitList(projectors)) {
+    o.projectors.push_back({projector, cli::projectorNamed(projector, omap)});
+    if (o.projectors.back().options.surface == param::SurfaceKind::Cube)
+      throw UsageError(
+          "--projector cube: the cube chooses its face per triangle; `uvtk bench` times per-vertex mappings");
+  }
+  if (render) {
+    std::tie(o.width, o.height) = cli::parseImageSize(size, "--size");
+    o.samples = parseCounts(samples, "--spp", 1, 256);
+    o.filters = cli::parseNameList(filters, cli::kFilterNames, "--filters");
+    o.texture = render::proceduralTexture(texture);
+    if (!o.texture) throw UsageError("--texture: expected checker:N[:C] or uvgrid[:N], found \"" + texture + "\"");
+    o.renderProjector = {renderProjector, cli::projectorNamed(renderProjector, "isn")};
+    o.camera = camera.resolve();
+  }
+  o.mesh = mesh, o.omap = omap, o.textureWidth = textureWidth, o.minTime = minTime, o.peers = !noPeers;
+  o.rendering = render, o.json = json, o.markdown = markdown, o.plot = plot;
+  return o;
+}
 
 std::string bench(const BenchOptions& a) {
   Mesh mesh;

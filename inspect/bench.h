@@ -14,6 +14,7 @@
 
 #include "core/arithmetic.h"
 #include "inspect/mapped_mesh.h"
+#include "options/view_camera_cli.h"
 #include "param/projector.h"
 #include "render/texture.h"
 
@@ -47,6 +48,28 @@ struct BenchOptions {
   ViewCamera camera;
   // Outputs, none when empty; published together.
   std::string json, markdown, plot;  // plot: the mapping's Pareto chart, and FILE-render.png with `rendering`
+};
+
+// `uvtk bench`'s options as typed: lists are names or numbers separated by commas.
+struct BenchArguments {
+  std::string mesh;  // empty: the built-in 2048 x 1024 lat-long sphere
+  std::string projectors = "plane,two-plane,cylinder,sphere", omap = "isn";
+  std::string precisions = "double,float", maths = "exact,fast,fast-u10", threads = "1";
+  int textureWidth = 4096;
+  double minTime = 0.3;
+  std::string json, markdown, plot;
+  bool noPeers = false;
+  // rendering
+  bool render = false;
+  std::string renderProjector = "sphere", size = "512x512", texture = "checker:512:16";
+  std::string filters =
+      "nearest,linear,nearest_mipmap_nearest,linear_mipmap_nearest,nearest_mipmap_linear,linear_mipmap_linear";
+  std::string samples = "1,4,16";
+  cli::ViewCameraArguments camera;
+
+  // The options they name; throws UsageError for a malformed value or an output's missing folder,
+  // before anything is measured.
+  BenchOptions resolve() const;
 };
 
 // Measures, writes the outputs, and returns the Markdown tables (after a line naming the mesh).

@@ -31,9 +31,13 @@ uvtk::Mesh toEngine(const Mesh& mesh);
 Mesh fromEngine(const uvtk::Mesh& mesh);
 MeshWarnings fromEngine(const uvtk::MeshWarnings& warnings);
 
-// The "input" record of a summary for `mesh` (as `uvtk map --json` writes it, without the path),
-// after checking it (std::invalid_argument).
-nlohmann::json inputRecord(const Mesh& mesh);
+// A public mesh checked (std::invalid_argument, as checkMesh) and converted once, with the "input"
+// record of its summaries (as `uvtk map --json` writes it, without the path).
+struct CheckedMesh {
+  uvtk::Mesh engine;
+  nlohmann::json input;
+};
+CheckedMesh checked(const Mesh& mesh);
 
 // The public Mapping of `mapped`, judged under `thresholds`; `input` is the summary's "input" record.
 Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thresholds, int overlapResolution,

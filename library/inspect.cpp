@@ -206,11 +206,12 @@ Image render(const Mapping& mapping, const RenderOptions& options) {
 }
 
 Comparison compare(const Mesh& mesh, const CompareOptions& options) {
-  const nlohmann::json input = inputRecord(mesh);
+  const CheckedMesh in = checked(mesh);
   return translatingErrors([&] {
     const CompareCommand command(wordsOf(options, compareFields()));
     const inspect::CompareOptions o = command.options();
-    const uvtk::Mesh engine = toEngine(mesh);
+    const uvtk::Mesh& engine = in.engine;
+    const nlohmann::json& input = in.input;
     const bool writes = !o.json.empty() || !o.markdown.empty() || !o.sheet.empty();
     const inspect::Comparison ranked =
         writes ? inspect::compareMappings(o, engine, input) : inspect::rankMappings(o, engine, input);

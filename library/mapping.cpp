@@ -140,14 +140,6 @@ TexgenOptions TexgenOptions::parse(const std::string& commandLine) {
 
 std::string TexgenOptions::commandLine() const { return joinCommandLine(wordsOf(*this, texgenFields())); }
 
-nlohmann::json inputRecord(const Mesh& mesh) {
-  const MeshWarnings warnings = checkMesh(mesh);
-  return {{"vertices", mesh.positions.size()},
-          {"faces", mesh.triangles.size()},
-          {"degenerate_faces", warnings.degenerateFaces},
-          {"unreferenced_vertices", warnings.unreferencedVertices}};
-}
-
 Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thresholds, int overlapResolution,
                     nlohmann::json input, std::optional<texgen::TexgenOptions> texgen) {
   auto detail = std::make_shared<MappingDetail>();
@@ -190,28 +182,28 @@ Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thre
 }
 
 Mapping map(const Mesh& mesh, const MapOptions& options) {
-  nlohmann::json input = inputRecord(mesh);
+  CheckedMesh in = checked(mesh);
   return translatingErrors([&] {
     const MapCommand command(wordsOf(options, mapFields()));
     const param::ProjectorOptions resolved = command.projector.resolve();
-    return makeMapping(inspect::mapByProjector(toEngine(mesh), resolved, command.projector.seamPlaceAuto()),
-                       command.verdict.thresholds(), command.overlapResolution, std::move(input));
+    return makeMapping(inspect::mapByProjector(std::move(in.engine), resolved, command.projector.seamPlaceAuto()),
+                       command.verdict.thresholds(), command.overlapResolution, std::move(in.input));
   });
 }
 
 Mapping texgen(const Mesh& mesh, const TexgenOptions& options) {
-  nlohmann::json input = inputRecord(mesh);
+  CheckedMesh in = checked(mesh);
   return translatingErrors([&] {
     const TexgenCommand command(wordsOf(options, texgenFields()));
     const texgen::TexgenOptions resolved = command.resolve();
-    return makeMapping(inspect::mapByTexgen(toEngine(mesh), resolved), {}, 1024, std::move(input), resolved);
+    return makeMapping(inspect::mapByTexgen(std::move(in.engine), resolved), {}, 1024, std::move(in.input), resolved);
   });
 }
 
 Mapping fileUvs(const Mesh& mesh) {
-  nlohmann::json input = inputRecord(mesh);
+  CheckedMesh in = checked(mesh);
   return translatingErrors(
-      [&] { return makeMapping(inspect::withFileUvs(toEngine(mesh), "mesh"), {}, 1024, std::move(input)); });
+      [&] { return makeMapping(inspect::withFileUvs(std::move(in.engine), "mesh"), {}, 1024, std::move(in.input)); });
 }
 
 void writeMesh(const std::string& path, const Mapping& mapping, const WriteOptions& options) {

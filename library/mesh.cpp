@@ -84,7 +84,8 @@ Mesh readMesh(const std::string& path, MeshWarnings* warnings) {
   });
 }
 
-MeshWarnings checkMesh(const Mesh& mesh) {
+// What checkMesh checks in the public mesh itself, before the engine sees it.
+static void checkIndicesAndNumbers(const Mesh& mesh) {
   const std::size_t triangles = mesh.triangles.size();
   checkFinite(mesh.positions, "position");
   checkFinite(mesh.texcoords, "texcoord");
@@ -92,13 +93,27 @@ MeshWarnings checkMesh(const Mesh& mesh) {
   checkIndices(mesh.triangles, mesh.positions.size(), triangles, "the position index", false);
   checkIndices(mesh.cornerTexcoords, mesh.texcoords.size(), triangles, "the texcoord index", true);
   checkIndices(mesh.cornerNormals, mesh.normals.size(), triangles, "the normal index", true);
+}
+
+CheckedMesh checked(const Mesh& mesh) {
+  checkIndicesAndNumbers(mesh);
+  CheckedMesh out{toEngine(mesh), nullptr};
+  const uvtk::MeshWarnings warnings = uvtk::checkMesh(out.engine);
+  out.input = {{"vertices", out.engine.vertexCount()},
+               {"faces", out.engine.faceCount()},
+               {"degenerate_faces", warnings.degenerateFaces},
+               {"unreferenced_vertices", warnings.unreferencedVertices}};
+  return out;
+}
+
+MeshWarnings checkMesh(const Mesh& mesh) {
+  checkIndicesAndNumbers(mesh);
   return fromEngine(uvtk::checkMesh(toEngine(mesh)));
 }
 
 void writeMesh(const std::string& path, const Mesh& mesh) {
-  checkMesh(mesh);
+  const uvtk::Mesh engine = checked(mesh).engine;
   translatingErrors([&] {
-    const uvtk::Mesh engine = toEngine(mesh);
     UvMap uvs;
     if (engine.hasTexcoords()) uvs = inspect::fileUvs(engine, path);
     io::writeObj(path, engine, engine.hasTexcoords() ? &uvs : nullptr);

@@ -5,6 +5,7 @@
 //        uvtk_meshgen --like-real FOLDER   a torus knot, a long bone, a bumpy blob and an open scanned patch
 //        uvtk_meshgen --help
 #include <cstdio>
+#include <filesystem>
 #include <cstdlib>
 #include <exception>
 #include <string>
@@ -52,6 +53,8 @@ int main(int argc, char** argv) {
                                                         {"bumpy_blob.obj", uvtk::meshes::bumpyBlob(4)},
                                                         {"scanned_patch.obj", uvtk::meshes::scannedPatch(4)}};
     try {
+      std::error_code made;  // a folder that does not exist yet is made; writeObj says what else is wrong
+      std::filesystem::create_directories(argv[2], made);
       for (const auto& [file, mesh] : meshes) {
         uvtk::io::writeObj(std::string(argv[2]) + "/" + file, mesh, nullptr);
         std::fprintf(stderr, "%s/%s: %zu vertices, %zu faces\n", argv[2], file, mesh.vertexCount(), mesh.faceCount());
@@ -74,6 +77,8 @@ int main(int argc, char** argv) {
   }
   const std::string folder = argc == 2 ? argv[1] : ".";
   try {
+    std::error_code made;
+    std::filesystem::create_directories(folder, made);
     for (const uvtk::meshes::BundledMesh& m : uvtk::meshes::bundledMeshes()) {
       uvtk::io::ObjWriteOptions options;
       options.header = m.header();

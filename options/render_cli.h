@@ -13,6 +13,8 @@
 #include "io/atomic_file.h"
 #include "inspect/frame.h"
 #include "inspect/mapped_mesh.h"
+#include "options/projector_cli.h"
+#include "options/texgen_cli.h"
 #include "render/camera.h"
 #include "render/renderer.h"
 #include "render/texture.h"
@@ -98,5 +100,26 @@ void addFrameOptions(CLI::App& app, FrameArguments& arguments);
 // the cube projector's face ids, and the cubeface AOV a cube map. Before any work.
 void checkTextureUse(const FrameArguments& frame, const TextureArguments& texture,
                      const param::ProjectorOptions* projector);
+
+// `uvtk render` on one mesh file: the paths and the option groups as parsed.
+struct RenderJob {
+  std::string input, output, json, model;  // model: --model's 16 numbers, empty for the identity
+  CameraArguments camera;
+  TextureArguments texture;
+  FrameArguments frame;
+  ProjectorArguments projector;
+  TexgenArguments texgen;
+};
+
+struct RenderResult {
+  nlohmann::json record;  // the JSON summary, written when the job names a file
+  std::string line;       // "WxH, N faces drawn, ..." for the textured picture; empty when views were drawn
+};
+
+// Checks every option before any work (UsageError), reads the mesh, makes the camera, maps the
+// mesh (the projector, its reflection O-mapping seeing from the camera's eye; texgen under the
+// camera's view; or the file's UVs), loads the texture, draws, publishes the outputs together and
+// prints the input's and the mapping's notes.
+RenderResult renderMeshFile(RenderJob job);
 
 }  // namespace uvtk::cli

@@ -1,10 +1,13 @@
 #include "point/point_io.h"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
@@ -432,5 +435,63 @@ EvalCounts evaluatePoints(const EvalJob& job, const cli::MappingArguments& mappi
   }
   return counts;
 }
+
+EvalJob evalJobOf(const std::vector<std::string>& points, const std::vector<std::string>& normals, bool inputGiven) {
+  const bool fromStdin = points.empty();
+  if (!fromStdin && inputGiven)
+    throw UsageError("--input describes rows on stdin; it does not go with --point");
+  if (!fromStdin && normals.size() > 1 && normals.size() != points.size())
+    throw UsageError("--normal: expected one normal for every point, or one per point (" +
+                     std::to_string(points.size()) + "), found " + std::to_string(normals.size()));
+  if (fromStdin && normals.size() > 1)
+    throw UsageError(
+        "--normal: with rows on stdin, expected at most one (the normal of rows without their own), "
+        "found " +
+        std::to_string(normals.size()) + "; give each row's normal in its nx,ny,nz or \"n\"");
+  if (fromStdin && isatty(STDIN_FILENO))
+    throw UsageError("expected --point x,y,z, or rows on stdin (CSV or JSON lines; see --help), found a terminal");
+  EvalJob job;
+  for (const std::string& p : points) job.rows.push_back({0, parseTriple(p, "--point"), {}, {}});
+  for (std::size_t i = 0; i < normals.size(); ++i) {
+    const Vector3 n = parseTriple(normals[i], "--normal");
+    if (normals.size() == 1)
+      job.defaultNormal = n;
+    else
+      job.rows[i].normal = n;
+  }
+  if (fromStdin) job.in = &std::cin;
+  return job;
+}
+
+const char* const kEvalHelp = R"(
+Points in: --point x,y,z (repeatable) with --normal x,y,z (one for all points, or one per point);
+or, without --point, rows on stdin:
+  --input csv   one point a line: x,y,z[,nx,ny,nz][,ex,ey,ez] (3, 6 or 9 columns), or any of
+                these columns in the order an optional first line (header) names them, e.g.
+                "x,y,z,ex,ey,ez"; blank lines and lines starting with # are skipped.
+  --input json  one JSON object a line: {"p": [x, y, z], "n": [nx, ny, nz], "eye": [ex, ey, ez]};
+                n and eye optional; "nan", "inf", "-inf" as strings for non-finite values.
+  A single --normal is the normal of rows without their own. A row's eye replaces --eye: the
+  reflection O-mapping's eye (projector) or the gluLookAt eye of texgen's view.
+  nan, inf and numbers beyond double range are values: such a point is invalid, not an error.
+  A malformed row is an error (exit 3): "<stdin>:LINE: error: expected ..., found ...".
+
+Placement: --fit none by default (object coordinates, or --center/--axis-dir/--ref-dir/--scale).
+--fit bbox|center|pca|obb and --convention blender|assimp fit the placement to --mesh FILE exactly
+as `uvtk map` fits it; --seam-place auto places the seam on that mesh. --seam and --pole repair a
+mesh's faces and do nothing here: each point gets its own value (as uvtk map --seam none --pole none).
+
+Out (stdout, or -o FILE written atomically), one line per point, every number %.17g (it reads back
+as the same double):
+  --format csv   header x,y,z[,nx,ny,nz][,ex,ey,ez],u,v,w,q,status,reason; reason quoted
+  --format json  {"p": [...], "n": [...], "eye": [...], "u", "v", "w", "q", "status", "reason"}
+  u, v: the projector's (u, v) or texgen's (s, t); w: the cube face id 0..5 (+X -X +Y -Y +Z -Z)
+  with --cube-layout faces, texgen's r, else 0; q: texgen's q (not divided out), else 1.
+  nx,ny,nz appear when normals were given, ex,ey,ez when rows brought eyes.
+Status: ok; pole (on a wrapping surface's axis: v exact, u undefined and written 0; texgen: the
+sphere map's singular point, s = t = 1/2); on-seam (u = 0 and u = 1 are the same point, or a cube
+edge); invalid (no value: non-finite or zero input, the ray misses; u = v = 0). reason says why.
+A summary goes to stderr: "uvtk eval: N points, K ok, P poles, S on seam, I invalid".
+Exit status: 0 ok, 2 usage error, 3 malformed row or mesh, 4 output not writable.)";
 
 }  // namespace uvtk::point

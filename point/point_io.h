@@ -42,6 +42,15 @@ struct EvalJob {
   std::string output;  // written atomically; stdout when empty
 };
 
+// The job of `uvtk eval`'s --point and --normal values (`normals`: one for every point, or one per
+// point): those points, or without any the rows on stdin, with at most one normal (the rows'
+// without their own). Throws UsageError for other counts of normals, for --input with --point
+// (`inputGiven`) and for rows to read from a terminal.
+EvalJob evalJobOf(const std::vector<std::string>& points, const std::vector<std::string>& normals, bool inputGiven);
+
+// The end of `uvtk eval --help`: the points in, the placement, the lines out, the statuses.
+extern const char* const kEvalHelp;
+
 // Points by status: [int(Status)].
 struct EvalCounts {
   std::size_t points = 0;

@@ -2,73 +2,22 @@
 // projector of `uvtk map`, with its conventions, or GL texgen), or against another file's, corner
 // by corner (inspect/check.h, docs/check.md).
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "commands.h"
 #include "core/error.h"
 #include "inspect/check.h"
-#include "io/image_io.h"
-#include "options/cli_values.h"
-#include "options/mapping_options.h"
-#include "options/verdict_cli.h"
+#include "options/check_cli.h"
 
 namespace uvtk::cli {
 
 namespace {
 
-struct CheckArguments {
-  std::string input, against, json, view;
-  std::string viewSize = "512x512", viewDir = "0,0,1", viewUp = "0,1,0";
-  std::string wrap = "none";
-  std::optional<double> tolerance;
-  int textureSize = 1024;
-  int worst = 10;
-  bool partial = false;
-  MappingArguments mapping;
-  std::vector<std::string> mappingOptions;  // every option addMappingOptions added
-  VerdictArguments verdict;                 // of the stored UVs as a layout (docs/conventions.md §11)
-};
-
-void runCheck(CheckArguments& a) {
-  // Every option first, so that nothing is read or written for a bad command line.
-  if (a.textureSize < 1) throw UsageError("--texture-size: expected a positive number of texels");
-  if (a.worst < 0) throw UsageError("--worst: expected a count of corners, 0 or more");
-  if (a.tolerance && !(std::isfinite(*a.tolerance) && *a.tolerance >= 0.0))
-    throw UsageError("--tolerance: expected a finite number of UV units, 0 or more");
-  if (a.wrap != "none" && a.wrap != "u") throw UsageError("--wrap: expected none or u, found \"" + a.wrap + "\"");
-  inspect::CheckOptions o;
-  if (!a.against.empty()) {
-    for (const std::string& name : a.mappingOptions)
-      if (given(a.mapping.app, name.c_str()))
-        throw UsageError("--against compares two files: " + name + " (a mapping option) does not go with it");
-  } else {
-    if (given(a.mapping.app, "--wrap"))
-      throw UsageError("--wrap goes with --against only: a mapping knows its own period");
-    const ResolvedMapping resolved = resolveMapping(a.mapping);
-    if (resolved.projector && resolved.projector->seam == param::SeamMode::Cut)
-      throw UsageError(
-          "--seam cut changes the triangles, and uvtk check compares corner by corner: use --seam shift or none (u "
-          "is compared modulo its period, so the seam's side does not matter)");
-    o.projector = resolved.projector;
-    o.texgen = resolved.texgen;
-    o.seamPlaceAuto = resolved.seamPlaceAuto;
-  }
-  if (!a.view.empty()) {
-    std::tie(o.viewWidth, o.viewHeight) = parseImageSize(a.viewSize, "--view-size");
-    o.viewDir = parseVec3(a.viewDir, "--view-dir");
-    o.viewUp = parseVec3(a.viewUp, "--view-up");
-    io::checkImageType(a.view, io::PixelType::UInt8);
-  }
-  o.input = a.input, o.against = a.against, o.wrapU = a.wrap == "u", o.partial = a.partial;
-  o.textureSize = a.textureSize, o.worst = std::size_t(a.worst), o.tolerance = a.tolerance;
-  o.thresholds = a.verdict.thresholds();
-  o.json = a.json, o.view = a.view;
-  const inspect::CheckRun run = inspect::checkStoredUvs(o);
+void runCheck(const CheckArguments& a) {
+  const inspect::CheckRun run = inspect::checkStoredUvs(a.resolve());
   std::fputs(run.text.c_str(), stdout);
   std::fflush(stdout);
   if (!run.pass) throw CheckFailure("the check failed");
