@@ -38,6 +38,8 @@ struct MeshWarnings {
   std::size_t firstNonSimplePolygonLine = 0;  // the line of the first of them; 0 when there is none
   std::size_t vertexColours = 0;              // OBJ `v x y z r g b` lines: the colours are dropped
   std::size_t parameterVertices = 0;          // OBJ `vp` lines (free-form geometry), ignored
+  std::size_t weldedCorners = 0;      // STL: corners that became an earlier corner's vertex (same position, bit for bit)
+  std::size_t skippedPrimitives = 0;  // glTF: primitives of points or lines, not triangles, left out
 };
 
 // Twice the area-weighted normal of a triangle: the cross product of two edges.

@@ -19,7 +19,8 @@
 #include "inspect/verdict.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
-#include "io/obj_writer.h"
+#include "io/mesh_format.h"
+#include "io/mesh_writer.h"
 #include "options/option_names.h"
 
 namespace uvtk::inspect {
@@ -62,12 +63,10 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   const double judgeMs = clock.stop();
 
   clock.start("writing", paths.output);
-  io::ObjWriteOptions write;
-  write.writeW = job.writeW;
-  write.floatPrecision = job.floatDigits;
+  io::MeshWriteOptions write = job.write;
   write.header = "uvtk map " + paths.input;
   io::OutputSet outputs;
-  io::writeObj(outputs, paths.output, mapped.mesh, &mapped.uv, write);
+  io::writeMesh(outputs, paths.output, mapped.mesh, &mapped.uv, write);
   const double writeMs = clock.stop();
 
   if (!paths.json.empty()) {
@@ -87,23 +86,11 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   return {numbers + verdictLine(judgement), judgement.verdict};
 }
 
-namespace {
-
-std::string lowercaseExtension(const fs::path& path) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](char c) { return c >= 'A' && c <= 'Z' ? char(c - 'A' + 'a') : c; });
-  return extension;
-}
-
-}  // namespace
-
 std::vector<std::string> meshesInFolder(const std::string& folder) {
   std::vector<fs::path> found;
   try {
     for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
-      const std::string extension = lowercaseExtension(entry.path());
-      if (entry.is_regular_file() && (extension == ".obj" || extension == ".off")) found.push_back(entry.path());
+      if (entry.is_regular_file() && io::meshFormatOf(entry.path().string())) found.push_back(entry.path());
     }
   } catch (const fs::filesystem_error& e) {
     throw InputError(folder + ": error: cannot read the folder: " + e.code().message());
@@ -112,7 +99,8 @@ std::vector<std::string> meshesInFolder(const std::string& folder) {
             [](const fs::path& x, const fs::path& y) { return x.filename() < y.filename(); });
   std::vector<std::string> meshes;
   for (const fs::path& path : found) meshes.push_back(path.string());
-  if (meshes.empty()) throw InputError(folder + ": error: expected .obj or .off files in the folder, found none");
+  if (meshes.empty())
+    throw InputError(folder + ": error: expected mesh files (.obj, .off, .ply, .stl, .gltf, .glb) in the folder, found none");
   return meshes;
 }
 
@@ -134,11 +122,11 @@ std::vector<std::string> meshesInList(const std::string& list) {
 
 namespace {
 
-// The paths of every mesh of a batch: OUTDIR/STEM.obj and JSONDIR/STEM.json. Throws UsageError
+// The paths of every mesh of a batch: OUTDIR/STEM.EXT (EXT the format asked for) and JSONDIR/STEM.json. Throws UsageError
 // before any work when two inputs share a stem, when an output would replace an input, or when a
 // summary would be named like the batch's own batch.json.
 std::vector<MeshPaths> batchPaths(const std::vector<std::string>& inputs, const std::string& output,
-                                  const std::string& json) {
+                                  const std::string& json, io::MeshFormat format) {
   std::map<std::string, std::string> inputOfStem;
   std::set<fs::path> inputFiles;
   std::error_code ignored;
@@ -146,7 +134,7 @@ std::vector<MeshPaths> batchPaths(const std::vector<std::string>& inputs, const 
   std::vector<MeshPaths> paths;
   for (const std::string& input : inputs) {
     const std::string stem = fs::path(input).stem().string();
-    MeshPaths p{input, (fs::path(output) / (stem + ".obj")).string(), ""};
+    MeshPaths p{input, (fs::path(output) / (stem + io::extensionOf(format))).string(), ""};
     const auto [other, fresh] = inputOfStem.emplace(stem, input);
     if (!fresh) throw UsageError("two meshes would be written to " + p.output + ": " + other->second + " and " + input);
     if (inputFiles.count(fs::weakly_canonical(p.output, ignored)))
@@ -233,7 +221,7 @@ BatchResult mapBatch(const std::vector<std::string>& inputs, const std::string& 
   // Each mesh's OBJ and summary are published together when it is done, and batch.json at the
   // end: a batch is many independent runs (an interrupted one leaves the meshes done so far, each
   // whole), not one output.
-  const std::vector<MeshPaths> paths = batchPaths(inputs, output, json);
+  const std::vector<MeshPaths> paths = batchPaths(inputs, output, json, job.batchFormat);
   createFolder(output);
   if (!json.empty()) createFolder(json);
   const auto start = std::chrono::steady_clock::now();

@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "analysis/judgement.h"
+#include "io/mesh_format.h"
+#include "io/mesh_writer.h"
 #include "param/projector.h"
 
 namespace uvtk::inspect {
@@ -15,8 +17,8 @@ namespace uvtk::inspect {
 struct MapJob {
   param::ProjectorOptions projector;
   bool seamPlaceAuto = false;  // --seam-place auto: the seam placed on each mesh first
-  bool writeW = false;         // the third UV component (the cube face id)
-  bool floatDigits = false;    // UV text that round-trips a float, not a double
+  io::MeshWriteOptions write;  // the written mesh's options (the header is set per mesh)
+  io::MeshFormat batchFormat = io::MeshFormat::obj;  // what a batch writes, OUTDIR/STEM.obj by default
   analysis::Thresholds thresholds;
   int overlapResolution = 1024;
 };

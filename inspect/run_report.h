@@ -44,7 +44,9 @@ inline nlohmann::json inputJson(const std::string& path, const io::ReadMeshResul
           {"vertices", input.mesh.vertexCount()},
           {"faces", input.mesh.faceCount()},
           {"degenerate_faces", input.warnings.degenerateFaces},
-          {"unreferenced_vertices", input.warnings.unreferencedVertices}};
+          {"unreferenced_vertices", input.warnings.unreferencedVertices},
+          {"welded_corners", input.warnings.weldedCorners},
+          {"skipped_primitives", input.warnings.skippedPrimitives}};
 }
 
 // One warning line on stderr for each kind of thing the reader counted.
@@ -52,12 +54,18 @@ inline void printInputWarnings(const std::string& path, const MeshWarnings& w) {
   if (w.degenerateFaces || w.unreferencedVertices)
     printProgressMessage(path + ": warning: " + std::to_string(w.degenerateFaces) + " degenerate faces, " +
                          std::to_string(w.unreferencedVertices) + " unreferenced vertices");
-  if (w.nonSimplePolygons)
-    printProgressMessage(path + ":" + std::to_string(w.firstNonSimplePolygonLine) +
+  if (w.nonSimplePolygons)  // a binary file has no line to name
+    printProgressMessage(path + (w.firstNonSimplePolygonLine ? ":" + std::to_string(w.firstNonSimplePolygonLine) : "") +
                          ": warning: polygons that are not simple (self-intersecting, non-planar or of zero area): " +
                          std::to_string(w.nonSimplePolygons) + ", the first here; triangulated as given, they may fold");
   if (w.vertexColours)
     printProgressMessage(path + ": warning: vertex colours ignored: " + std::to_string(w.vertexColours) + " vertices");
+  if (w.weldedCorners)
+    printProgressMessage(path + ": " + std::to_string(w.weldedCorners) +
+                         " corners welded into the vertices of earlier corners at the same position (STL)");
+  if (w.skippedPrimitives)
+    printProgressMessage(path + ": warning: primitives of points or lines left out: " +
+                         std::to_string(w.skippedPrimitives));
   if (w.parameterVertices)
     printProgressMessage(path + ": warning: vp lines (free-form parameter vertices) ignored: " +
                          std::to_string(w.parameterVertices));

@@ -6,7 +6,8 @@
 #include "inspect/run_report.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
-#include "io/obj_writer.h"
+#include "io/mesh_format.h"
+#include "io/mesh_writer.h"
 #include "options/option_names.h"
 
 namespace uvtk::inspect {
@@ -74,7 +75,10 @@ nlohmann::json texgenSummaryJson(const texgen::TexgenResult& result, const Proje
 }
 
 TexgenRun texgenMesh(const std::string& inputPath, const std::string& output, const std::string& json,
-                     const texgen::TexgenOptions& options) {
+                     const texgen::TexgenOptions& options, io::MeshWriteOptions write) {
+  const bool holdsR = io::outputFormatOf(output) == io::MeshFormat::obj;
+  write.writeW = texgenWritesR(options) && holdsR;
+  io::checkMeshOutput(output, write);
   StageClock clock("uvtk texgen");
   clock.start("reading", inputPath);
   const io::ReadMeshResult input = io::readMesh(inputPath);
@@ -85,12 +89,10 @@ TexgenRun texgenMesh(const std::string& inputPath, const std::string& output, co
   const double texgenMs = clock.stop();
 
   clock.start("writing", output);
-  io::ObjWriteOptions write;
-  write.writeW = texgenWritesR(options);
   write.header = "uvtk texgen " + inputPath;
   const ProjectiveDivision divided = divideByQ(result.uv, result.q);
-  io::OutputSet outputs;  // the OBJ and its summary, published together
-  io::writeObj(outputs, output, input.mesh, divided.applied ? &divided.uv : &result.uv, write);
+  io::OutputSet outputs;  // the mesh and its summary, published together
+  io::writeMesh(outputs, output, input.mesh, divided.applied ? &divided.uv : &result.uv, write);
   const double writeMs = clock.stop();
 
   if (!json.empty()) {
@@ -109,6 +111,7 @@ TexgenRun texgenMesh(const std::string& inputPath, const std::string& output, co
   run.qNotOneCorners = divided.qNotOneCorners;
   run.qZeroCorners = divided.qZeroCorners;
   run.writesR = write.writeW;
+  run.dropsR = texgenWritesR(options) && !holdsR;
   run.texgenMs = texgenMs;
   return run;
 }

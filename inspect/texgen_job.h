@@ -9,6 +9,7 @@
 
 #include "core/mesh.h"
 #include "core/uv_map.h"
+#include "io/mesh_writer.h"
 #include "texgen/texgen.h"
 
 namespace uvtk::inspect {
@@ -48,13 +49,15 @@ struct TexgenRun {
   std::size_t invalidCorners = 0;  // texgen's, and those of q = 0
   bool qDivided = false;           // ProjectiveDivision's counts
   std::size_t qNotOneCorners = 0, qZeroCorners = 0;
-  bool writesR = false;
+  bool writesR = false;  // r written as the OBJ's third component
+  bool dropsR = false;   // r generated, but the output's format holds two components
   double texgenMs = 0.0;
 };
 
-// Reads `input`, generates, and writes the OBJ `output` (and the summary `json` unless empty,
-// published together with it); the stages are shown on a terminal.
+// Reads `input`, generates, and writes the mesh `output` by its extension (and the summary `json`
+// unless empty, published together with it); the stages are shown on a terminal. `write.writeW`
+// is set here: r is written when texgen generates it and the format holds it (OBJ).
 TexgenRun texgenMesh(const std::string& input, const std::string& output, const std::string& json,
-                     const texgen::TexgenOptions& options);
+                     const texgen::TexgenOptions& options, io::MeshWriteOptions write = {});
 
 }  // namespace uvtk::inspect

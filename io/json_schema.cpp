@@ -322,7 +322,7 @@ class Validator {
 
   // ---- oneOf and anyOf ----
 
-  // The key that every branch fixes with properties.KEY.const, to distinct values; "" if there is none.
+  // The key that every branch fixes with properties.KEY.const (or .enum), to distinct values; "" if there is none.
   std::string discriminator(const Json& branches) const {
     const Json& first = resolved(branches[0]);
     const auto properties = first.find("properties");
@@ -330,25 +330,31 @@ class Validator {
     for (const auto& property : properties->items()) {
       const std::string& key = property.key();
       std::vector<Json> values;
+      std::size_t fixed = 0;  // branches that fix the key to values no other branch has
       for (const Json& branch : branches) {
-        const Json* constant = branchConstant(branch, key);
-        if (!constant || std::find(values.begin(), values.end(), *constant) != values.end()) break;
-        values.push_back(*constant);
+        const Json constants = branchConstants(branch, key);
+        const bool distinct = std::all_of(constants.begin(), constants.end(), [&](const Json& c) {
+          return std::find(values.begin(), values.end(), c) == values.end();
+        });
+        if (constants.empty() || !distinct) break;
+        values.insert(values.end(), constants.begin(), constants.end());
+        ++fixed;
       }
-      if (values.size() == branches.size()) return key;
+      if (fixed == branches.size()) return key;
     }
     return "";
   }
 
-  // The branch's properties.KEY.const, or nullptr.
-  const Json* branchConstant(const Json& branch, const std::string& key) const {
+  // The values the branch's properties.KEY.const or .enum allow; empty if it fixes none.
+  Json branchConstants(const Json& branch, const std::string& key) const {
     const Json& schema = resolved(branch);
     const auto properties = schema.find("properties");
-    if (properties == schema.end()) return nullptr;
+    if (properties == schema.end()) return Json::array();
     const auto property = properties->find(key);
-    if (property == properties->end()) return nullptr;
-    const auto constant = property->find("const");
-    return constant == property->end() ? nullptr : &*constant;
+    if (property == properties->end()) return Json::array();
+    if (const auto constant = property->find("const"); constant != property->end()) return Json::array({*constant});
+    if (const auto values = property->find("enum"); values != property->end() && values->is_array()) return *values;
+    return Json::array();
   }
 
   // How a branch reads in "expected A or B": its description, else what its const, enum or type allow.
@@ -375,12 +381,12 @@ class Validator {
       }
       Json allowed = Json::array();
       for (const Json& branch : branches) {
-        const Json& constant = *branchConstant(branch, key);
-        if (constant == *selector) {
+        const Json constants = branchConstants(branch, key);
+        if (std::find(constants.begin(), constants.end(), *selector) != constants.end()) {
           validate(value, branch, path, errors);
           return;
         }
-        allowed.push_back(constant);
+        allowed.insert(allowed.end(), constants.begin(), constants.end());
       }
       errors.push_back({path, "expected " + key + " one of " + listOf(allowed) + ", found " + describe(*selector)});
       return;

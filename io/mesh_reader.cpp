@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <istream>
 #include <string_view>
@@ -35,7 +36,11 @@
 
 #include "core/error.h"
 #include "core/progress.h"
+#include "io/gltf_reader.h"
+#include "io/mesh_format.h"
+#include "io/ply_reader.h"
 #include "io/polygon_triangulation.h"
+#include "io/stl_reader.h"
 
 namespace uvtk::io {
 namespace {
@@ -608,27 +613,28 @@ ReadMeshResult readOff(std::istream& in, const std::string& name) {
 }
 
 ReadMeshResult readMesh(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; });
-  const bool obj = extension == ".obj";
-  if (!obj && extension != ".off")
-    throw expectedError(path, 0, "a .obj or .off extension", extension.empty() ? "none" : quote(extension));
-
+  const std::optional<MeshFormat> format = meshFormatOf(path);
+  if (!format) {
+    const std::string extension = std::filesystem::path(path).extension().string();
+    throw expectedError(path, 0, kReadableExtensions, extension.empty() ? "none" : quote(extension));
+  }
   // A directory opens as a stream on Linux and only fails on reading: name the real reason.
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored))
     throw inputError(path, 0, "cannot open: " + std::generic_category().message(EISDIR));
+  if (*format == MeshFormat::gltf || *format == MeshFormat::glb) return readGltf(path);
   errno = 0;
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     const int error = errno;
     throw inputError(path, 0, "cannot open: " + (error ? std::generic_category().message(error) : "unknown error"));
   }
+  if (*format == MeshFormat::ply) return readPly(in, path);
+  if (*format == MeshFormat::stl) return readStl(in, path);
   const std::uintmax_t size = std::filesystem::file_size(path, ignored);
   Progress progress("reading " + path, size == std::uintmax_t(-1) ? 0 : size, "MB", 1'000'000);
   LineReader reader(in, path, &progress);
-  return obj ? readObjLines(reader) : readOffLines(reader);
+  return *format == MeshFormat::obj ? readObjLines(reader) : readOffLines(reader);
 }
 
 }  // namespace uvtk::io

@@ -1,5 +1,7 @@
-// Strict OBJ and OFF readers. Every malformed input is an InputError whose message reads
-// "FILE:LINE: error: expected ..., found ..."; nothing is repaired silently.
+// Strict mesh readers. Every malformed input is an InputError whose one-line message names the
+// file and the place: "FILE:LINE: error: expected ..., found ..." for text, a byte offset or a
+// JSON pointer for binary files and glTF (io/ply_reader.h, io/stl_reader.h, io/gltf_reader.h);
+// nothing is repaired silently.
 #pragma once
 
 #include <iosfwd>
@@ -14,7 +16,8 @@ struct ReadMeshResult {
   MeshWarnings warnings;
 };
 
-// Reads by extension (.obj or .off, case-insensitive); any other extension is an InputError.
+// Reads by extension (io/mesh_format.h: .obj, .off, .ply, .stl, .gltf, .glb, case-insensitive);
+// any other extension is an InputError.
 ReadMeshResult readMesh(const std::string& path);
 
 // `name` is the file name used in messages.

@@ -1,7 +1,6 @@
 #include "io/obj_writer.h"
 
 #include <charconv>
-#include <cstring>
 #include <ostream>
 #include <sstream>
 #include <vector>
@@ -9,6 +8,7 @@
 #include "core/error.h"
 #include "core/progress.h"
 #include "io/atomic_file.h"
+#include "io/split_vertices.h"
 
 namespace uvtk::io {
 
@@ -55,9 +55,6 @@ class TextBuffer {
 
 constexpr std::size_t kFlushBytes = 1 << 20;
 
-// Bitwise equality of UVs, so that -0 and +0 never merge silently.
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
 void writeHeader(TextBuffer& out, const std::string& header) {
   std::istringstream lines(header);
   for (std::string line; std::getline(lines, line);) {
@@ -91,50 +88,26 @@ void writeObj(std::ostream& stream, const Mesh& mesh, const UvMap* uvs, const Ob
     flushIfFull();
   }
 
-  // One vt per distinct (vertex, uv), numbered vertex by vertex: the corners are bucketed by
-  // vertex (a counting sort, no hashing), and each vertex's few distinct UVs found by a scan.
-  // cornerTexcoord[c] is the 1-based vt index of corner c.
-  std::vector<std::size_t> cornerTexcoord;
+  // One vt per distinct (vertex, uv[, w]), numbered vertex by vertex: the split vertices of the UVs.
+  // cornerTexcoord[c] is the 0-based vt index of corner c.
+  std::vector<int> cornerTexcoord;
   if (uvs) {
-    const std::size_t corners = 3 * faceCount;
     const bool hasW = options.writeW && !uvs->w.empty();
-    auto w = [&](std::size_t c) { return hasW ? uvs->w[c] : 0.0; };
-    std::vector<std::size_t> firstOfVertex(mesh.positions.size() + 1, 0), byVertex(corners);
-    for (std::size_t c = 0; c < corners; ++c) ++firstOfVertex[mesh.triangles[c / 3][c % 3] + 1];
-    for (std::size_t v = 0; v < mesh.positions.size(); ++v) firstOfVertex[v + 1] += firstOfVertex[v];
-    {
-      std::vector<std::size_t> next(firstOfVertex.begin(), firstOfVertex.end() - 1);
-      for (std::size_t c = 0; c < corners; ++c) byVertex[next[mesh.triangles[c / 3][c % 3]]++] = c;
-    }
-    cornerTexcoord.resize(corners);
-    std::size_t written = 0;
-    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-      const std::size_t begin = firstOfVertex[v], end = firstOfVertex[v + 1];
-      for (std::size_t i = begin; i < end; ++i) {
-        const std::size_t c = byVertex[i];
-        std::size_t same = begin;  // an earlier corner of this vertex with the same UV, if any
-        while (same < i &&
-               !(sameBits(uvs->uv[byVertex[same]].x(), uvs->uv[c].x()) &&
-                 sameBits(uvs->uv[byVertex[same]].y(), uvs->uv[c].y()) && sameBits(w(byVertex[same]), w(c))))
-          ++same;
-        if (same < i) {
-          cornerTexcoord[c] = cornerTexcoord[byVertex[same]];
-          ++unreported;
-          continue;
-        }
-        cornerTexcoord[c] = ++written;
-        out.text("vt ");
-        out.number(uvs->uv[c].x(), options.floatPrecision);
+    SplitVertices split = splitVertices(mesh, {uvs, hasW, false});
+    for (const std::size_t c : split.corner) {
+      out.text("vt ");
+      out.number(uvs->uv[c].x(), options.floatPrecision);
+      out.character(' ');
+      out.number(uvs->uv[c].y(), options.floatPrecision);
+      if (options.writeW) {
         out.character(' ');
-        out.number(uvs->uv[c].y(), options.floatPrecision);
-        if (options.writeW) {
-          out.character(' ');
-          out.number(w(c), options.floatPrecision);
-        }
-        out.character('\n');
-        flushIfFull();
+        out.number(hasW ? uvs->w[c] : 0.0, options.floatPrecision);
       }
+      out.character('\n');
+      flushIfFull();
     }
+    unreported += 3 * faceCount - split.size();
+    cornerTexcoord = std::move(split.ofCorner);
   }
 
   const bool normals = mesh.hasNormals();
@@ -169,7 +142,7 @@ void writeObj(std::ostream& stream, const Mesh& mesh, const UvMap* uvs, const Ob
       out.character(' ');
       out.integer(static_cast<std::size_t>(t[k]) + 1);
       if (uvs || faceNormals) out.character('/');
-      if (uvs) out.integer(cornerTexcoord[3 * f + k]);
+      if (uvs) out.integer(static_cast<std::size_t>(cornerTexcoord[3 * f + k]) + 1);
       if (faceNormals) {
         out.character('/');
         out.integer(static_cast<std::size_t>(mesh.cornerNormals[f][k]) + 1);

@@ -8,7 +8,8 @@
 #include "detail.h"
 #include "option_fields.h"
 #include "inspect/texgen_job.h"
-#include "io/obj_writer.h"
+#include "io/mesh_format.h"
+#include "io/mesh_writer.h"
 #include "options/cli_values.h"
 #include "options/projector_cli.h"
 #include "options/texgen_cli.h"
@@ -212,14 +213,16 @@ void writeMesh(const std::string& path, const Mapping& mapping, const WriteOptio
   UVTK_CHECK(mapping.detail != nullptr);
   translatingErrors([&] {
     const inspect::MappedMesh& mapped = mapping.detail->mapped;
-    io::ObjWriteOptions write;
+    io::MeshWriteOptions write;
     write.writeW = options.writeW;
-    write.floatPrecision = options.uvDigits == "float";
-    if (!mapping.detail->texgen) return io::writeObj(path, mapped.mesh, &mapped.uv, write);
-    // As `uvtk texgen -o`: r when generated, and (s, t, r) divided by q where q is not 1.
-    write.writeW = write.writeW || inspect::texgenWritesR(*mapping.detail->texgen);
+    write.floatDigits = options.uvDigits == "float";
+    write.ascii = options.ascii;
+    if (!mapping.detail->texgen) return io::writeMesh(path, mapped.mesh, &mapped.uv, write);
+    // As `uvtk texgen -o`: r when generated (in an OBJ), and (s, t, r) divided by q where q is not 1.
+    const bool obj = io::outputFormatOf(path) == io::MeshFormat::obj;
+    write.writeW = write.writeW || (obj && inspect::texgenWritesR(*mapping.detail->texgen));
     const inspect::ProjectiveDivision divided = inspect::divideByQ(mapped.uv, mapped.q);
-    io::writeObj(path, mapped.mesh, divided.applied ? &divided.uv : &mapped.uv, write);
+    io::writeMesh(path, mapped.mesh, divided.applied ? &divided.uv : &mapped.uv, write);
   });
 }
 

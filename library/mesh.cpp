@@ -5,7 +5,7 @@
 
 #include "detail.h"
 #include "io/mesh_reader.h"
-#include "io/obj_writer.h"
+#include "io/mesh_writer.h"
 
 namespace uvtk::api {
 
@@ -73,7 +73,7 @@ Mesh fromEngine(const uvtk::Mesh& engine) {
 
 MeshWarnings fromEngine(const uvtk::MeshWarnings& w) {
   return {w.degenerateFaces, w.unreferencedVertices, w.nonSimplePolygons,
-          w.firstNonSimplePolygonLine, w.vertexColours, w.parameterVertices};
+          w.firstNonSimplePolygonLine, w.vertexColours, w.parameterVertices, w.weldedCorners, w.skippedPrimitives};
 }
 
 Mesh readMesh(const std::string& path, MeshWarnings* warnings) {
@@ -102,7 +102,9 @@ CheckedMesh checked(const Mesh& mesh) {
   out.input = {{"vertices", out.engine.vertexCount()},
                {"faces", out.engine.faceCount()},
                {"degenerate_faces", warnings.degenerateFaces},
-               {"unreferenced_vertices", warnings.unreferencedVertices}};
+               {"unreferenced_vertices", warnings.unreferencedVertices},
+               {"welded_corners", 0},  // what a reader did: nothing, for a mesh in memory
+               {"skipped_primitives", 0}};
   return out;
 }
 
@@ -116,7 +118,7 @@ void writeMesh(const std::string& path, const Mesh& mesh) {
   translatingErrors([&] {
     UvMap uvs;
     if (engine.hasTexcoords()) uvs = inspect::fileUvs(engine, path);
-    io::writeObj(path, engine, engine.hasTexcoords() ? &uvs : nullptr);
+    io::writeMesh(path, engine, engine.hasTexcoords() ? &uvs : nullptr);
   });
 }
 

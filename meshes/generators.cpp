@@ -304,6 +304,8 @@ std::vector<BundledMesh> bundledMeshes() {
       {"cube.obj", "cube(4)", cube(4)},
       {"torus.obj", "torus(48, 24, 1, 0.35)", torus(48, 24, 1.0, 0.35)},
       {"plane_grid.obj", "planeGrid(16, 16, 2, 2)", planeGrid(16, 16, 2.0, 2.0)},
+      {"scanned_patch.ply", "scannedPatch(3)", scannedPatch(3)},
+      {"torus_knot.glb", "torusKnot(2, 3, 120, 12)", torusKnot(2, 3, 120, 12)},
   };
 }
 

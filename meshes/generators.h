@@ -64,7 +64,8 @@ Mesh scannedPatch(int level);
 
 namespace uvtk::meshes {
 
-// A sample mesh shipped in meshes/ as an OBJ file: the file's name, the call that made it.
+// A sample mesh shipped in meshes/ (an OBJ, or a PLY or GLB as its extension says): the file's
+// name, the call that made it.
 struct BundledMesh {
   const char* file;
   const char* recipe;

@@ -2,7 +2,9 @@
 // Usage: uvtk_meshgen [FOLDER]   (default: the current folder)
 //        uvtk_meshgen --sphere SEGMENTS RINGS FILE   a lat-long sphere of any size, for large-mesh
 //        measurements (3162 x 1582: 10 M triangles)
-//        uvtk_meshgen --like-real FOLDER   a torus knot, a long bone, a bumpy blob and an open scanned patch
+//        uvtk_meshgen --like-real FOLDER [EXT]   a torus knot, a long bone, a bumpy blob and an open
+//        scanned patch, as .obj or as EXT (ply, stl, glb, gltf)
+// A FILE's extension chooses its format: .obj, .ply, .stl, .glb or .gltf (io/mesh_format.h).
 //        uvtk_meshgen --help
 #include <cstdio>
 #include <filesystem>
@@ -12,15 +14,25 @@
 
 #include <utility>
 
-#include "io/obj_writer.h"
+#include "io/mesh_format.h"
+#include "io/mesh_writer.h"
 #include "meshes/generators.h"
 
 namespace {
 
+// Writes `mesh` by the extension of `path`, with `header` as its comment where the format has one.
+void writeGenerated(const std::string& path, const uvtk::Mesh& mesh, const std::string& header = "") {
+  uvtk::io::MeshWriteOptions options;
+  options.header = header;
+  uvtk::io::writeMesh(path, mesh, nullptr, options);
+}
+
 const char* const kUsage =
     "usage: uvtk_meshgen [FOLDER]                        the bundled sample meshes (default: the current folder)\n"
     "       uvtk_meshgen --sphere SEGMENTS RINGS FILE    a lat-long sphere of any size (3162 1582: 10 M triangles)\n"
-    "       uvtk_meshgen --like-real FOLDER              a torus knot, a long bone, a bumpy blob, a scanned patch\n"
+    "       uvtk_meshgen --like-real FOLDER [EXT]        a torus knot, a long bone, a bumpy blob, a scanned patch\n"
+    "                                                    (.obj, or EXT: ply, stl, glb, gltf)\n"
+    "A FILE's extension chooses its format: .obj, .ply, .stl, .glb, .gltf\n"
     "       uvtk_meshgen --help                          this text\n";
 
 }  // namespace
@@ -38,7 +50,7 @@ int main(int argc, char** argv) {
     }
     try {
       const uvtk::Mesh mesh = uvtk::meshes::latLongSphere(segments, rings);
-      uvtk::io::writeObj(argv[4], mesh, nullptr);
+      writeGenerated(argv[4], mesh);
       std::fprintf(stderr, "%s: %zu vertices, %zu faces\n", argv[4], mesh.vertexCount(), mesh.faceCount());
     } catch (const std::exception& e) {
       std::fprintf(stderr, "%s\n", e.what());
@@ -46,18 +58,24 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
-  if (argc == 3 && std::string(argv[1]) == "--like-real") {
+  if ((argc == 3 || argc == 4) && std::string(argv[1]) == "--like-real") {
+    const std::string extension = argc == 4 ? std::string(".") + argv[3] : ".obj";
+    if (!uvtk::io::meshFormatOf("x" + extension) || extension == ".off") {
+      std::fprintf(stderr, "uvtk_meshgen: --like-real: expected EXT obj, ply, stl, glb or gltf, found '%s'\n", argv[3]);
+      return 2;
+    }
     // Meshes like real ones (meshes/generators.h), for trying uvtk where nobody tuned it.
-    const std::pair<const char*, uvtk::Mesh> meshes[] = {{"torus_knot.obj", uvtk::meshes::torusKnot(2, 3, 240, 16)},
-                                                        {"bone.obj", uvtk::meshes::bone(120, 32)},
-                                                        {"bumpy_blob.obj", uvtk::meshes::bumpyBlob(4)},
-                                                        {"scanned_patch.obj", uvtk::meshes::scannedPatch(4)}};
+    const std::pair<const char*, uvtk::Mesh> meshes[] = {{"torus_knot", uvtk::meshes::torusKnot(2, 3, 240, 16)},
+                                                        {"bone", uvtk::meshes::bone(120, 32)},
+                                                        {"bumpy_blob", uvtk::meshes::bumpyBlob(4)},
+                                                        {"scanned_patch", uvtk::meshes::scannedPatch(4)}};
     try {
-      std::error_code made;  // a folder that does not exist yet is made; writeObj says what else is wrong
+      std::error_code made;  // a folder that does not exist yet is made; the writer says what else is wrong
       std::filesystem::create_directories(argv[2], made);
-      for (const auto& [file, mesh] : meshes) {
-        uvtk::io::writeObj(std::string(argv[2]) + "/" + file, mesh, nullptr);
-        std::fprintf(stderr, "%s/%s: %zu vertices, %zu faces\n", argv[2], file, mesh.vertexCount(), mesh.faceCount());
+      for (const auto& [stem, mesh] : meshes) {
+        const std::string file = std::string(argv[2]) + "/" + stem + extension;
+        writeGenerated(file, mesh);
+        std::fprintf(stderr, "%s: %zu vertices, %zu faces\n", file.c_str(), mesh.vertexCount(), mesh.faceCount());
       }
     } catch (const std::exception& e) {
       std::fprintf(stderr, "%s\n", e.what());
@@ -80,9 +98,7 @@ int main(int argc, char** argv) {
     std::error_code made;
     std::filesystem::create_directories(folder, made);
     for (const uvtk::meshes::BundledMesh& m : uvtk::meshes::bundledMeshes()) {
-      uvtk::io::ObjWriteOptions options;
-      options.header = m.header();
-      uvtk::io::writeObj(folder + "/" + m.file, m.mesh, nullptr, options);
+      writeGenerated(folder + "/" + m.file, m.mesh, m.header());
       std::fprintf(stderr, "%s/%s: %zu vertices, %zu faces\n", folder.c_str(), m.file, m.mesh.vertexCount(),
                    m.mesh.faceCount());
     }

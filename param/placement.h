@@ -58,7 +58,8 @@ Affine3 fitPlacement(const std::vector<Vec3>& positions, SurfaceKind surface, co
 // The rotation whose rows are the object-space directions of the fitted frame's axes, ordered
 // by decreasing spread, with signs fixed so that each axis' largest component is positive.
 // Implemented with CGAL (placement_cgal.cpp, the only file that includes it). Both fit the
-// positions' UnitBox, so they give the same axes at every scale and any finite coordinates.
+// positions' UnitBox, so they give the same axes at every scale and any finite coordinates, and
+// fit the distinct positions, so a vertex repeated (split at a seam) counts once.
 // Zero extent along object axes: one such axis (a sheet) is kept exactly as the last row, the
 // others fitted in its plane; two (an axis-parallel line) or three (one point) keep the object
 // axes, the line's first.

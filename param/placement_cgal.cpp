@@ -11,6 +11,8 @@
 #include <cmath>
 #include <iterator>
 #include <optional>
+#include <tuple>
+#include <vector>
 
 #include "core/error.h"
 #include "param/placement.h"
@@ -18,6 +20,28 @@
 namespace uvtk::param {
 
 namespace {
+
+// The positions with every repeat of an earlier one left out, in their order. A fit is of the
+// shape, not of how its vertices are split: a glTF or PLY (split at seams) and an STL (a vertex
+// per corner until welded) fit as the OBJ they came from. Unchanged when nothing repeats.
+std::vector<Vec3> distinctPositions(const std::vector<Vec3>& positions) {
+  std::vector<std::size_t> order(positions.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  const auto less = [&](std::size_t a, std::size_t b) {
+    const Vec3 &p = positions[a], &q = positions[b];
+    return std::tie(p.x(), p.y(), p.z(), a) < std::tie(q.x(), q.y(), q.z(), b);
+  };
+  std::sort(order.begin(), order.end(), less);
+  std::vector<bool> repeat(positions.size(), false);
+  bool any = false;
+  for (std::size_t i = 1; i < order.size(); ++i)
+    if (positions[order[i]] == positions[order[i - 1]]) repeat[order[i]] = any = true;
+  if (!any) return positions;
+  std::vector<Vec3> distinct;
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    if (!repeat[i]) distinct.push_back(positions[i]);
+  return distinct;
+}
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
@@ -119,7 +143,8 @@ Mat3 keepFlatAxis(const Mat3& rows, const UnitBox& box) {
 
 }  // namespace
 
-Mat3 principalAxes(const std::vector<Vec3>& positions) {
+Mat3 principalAxes(const std::vector<Vec3>& allPositions) {
+  const std::vector<Vec3> positions = distinctPositions(allPositions);
   if (positions.size() < 3) return Mat3::Identity();
   const UnitBox box = toUnitBox(positions);
   if (const auto rows = flatFrame(box)) return *rows;
@@ -157,7 +182,8 @@ Mat3 sheetBoxAxes(const UnitBox& box, int j) {
   return keepFlatAxis(orderedRows({along, across, normal}, {length, width, 0.0}), box);
 }
 
-Mat3 orientedBoxAxes(const std::vector<Vec3>& positions) {
+Mat3 orientedBoxAxes(const std::vector<Vec3>& allPositions) {
+  const std::vector<Vec3> positions = distinctPositions(allPositions);
   if (positions.size() < 4) return Mat3::Identity();
   const UnitBox box = toUnitBox(positions);
   if (const auto rows = flatFrame(box)) return *rows;

@@ -232,6 +232,8 @@ py::dict warningsDict(const api::MeshWarnings& w) {
   d["first_non_simple_polygon_line"] = w.firstNonSimplePolygonLine;
   d["vertex_colours"] = w.vertexColours;
   d["parameter_vertices"] = w.parameterVertices;
+  d["welded_corners"] = w.weldedCorners;
+  d["skipped_primitives"] = w.skippedPrimitives;
   return d;
 }
 
@@ -273,10 +275,11 @@ const api::Mapping& mappingFor(const char* what, py::handle mesh, const PyMappin
   return m.mapping;
 }
 
-api::WriteOptions writeOptions(const std::string& uvDigits, bool writeW) {
+api::WriteOptions writeOptions(const std::string& uvDigits, bool writeW, bool ascii) {
   api::WriteOptions options;
   options.uvDigits = uvDigits;
   options.writeW = writeW;
+  options.ascii = ascii;
   return options;
 }
 
@@ -594,7 +597,8 @@ mode="sphere_map", eye=(0, 0, 5), no_normalize=True, ... Returns a uvtk.Mapping 
 
   m.def(
       "write_mesh",
-      [](const std::filesystem::path& path, py::object mesh, py::object mapping, const std::string& uvDigits, bool writeW) {
+      [](const std::filesystem::path& path, py::object mesh, py::object mapping, const std::string& uvDigits, bool writeW,
+         bool ascii) {
         if (mapping.is_none() && py::isinstance<PyMapping>(mesh)) std::swap(mesh, mapping);
         if (mapping.is_none()) {
           const api::Mesh& own = meshOf(mesh);
@@ -603,16 +607,18 @@ mode="sphere_map", eye=(0, 0, 5), no_normalize=True, ... Returns a uvtk.Mapping 
           return;
         }
         const api::Mapping& mapped = mappingFor("write_mesh", mesh, mapping.cast<const PyMapping&>());
-        const api::WriteOptions options = writeOptions(uvDigits, writeW);
+        const api::WriteOptions options = writeOptions(uvDigits, writeW, ascii);
         py::gil_scoped_release release;
         api::writeMesh(path.string(), mapped, options);
       },
       py::arg("path"), py::arg("mesh"), py::arg("m") = py::none(), py::arg("uv_digits") = "double",
-      py::arg("write_w") = false,
-      R"(Writes an OBJ, whole or not at all (uvtk.OutputError).
+      py::arg("write_w") = false, py::arg("ascii") = false,
+      R"(Writes a mesh by the path's extension (.obj, .ply, .glb, .gltf + .bin), whole or not at all
+(uvtk.OutputError).
 
 write_mesh(path, mesh, m): the mapping's mesh with its per-corner UVs, as `uvtk map -o` writes it
-(uv_digits='double' round-trips every double, 'float' every float; write_w=True writes vt u v w).
+(uv_digits='double' round-trips every double, 'float' every float, in an OBJ; write_w=True writes
+vt u v w in an OBJ; ascii=True writes a .ply as text).
 write_mesh(path, mesh): the mesh with its own texture coordinates and normals.)");
 
   m.def(

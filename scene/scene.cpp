@@ -10,6 +10,8 @@
 #include "core/error.h"
 #include "io/json_file.h"
 #include "io/json_schema.h"
+#include "io/mesh_format.h"
+#include "io/mesh_writer.h"
 #include "options/arithmetic_cli.h"
 #include "options/cli_values.h"
 #include "options/projector_cli.h"
@@ -284,11 +286,15 @@ class SceneReader {
     if (j.contains("texture")) o.texture = find(scene.textures, j["texture"], "texture", pointer + "/texture");
     const std::string kind = j["kind"];
     // report, compare: their own json
-    if (kind == "obj" || kind == "render") o.json = output(j.value("json", ""), pointer + "/json");
-    if (kind == "obj") {
-      o.kind = SceneOutput::Kind::Obj;
-      o.writeW = j.value("write_w", false);
-      o.floatDigits = j.value("uv_digits", "double") == "float";
+    // "obj" is the older name of "mesh", from when OBJ was the one format written.
+    const bool mesh = kind == "mesh" || kind == "obj";
+    if (mesh || kind == "render") o.json = output(j.value("json", ""), pointer + "/json");
+    if (mesh) {
+      o.kind = SceneOutput::Kind::Mesh;
+      o.write.writeW = j.value("write_w", false);
+      o.write.floatDigits = j.value("uv_digits", "double") == "float";
+      o.write.ascii = j.value("ascii", false);
+      at(pointer + "/path", [&] { io::checkMeshOutput(o.path, o.write, "path"); });
     } else if (kind == "render") {
       o.kind = SceneOutput::Kind::Render;
       addFrameOptions(*o.parser, o.frame);
@@ -372,6 +378,7 @@ std::vector<std::string> SceneOutput::files() const {
     if (!file.empty()) out.push_back(file);
   };
   add(path);
+  if (kind == Kind::Mesh && io::meshFormatOf(path) == io::MeshFormat::gltf) add(io::gltfBufferPath(path));
   add(json);
   if (kind == Kind::Render && !frame.aov.empty()) add(frame.aovOutput);
   if (kind == Kind::Report) add(report.json), add(report.html);

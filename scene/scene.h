@@ -15,6 +15,7 @@
 #include "analysis/judgement.h"
 #include "options/compare_cli.h"
 #include "core/math.h"
+#include "io/mesh_writer.h"
 #include "param/projector.h"
 #include "options/render_cli.h"
 #include "options/report_cli.h"
@@ -59,12 +60,12 @@ struct SceneTexture {
 };
 
 struct SceneOutput {
-  enum class Kind { Obj, Render, Report, Compare, Gallery };
-  Kind kind = Kind::Obj;
+  enum class Kind { Mesh, Render, Report, Compare, Gallery };
+  Kind kind = Kind::Mesh;
   std::string pointer;
   std::optional<std::size_t> mapping, mesh, camera, texture;
-  std::string path, json;                    // obj, render, gallery: the file; obj, render: the summary JSON
-  bool writeW = false, floatDigits = false;  // obj
+  std::string path, json;     // mesh, render, gallery: the file; mesh, render: the summary JSON
+  io::MeshWriteOptions write;  // mesh (the header is set when written)
   cli::FrameArguments frame;                      // render
   cli::ReportArguments report;                    // report
   cli::CompareArguments compare;                  // compare

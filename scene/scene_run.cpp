@@ -190,7 +190,7 @@ class SceneRunner {
     std::string pointer;
     if (stage.kind == Stage::Kind::Map || stage.kind == Stage::Kind::Measure)
       pointer = scene_.mappings[stage.index].pointer;
-    if (stage.kind >= Stage::Kind::Obj) pointer = scene_.outputs[stage.index].pointer;
+    if (stage.kind >= Stage::Kind::Mesh) pointer = scene_.outputs[stage.index].pointer;
     if (stage.kind == Stage::Kind::Texture && stage.index < scene_.textures.size())
       pointer = scene_.textures[stage.index].pointer;
     return scene_.path + ": " + (pointer.empty() ? "" : pointer + ": ") + e.what();
@@ -213,8 +213,8 @@ class SceneRunner {
         work->judgements[{stage.index, stage.overlapResolution}] =
             work->mapped.at(stage.index).judge(scene_.thresholds, stage.overlapResolution);
         return;
-      case Stage::Kind::Obj:
-        return writeObj(outputs, scene_.outputs[stage.index], stage.index, *work);
+      case Stage::Kind::Mesh:
+        return writeMesh(outputs, scene_.outputs[stage.index], stage.index, *work);
       case Stage::Kind::Render:
         return renderOutput(outputs, scene_.outputs[stage.index], stage.index, *work);
       case Stage::Kind::Report: {
@@ -281,13 +281,11 @@ class SceneRunner {
     return withFileUvs(std::move(mesh), scene_.meshes[m.mesh].path);
   }
 
-  void writeObj(io::OutputSet& outputs, const SceneOutput& o, std::size_t index, const MeshWork& work) {
+  void writeMesh(io::OutputSet& outputs, const SceneOutput& o, std::size_t index, const MeshWork& work) {
     const MappedMesh& mapped = work.mapped.at(*o.mapping);
-    io::ObjWriteOptions write;
-    write.writeW = o.writeW;
-    write.floatPrecision = o.floatDigits;
+    io::MeshWriteOptions write = o.write;
     write.header = "uvtk run " + scene_.path + ": mapping " + scene_.mappings[*o.mapping].name;
-    io::writeObj(outputs, o.path, mapped.mesh, &mapped.uv, write);
+    io::writeMesh(outputs, o.path, mapped.mesh, &mapped.uv, write);
     const analysis::Judgement& judgement = work.judgements.at({*o.mapping, kViewsOverlapResolution});
     const json summary = mapSummaryJson(mapped, judgement, work.inputSummary, o.path);  // as `uvtk map --json`
     if (!o.json.empty()) outputs.writeText(o.json, summary.dump(2) + "\n");
@@ -356,7 +354,7 @@ std::vector<Stage> planScene(const Scene& s) {
   // Whether an output reads the mapping's judgement: views of measures, OBJ summaries (as `uvtk map
   // --json`), and every picture a gallery labels with its verdict.
   const auto judged = [gallery](const SceneOutput& o) {
-    return o.kind == SceneOutput::Kind::Obj ||
+    return o.kind == SceneOutput::Kind::Mesh ||
            (o.kind == SceneOutput::Kind::Render && (gallery || o.frame.showsMeasures()));
   };
   for (const SceneOutput& o : s.outputs) {
@@ -413,7 +411,7 @@ std::vector<Stage> planScene(const Scene& s) {
       const std::optional<std::size_t> mesh = o.mapping ? std::optional(s.mappings[*o.mapping].mesh) : o.mesh;
       if (o.kind == SceneOutput::Kind::Gallery || mesh != m) continue;
       const std::vector<std::string> files = o.files();
-      static const Stage::Kind kKinds[] = {Stage::Kind::Obj, Stage::Kind::Render, Stage::Kind::Report,
+      static const Stage::Kind kKinds[] = {Stage::Kind::Mesh, Stage::Kind::Render, Stage::Kind::Report,
                                            Stage::Kind::Compare};
       std::vector<std::string> computes;
       if (o.kind == SceneOutput::Kind::Render) computes = renderComputes(s, o);

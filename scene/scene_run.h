@@ -12,7 +12,7 @@
 namespace uvtk::scene {
 
 struct Stage {
-  enum class Kind { Texture, Read, Map, Measure, Obj, Render, Report, Compare, Gallery };
+  enum class Kind { Texture, Read, Map, Measure, Mesh, Render, Report, Compare, Gallery };
   Kind kind = Kind::Read;
   std::size_t index = 0;              // of the texture (textures.size(): the default one), mesh, mapping or output
   int overlapResolution = 0;          // Measure

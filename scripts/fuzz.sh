@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 build=${2:-build-fuzz}
-targets=(obj off scene image fit scene_paths)
+targets=(obj off ply stl gltf scene image fit scene_paths)
 
 mkdir -p "$build/fuzz-artifacts" "$build/fuzz-logs"
 run() {

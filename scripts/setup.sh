@@ -2,6 +2,9 @@
 # Installs the Debian packages uvtk needs (only those missing), then configures and builds.
 # Usage: scripts/setup.sh [build-dir]   the release build (default: build)
 #        scripts/setup.sh --fuzz        the fuzz preset (clang, ASan + UBSan + libFuzzer): build-fuzz
+#        scripts/setup.sh --validator   the Khronos glTF-Validator for the tests (Debian's nodejs and
+#                                       npm, then the npm package pinned in tests/gltf_validator) in
+#                                       build/gltf-validator; nothing is built
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -9,6 +12,7 @@ packages=(cmake ninja-build g++ pkg-config
           libeigen3-dev libopenmesh-dev libcgal-dev libgmp-dev libmpfr-dev
           libopenimageio-dev openimageio-tools
           libssl-dev zlib1g-dev libsleef-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+          libtinygltf-dev  # glTF 2.0 in (io/gltf_reader.cpp)
           libosmesa6-dev   # Mesa's software OpenGL: the reference the texgen tests compare with
           python3-dev pybind11-dev python3-numpy python3-pytest)  # the Python module (docs/python.md) and its tests
 preset=""
@@ -18,6 +22,11 @@ if [ "${1:-}" = "--fuzz" ]; then
   build_dir=build-fuzz
   # clang with its sanitizer and libFuzzer runtimes; llvm-symbolizer makes the reports readable.
   packages+=(clang libclang-rt-14-dev llvm)
+fi
+if [ "${1:-}" = "--validator" ]; then
+  packages=()
+  command -v node > /dev/null || packages+=(nodejs)
+  command -v npm > /dev/null || packages+=(npm)
 fi
 
 missing=()
@@ -30,6 +39,14 @@ if [ ${#missing[@]} -gt 0 ]; then
   [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
   "${sudo_cmd[@]}" apt-get update -qq
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+fi
+
+if [ "${1:-}" = "--validator" ]; then
+  mkdir -p build/gltf-validator
+  cp tests/gltf_validator/package.json tests/gltf_validator/package-lock.json tests/gltf_validator/validate.mjs \
+    build/gltf-validator/
+  (cd build/gltf-validator && npm ci --no-audit --no-fund --loglevel=error) >&2
+  exit 0
 fi
 
 if [ ! -f "$build_dir/build.ninja" ]; then

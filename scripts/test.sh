@@ -2,11 +2,13 @@
 # Set up, build, and run every test: the release build's suite; its install, with examples/ built
 # and run against the installed package alone (docs/point-api.md); the same suite built by clang under
 # AddressSanitizer and UndefinedBehaviorSanitizer (the fuzz preset); every fuzz target for
-# UVTK_FUZZ_SECONDS (default 60) each; the Python module's tests (pytest) against its install.
+# UVTK_FUZZ_SECONDS (default 60) each; the Python module's tests (pytest) against its install. Written
+# glTF files are checked by the Khronos glTF-Validator (npm), which setup.sh --validator installs.
 # docs/robustness.md says what each part checks.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh build
+scripts/setup.sh --validator  # the glTF-Validator the tests of written glTF files run
 ctest --test-dir build --output-on-failure -j "$(nproc)"
 
 # The installed API (docs/point-api.md): install the release build into build/install, then build and

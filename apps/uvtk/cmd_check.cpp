@@ -30,7 +30,7 @@ void addCheckCommand(CLI::App& root) {
   auto a = std::make_shared<CheckArguments>();
   CLI::App* cmd = root.add_subcommand(
       "check", "Compare the UVs stored in a mesh file with a mapping's (or another file's), corner by corner");
-  cmd->add_option("input", a->input, "Mesh with texture coordinates (.obj with vt)")->required();
+  cmd->add_option("input", a->input, "Mesh with texture coordinates (.obj with vt, .ply with s t or texcoord, .gltf/.glb with TEXCOORD_0)")->required();
   cmd->add_option("--against", a->against,
                   "Compare with this file's UVs instead of a mapping (same vertices and faces)");
   cmd->add_option("--wrap", a->wrap, "--against: none, or u (compare u modulo 1)")

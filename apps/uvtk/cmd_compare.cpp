@@ -48,7 +48,7 @@ void addCompareCommand(CLI::App& root) {
   auto a = std::make_shared<CompareCommandArguments>();
   CLI::App* cmd = root.add_subcommand(
       "compare", "Rank every projector x O-mapping x fit (and CGAL's LSCM and ARAP) on a mesh by a distortion measure");
-  cmd->add_option("input", a->input, "Input mesh (.obj or .off)")->required();
+  cmd->add_option("input", a->input, "Input mesh (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
   addCompareOptions(*cmd, a->compare);
   addVerdictOptions(*cmd, a->verdict);
   cmd->callback([a] { runCompare(*a); });

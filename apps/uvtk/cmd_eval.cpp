@@ -66,7 +66,7 @@ void addEvalCommand(CLI::App& root) {
                         "Output: csv (header x,y,z,...,u,v,w,q,status,reason) or json (one object a line)")
       ->default_str("csv");
   cmd->add_option("--mesh", arguments->mesh,
-                  "Mesh (.obj or .off) that a fitted placement (--fit, --convention) and --seam-place auto are "
+                  "Mesh (.obj, .off, .ply, .stl, .gltf, .glb) that a fitted placement (--fit, --convention) and --seam-place auto are "
                   "fitted to, as uvtk map fits them")
       ->type_name("FILE");
   cmd->add_option("-o,--output", arguments->output, "Write to this file (atomically) instead of stdout")

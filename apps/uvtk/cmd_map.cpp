@@ -10,6 +10,8 @@
 #include "core/error.h"
 #include "core/progress.h"
 #include "inspect/map_job.h"
+#include "io/mesh_format.h"
+#include "io/mesh_writer.h"
 #include "options/cli_values.h"
 #include "options/projector_cli.h"
 #include "options/verdict_cli.h"
@@ -20,8 +22,8 @@ namespace {
 
 struct MapArguments {
   std::string input, list, output, json;
-  bool writeW = false;
-  bool floatDigits = false;
+  io::MeshWriteOptions write;
+  io::MeshFormat batchFormat = io::MeshFormat::obj;
   bool quiet = false;
   int jobs = 0;
   ProjectorArguments projector;
@@ -38,12 +40,13 @@ void runMap(const MapArguments& a) {
   if (a.overlapResolution < 1 || a.overlapResolution > 16384)
     throw UsageError("--overlap-resolution: expected 1 to 16384 pixels");
   job.seamPlaceAuto = a.projector.seamPlaceAuto();
-  job.writeW = a.writeW;
-  job.floatDigits = a.floatDigits;
+  job.write = a.write;
+  job.batchFormat = a.batchFormat;
   job.thresholds = a.verdict.thresholds();
   job.overlapResolution = a.overlapResolution;
   std::error_code ignored;
   if (!a.list.empty() || std::filesystem::is_directory(a.input, ignored)) {
+    io::checkMeshOutput(std::string("STEM") + io::extensionOf(a.batchFormat), a.write, "--format");
     const inspect::BatchResult batch =
         inspect::mapBatch(a.list.empty() ? inspect::meshesInFolder(a.input) : inspect::meshesInList(a.list), a.output,
                           a.json, a.jobs, a.quiet, job);
@@ -53,8 +56,13 @@ void runMap(const MapArguments& a) {
     std::fprintf(stderr, "%s\n", line.c_str());  // the last line, even with -q
     return enforceVerdict(a.verdict, batch.worst, "uvtk map");
   }
+  io::checkMeshOutput(a.output, a.write);
   const inspect::MeshResult result = inspect::mapMesh({a.input, a.output, a.json}, job, true);
   if (!a.quiet) std::fprintf(stderr, "uvtk map: %s\n", result.numbers.c_str());
+  const io::MeshFormat format = *io::outputFormatOf(a.output);
+  if (!a.quiet && (format == io::MeshFormat::gltf || format == io::MeshFormat::glb))
+    std::fprintf(stderr, "uvtk map: %s: glTF stores positions, normals and UVs as float32 (v as 1 - v)\n",
+                 a.output.c_str());
   enforceVerdict(a.verdict, result.verdict, "uvtk map");
 }
 
@@ -64,11 +72,13 @@ void addMapCommand(CLI::App& root) {
   auto arguments = std::make_shared<MapArguments>();
   CLI::App* map = root.add_subcommand("map", "Assign UVs with a projector (Bier & Sloan two-stage mapping)");
   CLI::Option* input = map->add_option(
-      "input", arguments->input, "Input mesh (.obj or .off), or a folder: every .obj and .off in it, into -o's folder");
+      "input", arguments->input,
+      "Input mesh (.obj, .off, .ply, .stl, .gltf, .glb), or a folder: every mesh in it, into -o's folder");
   map->add_option("--list", arguments->list,
                   "A file of mesh paths, one a line (relative to its folder; # comments), into -o's folder")
       ->excludes(input);
-  map->add_option("-o,--output", arguments->output, "Output OBJ with per-corner UVs (a folder for many meshes)")
+  map->add_option("-o,--output", arguments->output,
+                  "Output mesh with per-corner UVs, by extension: .obj, .ply, .glb, .gltf (+ .bin); a folder for many")
       ->required();
   map->add_option("--json", arguments->json,
                   "Also write the summary as JSON (for many meshes: a folder, with STEM.json each and batch.json)");
@@ -76,8 +86,16 @@ void addMapCommand(CLI::App& root) {
       ->check(CLI::NonNegativeNumber)
       ->default_str("0");
   map->add_flag("-q,--quiet", arguments->quiet, "No progress and no summary lines; errors are still printed");
-  map->add_flag("--write-w", arguments->writeW, "Write the third UV component (the cube face id)");
-  addChoice<bool>(*map, "--uv-digits", arguments->floatDigits, {{"double", false}, {"float", true}},
+  map->add_flag("--write-w", arguments->write.writeW, "Write the third UV component (the cube face id; OBJ only)");
+  map->add_flag("--ascii", arguments->write.ascii, "Write a .ply as ASCII text, not binary little endian");
+  addChoice<io::MeshFormat>(*map, "--format", arguments->batchFormat,
+                            {{"obj", io::MeshFormat::obj},
+                             {"ply", io::MeshFormat::ply},
+                             {"glb", io::MeshFormat::glb},
+                             {"gltf", io::MeshFormat::gltf}},
+                            "What a folder or --list of meshes writes: OUTDIR/STEM.obj, .ply, .glb or .gltf")
+      ->default_str("obj");
+  addChoice<bool>(*map, "--uv-digits", arguments->write.floatDigits, {{"double", false}, {"float", true}},
                   "UV text that round-trips a double (up to 17 digits) or a float (up to 9)")
       ->default_str("double");
   addProjectorOptions(*map, arguments->projector);

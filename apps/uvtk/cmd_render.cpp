@@ -26,7 +26,7 @@ void addRenderCommand(CLI::App& root) {
   auto a = std::make_shared<RenderJob>();
   CLI::App* cmd = root.add_subcommand(
       "render", "Render a textured mesh as OpenGL's fixed-function pipeline would (2D textures and cube maps)");
-  cmd->add_option("input", a->input, "Input mesh (.obj or .off)")->required();
+  cmd->add_option("input", a->input, "Input mesh (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
   cmd->add_option("-o,--output", a->output, "Output image, 8-bit RGB, format by extension (.png, .tif, .jpg, ...)")
       ->required();
   addCameraOptions(*cmd, a->camera);

@@ -74,7 +74,7 @@ void addReportCommand(CLI::App& root) {
   auto a = std::make_shared<ReportCommandArguments>();
   CLI::App* cmd = root.add_subcommand(
       "report", "Measure a UV layout (the file's own UVs, or a projector's): distortion, seams, poles, overlap");
-  cmd->add_option("input", a->input, "Input mesh (.obj or .off)")->required();
+  cmd->add_option("input", a->input, "Input mesh (.obj, .off, .ply, .stl, .gltf, .glb)")->required();
   addReportOptions(*cmd, a->report);
   addProjectorOptions(*cmd, a->projector);
   addVerdictOptions(*cmd, a->verdict);

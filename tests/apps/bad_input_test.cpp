@@ -1,8 +1,8 @@
 // The bad-input catalogue (tests/data/bad/, described in docs/robustness.md) run through the program as a user runs
 // it: every entry gives its exit status and its exact one-line message, writes nothing, and leaves an existing
-// output file as it was. The few valid entries (CRLF line endings, OBJ as people write it) are accepted, some with
-// a warning. Inputs too large to commit, or
-// that git cannot hold (a folder, an unreadable file), are generated in the scratch folder.
+// output file as it was. The few valid entries (CRLF line endings, OBJ as people write it, a PLY with per-corner
+// texcoords, a two-solid STL, a glTF with a data: URI buffer) are accepted, some with a warning. Inputs too large
+// to commit, or that git cannot hold (a folder, an unreadable file), are generated in the scratch folder.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -81,7 +81,8 @@ const Entry kEntries[] = {
     {Command::kMap, "obj/long-line.obj", 3, "FILE:1: error: expected a line of at most 64 MiB, found a longer one",
      Source::kLongLine},
     // `uvtk map` takes a folder for a batch of meshes; `uvtk render` reads one mesh.
-    {Command::kMap, "obj/directory.obj", 3, "FILE: error: expected .obj or .off files in the folder, found none",
+    {Command::kMap, "obj/directory.obj", 3,
+     "FILE: error: expected mesh files (.obj, .off, .ply, .stl, .gltf, .glb) in the folder, found none",
      Source::kDirectory},
     {Command::kRenderMesh, "obj/directory.obj", 3, "FILE: error: cannot open: Is a directory", Source::kDirectory},
     {Command::kMap, "obj/unreadable.obj", 3, "FILE: error: cannot open: Permission denied", Source::kUnreadable},
@@ -120,9 +121,85 @@ const Entry kEntries[] = {
      "here; triangulated as given, they may fold"},
     {Command::kMap, "off/long-line.off", 3, "FILE:1: error: expected a line of at most 64 MiB, found a longer one",
      Source::kLongLine},
-    {Command::kMap, "off/directory.off", 3, "FILE: error: expected .obj or .off files in the folder, found none",
+    {Command::kMap, "off/directory.off", 3,
+     "FILE: error: expected mesh files (.obj, .off, .ply, .stl, .gltf, .glb) in the folder, found none",
      Source::kDirectory},
     {Command::kMap, "off/unreadable.off", 3, "FILE: error: cannot open: Permission denied", Source::kUnreadable},
+    // PLY
+    {Command::kMap, "ply/truncated-mid-vertex.ply", 3,
+     "FILE: byte 197: error: expected 4 vertices, found 2 and end of file"},
+    {Command::kMap, "ply/truncated-mid-face.ply", 3,
+     "FILE: byte 248: error: expected 4 faces, found 2 and end of file"},
+    {Command::kMap, "ply/counts-fewer-vertices.ply", 3, "FILE:14: error: expected end of line, found '1'"},
+    {Command::kMap, "ply/index-past-end.ply", 3, "FILE:16: error: expected a vertex index in 0..3, found '4'"},
+    {Command::kMap, "ply/negative-index.ply", 3, "FILE:15: error: expected a vertex index in 0..3, found '-1'"},
+    {Command::kMap, "ply/face-two-corners.ply", 3,
+     "FILE:15: error: expected a face of at least 3 corners, found a face of 2 (a line, not a face)"},
+    {Command::kMap, "ply/coordinate-nan.ply", 3,
+     "FILE: byte 185: error: expected a finite float for property 'y', found nan"},
+    {Command::kMap, "ply/missing-end-header.ply", 3,
+     "FILE:9: error: expected a header keyword (comment, obj_info, format, element, property or end_header), found "
+     "'0'"},
+    {Command::kMap, "ply/unknown-property-type.ply", 3,
+     "FILE:6: error: expected a property type (char, uchar, short, ushort, int, uint, float, double, or int8 ... "
+     "float64), found 'float16'"},
+    {Command::kMap, "ply/trailing-bytes.ply", 3,
+     "FILE: byte 269: error: expected end of file after the last element, found 4 more bytes"},
+    {Command::kMap, "ply/obj-renamed.ply", 3,
+     "FILE:1: error: expected 'ply' (the first line of a PLY file), found 'v 0 0 0'"},
+    {Command::kMap, "ply/texcoord-wrong-length.ply", 3,
+     "FILE:20: error: expected a texcoord list of 2 numbers per corner (6 for 3 corners), found 4"},
+    {Command::kMap, "ply/texcoords-colours.ply", 0, "FILE: warning: vertex colours ignored: 4 vertices"},
+    // STL
+    {Command::kMap, "stl/empty.stl", 3, "FILE: error: expected an STL file, found an empty file"},
+    {Command::kMap, "stl/truncated.stl", 3,
+     "FILE: error: expected 284 bytes (84 + 50 a triangle) for the 4 triangles the binary header claims, found 254 "
+     "bytes"},
+    {Command::kMap, "stl/coordinate-nan.stl", 3, "FILE: byte 212: error: expected a finite number, found nan"},
+    {Command::kMap, "stl/missing-endloop.stl", 3,
+     "FILE:14: error: expected 'endloop' (a facet has 3 vertices), found 'endfacet'"},
+    {Command::kMap, "stl/four-vertex-loop.stl", 3,
+     "FILE:14: error: expected 'endloop' (a facet has 3 vertices), found 'vertex'"},
+    {Command::kMap, "stl/bad-number.stl", 3, "FILE:6: error: expected a number, found '0,5'"},
+    {Command::kMap, "stl/garbage-after-endsolid.stl", 3,
+     "FILE:31: error: expected 'solid' or end of file, found 'thanks'"},
+    {Command::kMap, "stl/two-solids-upper-case.stl", 0, nullptr},
+    // glTF
+    {Command::kMap, "gltf/truncated.glb", 3,
+     "FILE: byte 588: error: expected 40 more bytes (the GLB header's length is 628), found end of file"},
+    {Command::kMap, "gltf/wrong-length.glb", 3,
+     "FILE: byte 628: error: expected 100 more bytes (the GLB header's length is 728), found end of file"},
+    {Command::kMap, "gltf/bad-json.gltf", 3,
+     "FILE:7: error: invalid JSON at column 9: syntax error while parsing object - unexpected string literal; "
+     "expected '}'"},
+    {Command::kMap, "gltf/missing-buffer.gltf", 3,
+     "FILE: /buffers/0: error: cannot read the buffer file 'missing.bin': No such file or directory"},
+    {Command::kMap, "gltf/buffer-too-short.gltf", 3,
+     "FILE: /buffers/0/uri: error: expected base64 data of exactly its byteLength, found other data"},
+    {Command::kMap, "gltf/index-past-end.gltf", 3,
+     "FILE: /meshes/0/primitives/0/indices: error: expected vertex indices below 4 (the POSITION count), found 4 at "
+     "element 8"},
+    {Command::kMap, "gltf/mode-9.gltf", 3,
+     "FILE: /meshes/0/primitives/0/mode: error: expected a primitive mode in 0..6, found 9"},
+    {Command::kMap, "gltf/lines-only.gltf", 3,
+     "FILE: error: expected at least one triangle primitive in the scene, found none (1 primitive of points or "
+     "lines skipped)"},
+    {Command::kMap, "gltf/sparse-accessor.gltf", 3,
+     "FILE: /accessors/0/sparse: error: sparse accessors are not supported"},
+    {Command::kMap, "gltf/draco-required.gltf", 3,
+     "FILE: /extensionsRequired/0: error: the file requires the extension 'KHR_draco_mesh_compression', which uvtk "
+     "does not read (it reads KHR_mesh_quantization; KHR_texture_transform moves no vertex)"},
+    {Command::kMap, "gltf/accessor-outside-view.gltf", 3,
+     "FILE: /accessors/0: error: expected its 5 elements of 12 bytes within bufferView 0 (48 bytes), found them past "
+     "its end"},
+    {Command::kMap, "gltf/position-inf.gltf", 3,
+     "FILE: /accessors/0: error: expected finite numbers, found inf in element 1"},
+    {Command::kMap, "gltf/node-cycle.gltf", 3,
+     "FILE: /nodes/1/children/0: error: node 0 is reached a second time (a cycle, or a child of two parents); uvtk "
+     "reads node trees"},
+    {Command::kMap, "gltf/no-position.gltf", 3,
+     "FILE: /meshes/0/primitives/0/attributes: error: expected a POSITION attribute, found none"},
+    {Command::kMap, "gltf/data-uri.gltf", 0, nullptr},
     // Scenes
     {Command::kRun, "scene/empty.json", 3, "FILE:1:1: error: expected a value, found end of file"},
     {Command::kRun, "scene/truncated.json", 3, "FILE:6:27: error: expected ':', found end of file"},
@@ -276,6 +353,12 @@ class BadInput : public CliTest {
 TEST_F(BadInput, ObjMeshes) { EXPECT_EQ(checkFolder("obj/"), 22); }
 
 TEST_F(BadInput, OffMeshes) { EXPECT_EQ(checkFolder("off/"), 24); }
+
+TEST_F(BadInput, PlyMeshes) { EXPECT_EQ(checkFolder("ply/"), 13); }
+
+TEST_F(BadInput, StlMeshes) { EXPECT_EQ(checkFolder("stl/"), 8); }
+
+TEST_F(BadInput, GltfMeshes) { EXPECT_EQ(checkFolder("gltf/"), 15); }
 
 TEST_F(BadInput, Scenes) { EXPECT_EQ(checkFolder("scene/"), 12); }
 

@@ -177,7 +177,7 @@ TEST_F(SceneCli, InvalidScenesAreRefusedWithTheirJsonPathAndNothingIsWritten) {
       {"enum", scene(withAxis, spp), "/meshes/1/mappings/0/axis: expected one of x, y, z, found \"w\""},
       {"reference", scene(good, withRef), "/outputs/1/mapping: no mapping named \"nope\"; the scene has: s"},
       {"range", scene(good, sppZero), "/outputs/1/spp: expected an integer >= 1, found 0"},
-      {"unknown key", scene(good, unknown), "/outputs/1/colour: unknown key \"colour\"; expected one of: json, kind"},
+      {"unknown key", scene(good, unknown), "/outputs/1/colour: unknown key \"colour\"; expected one of: ascii, json, kind"},
       {"same file", scene(good, sameFile), "/outputs/1: writes \""},
       {"option check", scene(withEye, spp), "/meshes/1/mappings/0: omap reflection: expected eye x,y,z"},
       {"per-pixel file UVs", scene(fileMapping, badPixel), "/outputs/1: uv per-pixel evaluates the mapping"},

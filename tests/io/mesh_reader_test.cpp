@@ -753,11 +753,18 @@ TEST_F(ReadMesh, ErrorsNameThePathAndLine) {
 }
 
 TEST_F(ReadMesh, RejectsOtherExtensions) {
-  const std::string ply = writeText("m.ply", kTriangle + "f 1 2 3\n");
-  EXPECT_EQ(errorOfPath(ply), ply + ": error: expected a .obj or .off extension, found '.ply'");
+  const std::string x3d = writeText("m.x3d", kTriangle + "f 1 2 3\n");
+  EXPECT_EQ(errorOfPath(x3d), x3d + ": error: expected a .obj, .off, .ply, .stl, .gltf or .glb extension, found '.x3d'");
   const std::string none = writeText("mesh", kTriangle + "f 1 2 3\n");
-  EXPECT_EQ(errorOfPath(none), none + ": error: expected a .obj or .off extension, found none");
-  EXPECT_EQ(errorOfPath("model.obj.gz"), "model.obj.gz: error: expected a .obj or .off extension, found '.gz'");
+  EXPECT_EQ(errorOfPath(none), none + ": error: expected a .obj, .off, .ply, .stl, .gltf or .glb extension, found none");
+  EXPECT_EQ(errorOfPath("model.obj.gz"),
+            "model.obj.gz: error: expected a .obj, .off, .ply, .stl, .gltf or .glb extension, found '.gz'");
+}
+
+// An OBJ's text under a PLY's name is read as a PLY, and refused as one: the extension decides.
+TEST_F(ReadMesh, ChoosesThePlyReaderByExtension) {
+  const std::string ply = writeText("m.PLY", kTriangle + "f 1 2 3\n");
+  EXPECT_EQ(errorOfPath(ply).rfind(ply + ":1: error: ", 0), 0u) << errorOfPath(ply);
 }
 
 TEST_F(ReadMesh, RejectsAMissingFile) {

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <set>
+#include <tuple>
 #include <stdexcept>
 #include <string>
 
@@ -239,6 +241,39 @@ TEST_F(LibraryTest, AMappingWrittenAndReadBackHasTheSameTexcoords) {
   const Mapping again = fileUvs(back);
   EXPECT_EQ(again.uv, m.uv);
   EXPECT_EQ(warnings.degenerateFaces, 0u);
+}
+
+// OBJ -> glTF -> OBJ: the library writes what it read, by extension; glTF keeps each UV to float
+// precision (it stores float32), PLY keeps every bit, and each split vertex is one distinct UV.
+TEST_F(LibraryTest, AMappingThroughGltfAndPlyKeepsEveryCornersUv) {
+  MapOptions o;
+  o.projector = "sphere";
+  const Mapping m = map(octahedron(), o);
+  writeMesh(path("m.glb"), m);
+  writeMesh(path("m.ply"), m);
+  const Mesh glb = readMesh(path("m.glb"));
+  writeMesh(path("back.obj"), glb);  // the glTF's own UVs, through the library
+  const Mesh back = readMesh(path("back.obj"));
+  const Mesh ply = readMesh(path("m.ply"));
+  ASSERT_EQ(back.triangles.size(), m.mesh.triangles.size());
+  ASSERT_EQ(ply.triangles.size(), m.mesh.triangles.size());
+  for (std::size_t c = 0; c < m.uv.size(); ++c) {
+    const Vector3& t = back.texcoords[std::size_t(back.cornerTexcoords[c / 3][c % 3])];
+    // Written as float(1 - v), read as 1 - that: v within one float rounding of 1 - v's.
+    EXPECT_EQ(t[0], double(float(m.uv[c][0]))) << c;
+    EXPECT_EQ(t[1], 1.0 - double(float(1.0 - m.uv[c][1]))) << c;
+    const Vector3& exact = ply.texcoords[std::size_t(ply.cornerTexcoords[c / 3][c % 3])];
+    EXPECT_EQ(exact[0], m.uv[c][0]) << c;
+    EXPECT_EQ(exact[1], m.uv[c][1]) << c;
+  }
+  // The octahedron's 6 vertices are split at the seam and at the poles' fans: one vertex per
+  // distinct (vertex, uv), the same count in both files.
+  std::set<std::tuple<int, double, double>> distinct;
+  for (std::size_t c = 0; c < m.uv.size(); ++c)
+    distinct.insert({m.mesh.triangles[c / 3][c % 3], m.uv[c][0], m.uv[c][1]});
+  EXPECT_EQ(ply.positions.size(), distinct.size());
+  EXPECT_EQ(glb.positions.size(), distinct.size());
+  EXPECT_GT(distinct.size(), 6u);
 }
 
 TEST_F(LibraryTest, TheReportIsTheJsonItWritesAndCarriesTheVerdict) {

@@ -229,6 +229,26 @@ def test_malformed_file_is_an_input_error_with_its_line(tmp_path):
         uvtk.read_mesh(path)
 
 
+def test_formats_by_extension_keep_the_uvs(tmp_path):
+    """A sphere mapping written as PLY (doubles: every bit), binary and ASCII, and as GLB (float32,
+    v stored as 1 - v); each read back per corner; a glTF's broken file names its JSON pointer."""
+    positions, triangles = uv_sphere()
+    m = uvtk.map(uvtk.Mesh(positions, triangles), projector="sphere")
+    uvtk.write_mesh(tmp_path / "s.ply", m)
+    uvtk.write_mesh(tmp_path / "t.ply", m, ascii=True)
+    uvtk.write_mesh(tmp_path / "s.glb", m)
+    for name in ("s.ply", "t.ply"):
+        np.testing.assert_array_equal(uvtk.read_mesh(tmp_path / name).uv, m.uv)
+    glb = uvtk.read_mesh(tmp_path / "s.glb")
+    np.testing.assert_array_equal(glb.uv[..., 0], m.uv[..., 0].astype(np.float32))
+    np.testing.assert_array_equal(glb.uv[..., 1], 1 - (1 - m.uv[..., 1]).astype(np.float32).astype(np.float64))
+    assert (tmp_path / "t.ply").read_bytes().startswith(b"ply\nformat ascii 1.0\n")
+    broken = tmp_path / "broken.gltf"
+    broken.write_text('{"asset": {"version": "2.0"}, "meshes": [{"primitives": [{"attributes": {}}]}]}')
+    with pytest.raises(uvtk.InputError, match=f"{broken}: /meshes/0/primitives/0"):
+        uvtk.read_mesh(broken)
+
+
 # ---- mappings: hand-computed values ----
 
 

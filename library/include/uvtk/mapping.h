@@ -136,11 +136,13 @@ UVTK_API Mapping fileUvs(const Mesh& mesh);
 
 struct WriteOptions {
   std::string uvDigits = "double";  // "double": UV text that round-trips a double; "float": up to 9 digits
-  bool writeW = false;              // write the third component (the cube face id, texgen's r)
+  bool writeW = false;              // OBJ: write the third component (the cube face id, texgen's r)
+  bool ascii = false;               // PLY: ASCII text instead of binary little endian
 };
 
-// Writes the mapping's mesh as OBJ with per-corner texture coordinates, as `uvtk map -o` does (a
-// texgen mapping as `uvtk texgen -o`: r where generated, and divided by q where q is not 1).
+// Writes the mapping's mesh with per-corner texture coordinates, by the path's extension (.obj,
+// .ply, .glb, or .gltf with its .bin beside it), as `uvtk map -o` does (a texgen mapping as
+// `uvtk texgen -o`: r where generated and the format holds it, and divided by q where q is not 1).
 UVTK_API void writeMesh(const std::string& path, const Mapping& mapping, const WriteOptions& options = {});
 
 }  // namespace uvtk::api

@@ -50,10 +50,13 @@ struct MeshWarnings {
   std::size_t firstNonSimplePolygonLine = 0;  // the line of the first of them; 0 when there is none
   std::size_t vertexColours = 0;            // OBJ `v x y z r g b` lines: the colours are dropped
   std::size_t parameterVertices = 0;        // OBJ `vp` lines, ignored
+  std::size_t weldedCorners = 0;            // STL: corners that became an earlier corner's vertex (same position)
+  std::size_t skippedPrimitives = 0;        // glTF: primitives of points or lines, left out
 };
 
-// Reads an OBJ or OFF file as `uvtk map` does: strictly (throws InputError naming the file and
-// line), polygons ear-clipped into triangles. `warnings`, when given, receives what was accepted
+// Reads a mesh file by its extension (.obj, .off, .ply, .stl, .gltf, .glb; docs/formats.md) as
+// `uvtk map` does: strictly (throws InputError naming the file and the line, byte or JSON
+// pointer), polygons ear-clipped into triangles. `warnings`, when given, receives what was accepted
 // with a warning.
 UVTK_API Mesh readMesh(const std::string& path, MeshWarnings* warnings = nullptr);
 
@@ -62,7 +65,8 @@ UVTK_API Mesh readMesh(const std::string& path, MeshWarnings* warnings = nullptr
 // first problem; returns the warnings.
 UVTK_API MeshWarnings checkMesh(const Mesh& mesh);
 
-// Writes `mesh` as OBJ with its own texture coordinates and normals, if any. Written whole or not
+// Writes `mesh` by the path's extension (.obj, .ply, .glb, .gltf + .bin) with its own texture
+// coordinates and normals, if any. Written whole or not
 // at all (a temporary renamed onto `path`); throws OutputError.
 UVTK_API void writeMesh(const std::string& path, const Mesh& mesh);
 

@@ -1,0 +1,32 @@
+// glTF 2.0 output: one buffer, one mesh of one triangle primitive, one node, one scene.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "core/mesh.h"
+#include "core/uv_map.h"
+
+namespace uvtk::io {
+
+struct GltfWriteOptions {
+  std::string generator;  // asset.generator, e.g. "uvtk 0.3.0"
+  std::string copyright;  // asset.copyright when not empty
+  // Normals per mesh vertex (nx ny nz / NORMAL), written when the mesh has none of its own; null: none.
+  const std::vector<Vec3>* vertexNormals = nullptr;
+  std::string name = "glTF";  // the output's name in messages (the path, when writing a file)
+};
+
+// A .glb: the JSON chunk and the binary chunk in one stream.
+void writeGlb(std::ostream& out, const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& options = {});
+
+// A .gltf and its buffer: the JSON to `json`, naming the buffer by `binaryUri` (the buffer's file
+// name relative to the JSON's folder, e.g. "model.bin"; percent-encoded into the uri where it
+// holds other than letters, digits, '-', '.', '_', '~' and '/'), and the buffer's bytes to `binary`.
+// Both throw OutputError "NAME: error: cannot write: ..." before writing anything when a position
+// or UV is beyond float32's range, or the mesh has no triangle.
+void writeGltf(std::ostream& json, std::ostream& binary, const std::string& binaryUri, const Mesh& mesh,
+               const UvMap* uvs, const GltfWriteOptions& options = {});
+
+}  // namespace uvtk::io
