@@ -38,6 +38,7 @@
 #include "core/progress.h"
 #include "io/gltf_reader.h"
 #include "io/mesh_format.h"
+#include "io/number_text.h"
 #include "io/ply_reader.h"
 #include "io/polygon_triangulation.h"
 #include "io/stl_reader.h"
@@ -75,64 +76,6 @@ InputError inputError(const std::string& name, std::size_t line, const std::stri
 InputError expectedError(const std::string& name, std::size_t line, const std::string& expected,
                          const std::string& found) {
   return inputError(name, line, "expected " + expected + ", found " + found);
-}
-
-enum class NumberSyntax { ok, malformed, notFinite };
-
-// from_chars reports overflow and underflow alike as out of range; for a syntactically valid
-// decimal, tell them apart by the decimal exponent of its leading digit (>= 0: too large).
-bool overflows(const char* p, const char* last) {
-  if (p != last && *p == '-') ++p;
-  long long integerDigits = 0, fractionZeros = 0;
-  bool inFraction = false, leadingDigitSeen = false;
-  for (; p != last && *p != 'e' && *p != 'E'; ++p) {
-    if (*p == '.') {
-      inFraction = true;
-    } else if (!leadingDigitSeen) {
-      leadingDigitSeen = *p != '0';
-      if (!leadingDigitSeen && inFraction) ++fractionZeros;
-      if (leadingDigitSeen && !inFraction) ++integerDigits;
-    } else if (!inFraction) {
-      ++integerDigits;
-    }
-  }
-  long long exponent = 0;
-  bool negativeExponent = false;
-  if (p != last) ++p;  // 'e'
-  if (p != last && (*p == '+' || *p == '-')) negativeExponent = *p++ == '-';
-  for (; p != last; ++p) exponent = std::min(exponent * 10 + (*p - '0'), 1'000'000'000LL);
-  const long long leading = integerDigits > 0 ? integerDigits - 1 : -(fractionZeros + 1);
-  return leading + (negativeExponent ? -exponent : exponent) >= 0;
-}
-
-// The whole token as a double, in the C locale whatever the global one is.
-NumberSyntax parseDouble(std::string_view token, double& value) {
-  const char* first = token.data();
-  const char* last = first + token.size();
-  if (first != last && *first == '+') {  // from_chars rejects the '+' that strtod and "%+g" accept
-    ++first;
-    if (first != last && *first == '-') return NumberSyntax::malformed;
-  }
-  const auto [end, error] = std::from_chars(first, last, value, std::chars_format::general);
-  if (error == std::errc::invalid_argument || end != last) return NumberSyntax::malformed;
-  if (error == std::errc::result_out_of_range) {
-    if (overflows(first, last)) return NumberSyntax::notFinite;
-    value = *first == '-' ? -0.0 : 0.0;
-    return NumberSyntax::ok;
-  }
-  return std::isfinite(value) ? NumberSyntax::ok : NumberSyntax::notFinite;
-}
-
-// The whole token as a decimal integer, with an optional sign; false if malformed or beyond long long.
-bool parseInteger(std::string_view token, long long& value) {
-  const char* first = token.data();
-  const char* last = first + token.size();
-  if (first != last && *first == '+') {  // from_chars rejects the '+' that strtol accepts
-    ++first;
-    if (first == last || *first < '0' || *first > '9') return false;
-  }
-  const auto [end, error] = std::from_chars(first, last, value);
-  return error == std::errc() && end == last;
 }
 
 // Reads a stream line by line and hands out the whitespace-separated tokens of the current line.
@@ -280,12 +223,13 @@ class LineReader {
 
   double toNumber(std::string_view t) const {
     double value = 0.0;
-    switch (parseDouble(t, value)) {
+    switch (parseReal(t, value)) {
       case NumberSyntax::ok:
         return value;
       case NumberSyntax::malformed:
         failAt("a number", t);
       case NumberSyntax::notFinite:
+      case NumberSyntax::tooLarge:
         failAt("a finite number", t);
     }
     UVTK_CHECK(false);

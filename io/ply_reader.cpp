@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/number_text.h"
 #include "io/polygon_triangulation.h"
 
 namespace uvtk::io {
@@ -256,66 +257,6 @@ class Tokens {
   const char* p_;
   const char* end_;
 };
-
-// The whole token as a decimal integer with an optional sign; false if malformed or beyond long long.
-bool parseInteger(std::string_view token, long long& value) {
-  const char* first = token.data();
-  const char* last = first + token.size();
-  if (first != last && *first == '+') {  // from_chars rejects the '+' that strtol accepts
-    ++first;
-    if (first == last || *first < '0' || *first > '9') return false;
-  }
-  const auto [end, error] = std::from_chars(first, last, value);
-  return error == std::errc() && end == last;
-}
-
-enum class NumberSyntax { ok, malformed, notFinite };
-
-// from_chars reports overflow and underflow alike as out of range; for a syntactically valid
-// decimal, tell them apart by the decimal exponent of its leading digit (>= 0: too large).
-bool overflows(const char* p, const char* last) {
-  if (p != last && *p == '-') ++p;
-  long long integerDigits = 0, fractionZeros = 0;
-  bool inFraction = false, leadingDigitSeen = false;
-  for (; p != last && *p != 'e' && *p != 'E'; ++p) {
-    if (*p == '.') {
-      inFraction = true;
-    } else if (!leadingDigitSeen) {
-      leadingDigitSeen = *p != '0';
-      if (!leadingDigitSeen && inFraction) ++fractionZeros;
-      if (leadingDigitSeen && !inFraction) ++integerDigits;
-    } else if (!inFraction) {
-      ++integerDigits;
-    }
-  }
-  long long exponent = 0;
-  bool negativeExponent = false;
-  if (p != last) ++p;  // 'e'
-  if (p != last && (*p == '+' || *p == '-')) negativeExponent = *p++ == '-';
-  for (; p != last; ++p) exponent = std::min(exponent * 10 + (*p - '0'), 1'000'000'000LL);
-  const long long leading = integerDigits > 0 ? integerDigits - 1 : -(fractionZeros + 1);
-  return leading + (negativeExponent ? -exponent : exponent) >= 0;
-}
-
-// The whole token as a finite T (float or double), in the C locale whatever the global one is. A
-// value too small for T becomes a signed zero; one too large is not finite, like nan and inf.
-template <typename T>
-NumberSyntax parseReal(std::string_view token, T& value) {
-  const char* first = token.data();
-  const char* last = first + token.size();
-  if (first != last && *first == '+') {  // from_chars rejects the '+' that strtod and "%+g" accept
-    ++first;
-    if (first != last && *first == '-') return NumberSyntax::malformed;
-  }
-  const auto [end, error] = std::from_chars(first, last, value, std::chars_format::general);
-  if (error == std::errc::invalid_argument || end != last) return NumberSyntax::malformed;
-  if (error == std::errc::result_out_of_range) {
-    if (overflows(first, last)) return NumberSyntax::notFinite;
-    value = *first == '-' ? -T(0) : T(0);
-    return NumberSyntax::ok;
-  }
-  return std::isfinite(value) ? NumberSyntax::ok : NumberSyntax::notFinite;
-}
 
 // A header line: its text without line ending, checked for control bytes.
 class HeaderReader {
@@ -674,7 +615,7 @@ class AsciiSource {
 
   void checkReal(NumberSyntax syntax, const Property& p, bool item) const {
     if (syntax == NumberSyntax::malformed) failAtLine(name_, line_, describe(p.type, p, item), quote(token_));
-    if (syntax == NumberSyntax::notFinite) failAtLine(name_, line_, describe(p.type, p, item, true), quote(token_));
+    if (syntax == NumberSyntax::notFinite || syntax == NumberSyntax::tooLarge) failAtLine(name_, line_, describe(p.type, p, item, true), quote(token_));
   }
 
   ByteStream& bytes_;

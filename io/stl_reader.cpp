@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/number_text.h"
 
 namespace uvtk::io {
 namespace {
@@ -192,52 +193,6 @@ ReadMeshResult readBinary(std::istream& in, const std::string& name, std::uint32
 // ---------------------------------------------------------------------------------------------
 // ASCII
 
-enum class NumberSyntax { ok, malformed, notFinite, tooLarge };
-
-// For a syntactically valid decimal that from_chars found out of range: whether it is too large
-// (the decimal exponent of its leading non-zero digit is >= 0) rather than too small.
-bool overflows(const char* p, const char* last) {
-  if (p != last && *p == '-') ++p;
-  long long integerDigits = 0, fractionZeros = 0;
-  bool inFraction = false, leadingDigitSeen = false;
-  for (; p != last && *p != 'e' && *p != 'E'; ++p) {
-    if (*p == '.') {
-      inFraction = true;
-    } else if (!leadingDigitSeen) {
-      leadingDigitSeen = *p != '0';
-      if (!leadingDigitSeen && inFraction) ++fractionZeros;
-      if (leadingDigitSeen && !inFraction) ++integerDigits;
-    } else if (!inFraction) {
-      ++integerDigits;
-    }
-  }
-  long long exponent = 0;
-  bool negativeExponent = false;
-  if (p != last) ++p;  // 'e'
-  if (p != last && (*p == '+' || *p == '-')) negativeExponent = *p++ == '-';
-  for (; p != last; ++p) exponent = std::min(exponent * 10 + (*p - '0'), 1'000'000'000LL);
-  const long long leading = integerDigits > 0 ? integerDigits - 1 : -(fractionZeros + 1);
-  return leading + (negativeExponent ? -exponent : exponent) >= 0;
-}
-
-// The whole token as the nearest float, in the C locale; a leading '+' is accepted as strtod does.
-NumberSyntax parseFloat(std::string_view token, float& value) {
-  const char* first = token.data();
-  const char* last = first + token.size();
-  if (first != last && *first == '+') {
-    ++first;
-    if (first != last && *first == '-') return NumberSyntax::malformed;
-  }
-  const auto [end, error] = std::from_chars(first, last, value, std::chars_format::general);
-  if (error == std::errc::invalid_argument || end != last) return NumberSyntax::malformed;
-  if (error == std::errc::result_out_of_range) {
-    if (overflows(first, last)) return NumberSyntax::tooLarge;
-    value = *first == '-' ? -0.0f : 0.0f;
-    return NumberSyntax::ok;
-  }
-  return std::isfinite(value) ? NumberSyntax::ok : NumberSyntax::notFinite;
-}
-
 bool equalsIgnoringCase(std::string_view token, std::string_view keyword) {
   if (token.size() != keyword.size()) return false;
   for (std::size_t i = 0; i < token.size(); ++i) {
@@ -285,7 +240,7 @@ class LineReader {
     const std::string_view t = token();
     if (t.empty()) failAt(what, t);
     float value = 0.0f;
-    switch (parseFloat(t, value)) {
+    switch (parseReal(t, value)) {
       case NumberSyntax::ok:
         return value;
       case NumberSyntax::malformed:
@@ -304,7 +259,7 @@ class LineReader {
     const std::string_view t = token();
     if (t.empty()) failAt(what, t);
     float ignored = 0.0f;
-    if (parseFloat(t, ignored) == NumberSyntax::malformed) failAt("a number", t);
+    if (parseReal(t, ignored) == NumberSyntax::malformed) failAt("a number", t);
   }
 
   void expectEndOfLine() {
