@@ -60,7 +60,7 @@ inline void printInputWarnings(const std::string& path, const MeshWarnings& w) {
                          std::to_string(w.nonSimplePolygons) + ", the first here; triangulated as given, they may fold");
   if (w.vertexColours)
     printProgressMessage(path + ": warning: vertex colours ignored: " + std::to_string(w.vertexColours) + " vertices");
-  if (w.weldedCorners)
+  if (w.weldedCorners && !quiet())  // what the format asks for, not a warning
     printProgressMessage(path + ": " + std::to_string(w.weldedCorners) +
                          " corners welded into the vertices of earlier corners at the same position (STL)");
   if (w.skippedPrimitives)

@@ -124,6 +124,13 @@ GltfParts buildGltf(const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& 
       texcoords[2 * s + 1] = v;
     }
   }
+  // A mesh whose every coordinate is below float32's normal range would reach the file as zeros
+  // and subnormals: its shape gone, with no number out of range to say so.
+  double largest = 0.0;
+  for (const int v : split.vertex) largest = std::max(largest, mesh.positions[static_cast<std::size_t>(v)].cwiseAbs().maxCoeff());
+  if (largest > 0.0 && largest < double(std::numeric_limits<float>::min()))
+    throw OutputError(cannot + "the mesh's coordinates (largest magnitude " + numberText(largest) +
+                      ") are below glTF's float32 normal range (1.17549435e-38): its shape would be lost; scale it first");
 
   GltfParts parts;
   json& document = parts.document;

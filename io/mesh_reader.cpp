@@ -21,6 +21,7 @@
 #include "io/mesh_reader.h"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <charconv>
 #include <climits>
@@ -30,6 +31,7 @@
 #include <optional>
 #include <fstream>
 #include <istream>
+#include <streambuf>
 #include <string_view>
 #include <system_error>
 #include <vector>
@@ -544,6 +546,48 @@ ReadMeshResult readOffLines(LineReader& reader) {
   return withWarnings(std::move(mesh), state.warnings);
 }
 
+// The bytes a reader takes from `source`, counted into a Progress: PLY and STL show their reading
+// as OBJ and OFF do (theirs is counted per line). Seeking is passed through, as the STL reader
+// asks for the file's size.
+class ProgressBuffer : public std::streambuf {
+ public:
+  ProgressBuffer(std::streambuf& source, Progress& progress) : source_(source), progress_(progress) {}
+
+ protected:
+  int_type underflow() override {
+    const std::streamsize got = source_.sgetn(buffer_.data(), std::streamsize(buffer_.size()));
+    if (got <= 0) return traits_type::eof();
+    progress_.advance(std::uint64_t(got));
+    setg(buffer_.data(), buffer_.data(), buffer_.data() + got);
+    return traits_type::to_int_type(buffer_[0]);
+  }
+  // Large reads go straight from the source, past the buffer.
+  std::streamsize xsgetn(char* out, std::streamsize n) override {
+    std::streamsize done = std::min<std::streamsize>(n, egptr() - gptr());
+    std::memcpy(out, gptr(), std::size_t(done));
+    gbump(int(done));
+    if (done < n) {
+      const std::streamsize got = source_.sgetn(out + done, n - done);
+      if (got > 0) progress_.advance(std::uint64_t(got)), done += got;
+    }
+    return done;
+  }
+  pos_type seekoff(off_type offset, std::ios_base::seekdir from, std::ios_base::openmode which) override {
+    if (from == std::ios_base::cur) offset -= egptr() - gptr();  // the source is ahead by what is unread here
+    setg(buffer_.data(), buffer_.data(), buffer_.data());
+    return source_.pubseekoff(offset, from, which);
+  }
+  pos_type seekpos(pos_type position, std::ios_base::openmode which) override {
+    setg(buffer_.data(), buffer_.data(), buffer_.data());
+    return source_.pubseekpos(position, which);
+  }
+
+ private:
+  std::streambuf& source_;
+  Progress& progress_;
+  std::array<char, std::size_t{1} << 16> buffer_;
+};
+
 }  // namespace
 
 ReadMeshResult readObj(std::istream& in, const std::string& name) {
@@ -573,10 +617,13 @@ ReadMeshResult readMesh(const std::string& path) {
     const int error = errno;
     throw inputError(path, 0, "cannot open: " + (error ? std::generic_category().message(error) : "unknown error"));
   }
-  if (*format == MeshFormat::ply) return readPly(in, path);
-  if (*format == MeshFormat::stl) return readStl(in, path);
   const std::uintmax_t size = std::filesystem::file_size(path, ignored);
   Progress progress("reading " + path, size == std::uintmax_t(-1) ? 0 : size, "MB", 1'000'000);
+  if (*format == MeshFormat::ply || *format == MeshFormat::stl) {
+    ProgressBuffer counted(*in.rdbuf(), progress);
+    std::istream countedIn(&counted);
+    return *format == MeshFormat::ply ? readPly(countedIn, path) : readStl(countedIn, path);
+  }
   LineReader reader(in, path, &progress);
   return *format == MeshFormat::obj ? readObjLines(reader) : readOffLines(reader);
 }

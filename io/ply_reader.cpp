@@ -391,8 +391,13 @@ void assignRoles(Header& header, const std::string& name, std::size_t endLine) {
     if (header.elements[i].name == "face") header.faceElement = static_cast<int>(i);
   }
   if (header.vertexElement < 0) failAtLine(name, endLine, "an element 'vertex'", "'end_header'");
-  if (header.faceElement < 0)
+  if (header.faceElement < 0) {
+    for (const Element& e : header.elements)  // old range scans store triangle strips instead
+      if (e.name == "tristrips")
+        failAtLine(name, e.line, "an element 'face'",
+                   "'element tristrips' (triangle strips are not read: save the mesh with faces, e.g. from MeshLab)");
     failAtLine(name, endLine, "an element 'face' (a point cloud is not a mesh)", "'end_header'");
+  }
   Element& vertex = header.elements[std::size_t(header.vertexElement)];
   Element& face = header.elements[std::size_t(header.faceElement)];
   if (vertex.count == 0) failAtLine(name, vertex.line, "at least one vertex", "'element vertex 0'");

@@ -667,5 +667,29 @@ TEST(WriteGltf, RefusesValuesBeyondFloat32BeforeWritingAnything) {
   EXPECT_TRUE(text.str().empty() && binary.str().empty());
 }
 
+// A mesh of extent 1e-200 would be written as zeros: refused; one tiny coordinate beside others of
+// size 1 is an ordinary rounding, written.
+TEST(WriteGltf, RefusesAMeshWhoseShapeFloat32CannotHold) {
+  Mesh m;
+  m.positions = {{0, 0, 0}, {1e-200, 0, 0}, {0, 1e-200, 0}};
+  m.triangles = {{0, 1, 2}};
+  GltfWriteOptions options;
+  options.name = "out.glb";
+  std::ostringstream out;
+  try {
+    writeGlb(out, m, nullptr, options);
+    FAIL() << "no error";
+  } catch (const OutputError& e) {
+    EXPECT_STREQ(e.what(), "out.glb: error: cannot write: the mesh's coordinates (largest magnitude 1e-200) are below "
+                           "glTF's float32 normal range (1.17549435e-38): its shape would be lost; scale it first");
+  }
+  EXPECT_TRUE(out.str().empty());
+  m.positions[1].x() = 1;
+  m.positions[2].y() = 1;
+  m.positions[0].z() = 1e-200;
+  writeGlb(out, m, nullptr, options);
+  EXPECT_FALSE(out.str().empty());
+}
+
 }  // namespace
 }  // namespace uvtk::io

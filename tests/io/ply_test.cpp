@@ -259,6 +259,9 @@ TEST(ReadPly, RefusesABadHeaderWithItsLine) {
       {"no vertex element", ascii + face + "end_header\n", "t.ply:5: error: expected an element 'vertex', found 'end_header'"},
       {"no face element", ascii + vertex + "end_header\n",
        "t.ply:7: error: expected an element 'face' (a point cloud is not a mesh), found 'end_header'"},
+      {"triangle strips", ascii + vertex + "element tristrips 1\nproperty list int int vertex_indices\nend_header\n",
+       "t.ply:7: error: expected an element 'face', found 'element tristrips' (triangle strips are not read: save the "
+       "mesh with faces, e.g. from MeshLab)"},
       {"no faces", ascii + vertex + "element face 0\nproperty list uchar int vertex_indices\nend_header\n",
        "t.ply:7: error: expected at least one face, found 'element face 0'"},
       {"no z", ascii + "element vertex 3\nproperty float x\nproperty float y\n" + face + "end_header\n",
