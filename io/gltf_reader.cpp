@@ -763,16 +763,7 @@ ReadMeshResult readGltf(std::string_view bytes, const std::string& name, const s
   return readModel(model, name, bytes.size());
 }
 
-ReadMeshResult readGltf(const std::string& path) {
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored))
-    throw fileError(path, "cannot open: " + std::generic_category().message(EISDIR));
-  errno = 0;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    const int error = errno;
-    throw fileError(path, "cannot open: " + (error ? std::generic_category().message(error) : "unknown error"));
-  }
+ReadMeshResult readGltf(std::istream& in, const std::string& path) {
   std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   if (in.bad()) throw fileError(path, "cannot read: input/output error");
   std::string extension = std::filesystem::path(path).extension().string();

@@ -3,6 +3,7 @@
 // container, a byte offset ("FILE: byte N: error: ...").
 #pragma once
 
+#include <iosfwd>
 #include <string>
 #include <string_view>
 
@@ -10,8 +11,9 @@
 
 namespace uvtk::io {
 
-// Reads `path`; external buffers are resolved against its folder.
-ReadMeshResult readGltf(const std::string& path);
+// Reads the file `path` from `in` (a GLB when its extension is .glb or its bytes start with
+// "glTF"); external buffers are resolved against the path's folder.
+ReadMeshResult readGltf(std::istream& in, const std::string& path);
 
 // Reads a file's bytes (`binary`: a GLB container); `name` is used in messages, external buffer
 // URIs are resolved against `folder` (empty: none may be read).

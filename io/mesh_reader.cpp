@@ -610,7 +610,6 @@ ReadMeshResult readMesh(const std::string& path) {
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored))
     throw inputError(path, 0, "cannot open: " + std::generic_category().message(EISDIR));
-  if (*format == MeshFormat::gltf || *format == MeshFormat::glb) return readGltf(path);
   errno = 0;
   std::ifstream in(path, std::ios::binary);
   if (!in) {
@@ -619,10 +618,12 @@ ReadMeshResult readMesh(const std::string& path) {
   }
   const std::uintmax_t size = std::filesystem::file_size(path, ignored);
   Progress progress("reading " + path, size == std::uintmax_t(-1) ? 0 : size, "MB", 1'000'000);
-  if (*format == MeshFormat::ply || *format == MeshFormat::stl) {
+  if (*format != MeshFormat::obj && *format != MeshFormat::off) {
     ProgressBuffer counted(*in.rdbuf(), progress);
     std::istream countedIn(&counted);
-    return *format == MeshFormat::ply ? readPly(countedIn, path) : readStl(countedIn, path);
+    if (*format == MeshFormat::ply) return readPly(countedIn, path);
+    if (*format == MeshFormat::stl) return readStl(countedIn, path);
+    return readGltf(countedIn, path);
   }
   LineReader reader(in, path, &progress);
   return *format == MeshFormat::obj ? readObjLines(reader) : readOffLines(reader);

@@ -264,23 +264,23 @@ TEST_F(GltfFiles, ReadsFilesByPathWithBuffersBesideThem) {
   json doc = a.doc;
   doc["buffers"] = {{{"byteLength", a.bin.size()}, {"uri", "sub/quad%20data.bin"}}};
   writeText("quad.gltf", doc.dump());
-  EXPECT_EQ(readGltf(path("quad.glb")).mesh.positions, readGltf(path("quad.gltf")).mesh.positions);
-  EXPECT_EQ(readGltf(path("quad.gltf")).mesh.texcoords[0], Vec3(0, 0.75, 0));
+  EXPECT_EQ(readMesh(path("quad.glb")).mesh.positions, readMesh(path("quad.gltf")).mesh.positions);
+  EXPECT_EQ(readMesh(path("quad.gltf")).mesh.texcoords[0], Vec3(0, 0.75, 0));
   // ".." may lead out of the file's folder: asset folders share buffers so.
   doc["buffers"][0]["uri"] = "../sub/quad%20data.bin";
   writeText("sub/up.gltf", doc.dump());
-  EXPECT_EQ(readGltf(path("sub/up.gltf")).mesh.positions.size(), 4u);
+  EXPECT_EQ(readMesh(path("sub/up.gltf")).mesh.positions.size(), 4u);
   doc["buffers"][0]["uri"] = "sub/quad%20data.bin";
   // A GLB is known by its magic whatever its name.
   std::ofstream(path("quad.bin.gltf"), std::ios::binary) << a.glb();
-  EXPECT_EQ(readGltf(path("quad.bin.gltf")).mesh.triangles.size(), 2u);
+  EXPECT_EQ(readMesh(path("quad.bin.gltf")).mesh.triangles.size(), 2u);
 
   // The buffer missing, too short, and named by an absolute path or a URL.
   doc["buffers"][0]["uri"] = "missing.bin";
   writeText("bad.gltf", doc.dump());
   const auto errorOfFile = [&](const std::string& file) {
     try {
-      readGltf(file);
+      readMesh(file);
     } catch (const InputError& e) {
       return std::string(e.what());
     }
@@ -561,7 +561,7 @@ TEST_F(GltfFiles, GltfAndBinRoundTripOnMeshesLikeReal) {
       writeGltf(text, binary, "m data.bin", mesh, &uvs);
     }
     EXPECT_NE(readText(path("m.gltf")).find("\"uri\": \"m%20data.bin\""), std::string::npos);
-    expectSameCorners(mesh, uvs, readGltf(path("m.gltf")).mesh);
+    expectSameCorners(mesh, uvs, readMesh(path("m.gltf")).mesh);
   }
 }
 
