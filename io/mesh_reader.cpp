@@ -564,8 +564,10 @@ class ProgressBuffer : public std::streambuf {
   // Large reads go straight from the source, past the buffer.
   std::streamsize xsgetn(char* out, std::streamsize n) override {
     std::streamsize done = std::min<std::streamsize>(n, egptr() - gptr());
-    std::memcpy(out, gptr(), std::size_t(done));
-    gbump(int(done));
+    if (done > 0) {  // before the first read there is no buffer at all (gptr() is null)
+      std::memcpy(out, gptr(), std::size_t(done));
+      gbump(int(done));
+    }
     if (done < n) {
       const std::streamsize got = source_.sgetn(out + done, n - done);
       if (got > 0) progress_.advance(std::uint64_t(got)), done += got;
