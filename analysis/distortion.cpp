@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "core/error.h"
+#include "core/parallel.h"
 
 namespace uvtk::analysis {
 
@@ -99,7 +101,8 @@ double measureLengthScale(const Mesh& mesh) {
   return std::ldexp(1.0, -std::ilogb(extent));
 }
 
-std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const DistortionOptions& options) {
+std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const DistortionOptions& options,
+                                         int threads) {
   const std::size_t faceCount = mesh.triangles.size();
   UVTK_CHECK(uv.uv.size() == 3 * faceCount && uv.faceFlags.size() == faceCount);
   UVTK_CHECK(uv.cornerInvalid.empty() || uv.cornerInvalid.size() == 3 * faceCount);
@@ -108,63 +111,83 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
     const Triangle& t = mesh.triangles[f];
     return Edges(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], scale);
   };
-
-  std::vector<TriangleAreas> areas(faceCount);
-  std::vector<FaceDistortion> faces(faceCount);
   // Turned away from the projector: mirrored by design.
-  auto turnedAway = [&](std::size_t f) {
-    return options.projectionDirection && areas[f].normal.dot(*options.projectionDirection) < 0.0;
+  auto turnedAway = [&](const TriangleAreas& a) {
+    return options.projectionDirection && a.normal.dot(*options.projectionDirection) < 0.0;
+  };
+
+  // Faces in fixed chunks, so that the vote adds up in the same order whatever the thread count.
+  constexpr std::size_t kChunk = std::size_t(1) << 16;
+  const int chunks = int((faceCount + kChunk - 1) / kChunk);
+  const auto forEachChunk = [&](auto&& work) {
+    parallelFor(chunks, threads, [&](int c) {
+      const std::size_t begin = std::size_t(c) * kChunk;
+      work(c, begin, std::min(faceCount, begin + kChunk));
+    });
   };
 
   // First pass: areas, and the statuses that need no mesh-wide decision.
-  double vote = 0.0;  // 3D area voting for counter-clockwise UV winding minus area against it
-  for (std::size_t f = 0; f < faceCount; ++f) {
-    const Vec2* t = &uv.uv[3 * f];
-    const TriangleAreas& a = areas[f] = triangleAreas(edges(f), t[0], t[1], t[2]);
-    bool invalid = uv.faceHas(f, kFaceInvalid);
-    for (int k = 0; k < 3 && !uv.cornerInvalid.empty(); ++k) invalid = invalid || uv.cornerInvalid[3 * f + k] != 0;
-    FaceDistortion& face = faces[f];
-    face.area3d = a.area3d;
-    face.areaUv = invalid ? 0.0 : std::fabs(a.signedAreaUv);
-    if (invalid) {
-      face.status = FaceStatus::Invalid;
-    } else if (a.area3d <= kZeroAreaRelative * a.longestEdge3d) {
-      face.status = FaceStatus::ZeroArea3d;
-    } else if (face.areaUv <= kZeroAreaRelative * a.longestEdgeUv) {
-      face.status = FaceStatus::ZeroAreaUv;
-    } else {
-      face.status = FaceStatus::Ok;  // until the majority winding is known
-      vote += (a.signedAreaUv > 0.0) != turnedAway(f) ? a.area3d : -a.area3d;
+  std::vector<FaceDistortion> faces(faceCount);
+  enum : std::uint8_t { kCounterClockwise = 1, kClockwise = 2, kTurnedAway = 4 };
+  std::vector<std::uint8_t> orientation(faceCount, 0);  // of the ok faces, for the second pass
+  std::vector<double> votes(std::size_t(chunks), 0.0);  // per chunk, 3D area voting for counter-clockwise UV winding minus area against it
+  forEachChunk([&](int c, std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      const Vec2* t = &uv.uv[3 * f];
+      const TriangleAreas a = triangleAreas(edges(f), t[0], t[1], t[2]);
+      bool invalid = uv.faceHas(f, kFaceInvalid);
+      for (int k = 0; k < 3 && !uv.cornerInvalid.empty(); ++k) invalid = invalid || uv.cornerInvalid[3 * f + k] != 0;
+      FaceDistortion& face = faces[f];
+      face.area3d = a.area3d;
+      face.areaUv = invalid ? 0.0 : std::fabs(a.signedAreaUv);
+      if (invalid) {
+        face.status = FaceStatus::Invalid;
+      } else if (a.area3d <= kZeroAreaRelative * a.longestEdge3d) {
+        face.status = FaceStatus::ZeroArea3d;
+      } else if (face.areaUv <= kZeroAreaRelative * a.longestEdgeUv) {
+        face.status = FaceStatus::ZeroAreaUv;
+      } else {
+        face.status = FaceStatus::Ok;  // until the majority winding is known
+        votes[std::size_t(c)] += (a.signedAreaUv > 0.0) != turnedAway(a) ? a.area3d : -a.area3d;
+        orientation[f] = std::uint8_t((a.signedAreaUv > 0.0 ? kCounterClockwise : 0) |
+                                      (a.signedAreaUv < 0.0 ? kClockwise : 0) | (turnedAway(a) ? kTurnedAway : 0));
+      }
     }
-  }
+  });
+  double vote = 0.0;
+  for (double v : votes) vote += v;
   const double majority = vote >= 0.0 ? 1.0 : -1.0;
 
   // Second pass: pole and mirrored faces, and the measures of every face with a Jacobian.
-  for (std::size_t f = 0; f < faceCount; ++f) {
-    FaceDistortion& face = faces[f];
-    if (face.status != FaceStatus::Ok) continue;
-    const bool mirrored = areas[f].signedAreaUv * majority < 0.0;
-    if (uv.faceHas(f, kFacePole)) face.status = FaceStatus::PoleFace;
-    else if (mirrored) face.status = turnedAway(f) ? FaceStatus::Backfacing : FaceStatus::Flipped;
-    const Vec2* t = &uv.uv[3 * f];
-    const Eigen::Matrix2d j = jacobian(edges(f), t[0], t[1], t[2]);
-    singularValues(j, face.sigmaMax, face.sigmaMin);
-    face.sigmaMin *= majority;
-    // Sander et al. 2001, "Texture stretch metric": UV -> surface has singular values G = 1/|s2|, g = 1/s1.
-    const double bigG = 1.0 / std::fabs(face.sigmaMin), smallG = 1.0 / face.sigmaMax;
-    // Sander et al. 2001, "Texture stretch metric": L2 = sqrt((G^2 + g^2) / 2), the root-mean-square stretch.
-    face.l2Stretch = std::sqrt(0.5 * (bigG * bigG + smallG * smallG));
-    // Sander et al. 2001, "Texture stretch metric": Linf = G, the greatest stretch in any direction.
-    face.linfStretch = bigG;
-    // Conformal distortion: s1/|s2|, the dilatation of a quasi-conformal map, 1 where angles are preserved.
-    face.angleDistortion = face.sigmaMax / std::fabs(face.sigmaMin);
-    face.areaRatio = face.areaUv / face.area3d;
-  }
+  forEachChunk([&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      FaceDistortion& face = faces[f];
+      if (face.status != FaceStatus::Ok) continue;
+      const Vec2* t = &uv.uv[3 * f];
+      const bool mirrored = (orientation[f] & (majority > 0.0 ? kClockwise : kCounterClockwise)) != 0;
+      if (uv.faceHas(f, kFacePole)) face.status = FaceStatus::PoleFace;
+      else if (mirrored) face.status = orientation[f] & kTurnedAway ? FaceStatus::Backfacing : FaceStatus::Flipped;
+      const Eigen::Matrix2d j = jacobian(edges(f), t[0], t[1], t[2]);
+      singularValues(j, face.sigmaMax, face.sigmaMin);
+      face.sigmaMin *= majority;
+      // Sander et al. 2001, "Texture stretch metric": UV -> surface has singular values G = 1/|s2|, g = 1/s1.
+      const double bigG = 1.0 / std::fabs(face.sigmaMin), smallG = 1.0 / face.sigmaMax;
+      // Sander et al. 2001, "Texture stretch metric": L2 = sqrt((G^2 + g^2) / 2), the root-mean-square stretch.
+      face.l2Stretch = std::sqrt(0.5 * (bigG * bigG + smallG * smallG));
+      // Sander et al. 2001, "Texture stretch metric": Linf = G, the greatest stretch in any direction.
+      face.linfStretch = bigG;
+      // Conformal distortion: s1/|s2|, the dilatation of a quasi-conformal map, 1 where angles are preserved.
+      face.angleDistortion = face.sigmaMax / std::fabs(face.sigmaMin);
+      face.areaRatio = face.areaUv / face.area3d;
+    }
+  });
 
   // Third pass: the area ratio normalised by the ok faces' totals, r = (Auv/A3) (sum(A3)/sum(Auv)).
   const double surfacePerUv = okAreaTotals(faces).surfacePerUv();
-  for (FaceDistortion& face : faces)
-    if (isMeasured(face.status)) face.areaDistortion = std::log2(face.areaRatio * surfacePerUv);
+  forEachChunk([&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f)
+      if (isMeasured(faces[f].status)) faces[f].areaDistortion = std::log2(faces[f].areaRatio * surfacePerUv);
+  });
   return faces;
 }
 

@@ -74,7 +74,9 @@ struct DistortionOptions {
 double measureLengthScale(const Mesh& mesh);
 
 // One FaceDistortion per triangle of `mesh`. Precondition: `uv` has 3 corners per triangle.
-std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const DistortionOptions& options = {});
+// `threads` (0: one per core) share the faces; the result does not depend on them.
+std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const DistortionOptions& options = {},
+                                         int threads = 0);
 
 // The sums sum(A3) and sum(Auv) over the status-ok faces: the normalisation of every mesh-wide
 // value. Faces of any other status are reported by count only.

@@ -186,9 +186,9 @@ void applyThresholds(Judgement& j, const Thresholds& thresholds) {
 Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& options) {
   UVTK_CHECK(uv.uv.size() == 3 * mesh.faceCount() && uv.faceFlags.size() == mesh.faceCount());
   Judgement j;
-  j.faces = measureFaces(mesh, uv, options.distortion);
+  j.faces = measureFaces(mesh, uv, options.distortion, options.threads);
   j.summary = summarize(mesh, uv, j.faces, options.overlapResolution,
-                        options.poleVertices ? &*options.poleVertices : nullptr);
+                        options.poleVertices ? &*options.poleVertices : nullptr, options.threads);
 
   // Faces by status and by flag, their 3D areas, and the invalid corners by reason.
   std::array<double, kFaceStatusCount> statusArea{};

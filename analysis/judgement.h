@@ -70,6 +70,7 @@ struct JudgementOptions {
   bool wrapsU = false;                       // u has period 1 (cylinder, sphere): seams are expected, not failed
   int overlapResolution = 1024;              // pixels across the raster that measures overlap
   Thresholds thresholds;
+  int threads = 0;                           // 0: one per core; the judgement does not depend on it
 };
 
 struct Judgement {

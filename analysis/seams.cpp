@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <utility>
 
 #include "core/error.h"
@@ -25,6 +26,34 @@ struct HalfEdge {
   int lower, higher;  // vertex indices, lower < higher
   std::size_t cornerLower, cornerHigher;  // indices into uv.uv
 };
+
+// The half-edge leaving corner c = 3 f + k of face f (towards corner k + 1).
+HalfEdge halfEdge(const Mesh& mesh, std::size_t c) {
+  const std::size_t f = c / 3, k = c % 3, next = (k + 1) % 3;
+  HalfEdge e{mesh.triangles[f][int(k)], mesh.triangles[f][int(next)], c, 3 * f + next};
+  if (e.lower > e.higher) std::swap(e.lower, e.higher), std::swap(e.cornerLower, e.cornerHigher);
+  return e;
+}
+
+// Every face's three half-edges (named by their corner) ordered by (lower, higher, corner), so
+// that the sides of one edge are adjacent: a counting sort by the lower vertex, then each vertex's
+// few half-edges sorted by the higher one. Linear where a comparison sort of 3 F half-edges is not.
+std::vector<std::uint32_t> sortedHalfEdges(const Mesh& mesh) {
+  const std::size_t corners = 3 * mesh.triangles.size();
+  UVTK_CHECK(corners <= std::numeric_limits<std::uint32_t>::max());
+  std::vector<std::uint32_t> start(mesh.positions.size() + 1, 0);
+  for (std::size_t c = 0; c < corners; ++c) ++start[std::size_t(halfEdge(mesh, c).lower) + 1];
+  for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
+  std::vector<std::uint32_t> order(corners);
+  std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+  for (std::size_t c = 0; c < corners; ++c) order[next[std::size_t(halfEdge(mesh, c).lower)]++] = std::uint32_t(c);
+  for (std::size_t v = 0; v + 1 < start.size(); ++v)
+    std::sort(order.begin() + start[v], order.begin() + start[v + 1], [&](std::uint32_t a, std::uint32_t b) {
+      const int ha = halfEdge(mesh, a).higher, hb = halfEdge(mesh, b).higher;
+      return ha != hb ? ha < hb : a < b;
+    });
+  return order;
+}
 
 }  // namespace
 
@@ -59,27 +88,18 @@ std::vector<SeamEdge> seamEdgeList(const Mesh& mesh, const UvMap& uv, const std:
     isPole[static_cast<std::size_t>(v)] = 1;
   }
 
-  // Every face's three edges, sorted so that the sides of one edge are adjacent.
-  std::vector<HalfEdge> halfEdges;
-  halfEdges.reserve(3 * mesh.triangles.size());
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int next = (k + 1) % 3;
-      HalfEdge e{mesh.triangles[f][k], mesh.triangles[f][next], 3 * f + std::size_t(k), 3 * f + std::size_t(next)};
-      if (e.lower > e.higher) std::swap(e.lower, e.higher), std::swap(e.cornerLower, e.cornerHigher);
-      halfEdges.push_back(e);
-    }
-  std::sort(halfEdges.begin(), halfEdges.end(), [](const HalfEdge& a, const HalfEdge& b) {
-    return std::pair(a.lower, a.higher) < std::pair(b.lower, b.higher);
-  });
-
+  const std::vector<std::uint32_t> halfEdges = sortedHalfEdges(mesh);
   std::vector<SeamEdge> seams;
   for (std::size_t first = 0, end; first < halfEdges.size(); first = end) {
-    const HalfEdge& a = halfEdges[first];
+    const HalfEdge a = halfEdge(mesh, halfEdges[first]);
     end = first + 1;
-    while (end < halfEdges.size() && halfEdges[end].lower == a.lower && halfEdges[end].higher == a.higher) ++end;
+    while (end < halfEdges.size()) {
+      const HalfEdge e = halfEdge(mesh, halfEdges[end]);
+      if (e.lower != a.lower || e.higher != a.higher) break;
+      ++end;
+    }
     if (end - first != 2) continue;  // a boundary or non-manifold edge
-    const HalfEdge& b = halfEdges[first + 1];
+    const HalfEdge b = halfEdge(mesh, halfEdges[first + 1]);
     if (!cornerValid(uv, a.cornerLower) || !cornerValid(uv, a.cornerHigher) || !cornerValid(uv, b.cornerLower) ||
         !cornerValid(uv, b.cornerHigher))
       continue;

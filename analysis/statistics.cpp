@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
+#include <optional>
 
 #include "core/error.h"
 
@@ -23,6 +23,45 @@ double Histogram::edge(int i) const {
   return spacing == BinSpacing::Log2 ? std::exp2(x) : x;
 }
 
+namespace {
+
+struct Weighted {
+  double value, weight;
+};
+
+// Where a weighted percentile lies in the items: sorting would put `item` there, with the items
+// left of it no larger and carrying `weightBefore`, those right of it no smaller.
+struct Selected {
+  Weighted* item;
+  double weightBefore;
+};
+
+// The item of the smallest value v in [first, last) such that `below` plus the weight of the
+// items <= v reaches `target` (the lower inverse of the weighted distribution), by selection: each
+// round places one item where sorting would put it and keeps the half that holds the answer, O(n)
+// on average where sorting is O(n log n). Nothing when even the whole weight stays short of the
+// target. `below` is the weight of the items before `first`, all no larger than those after it.
+std::optional<Selected> weightedSelect(Weighted* first, Weighted* last, double below, double target) {
+  const auto byValue = [](const Weighted& a, const Weighted& b) { return a.value < b.value; };
+  while (first != last) {
+    Weighted* middle = first + (last - first) / 2;
+    std::nth_element(first, middle, last, byValue);
+    double left = below;  // the weight before `middle`
+    for (const Weighted* w = first; w != middle; ++w) left += w->weight;
+    if (left >= target) {
+      last = middle;  // reached before the middle: the answer lies left of it
+    } else if (left + middle->weight >= target) {
+      return Selected{middle, left};
+    } else {
+      below = left + middle->weight;
+      first = middle + 1;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 Statistics weightedStatistics(const std::vector<double>& values, const std::vector<double>& weights,
                               BinSpacing spacing, int bins) {
   UVTK_CHECK(values.size() == weights.size() && bins >= 1);
@@ -31,28 +70,28 @@ Statistics weightedStatistics(const std::vector<double>& values, const std::vect
   s.histogram.weightFraction.assign(static_cast<std::size_t>(bins), 0.0);
   if (values.empty()) return s;
 
-  std::vector<std::size_t> order(values.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
-  s.min = values[order.front()];
-  s.max = values[order.back()];
+  const auto [lowest, highest] = std::minmax_element(values.begin(), values.end());
+  s.min = *lowest;
+  s.max = *highest;
   UVTK_CHECK(spacing == BinSpacing::Linear || s.min > 0.0);
   double weightedSum = 0.0;
   for (std::size_t i = 0; i < values.size(); ++i) s.totalWeight += weights[i], weightedSum += weights[i] * values[i];
   if (s.totalWeight <= 0.0) return s;
   s.mean = weightedSum / s.totalWeight;
 
-  // Weighted percentile: the first value, in ascending order, at which the running weight
-  // reaches fraction * total.
+  // Weighted percentiles by selection.
+  std::vector<Weighted> items(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) items[i] = {values[i], weights[i]};
   const double fractions[3] = {0.50, 0.90, 0.99};
   double* const percentiles[3] = {&s.p50, &s.p90, &s.p99};
-  double running = 0.0;
-  int next = 0;
-  for (std::size_t i = 0; i < order.size() && next < 3; ++i) {
-    running += weights[order[i]];
-    while (next < 3 && running >= fractions[next] * s.totalWeight) *percentiles[next++] = values[order[i]];
+  Selected from{items.data(), 0.0};  // each percentile lies at or right of the one before
+  for (int k = 0; k < 3; ++k) {
+    const std::optional<Selected> p =
+        weightedSelect(from.item, items.data() + items.size(), from.weightBefore, fractions[k] * s.totalWeight);
+    // Rounding may leave the whole weight short of the total: then the largest value.
+    *percentiles[k] = p ? p->item->value : s.max;
+    if (p) from = *p;
   }
-  while (next < 3) *percentiles[next++] = s.max;  // rounding left the running sum short of the total
 
   Histogram& h = s.histogram;
   h.lo = s.min;

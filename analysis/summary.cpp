@@ -4,11 +4,12 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/parallel.h"
 
 namespace uvtk::analysis {
 
 Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDistortion>& faces, int overlapResolution,
-                  const std::vector<int>* poleVertices) {
+                  const std::vector<int>* poleVertices, int threads) {
   UVTK_CHECK(faces.size() == mesh.triangles.size() && uv.uv.size() == 3 * faces.size() &&
              uv.faceFlags.size() == faces.size());
   Summary s;
@@ -36,10 +37,17 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
     s.l2Stretch = std::sqrt(l2Squares / totals.surface) * normalisation;
     s.linfStretch = *std::max_element(linf.begin(), linf.end());
   }
-  s.angleDistortion = weightedStatistics(angles, weights, BinSpacing::Log2);
-  s.areaDistortion = weightedStatistics(areas, weights, BinSpacing::Linear);
-  s.l2Stretches = weightedStatistics(l2, weights, BinSpacing::Log2);
-  s.linfStretches = weightedStatistics(linf, weights, BinSpacing::Log2);
+  const struct {
+    Statistics* out;
+    const std::vector<double>* values;
+    BinSpacing spacing;
+  } measures[] = {{&s.angleDistortion, &angles, BinSpacing::Log2},
+                  {&s.areaDistortion, &areas, BinSpacing::Linear},
+                  {&s.l2Stretches, &l2, BinSpacing::Log2},
+                  {&s.linfStretches, &linf, BinSpacing::Log2}};
+  parallelFor(4, threads, [&](int k) {
+    *measures[k].out = weightedStatistics(*measures[k].values, weights, measures[k].spacing);
+  });
 
   s.poleVertices = poleVertices ? *poleVertices : fannedPoleVertices(mesh, uv);
   std::sort(s.poleVertices.begin(), s.poleVertices.end());

@@ -49,6 +49,6 @@ struct Summary {
 // vertices (a projector knows them); null: the fanned poles found in the UVs (fannedPoleVertices).
 // Preconditions: matching sizes.
 Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDistortion>& faces,
-                  int overlapResolution = 1024, const std::vector<int>* poleVertices = nullptr);
+                  int overlapResolution = 1024, const std::vector<int>* poleVertices = nullptr, int threads = 0);
 
 }  // namespace uvtk::analysis

@@ -4,18 +4,23 @@
 //   pole and seam repair, summary.
 // - atan2: the arctangent alone over the sphere's (y, x) in each precision and math mode
 //   (param::atan2Block), the cost that dominates the sphere and cylinder.
+// - kernel: the narrow kernel (param::mapUvs) on local points made once outside the timing, and
+//   mapVertices (the move to the local frame, the kernel, the wide records) on 1 and 2 threads.
 // `per_vertex` is seconds per vertex, printed with an SI prefix: "12.3n" is 12.3 ns.
 #include <benchmark/benchmark.h>
 
+#include <type_traits>
 #include <vector>
 
 #include "meshes/generators.h"
 #include "param/batch_atan2.h"
 #include "param/projector.h"
+#include "param/uv_kernel.h"
 
 namespace {
 
 using namespace uvtk;
+using param::ProjectorOptions;
 using param::RayKind;
 using param::SurfaceKind;
 
@@ -55,6 +60,62 @@ void atan2OverTheSphere(benchmark::State& state, MathMode math) {
 
 void atan2_double(benchmark::State& state, MathMode math) { atan2OverTheSphere<double>(state, math); }
 void atan2_float(benchmark::State& state, MathMode math) { atan2OverTheSphere<float>(state, math); }
+
+ProjectorOptions kernelOptions(SurfaceKind surface, Precision precision, MathMode math) {
+  param::ProjectorOptions options;
+  options.surface = surface;
+  options.arithmetic = {precision, math};
+  return options;
+}
+
+template <class T>
+void narrowKernel(benchmark::State& state, SurfaceKind surface, MathMode math) {
+  const Mesh& mesh = sphere();
+  const param::ProjectorOptions options =
+      kernelOptions(surface, std::is_same_v<T, float> ? Precision::Float : Precision::Double, math);
+  const Affine3 frame = param::fitPlacement(mesh.positions, surface, options.placement);
+  param::LocalPoints<T> points;
+  param::toLocal(frame, mesh.positions, {}, points);
+  param::UvArrays<T> out;
+  param::mapUvs(options, frame, points, out);  // pages the output in
+  for (auto _ : state) {
+    param::mapUvs(options, frame, points, out, int(state.range(0)));
+    benchmark::DoNotOptimize(out.u.data());
+  }
+  setPerVertex(state, mesh.vertexCount());
+}
+
+void kernel_float(benchmark::State& state, SurfaceKind surface, MathMode math) {
+  narrowKernel<float>(state, surface, math);
+}
+void kernel_double(benchmark::State& state, SurfaceKind surface, MathMode math) {
+  narrowKernel<double>(state, surface, math);
+}
+
+void map_vertices(benchmark::State& state, SurfaceKind surface, Precision precision, MathMode math) {
+  const Mesh& mesh = sphere();
+  const param::ProjectorOptions options = kernelOptions(surface, precision, math);
+  const Affine3 frame = param::fitPlacement(mesh.positions, surface, options.placement);
+  std::vector<param::VertexUv> out;
+  param::mapVertices(options, frame, mesh.positions, {}, out);
+  for (auto _ : state) {
+    param::mapVertices(options, frame, mesh.positions, {}, out, int(state.range(0)));
+    benchmark::DoNotOptimize(out.data());
+  }
+  setPerVertex(state, mesh.vertexCount());
+}
+
+BENCHMARK_CAPTURE(kernel_double, sphere_exact, SurfaceKind::Sphere, MathMode::Exact)->Arg(1)->Arg(2)->UseRealTime();
+BENCHMARK_CAPTURE(kernel_double, sphere_fast, SurfaceKind::Sphere, MathMode::Fast)->Arg(1)->Arg(2)->UseRealTime();
+BENCHMARK_CAPTURE(kernel_float, sphere_exact, SurfaceKind::Sphere, MathMode::Exact)->Arg(1)->Arg(2)->UseRealTime();
+BENCHMARK_CAPTURE(kernel_float, sphere_fast, SurfaceKind::Sphere, MathMode::Fast)->Arg(1)->Arg(2)->UseRealTime();
+BENCHMARK_CAPTURE(kernel_float, cylinder_fast, SurfaceKind::Cylinder, MathMode::Fast)->Arg(1)->Arg(2)->UseRealTime();
+BENCHMARK_CAPTURE(kernel_float, plane, SurfaceKind::Plane, MathMode::Exact)->Arg(1)->Arg(2)->UseRealTime();
+BENCHMARK_CAPTURE(kernel_double, two_plane, SurfaceKind::TwoPlane, MathMode::Exact)->Arg(1)->Arg(2)->UseRealTime();
+BENCHMARK_CAPTURE(map_vertices, sphere_double_exact, SurfaceKind::Sphere, Precision::Double, MathMode::Exact)
+    ->Arg(1)->Arg(2)->UseRealTime();
+BENCHMARK_CAPTURE(map_vertices, sphere_float_fast, SurfaceKind::Sphere, Precision::Float, MathMode::Fast)
+    ->Arg(1)->Arg(2)->UseRealTime();
 
 BENCHMARK_CAPTURE(atan2_double, exact, MathMode::Exact)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(atan2_double, fast, MathMode::Fast)->Unit(benchmark::kMillisecond);

@@ -46,6 +46,7 @@ void checkMapMemory(const std::string& input) {
 }
 
 MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
+  const auto start = std::chrono::steady_clock::now();
   StageClock clock("uvtk map", showStages);
   checkMapMemory(paths.input);
   clock.start("reading", paths.input);
@@ -54,12 +55,12 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   const nlohmann::json inputSummary = inputJson(paths.input, input);
 
   clock.start("mapping", std::to_string(input.mesh.faceCount()) + " faces");
-  const MappedMesh mapped = mapByProjector(std::move(input.mesh), job.projector, job.seamPlaceAuto);
+  const MappedMesh mapped = mapByProjector(std::move(input.mesh), job.projector, job.seamPlaceAuto, job.threads);
   const double mapMs = clock.stop();
   const param::MappingSummary& s = mapped.projection->summary;
 
   clock.start("judging", std::to_string(mapped.mesh.faceCount()) + " faces");
-  const analysis::Judgement judgement = mapped.judge(job.thresholds, job.overlapResolution);
+  const analysis::Judgement judgement = mapped.judge(job.thresholds, job.overlapResolution, job.threads);
   const double judgeMs = clock.stop();
 
   clock.start("writing", paths.output);
@@ -71,7 +72,11 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
 
   if (!paths.json.empty()) {
     nlohmann::json j = mapSummaryJson(mapped, judgement, inputSummary, paths.output);
-    j["milliseconds"] = {{"read", readMs}, {"map", mapMs}, {"judge", judgeMs}, {"write", writeMs}};
+    // The mapping stage split as the projection measured it: seams (repair and summary) and the
+    // rest (placement, both stages, --seam-place auto).
+    const double seamsMs = mapped.projection->milliseconds.seams;
+    j["milliseconds"] = {{"read", readMs},   {"map", mapMs - seamsMs}, {"seams", seamsMs},
+                         {"judge", judgeMs}, {"write", writeMs},       {"total", millisecondsSince(start)}};
     outputs.writeText(paths.json, j.dump(2) + "\n");
   }
   outputs.publish();
@@ -222,6 +227,8 @@ BatchResult mapBatch(const std::vector<std::string>& inputs, const std::string& 
   // end: a batch is many independent runs (an interrupted one leaves the meshes done so far, each
   // whole), not one output.
   const std::vector<MeshPaths> paths = batchPaths(inputs, output, json, job.batchFormat);
+  MapJob each = job;
+  if (each.threads == 0) each.threads = 1;  // the meshes run side by side
   createFolder(output);
   if (!json.empty()) createFolder(json);
   const auto start = std::chrono::steady_clock::now();
@@ -230,7 +237,7 @@ BatchResult mapBatch(const std::vector<std::string>& inputs, const std::string& 
   {
     Progress progress("mapping", paths.size(), "meshes");
     parallelFor(int(paths.size()), threads, [&](int i) {
-      outcomes[std::size_t(i)] = mapBatchMesh(paths[std::size_t(i)], job, quiet);
+      outcomes[std::size_t(i)] = mapBatchMesh(paths[std::size_t(i)], each, quiet);
       progress.advance();
     });
   }

@@ -21,6 +21,9 @@ struct MapJob {
   io::MeshFormat batchFormat = io::MeshFormat::obj;  // what a batch writes, OUTDIR/STEM.obj by default
   analysis::Thresholds thresholds;
   int overlapResolution = 1024;
+  // Threads each mesh is read, mapped, judged and written with; 0: one per hardware thread for a
+  // single mesh, one for each mesh of a batch (whose meshes run side by side).
+  int threads = 0;
 };
 
 // Memory before work: a file the machine cannot map is refused (InputError) before it is read,
@@ -59,7 +62,7 @@ struct BatchResult {
 
 // Every mesh of `inputs` into the folder `output` as STEM.obj (and STEM.json with batch.json in
 // the folder `json` unless it is empty), `jobs` at a time (0: one per hardware thread), each
-// mapped on one thread; a failing mesh does not stop the others, and is printed. Unless `quiet`,
+// mapped on `job.threads` threads (0: one); a failing mesh does not stop the others, and is printed. Unless `quiet`,
 // each mesh's summary line is printed too. Throws UsageError before any work when two inputs share
 // a stem, when an output would replace an input, or when a summary would be named batch.json.
 BatchResult mapBatch(const std::vector<std::string>& inputs, const std::string& output, const std::string& json,

@@ -19,13 +19,15 @@ analysis::DistortionOptions MappedMesh::distortionOptions() const {
   return options;
 }
 
-analysis::Judgement MappedMesh::judge(const analysis::Thresholds& thresholds, int overlapResolution) const {
+analysis::Judgement MappedMesh::judge(const analysis::Thresholds& thresholds, int overlapResolution,
+                                      int threads) const {
   analysis::JudgementOptions options;
   options.distortion = distortionOptions();
   if (projection) options.poleVertices = projection->summary.poleVertexList;
   options.wrapsU = projector && exact && exact->wrapsS;  // a wrapping projector's seam is expected
   options.overlapResolution = overlapResolution;
   options.thresholds = thresholds;
+  options.threads = threads;
   return analysis::judge(mesh, uv, options);
 }
 
@@ -119,13 +121,13 @@ UvMap fileUvs(const Mesh& mesh, const std::string& path) {
   return uv;
 }
 
-MappedMesh mapByProjector(Mesh mesh, param::ProjectorOptions options, bool seamPlaceAuto) {
+MappedMesh mapByProjector(Mesh mesh, param::ProjectorOptions options, bool seamPlaceAuto, int threads) {
   MappedMesh out;
   if (seamPlaceAuto) {
     out.seamPlacement = param::placeSeam(mesh, options);
     options.placement.turnDegrees = out.seamPlacement->turnDegrees;
   }
-  out.projection = param::project(std::move(mesh), options);
+  out.projection = param::project(std::move(mesh), options, threads);
   out.mesh = std::move(out.projection->mesh);
   out.uv = std::move(out.projection->uv);
   out.projector = options;

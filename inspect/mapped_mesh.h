@@ -40,7 +40,8 @@ struct MappedMesh {
   // The judgement of these UVs (analysis/judgement.h): per-face measures, counts, the summary
   // with the projector's own pole vertices (for other sources the fanned poles found in the UVs),
   // and the verdict under `thresholds`.
-  analysis::Judgement judge(const analysis::Thresholds& thresholds = {}, int overlapResolution = 1024) const;
+  analysis::Judgement judge(const analysis::Thresholds& thresholds = {}, int overlapResolution = 1024,
+                            int threads = 0) const;
   // What the views draw: this mesh and its UVs with their judgement (null for views without
   // measures; it must outlive the result).
   views::ViewInput viewInput(const analysis::Judgement* judgement) const;
@@ -73,8 +74,8 @@ struct ViewCamera {
 // Throws UsageError when the mesh has no vt at all, naming `path`.
 UvMap fileUvs(const Mesh& mesh, const std::string& path);
 
-// `mesh` mapped by `options` (after --seam-place auto when `seamPlaceAuto`).
-MappedMesh mapByProjector(Mesh mesh, param::ProjectorOptions options, bool seamPlaceAuto);
+// `mesh` mapped by `options` (after --seam-place auto when `seamPlaceAuto`) on `threads` (0: one per core).
+MappedMesh mapByProjector(Mesh mesh, param::ProjectorOptions options, bool seamPlaceAuto, int threads = 0);
 
 // `mesh` with OpenGL texgen's (s, t, r, q).
 MappedMesh mapByTexgen(Mesh mesh, const texgen::TexgenOptions& options);

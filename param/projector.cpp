@@ -1,13 +1,17 @@
 #include "param/projector.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
 
 #include "core/error.h"
+#include "core/parallel.h"
 #include "core/progress.h"
+#include "core/stopwatch.h"
 #include "param/sample_evaluator.h"
 #include "param/seams.h"
+#include "param/uv_kernel.h"
 
 namespace uvtk::param {
 
@@ -91,8 +95,10 @@ void evaluateCube(const CubeSurfaceT<T>& surface, const M& mapping, const Mesh& 
 }
 
 template <class T, class S, class M>
-Evaluated evaluateCorners(const S& surface, const M& mapping, const Mesh& mesh, const LocalFrameT<T>& frame,
-                          const ProjectorOptions& o, const SensibleRangeT<T>& range) {
+Evaluated evaluateCorners(const S& surface, const M& mapping, const Mesh& mesh, const Affine3& localFromObject,
+                          const ProjectorOptions& o, const std::optional<Eigen::AlignedBox3d>& sensible, int threads) {
+  const LocalFrameT<T> frame(localFromObject);
+  const SensibleRangeT<T> range(sensible);
   const std::size_t faceCount = mesh.triangles.size();
   Evaluated result;
   CornerField& c = result.corners;
@@ -110,38 +116,41 @@ Evaluated evaluateCorners(const S& surface, const M& mapping, const Mesh& mesh, 
                                             range);
     result.evaluateAt = [evaluate](const Vec3& position, const Vec3& normal) { return evaluate.at(position, normal); };
     const auto& triangles = mesh.triangles;
-    std::vector<VertexUv> samples(perCorner ? 3 * faceCount : mesh.positions.size());
-    Progress progress("mapping", samples.size(), perCorner ? "corners" : "vertices");
-    const auto evaluateAll = [&](auto positionOf) {
+    std::vector<VertexUv> samples;
+    if (perCorner) {  // the file's normals differ per corner: one sample each
+      samples.resize(3 * faceCount);
+      Progress progress("mapping", samples.size(), "corners");
       for (std::size_t start = 0; start < samples.size(); start += kSamplesPerReport) {
         const std::size_t count = std::min(kSamplesPerReport, samples.size() - start);
         evaluate(
-            count, [&](std::size_t i) -> const Vec3& { return positionOf(start + i); },
+            count, [&](std::size_t i) -> const Vec3& { return mesh.positions[triangles[(start + i) / 3][(start + i) % 3]]; },
             [&](std::size_t i) -> const Vec3& { return normals[start + i]; }, samples.data() + start);
         progress.advance(count);
       }
-    };
-    if (perCorner)
-      evaluateAll([&](std::size_t i) -> const Vec3& { return mesh.positions[triangles[i / 3][i % 3]]; });
-    else
-      evaluateAll([&](std::size_t i) -> const Vec3& { return mesh.positions[i]; });
-    // Spread the samples over the corners and mark invalid and pole faces on the way.
-    for (std::size_t f = 0; f < faceCount; ++f) {
-      const VertexUv* s[3];
-      bool invalid = false, pole = false;
-      for (int k = 0; k < 3; ++k) {
-        s[k] = &samples[perCorner ? 3 * f + k : triangles[f][k]];
-        c.uv[3 * f + k] = s[k]->uv;
-        c.state[3 * f + k] = s[k]->state;
-        c.reason[3 * f + k] = s[k]->reason;
-        invalid |= s[k]->state == CornerState::Invalid;
-        pole |= s[k]->state == CornerState::Pole;
-      }
-      if (invalid)
-        c.faceFlags[f] |= kFaceInvalid;
-      else if (S::kWraps && (pole || enclosesAxis(s[0]->axial, s[1]->axial, s[2]->axial)))
-        c.faceFlags[f] |= kFacePole;
+    } else {  // the narrow kernel on every vertex, the same bits as `evaluate`
+      mapVertices(o, localFromObject, mesh.positions, normals, samples, threads, sensible);
     }
+    // Spread the samples over the corners and mark invalid and pole faces on the way.
+    const int chunks = int((faceCount + kSamplesPerReport - 1) / kSamplesPerReport);
+    parallelFor(chunks, threads, [&](int chunk) {
+      const std::size_t begin = std::size_t(chunk) * kSamplesPerReport;
+      for (std::size_t f = begin; f < std::min(faceCount, begin + kSamplesPerReport); ++f) {
+        const VertexUv* s[3];
+        bool invalid = false, pole = false;
+        for (int k = 0; k < 3; ++k) {
+          s[k] = &samples[perCorner ? 3 * f + k : triangles[f][k]];
+          c.uv[3 * f + k] = s[k]->uv;
+          c.state[3 * f + k] = s[k]->state;
+          c.reason[3 * f + k] = s[k]->reason;
+          invalid |= s[k]->state == CornerState::Invalid;
+          pole |= s[k]->state == CornerState::Pole;
+        }
+        if (invalid)
+          c.faceFlags[f] |= kFaceInvalid;
+        else if (S::kWraps && (pole || enclosesAxis(s[0]->axial, s[1]->axial, s[2]->axial)))
+          c.faceFlags[f] |= kFacePole;
+      }
+    });
   }
   return result;
 }
@@ -198,14 +207,66 @@ decltype(auto) withPrecision(Precision precision, F&& f) {
 
 // Every corner of the mesh through the mapping in precision T, caps included.
 template <class T>
-Evaluated evaluateMesh(const Mesh& mesh, const Affine3& localFromObject, const ProjectorOptions& o) {
+Evaluated evaluateMesh(const Mesh& mesh, const Affine3& localFromObject, const ProjectorOptions& o, int threads) {
   const LocalFrameT<T> frame(localFromObject);
-  const SensibleRangeT<T> range(sensibleBox(mesh.positions, o, localFromObject));
-  Evaluated evaluated = visitProjector<T>(
-      o, frame, [&](const auto& s, const auto& m) { return evaluateCorners(s, m, mesh, frame, o, range); });
+  const std::optional<Eigen::AlignedBox3d> sensible = sensibleBox(mesh.positions, o, localFromObject);
+  Evaluated evaluated = visitProjector<T>(o, frame, [&](const auto& s, const auto& m) {
+    return evaluateCorners<T>(s, m, mesh, localFromObject, o, sensible, threads);
+  });
   if (o.surface == SurfaceKind::Cylinder && o.cylinderCaps)
     applyCaps(mesh, frame, CylinderCaps(localFromObject, o.capAngleDegrees), evaluated.corners);
   return evaluated;
+}
+
+// mapVertices on the narrow kernel: per run of kRun vertices (a thread's scratch stays in the
+// caches), the move to the local frame, the kernel, then the wide records with the exceptions'
+// states.
+template <class T>
+void mapVerticesThroughKernel(const ProjectorOptions& o, const Affine3& localFromObject,
+                              const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
+                              std::vector<VertexUv>& out, int threads,
+                              const std::optional<Eigen::AlignedBox3d>& sensible) {
+  const UvKernel<T> kernel(o, localFromObject, sensible);
+  const bool withNormals = kernel.needsNormals();
+  if (withNormals && normals.size() != positions.size())
+    throw UsageError("this O-mapping needs one normal per position");
+  const LocalFrameT<T> frame(localFromObject);
+  const std::size_t n = positions.size();
+  out.resize(n);
+  const int chunks = threadCount(threads);
+  const std::size_t size = (n / std::size_t(chunks) + 255) / 256 * 256;
+  parallelFor(chunks, chunks, [&](int chunk) {
+    constexpr std::size_t kRun = 4096;
+    const std::size_t begin = std::min(n, std::size_t(chunk) * size);
+    const std::size_t end = chunk + 1 == chunks ? n : std::min(n, begin + size);
+    std::vector<T> scratch(10 * kRun);
+    std::vector<UvException> exceptions;
+    for (std::size_t start = begin; start < end; start += kRun) {
+      KernelSpan<T> span;
+      span.count = std::min(kRun, end - start);
+      T* x = scratch.data();
+      T *y = x + kRun, *z = y + kRun, *nx = z + kRun, *ny = nx + kRun, *nz = ny + kRun;
+      span.x = x, span.y = y, span.z = z;
+      span.u = nz + kRun, span.v = span.u + kRun, span.axialX = span.v + kRun, span.axialY = span.axialX + kRun;
+      for (std::size_t i = 0; i < span.count; ++i) {
+        const Vec3T<T> p = frame.point(positions[start + i]);
+        x[i] = p.x(), y[i] = p.y(), z[i] = p.z();
+      }
+      if (withNormals) {
+        span.nx = nx, span.ny = ny, span.nz = nz;
+        for (std::size_t i = 0; i < span.count; ++i) {
+          const Vec3T<T> m = frame.normal(normals[start + i]);
+          nx[i] = m.x(), ny[i] = m.y(), nz[i] = m.z();
+        }
+      }
+      kernel.run(span, start, exceptions);
+      for (std::size_t i = 0; i < span.count; ++i)
+        out[start + i] = VertexUv{Vec2(double(span.u[i]), double(span.v[i])),
+                                  Vec2(double(span.axialX[i]), double(span.axialY[i])), CornerState::Ok, kCornerValid};
+      for (const UvException& e : exceptions) out[e.index].state = e.state, out[e.index].reason = e.reason;
+      exceptions.clear();
+    }
+  });
 }
 
 }  // namespace
@@ -248,10 +309,8 @@ void mapVertices(const ProjectorOptions& o, const Affine3& localFromObject, cons
                  const std::vector<Vec3>& normals, std::vector<VertexUv>& out, int threads,
                  const std::optional<Eigen::AlignedBox3d>& sensible) {
   checkOptions(o);
-  out.resize(positions.size());
   withPrecision(o.arithmetic.precision, [&](auto zero) {
-    evaluatePositions<decltype(zero)>(o, localFromObject, positions, normals, out.data(), o.arithmetic.math, threads,
-                                      sensible);
+    mapVerticesThroughKernel<decltype(zero)>(o, localFromObject, positions, normals, out, threads, sensible);
   });
 }
 
@@ -325,17 +384,20 @@ std::optional<CubeFace> PointMapping::cubeFaceAt(const Vec3& position, const Vec
   return cubeFace_ ? cubeFace_(position, normal) : std::nullopt;
 }
 
-Projection project(Mesh mesh, const ProjectorOptions& o) {
+Projection project(Mesh mesh, const ProjectorOptions& o, int threads) {
   checkOptions(o);
   mesh.texcoords.clear();
   mesh.cornerTexcoords.clear();
 
   Projection out;
+  const auto start = std::chrono::steady_clock::now();
   out.localFromObject = fitPlacement(mesh.positions, o.surface, o.placement);
   Evaluated evaluated = withPrecision(o.arithmetic.precision, [&](auto zero) {
-    return evaluateMesh<decltype(zero)>(mesh, out.localFromObject, o);
+    return evaluateMesh<decltype(zero)>(mesh, out.localFromObject, o, threads);
   });
   CornerField& corners = evaluated.corners;
+  out.milliseconds.map = millisecondsSince(start);
+  const auto seamStart = std::chrono::steady_clock::now();
 
   SeamReport seams;
   if (const std::optional<double> uStart = uPeriodStartOf(o)) {
@@ -367,6 +429,7 @@ Projection project(Mesh mesh, const ProjectorOptions& o) {
   }
   out.uv = std::move(corners).toUvMap();
   out.mesh = std::move(mesh);
+  out.milliseconds.seams = millisecondsSince(seamStart);
   return out;
 }
 

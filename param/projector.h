@@ -100,6 +100,10 @@ struct Projection {
   UvMap uv;
   MappingSummary summary;
   Affine3 localFromObject = Affine3::Identity();
+  struct {
+    double map = 0.0;    // the placement fit and every corner through both stages
+    double seams = 0.0;  // seam and pole repair, the summary, the UV transform
+  } milliseconds;
 };
 
 // The sensible box B of the range rule (docs/conventions.md §4), in the projector's local frame:
@@ -178,8 +182,9 @@ struct SeamPlacement {
 // UsageError unless the surface wraps (cylinder, sphere).
 SeamPlacement placeSeam(const Mesh& mesh, const ProjectorOptions& options);
 
-// Maps `mesh` (taken by value: with SeamMode::Cut its triangles change). Throws UsageError for
-// inconsistent options (reflection without an eye, parallel two-plane planes, ...).
-Projection project(Mesh mesh, const ProjectorOptions& options);
+// Maps `mesh` (taken by value: with SeamMode::Cut its triangles change) on `threads` (0: one per
+// core; the result does not depend on them). Throws UsageError for inconsistent options
+// (reflection without an eye, parallel two-plane planes, ...).
+Projection project(Mesh mesh, const ProjectorOptions& options, int threads = 0);
 
 }  // namespace uvtk::param

@@ -25,7 +25,7 @@ struct MapArguments {
   io::MeshWriteOptions write;
   io::MeshFormat batchFormat = io::MeshFormat::obj;
   bool quiet = false;
-  int jobs = 0;
+  int jobs = 0, threads = 0;
   ProjectorArguments projector;
   VerdictArguments verdict;
   int overlapResolution = 1024;
@@ -44,6 +44,7 @@ void runMap(const MapArguments& a) {
   job.batchFormat = a.batchFormat;
   job.thresholds = a.verdict.thresholds();
   job.overlapResolution = a.overlapResolution;
+  job.threads = a.threads;
   std::error_code ignored;
   if (!a.list.empty() || std::filesystem::is_directory(a.input, ignored)) {
     io::checkMeshOutput(std::string("STEM") + io::extensionOf(a.batchFormat), a.write, "--format");
@@ -84,6 +85,11 @@ void addMapCommand(CLI::App& root) {
                   "Also write the summary as JSON (for many meshes: a folder, with STEM.json each and batch.json)");
   map->add_option("-j,--jobs", arguments->jobs, "Meshes mapped at once when there are many; 0: one per hardware thread")
       ->check(CLI::NonNegativeNumber)
+      ->default_str("0");
+  map->add_option("--threads", arguments->threads,
+                  "Threads each mesh is read, mapped, judged and written with; 0: one per hardware thread for one "
+                  "mesh, one per mesh of many")
+      ->check(CLI::Range(0, 1024))
       ->default_str("0");
   map->add_flag("-q,--quiet", arguments->quiet, "No progress and no summary lines; errors are still printed");
   map->add_flag("--write-w", arguments->write.writeW, "Write the third UV component (the cube face id; OBJ only)");

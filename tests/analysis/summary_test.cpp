@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -151,6 +153,37 @@ TEST(WeightedStatistics, PercentilesMeanAndHistogramOfAHandMadeSet) {
   ASSERT_EQ(s.histogram.weightFraction.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(s.histogram.weightFraction[i], expected[i], 1e-15);
   for (int i = 0; i <= 4; ++i) EXPECT_DOUBLE_EQ(s.histogram.edge(i), 1.0 + i);
+}
+
+// Selection (weightedStatistics) against the definition recounted by sorting: many ties, zero
+// weights, integer weights so that every running sum is exact and the answers are unambiguous.
+TEST(WeightedStatistics, PercentilesEqualASortedRecountOnLargeSetsWithTies) {
+  std::mt19937 random(26);
+  for (int trial = 0; trial < 20; ++trial) {
+    const int n = 1 + int(random() % 5000);
+    std::vector<double> values(static_cast<std::size_t>(n)), weights(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+      values[std::size_t(i)] = double(random() % (trial % 2 == 0 ? 37 : 100000)) / 8.0;  // ties on even trials
+      weights[std::size_t(i)] = double(random() % 4);                                       // a quarter weigh nothing
+    }
+    std::vector<std::size_t> order(static_cast<std::size_t>(n));
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
+    double total = 0.0;
+    for (double w : weights) total += w;
+    const Statistics s = weightedStatistics(values, weights, BinSpacing::Linear);
+    if (total == 0.0) continue;
+    const std::pair<double, double> expected[] = {{0.5, s.p50}, {0.9, s.p90}, {0.99, s.p99}};
+    for (const auto& [fraction, found] : expected) {
+      double running = 0.0, answer = values[order.back()];
+      for (std::size_t i : order)
+        if ((running += weights[i]) >= fraction * total) {
+          answer = values[i];
+          break;
+        }
+      EXPECT_EQ(found, answer) << "trial " << trial << " fraction " << fraction;
+    }
+  }
 }
 
 TEST(WeightedStatistics, EqualWeightsGiveTheLowerMedian) {
