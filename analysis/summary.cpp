@@ -45,16 +45,20 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
                   {&s.areaDistortion, &areas, BinSpacing::Linear},
                   {&s.l2Stretches, &l2, BinSpacing::Log2},
                   {&s.linfStretches, &linf, BinSpacing::Log2}};
-  parallelFor(4, threads, [&](int k) {
-    *measures[k].out = weightedStatistics(*measures[k].values, weights, measures[k].spacing);
-  });
-
   s.poleVertices = poleVertices ? *poleVertices : fannedPoleVertices(mesh, uv);
   std::sort(s.poleVertices.begin(), s.poleVertices.end());
-  s.seams = classifySeamEdges(mesh, uv, s.poleVertices);
-  for (std::size_t corner = 0; corner < uv.uv.size(); ++corner)
-    if (uv.cornerInvalid.empty() || uv.cornerInvalid[corner] == 0) s.uvBounds.extend(uv.uv[corner]);
-  s.overlap = measureOverlap(uv, faces, overlapResolution);
+  // Six independent measures side by side: the statistics, the seams, the overlap and bounds.
+  parallelFor(6, threads, [&](int k) {
+    if (k < 4) {
+      *measures[k].out = weightedStatistics(*measures[k].values, weights, measures[k].spacing);
+    } else if (k == 4) {
+      s.seams = classifySeamEdges(mesh, uv, s.poleVertices);
+    } else {
+      for (std::size_t corner = 0; corner < uv.uv.size(); ++corner)
+        if (uv.cornerInvalid.empty() || uv.cornerInvalid[corner] == 0) s.uvBounds.extend(uv.uv[corner]);
+      s.overlap = measureOverlap(uv, faces, overlapResolution);
+    }
+  });
   return s;
 }
 

@@ -4,23 +4,33 @@
 
 #include <benchmark/benchmark.h>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/image_io.h"
+#include "io/mesh_format.h"
 #include "io/mesh_reader.h"
+#include "core/stopwatch.h"
+#include "inspect/map_job.h"
 #include "meshes/generators.h"
 #include "options/cli_values.h"
 #include "options/option_names.h"
 #include "options/projector_cli.h"
 #include "options/render_cli.h"
 #include "param/batch_atan2.h"
+#include "param/uv_kernel.h"
 #include "param/reference.h"
 #include "peers/assimp_peer.h"
 #include "render/procedural.h"
@@ -72,8 +82,10 @@ std::vector<nlohmann::json> benchMapping(const BenchOptions& a, const Mesh& mesh
   const std::vector<MathMode>& maths = a.maths;
   const std::vector<int>& threadCounts = a.threads;
   std::vector<MappingCase> cases;
-  // One output buffer for every configuration (they run one after another), paged in before timing.
-  std::vector<param::VertexUv> buffer(mesh.vertexCount());
+  // One output per precision for every configuration (they run one after another), paged in by the
+  // error run before timing.
+  param::UvArrays<double> doubleUvs;
+  param::UvArrays<float> floatUvs;
   // Normals once, for the O-mappings that read them (one O-mapping for every projector).
   const bool readsNormals = std::any_of(a.projectors.begin(), a.projectors.end(), [](const BenchProjector& p) {
     return p.options.ray == param::RayKind::ObjectNormal || p.options.ray == param::RayKind::Reflection;
@@ -82,6 +94,11 @@ std::vector<nlohmann::json> benchMapping(const BenchOptions& a, const Mesh& mesh
   for (const auto& [projector, base] : a.projectors) {
     UVTK_CHECK(base.surface != param::SurfaceKind::Cube);  // it chooses its face per triangle
     const Affine3 frame = param::fitPlacement(mesh.positions, base.surface, base.placement);
+    // The kernel's input, in the local frame once per precision (as a caller mapping many times keeps it).
+    auto doublePoints = std::make_shared<param::LocalPoints<double>>();
+    auto floatPoints = std::make_shared<param::LocalPoints<float>>();
+    param::toLocal(frame, mesh.positions, normals, *doublePoints);
+    param::toLocal(frame, mesh.positions, normals, *floatPoints);
     if (!quiet()) std::fprintf(stderr, "uvtk bench: %s: the long-double reference ...\n", projector.c_str());
     std::vector<param::ReferenceUv> reference;
     param::mapVerticesReference(base, frame, mesh.positions, normals, reference);
@@ -97,15 +114,19 @@ std::vector<nlohmann::json> benchMapping(const BenchOptions& a, const Mesh& mesh
         for (int threads : threadCounts) {
           MappingCase c{options, threads, "map/" + std::to_string(cases.size()), error};
           cases.push_back(c);
-          benchmark::RegisterBenchmark(c.name.c_str(),
-                                       [&mesh, &buffer, &normals, options, frame, threads](benchmark::State& state) {
-                                         for (auto _ : state) {
-                                           param::mapVertices(options, frame, mesh.positions, normals, buffer, threads);
-                                           benchmark::DoNotOptimize(buffer.data());
-                                         }
-                                       })
-              ->MinTime(a.minTime)
-              ->UseRealTime();
+          // The narrow kernel (param/uv_kernel.h): the same bits as `out`, whose error is above.
+          const auto time = [options, frame, threads](auto points, auto& uvs) {  // points: shared, outlives the loop
+            return [points, &uvs, options, frame, threads](benchmark::State& state) {
+              for (auto _ : state) {
+                param::mapUvs(options, frame, *points, uvs, threads);
+                benchmark::DoNotOptimize(uvs.u.data());
+              }
+            };
+          };
+          auto* run = precision == Precision::Float
+                          ? benchmark::RegisterBenchmark(c.name.c_str(), time(floatPoints, floatUvs))
+                          : benchmark::RegisterBenchmark(c.name.c_str(), time(doublePoints, doubleUvs));
+          run->MinTime(a.minTime)->UseRealTime();
         }
       }
   }
@@ -136,9 +157,20 @@ std::vector<nlohmann::json> benchMapping(const BenchOptions& a, const Mesh& mesh
 
 // ---- The peer ----
 
+// What the table says of the peer when it has no rows; empty when it has them or was not asked for.
+std::string peerNote(const BenchOptions& a) {
+  if (!a.peers || peers::assimpAvailable()) return "";
+  return "Peer: assimp's aiProcess_GenUVCoords was not built into this uvtk (libassimp-dev was missing when it "
+         "was configured; scripts/setup.sh installs it), so the table has no assimp rows.\n\n";
+}
+
 std::vector<nlohmann::json> benchPeers(const BenchOptions& a, const Mesh& mesh) {
   std::vector<nlohmann::json> records;
-  if (!a.peers || !peers::assimpAvailable()) return records;
+  if (!a.peers) return records;
+  if (!peers::assimpAvailable()) {
+    if (!quiet()) std::fprintf(stderr, "uvtk bench: %s", peerNote(a).c_str());
+    return records;
+  }
   const std::pair<const char*, peers::AssimpMapping> mappings[] = {{"plane", peers::AssimpMapping::Plane},
                                                                    {"cylinder", peers::AssimpMapping::Cylinder},
                                                                    {"sphere", peers::AssimpMapping::Sphere}};
@@ -161,6 +193,82 @@ std::vector<nlohmann::json> benchPeers(const BenchOptions& a, const Mesh& mesh) 
                         "aiProcess_GenUVCoords on one vertex per corner (assimp's layout); per vertex of "
                         "the mesh for comparison; its own conventions, so no error is measured"}});
   }
+  return records;
+}
+
+// ---- End to end ----
+
+// Milliseconds to read `path` whole in 1 MiB blocks, and, when `copy` is not empty, to write what
+// was read there too: the I/O floor of a job that reads one file and writes another (cat, cp).
+double ioFloorMs(const std::string& path, const std::string& copy) {
+  const auto start = std::chrono::steady_clock::now();
+  std::FILE* in = std::fopen(path.c_str(), "rb");
+  std::FILE* out = copy.empty() ? nullptr : std::fopen(copy.c_str(), "wb");
+  if (!in || (!copy.empty() && !out)) throw OutputError(path + ": error: cannot time reading and copying it");
+  std::vector<char> block(std::size_t(1) << 20);
+  for (std::size_t n; (n = std::fread(block.data(), 1, block.size(), in)) > 0;)
+    if (out && std::fwrite(block.data(), 1, n, out) != n) throw OutputError(copy + ": error: cannot write");
+  std::fclose(in);
+  if (out) std::fclose(out);
+  return millisecondsSince(start);
+}
+
+// `uvtk map MESH -o FILE --json` as a user runs it, in a child process so that its peak memory is
+// its own, once per thread count; beside it, in the same run, the floor: reading the input (cat)
+// and copying the output (cp).
+std::vector<nlohmann::json> benchEndToEnd(const BenchOptions& a) {
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::temp_directory_path() / ("uvtk-bench-" + std::to_string(getpid()));
+  std::error_code ignored;
+  fs::create_directories(folder, ignored);
+  const std::optional<io::MeshFormat> format = io::outputFormatOf(a.mesh);
+  const std::string output =
+      (folder / ("mapped" + std::string(io::extensionOf(format ? *format : io::MeshFormat::obj)))).string();
+  const std::string json = (folder / "mapped.json").string();
+  std::vector<nlohmann::json> records;
+  for (int threads : a.threads) {
+    if (!quiet()) std::fprintf(stderr, "uvtk bench: uvtk map %s on %d thread%s ...\n", a.mesh.c_str(), threads,
+                               threads == 1 ? "" : "s");
+    const double readFloorMs = ioFloorMs(a.mesh, "");  // also brings the input into the page cache
+    std::fflush(nullptr);
+    const pid_t child = fork();
+    if (child < 0) throw OutputError("uvtk bench: cannot start the mapping process");
+    if (child == 0) {
+      int status = 0;
+      try {
+        MapJob job;
+        job.projector = a.mapProjector.options;
+        job.threads = threads;
+        setProgressEnabled(false);
+        mapMesh({a.mesh, output, json}, job, false);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        status = exitStatus(e);
+      }
+      std::fflush(nullptr);
+      _exit(status);
+    }
+    int status = 0;
+    rusage usage{};
+    wait4(child, &status, 0, &usage);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+      fs::remove_all(folder, ignored);
+      throwWithStatus(WIFEXITED(status) ? WEXITSTATUS(status) : 1, "uvtk bench: uvtk map " + a.mesh + " failed");
+    }
+    const double copyFloorMs = ioFloorMs(output, (folder / "copy").string());
+    const nlohmann::json stages = nlohmann::json::parse(std::ifstream(json))["milliseconds"];
+    const double floorMs = readFloorMs + copyFloorMs, outputBytes = double(fs::file_size(output));
+    const double peakBytes = 1024.0 * double(usage.ru_maxrss);
+    nlohmann::json r = {{"section", "end-to-end"},     {"mesh", a.mesh},
+                        {"projector", a.mapProjector.name}, {"threads", threads},
+                        {"milliseconds", stages},      {"floor_ms", floorMs},
+                        {"ratio_to_floor", stages["total"].get<double>() / floorMs},
+                        {"peak_bytes", peakBytes},     {"output_bytes", outputBytes},
+                        {"peak_per_output_byte", peakBytes / outputBytes}};
+    records.push_back(std::move(r));
+    fs::remove((folder / "copy"), ignored);
+  }
+  fs::remove_all(folder, ignored);
   return records;
 }
 
@@ -270,9 +378,23 @@ std::string formatNumber(const nlohmann::json& value, const char* format) {
 
 std::string markdownTables(const std::vector<nlohmann::json>& records, int textureWidth) {
   std::string md;
-  bool mappingHeader = false, renderHeader = false;
+  bool mappingHeader = false, renderHeader = false, endToEndHeader = false;
   for (const nlohmann::json& r : records) {
-    if (r["section"] != "rendering") {
+    if (r["section"] == "end-to-end") {
+      if (!endToEndHeader)
+        md += "\n| uvtk map | threads | read | map | seams | judge | write | total ms | floor ms (cat + cp) | x floor | "
+              "peak MB | output MB | peak / output |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+            endToEndHeader = true;
+      const nlohmann::json& ms = r["milliseconds"];
+      md += "| " + r["projector"].get<std::string>() + " | " + std::to_string(r["threads"].get<int>()) + " | " +
+            formatNumber(ms["read"], "%.0f") + " | " + formatNumber(ms["map"], "%.0f") + " | " +
+            formatNumber(ms["seams"], "%.0f") + " | " + formatNumber(ms["judge"], "%.0f") + " | " +
+            formatNumber(ms["write"], "%.0f") + " | " + formatNumber(ms["total"], "%.0f") + " | " +
+            formatNumber(r["floor_ms"], "%.0f") + " | " + formatNumber(r["ratio_to_floor"], "%.2f") + " | " +
+            formatNumber(r["peak_bytes"].get<double>() / 1e6, "%.0f") + " | " +
+            formatNumber(r["output_bytes"].get<double>() / 1e6, "%.0f") + " | " +
+            formatNumber(r["peak_per_output_byte"], "%.2f") + " |\n";
+    } else if (r["section"] != "rendering") {
       if (!mappingHeader)
         md +=
             "| projector | omap | precision | math | threads | ns/vertex | max err (ulp) | p99 err (ulp) | max err "
@@ -309,7 +431,7 @@ Image chartOf(const std::vector<nlohmann::json>& records, bool rendering, int te
   std::vector<views::ChartPoint> points;
   views::ParetoChartOptions options;
   for (const nlohmann::json& r : records) {
-    if ((r["section"] == "rendering") != rendering || r["section"] == "peer") continue;
+    if ((r["section"] == "rendering") != rendering || r["section"] == "peer" || r["section"] == "end-to-end") continue;
     const std::string group = rendering ? r["uv"].get<std::string>() : r["projector"].get<std::string>();
     auto found = std::find(options.groupNames.begin(), options.groupNames.end(), group);
     if (found == options.groupNames.end()) found = options.groupNames.insert(found, group);
@@ -386,6 +508,8 @@ BenchOptions BenchArguments::resolve() const {
     o.renderProjector = {renderProjector, cli::projectorNamed(renderProjector, "isn")};
     o.camera = camera.resolve();
   }
+  o.mapProjector = {mapProjector, cli::projectorNamed(mapProjector, omap)};
+  o.endToEnd = !noEndToEnd;
   o.mesh = mesh, o.omap = omap, o.textureWidth = textureWidth, o.minTime = minTime, o.peers = !noPeers;
   o.rendering = render, o.json = json, o.markdown = markdown, o.plot = plot;
   return o;
@@ -406,7 +530,10 @@ std::string bench(const BenchOptions& a) {
   int argc = 1;
   benchmark::Initialize(&argc, &argv0);
 
-  std::vector<nlohmann::json> records = benchMapping(a, mesh);
+  std::vector<nlohmann::json> records;
+  if (!a.mesh.empty() && a.endToEnd)
+    records = benchEndToEnd(a);  // first, while this process is small and its threads are idle
+  for (nlohmann::json& r : benchMapping(a, mesh)) records.push_back(std::move(r));
   for (nlohmann::json& r : benchPeers(a, mesh)) records.push_back(std::move(r));
   if (a.rendering) {
     const Mesh renderMesh = a.mesh.empty() ? meshes::latLongSphere(64, 32) : mesh;
@@ -415,7 +542,7 @@ std::string bench(const BenchOptions& a) {
 
   const std::string md = "Mesh: " + meshName + " (" + std::to_string(mesh.vertexCount()) +
                          " vertices). atan2: " + param::fastMathInstructionSet() + " for fast modes.\n\n" +
-                         markdownTables(records, a.textureWidth);
+                         peerNote(a) + markdownTables(records, a.textureWidth);
   io::OutputSet outputs;  // every file, published together (stdout gets the table once they are in place)
   if (!a.markdown.empty()) outputs.writeText(a.markdown, md);
   if (!a.json.empty()) {

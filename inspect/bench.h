@@ -38,6 +38,9 @@ struct BenchOptions {
   int textureWidth = 4096;  // texels across the texture errors are measured in
   double minTime = 0.3;     // seconds each configuration runs at least
   bool peers = true;
+  // `uvtk map` of the mesh file end to end (with `mesh` only), by this projector, once per thread count.
+  bool endToEnd = true;
+  BenchProjector mapProjector;
   // Rendering, when `rendering`.
   bool rendering = false;
   BenchProjector renderProjector;
@@ -58,7 +61,8 @@ struct BenchArguments {
   int textureWidth = 4096;
   double minTime = 0.3;
   std::string json, markdown, plot;
-  bool noPeers = false;
+  bool noPeers = false, noEndToEnd = false;
+  std::string mapProjector = "sphere";
   // rendering
   bool render = false;
   std::string renderProjector = "sphere", size = "512x512", texture = "checker:512:16";

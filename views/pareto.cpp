@@ -286,6 +286,24 @@ std::vector<std::size_t> paretoFront(const std::vector<ChartPoint>& points) {
   return front;
 }
 
+std::vector<std::vector<std::size_t>> paretoFrontsByGroup(const std::vector<ChartPoint>& points) {
+  std::vector<int> groups;
+  for (const ChartPoint& p : points) groups.push_back(p.group);
+  std::sort(groups.begin(), groups.end());
+  groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+  std::vector<std::vector<std::size_t>> fronts;
+  for (int group : groups) {
+    std::vector<ChartPoint> members;
+    std::vector<std::size_t> index;  // of each member in `points`
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (points[i].group == group) members.push_back(points[i]), index.push_back(i);
+    std::vector<std::size_t> front = paretoFront(members);
+    for (std::size_t& i : front) i = index[i];
+    if (!front.empty()) fronts.push_back(std::move(front));
+  }
+  return fronts;
+}
+
 Vec2 ChartFrame::pixelOf(double x, double y) const {
   UVTK_CHECK(std::isfinite(x) && std::isfinite(y) && x > 0.0 && y >= 0.0);
   return {columnAt(*this, std::log10(x)), y == 0.0 ? zeroRowY() : rowAt(*this, std::log10(y))};
@@ -304,9 +322,13 @@ Image paretoChart(const std::vector<ChartPoint>& points, const ParetoChartOption
   fillRect(image, 0, 0, image.width, image.height, kPanelColour);
   drawAxes(image, layout);
 
-  const std::vector<std::size_t> front = paretoFront(points);
-  for (std::size_t k = 1; k < front.size(); ++k)
-    drawSegment(image, dotCentre(frame, points[front[k - 1]]), dotCentre(frame, points[front[k]]), 2, kTextColour);
+  std::vector<std::size_t> front;  // every group's front
+  for (const std::vector<std::size_t>& groupFront : paretoFrontsByGroup(points)) {
+    for (std::size_t k = 1; k < groupFront.size(); ++k)
+      drawSegment(image, dotCentre(frame, points[groupFront[k - 1]]), dotCentre(frame, points[groupFront[k]]), 2,
+                  groupColour(points[groupFront[k]].group));
+    front.insert(front.end(), groupFront.begin(), groupFront.end());
+  }
   std::vector<bool> onFront(points.size(), false);
   for (std::size_t i : front) onFront[i] = true;
   drawFrontLabels(image, layout, points, front, onFront);

@@ -34,6 +34,10 @@ Vec3 groupColour(int group);
 // are ignored.
 std::vector<std::size_t> paretoFront(const std::vector<ChartPoint>& points);
 
+// paretoFront within each group: one front per group present, by increasing group number. A front
+// compares configurations of one kind (one projector), never one kind's speed with another's accuracy.
+std::vector<std::vector<std::size_t>> paretoFrontsByGroup(const std::vector<ChartPoint>& points);
+
 // Where paretoChart puts data: the plot box and its decades.
 struct ChartFrame {
   // The box's lines lie on columns left and right and rows top and bottom; the decades span the
@@ -59,8 +63,8 @@ ChartFrame chartFrame(const std::vector<ChartPoint>& points, const ParetoChartOp
 
 // An RGB chart of options.width x options.height: the title, the legend of groupNames, log-log
 // axes padded to whole decades with tick labels (... 1E-2, 1E-1, 1, 10, 100, 1000, 1E4 ...; every
-// n-th where decades crowd), one dot per point in its group's colour, the Pareto front joined by a
-// line, its dots ringed and labelled beside them (alternately above right and below left, moved to
+// n-th where decades crowd), one dot per point in its group's colour, each group's Pareto front
+// joined by a line in its colour, its dots ringed and labelled beside them (alternately above right and below left, moved to
 // another side or a line further out while they overlap a dot or an earlier label), y = 0 points on
 // a row labelled "0" below the box, the axis labels, and a note of the points skipped for a
 // non-finite x or y. Throws as chartFrame.

@@ -39,6 +39,11 @@ void addBenchCommand(CLI::App& root) {
   cmd->add_option("--markdown", a->markdown, "The table as Markdown to this file (default: stdout)");
   cmd->add_option("--plot", a->plot, "Pareto chart PNG (with --render also FILE-render.png)");
   cmd->add_flag("--no-peers", a->noPeers, "Skip the peers (assimp's aiProcess_GenUVCoords)");
+  cmd->add_option("--map-projector", a->mapProjector,
+                  "With --mesh: the projector of the end-to-end `uvtk map` (read, map, seams, judge, write, peak "
+                  "memory, against reading and copying the files)")
+      ->capture_default_str();
+  cmd->add_flag("--no-end-to-end", a->noEndToEnd, "With --mesh: skip the end-to-end `uvtk map`");
   cmd->add_flag("--render", a->render, "Also measure rendering (default mesh there: a 64 x 32 lat-long sphere)");
   cmd->add_option("--render-projector", a->renderProjector, "Projector whose UVs are rendered")->capture_default_str();
   cmd->add_option("--size", a->size, "Rendering: image size WxH")->capture_default_str();

@@ -55,6 +55,15 @@ TEST(ParetoFrontTest, KeepsUndominatedPointsByIncreasingX) {
   EXPECT_EQ(paretoFront(points), (std::vector<std::size_t>{10, 0, 1, 4, 5, 9}));
 }
 
+// Each group's own front: a fast inexact point of one group does not hide another group's points.
+TEST(ParetoFrontTest, OneFrontPerGroup) {
+  std::vector<ChartPoint> points = {{"A", 1, 10}, {"B", 2, 5}, {"C", 0.5, 1}, {"D", 3, 3}, {"E", 4, 4}};
+  points[0].group = points[1].group = points[3].group = 2;  // A, B, D: one projector
+  points[2].group = points[4].group = 0;                    // C dominates all of them, and E
+  EXPECT_EQ(paretoFront(points), (std::vector<std::size_t>{2}));
+  EXPECT_EQ(paretoFrontsByGroup(points), (std::vector<std::vector<std::size_t>>{{2}, {0, 1, 3}}));
+}
+
 TEST(ParetoFrontTest, EmptyWithoutFinitePoints) {
   EXPECT_TRUE(paretoFront({}).empty());
   EXPECT_TRUE(paretoFront({{"A", kNaN, 1}, {"B", 1, -kInf}}).empty());
@@ -158,10 +167,24 @@ TEST(ParetoChartTest, FrontJoinedByALine) {
     const Vec2 at = frame.pixelOf(x, y);
     return Vec2(std::floor(at.x()) + 0.5, std::floor(at.y()) + 0.5);
   };
-  EXPECT_TRUE(sameColour(colourAt(chart, 0.5 * (centre(1, 10) + centre(100, 0.1))), kTextColour));
+  EXPECT_TRUE(sameColour(colourAt(chart, 0.5 * (centre(1, 10) + centre(100, 0.1))), groupColour(0)));
   // The dominated point is not joined (and the midpoint is on no grid line).
   const Vec2 off = 0.5 * (centre(100, 0.1) + centre(1000, 300));
   EXPECT_TRUE(sameColour(colourAt(chart, off), kPanelColour));
+}
+
+TEST(ParetoChartTest, FrontsNeverJoinTwoGroups) {
+  // Group 1's point at (30, 0.3) would be on a front over all points; per group, nothing joins it to (1, 10).
+  std::vector<ChartPoint> points = {{"", 1, 10}, {"", 30, 0.3}, {"", 1000, 0.05}};
+  points[1].group = 1;
+  const Image chart = paretoChart(points, options());
+  const ChartFrame frame = chartFrame(points, options());
+  auto centre = [&](double x, double y) {
+    const Vec2 at = frame.pixelOf(x, y);
+    return Vec2(std::floor(at.x()) + 0.5, std::floor(at.y()) + 0.5);
+  };
+  EXPECT_TRUE(sameColour(colourAt(chart, 0.5 * (centre(1, 10) + centre(30, 0.3))), kPanelColour));
+  EXPECT_TRUE(sameColour(colourAt(chart, 0.5 * (centre(1, 10) + centre(1000, 0.05))), groupColour(0)));
 }
 
 TEST(ParetoChartTest, NonFinitePointsLeaveRoomForANote) {
