@@ -35,25 +35,27 @@ HalfEdge halfEdge(const Mesh& mesh, std::size_t c) {
   return e;
 }
 
-// Every face's three half-edges (named by their corner) ordered by (lower, higher, corner), so
-// that the sides of one edge are adjacent: a counting sort by the lower vertex, then each vertex's
-// few half-edges sorted by the higher one. Linear where a comparison sort of 3 F half-edges is not.
-std::vector<std::uint32_t> sortedHalfEdges(const Mesh& mesh) {
+// Every face's three half-edges ordered by (lower, higher, corner), so that the sides of one edge
+// are adjacent: a counting sort by the lower vertex, then each vertex's few half-edges sorted by
+// the key higher << 32 | corner. Linear where a comparison sort of 3 F half-edges is not. Each
+// entry is that key; its low half names the half-edge by its corner.
+std::vector<std::uint64_t> sortedHalfEdges(const Mesh& mesh) {
   const std::size_t corners = 3 * mesh.triangles.size();
   UVTK_CHECK(corners <= std::numeric_limits<std::uint32_t>::max());
   std::vector<std::uint32_t> start(mesh.positions.size() + 1, 0);
   for (std::size_t c = 0; c < corners; ++c) ++start[std::size_t(halfEdge(mesh, c).lower) + 1];
   for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
-  std::vector<std::uint32_t> order(corners);
+  std::vector<std::uint64_t> order(corners);
   std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-  for (std::size_t c = 0; c < corners; ++c) order[next[std::size_t(halfEdge(mesh, c).lower)]++] = std::uint32_t(c);
-  for (std::size_t v = 0; v + 1 < start.size(); ++v)
-    std::sort(order.begin() + start[v], order.begin() + start[v + 1], [&](std::uint32_t a, std::uint32_t b) {
-      const int ha = halfEdge(mesh, a).higher, hb = halfEdge(mesh, b).higher;
-      return ha != hb ? ha < hb : a < b;
-    });
+  for (std::size_t c = 0; c < corners; ++c) {
+    const HalfEdge e = halfEdge(mesh, c);
+    order[next[std::size_t(e.lower)]++] = std::uint64_t(std::uint32_t(e.higher)) << 32 | c;
+  }
+  for (std::size_t v = 0; v + 1 < start.size(); ++v) std::sort(order.begin() + start[v], order.begin() + start[v + 1]);
   return order;
 }
+
+std::size_t cornerOf(std::uint64_t key) { return std::size_t(key & 0xffffffffu); }
 
 }  // namespace
 
@@ -88,18 +90,17 @@ std::vector<SeamEdge> seamEdgeList(const Mesh& mesh, const UvMap& uv, const std:
     isPole[static_cast<std::size_t>(v)] = 1;
   }
 
-  const std::vector<std::uint32_t> halfEdges = sortedHalfEdges(mesh);
+  const std::vector<std::uint64_t> halfEdges = sortedHalfEdges(mesh);
   std::vector<SeamEdge> seams;
   for (std::size_t first = 0, end; first < halfEdges.size(); first = end) {
-    const HalfEdge a = halfEdge(mesh, halfEdges[first]);
+    // The sides of one edge: the same higher vertex (the key's high half) among the lower vertex's entries.
+    const HalfEdge a = halfEdge(mesh, cornerOf(halfEdges[first]));
     end = first + 1;
-    while (end < halfEdges.size()) {
-      const HalfEdge e = halfEdge(mesh, halfEdges[end]);
-      if (e.lower != a.lower || e.higher != a.higher) break;
+    while (end < halfEdges.size() && halfEdges[end] >> 32 == halfEdges[first] >> 32 &&
+           halfEdge(mesh, cornerOf(halfEdges[end])).lower == a.lower)
       ++end;
-    }
     if (end - first != 2) continue;  // a boundary or non-manifold edge
-    const HalfEdge b = halfEdge(mesh, halfEdges[first + 1]);
+    const HalfEdge b = halfEdge(mesh, cornerOf(halfEdges[first + 1]));
     if (!cornerValid(uv, a.cornerLower) || !cornerValid(uv, a.cornerHigher) || !cornerValid(uv, b.cornerLower) ||
         !cornerValid(uv, b.cornerHigher))
       continue;
