@@ -30,6 +30,15 @@ struct Statistics {
   Histogram histogram;  // `bins` bins over [min, max]; all the weight in bin 0 when min = max
 };
 
+struct WeightedValue {
+  double value, weight;
+};
+
+// Statistics of the items (value, weight >= 0), in any order. Entries of zero weight still count
+// for min and max. Empty input gives zeros and empty bins. Preconditions: bins >= 1, and values
+// > 0 for Log2 spacing.
+Statistics weightedStatistics(std::vector<WeightedValue> items, BinSpacing spacing, int bins = 32);
+
 // Statistics of values[i] with weights[i] >= 0. Entries of zero weight still count for min and
 // max. Empty input gives zeros and empty bins. Preconditions: equal sizes, bins >= 1, and
 // values > 0 for Log2 spacing.

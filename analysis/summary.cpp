@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <iterator>
 
 #include "core/error.h"
 #include "core/parallel.h"
@@ -22,43 +24,39 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
   // times sqrt(sum(Auv) / sum(A3)) so that a uniformly scaled layout scores as the isometry.
   const AreaTotals totals = okAreaTotals(faces);
   const double normalisation = std::sqrt(1.0 / totals.surfacePerUv());
-  std::vector<double> weights, angles, areas, l2, linf;
-  double l2Squares = 0.0;
+  double l2Squares = 0.0, linfMax = 0.0;
   for (const FaceDistortion& face : faces) {
     if (face.status != FaceStatus::Ok) continue;
-    weights.push_back(face.area3d);
-    angles.push_back(face.angleDistortion);
-    areas.push_back(face.areaDistortion);
-    l2.push_back(face.l2Stretch * normalisation);
-    linf.push_back(face.linfStretch * normalisation);
     l2Squares += face.area3d * face.l2Stretch * face.l2Stretch;
+    linfMax = std::max(linfMax, face.linfStretch * normalisation);
   }
   if (totals.surface > 0.0) {
     s.l2Stretch = std::sqrt(l2Squares / totals.surface) * normalisation;
-    s.linfStretch = *std::max_element(linf.begin(), linf.end());
+    s.linfStretch = linfMax;
   }
-  const struct {
-    Statistics* out;
-    const std::vector<double>* values;
-    BinSpacing spacing;
-  } measures[] = {{&s.angleDistortion, &angles, BinSpacing::Log2},
-                  {&s.areaDistortion, &areas, BinSpacing::Linear},
-                  {&s.l2Stretches, &l2, BinSpacing::Log2},
-                  {&s.linfStretches, &linf, BinSpacing::Log2}};
+  // Each statistic of the ok faces' values weighted by their 3D areas, gathered where it is computed.
+  const auto statistics = [&](auto valueOf, BinSpacing spacing) {
+    std::vector<WeightedValue> items;
+    items.reserve(s.statusCounts[FaceStatus::Ok]);
+    for (const FaceDistortion& face : faces)
+      if (face.status == FaceStatus::Ok) items.push_back({valueOf(face), face.area3d});
+    return weightedStatistics(std::move(items), spacing);
+  };
+  const std::function<void()> measures[] = {
+      [&] { s.angleDistortion = statistics([](const FaceDistortion& f) { return f.angleDistortion; }, BinSpacing::Log2); },
+      [&] { s.areaDistortion = statistics([](const FaceDistortion& f) { return f.areaDistortion; }, BinSpacing::Linear); },
+      [&] { s.l2Stretches = statistics([&](const FaceDistortion& f) { return f.l2Stretch * normalisation; }, BinSpacing::Log2); },
+      [&] { s.linfStretches = statistics([&](const FaceDistortion& f) { return f.linfStretch * normalisation; }, BinSpacing::Log2); },
+      [&] { s.seams = classifySeamEdges(mesh, uv, s.poleVertices); },
+      [&] {
+        for (std::size_t corner = 0; corner < uv.uv.size(); ++corner)
+          if (uv.cornerInvalid.empty() || uv.cornerInvalid[corner] == 0) s.uvBounds.extend(uv.uv[corner]);
+        s.overlap = measureOverlap(uv, faces, overlapResolution);
+      }};
   s.poleVertices = poleVertices ? *poleVertices : fannedPoleVertices(mesh, uv);
   std::sort(s.poleVertices.begin(), s.poleVertices.end());
   // Six independent measures side by side: the statistics, the seams, the overlap and bounds.
-  parallelFor(6, threads, [&](int k) {
-    if (k < 4) {
-      *measures[k].out = weightedStatistics(*measures[k].values, weights, measures[k].spacing);
-    } else if (k == 4) {
-      s.seams = classifySeamEdges(mesh, uv, s.poleVertices);
-    } else {
-      for (std::size_t corner = 0; corner < uv.uv.size(); ++corner)
-        if (uv.cornerInvalid.empty() || uv.cornerInvalid[corner] == 0) s.uvBounds.extend(uv.uv[corner]);
-      s.overlap = measureOverlap(uv, faces, overlapResolution);
-    }
-  });
+  parallelFor(int(std::size(measures)), threads, [&](int k) { measures[k](); });
   return s;
 }
 
