@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/parallel.h"
+#include "render/raster.h"
 
 namespace uvtk::render {
 
@@ -23,13 +25,14 @@ MemoryEstimate estimateMemory(const Mesh& mesh, const TexcoordSource& source, co
   const std::uint64_t pixels = std::uint64_t(o.camera.width) * std::uint64_t(o.camera.height);
   const std::uint64_t aovBytes = o.aovs ? (o.cubeTexture ? 6 : 5) * sizeof(float) : 0;
   const std::uint64_t colourBytes = 3 * sizeof(float);
-  const std::uint64_t visibilityBytes = sizeof(std::int32_t) + sizeof(float);
+  const std::uint64_t coverageBytes = n > 1 ? 1 : 0;  // which samples a triangle covers, for the box filter
   MemoryEstimate e;
-  e.frame = pixels * n * n * (visibilityBytes + colourBytes + aovBytes);
+  e.frame = pixels * n * n * (coverageBytes + colourBytes + aovBytes);
   if (n > 1) e.frame += pixels * (colourBytes + aovBytes);  // the resolved frame
   const std::uint64_t faces = mesh.triangles.size();
-  e.frame += mesh.positions.size() * sizeof(Vec4);  // clip positions
-  e.frame += faces * 160;  // a set-up triangle (96 bytes), its tile index, vector growth
+  e.frame += mesh.positions.size() * (sizeof(Vec4) + 12);  // clip positions, snapped window positions
+  e.frame += faces * 240;  // a drawn triangle's set-up with its face's interpolator (152 bytes), its tile index, growth
+  e.frame += std::uint64_t(threadCount(o.raster.threads)) * sizeof(TiledRaster::Tile);  // a tile in work per thread
   const bool lit = readsFragmentColour(o.env);
   if (lit || (source.pixelMapping && source.pixelMapping->needsNormal)) e.frame += 3 * faces * sizeof(Vec3);
   if (lit) e.frame += 3 * faces * sizeof(Vec4);

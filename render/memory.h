@@ -13,9 +13,10 @@
 namespace uvtk::render {
 
 struct MemoryEstimate {
-  // What render() allocates: per sample of the (supersampled) frame the visibility buffer (face,
-  // depth), the colour and the AOVs; the resolved frame; per vertex the clip positions; per face the
-  // set-up triangles; per corner the normals and lit colours when something reads them.
+  // What render() allocates: per sample of the (supersampled) frame the colour, the AOVs and, with
+  // supersampling, a coverage byte; the resolved frame; per vertex the clip and snapped window
+  // positions; per face the set-up triangles; a tile per thread; per corner the normals and lit
+  // colours when something reads them.
   std::uint64_t frame = 0;
   // The bound texture with every level it holds (already in memory when render() is called).
   std::uint64_t texture = 0;

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
 
 #include "core/error.h"
@@ -19,18 +20,18 @@ __extension__ typedef __int128 Int128;  // exact polygon areas of snapped coordi
 constexpr int kSubpixelBits = 8;  // vertices snap to 1/256 pixel, as GL hardware commonly does
 constexpr std::int64_t kSubpixel = std::int64_t(1) << kSubpixelBits;
 constexpr std::int64_t kHalfPixel = kSubpixel / 2;
-constexpr int kTileSize = 64;
+constexpr int kTileSize = TiledRaster::kTileSize;
 
 struct Point {
-  std::int64_t x, y;
+  std::int32_t x, y;  // below 2^28 in magnitude inside the guard band
 };
 
-// One triangle ready for the edge tests: counter-clockwise, snapped, with its pixel bounds.
+// One triangle ready for the edge tests: counter-clockwise, snapped, with its pixel bounds and
+// its face's set-up, which the shading of its pixels reads. A clipped face is a fan of several.
 struct SetupTriangle {
+  DrawnFace drawn;
   Point v[3];
-  std::int32_t face;
   int x0, x1, y0, y1;  // inclusive pixel range (window coordinates, y up)
-  Vec3 depthPlane;     // window depth = a x + b y + c
 };
 
 // The clip-space half-spaces a visible point satisfies: near, far, and the guard band, wide
@@ -89,7 +90,7 @@ int clipAgainst(const ClipPlanes& planes, int plane, const Polygon& in, int n, P
   int m = 0;
   for (int i = 0; i < n; ++i) {
     const Vec4& a = in[i];
-    const Vec4& b = in[(i + 1) % n];
+    const Vec4& b = in[i + 1 < n ? i + 1 : 0];
     const double da = planes.distance(plane, a), db = planes.distance(plane, b);
     if (da >= 0.0) out[m++] = a;
     if ((da >= 0.0) != (db >= 0.0)) {
@@ -109,7 +110,7 @@ Int128 twiceArea(const Point* p, int n) {
   Int128 sum = 0;
   for (int i = 0; i < n; ++i) {
     const Point& a = p[i];
-    const Point& b = p[(i + 1) % n];
+    const Point& b = p[i + 1 < n ? i + 1 : 0];
     sum += Int128(a.x) * b.y - Int128(b.x) * a.y;
   }
   return sum;
@@ -120,15 +121,35 @@ std::int64_t floorDiv(std::int64_t a, std::int64_t b) { return a / b - ((a % b !
 // The edge a -> b of a counter-clockwise triangle (window coordinates, y up) owns the pixel
 // centres on it when it is a left edge (going down) or a top edge (horizontal, going left).
 bool isTopLeft(const Point& a, const Point& b) {
-  const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
+  const std::int32_t dx = b.x - a.x, dy = b.y - a.y;
   return dy < 0 || (dy == 0 && dx < 0);
 }
 
-struct Binned {
+// llround for |v| < 2^62, without the library call: truncation is exact there, and so is the
+// fraction it leaves, which decides the rounding of halves away from zero.
+std::int64_t roundHalfAway(double v) {
+  const auto i = static_cast<std::int64_t>(v);
+  const double fraction = v - static_cast<double>(i);
+  return i + (fraction >= 0.5) - (fraction <= -0.5);
+}
+
+// A vertex's snapped window position, computed once per vertex (about six triangles share each):
+// a triangle whose three corners lie inside every clip plane needs no clipping, and its corners
+// are these points.
+struct WindowVertex {
+  Point p{0, 0};
+  bool inside = false;  // finite, inside every clip plane, w > 0; p is set only then
+};
+
+}  // namespace
+
+struct TiledRaster::Chunk {
   std::vector<SetupTriangle> triangles;
   std::vector<std::vector<std::uint32_t>> tiles;  // per tile, indices into triangles
   RasterStats stats;
 };
+
+namespace {
 
 class Setup {
  public:
@@ -137,37 +158,27 @@ class Setup {
     planes_.guard = double(1 << 20) / double(std::max(width, height));
   }
 
-  void triangle(const std::vector<Vec4>& clip, const Triangle& corners, std::int32_t face, Binned& out) const {
-    Polygon a{clip[std::size_t(corners[0])], clip[std::size_t(corners[1])], clip[std::size_t(corners[2])]};
-    if (!(a[0].allFinite() && a[1].allFinite() && a[2].allFinite())) {
-      ++out.stats.clipped;
-      return;
-    }
-    const Vec4 c0 = a[0], c1 = a[1], c2 = a[2];  // the unclipped corners, for the depth plane
-    Polygon b;
-    int n = 3;
-    Polygon* in = &a;
-    Polygon* outPolygon = &b;
-    for (int plane = 0; plane < 6 && n > 0; ++plane) {
-      bool allInside = true;
-      for (int i = 0; i < n && allInside; ++i) allInside = planes_.distance(plane, (*in)[i]) >= 0.0;
-      if (allInside) continue;
-      n = clipAgainst(planes_, plane, *in, n, *outPolygon);
-      std::swap(in, outPolygon);
-    }
-    if (n < 3) {
-      ++out.stats.clipped;
-      return;
-    }
+  WindowVertex vertex(const Vec4& c) const {
+    WindowVertex v;
+    v.inside = c.allFinite() && c.w() > 0.0;
+    for (int plane = 0; plane < 6 && v.inside; ++plane) v.inside = planes_.distance(plane, c) >= 0.0;
+    if (v.inside) v.p = snap(c);
+    return v;
+  }
+
+  void triangle(const std::vector<Vec4>& clip, const std::vector<WindowVertex>& window, const Triangle& corners,
+                std::int32_t face, TiledRaster::Chunk& out) const {
+    const auto i0 = std::size_t(corners[0]), i1 = std::size_t(corners[1]), i2 = std::size_t(corners[2]);
     std::array<Point, 9> p;
-    for (int i = 0; i < n; ++i) {
-      const Vec4& c = (*in)[i];
-      if (!(c.w() > 0.0)) {  // only the degenerate point (0, 0, 0, 0) survives the guard band at w <= 0
+    int n = 3;
+    if (window[i0].inside && window[i1].inside && window[i2].inside) {
+      p[0] = window[i0].p, p[1] = window[i1].p, p[2] = window[i2].p;
+    } else {
+      n = clipAndSnap(clip[i0], clip[i1], clip[i2], p);
+      if (n < 3) {
         ++out.stats.clipped;
         return;
       }
-      const double x = (c.x() / c.w() + 1.0) * 0.5 * width_, y = (c.y() / c.w() + 1.0) * 0.5 * height_;
-      p[i] = Point{std::llround(x * kSubpixel), std::llround(y * kSubpixel)};
     }
     const Int128 area = twiceArea(p.data(), n);
     if (area == 0) {
@@ -179,15 +190,14 @@ class Setup {
       ++out.stats.culled;
       return;
     }
-    const TriangleInterpolator interpolator(c0, c1, c2, width_, height_);
+    const TriangleInterpolator interpolator(clip[i0], clip[i1], clip[i2], width_, height_);
     if (!interpolator.valid()) {  // seen edge-on: it covers no area
       ++out.stats.culled;
       return;
     }
     ++out.stats.drawn;
-    const Vec3 depthPlane = 0.5 * interpolator.ndcDepthPlane() + Vec3(0, 0, 0.5);  // glDepthRange(0, 1)
-    for (int i = 1; i + 1 < n; ++i) {                                              // a fan over the convex polygon
-      SetupTriangle t;
+    for (int i = 1; i + 1 < n; ++i) {  // a fan over the convex polygon
+      SetupTriangle t{DrawnFace{face, interpolator}, {}, 0, 0, 0, 0};
       t.v[0] = p[0];
       t.v[1] = front ? p[i] : p[i + 1];
       t.v[2] = front ? p[i + 1] : p[i];
@@ -195,8 +205,8 @@ class Setup {
       if (subArea <= 0) continue;  // a sliver that snapping collapsed or turned over
       std::int64_t minX = t.v[0].x, maxX = minX, minY = t.v[0].y, maxY = minY;
       for (const Point& q : t.v) {
-        minX = std::min(minX, q.x), maxX = std::max(maxX, q.x);
-        minY = std::min(minY, q.y), maxY = std::max(maxY, q.y);
+        minX = std::min<std::int64_t>(minX, q.x), maxX = std::max<std::int64_t>(maxX, q.x);
+        minY = std::min<std::int64_t>(minY, q.y), maxY = std::max<std::int64_t>(maxY, q.y);
       }
       // Pixels whose centre i + 1/2 lies in [min, max].
       t.x0 = int(std::max<std::int64_t>(0, floorDiv(minX - kHalfPixel + kSubpixel - 1, kSubpixel)));
@@ -204,8 +214,6 @@ class Setup {
       t.y0 = int(std::max<std::int64_t>(0, floorDiv(minY - kHalfPixel + kSubpixel - 1, kSubpixel)));
       t.y1 = int(std::min<std::int64_t>(height_ - 1, floorDiv(maxY - kHalfPixel, kSubpixel)));
       if (t.x0 > t.x1 || t.y0 > t.y1) continue;
-      t.face = face;
-      t.depthPlane = depthPlane;
       const auto index = std::uint32_t(out.triangles.size());
       out.triangles.push_back(t);
       for (int ty = t.y0 / kTileSize; ty <= t.y1 / kTileSize; ++ty)
@@ -215,15 +223,45 @@ class Setup {
   }
 
  private:
+  // 1/256 pixel steps in window coordinates (y up) of a corner with w > 0.
+  Point snap(const Vec4& c) const {
+    const double x = (c.x() / c.w() + 1.0) * 0.5 * width_, y = (c.y() / c.w() + 1.0) * 0.5 * height_;
+    return Point{std::int32_t(roundHalfAway(x * kSubpixel)), std::int32_t(roundHalfAway(y * kSubpixel))};
+  }
+
+  // The triangle clipped to the planes and snapped: the polygon's corner count, 0 when nothing
+  // of it is visible.
+  int clipAndSnap(const Vec4& c0, const Vec4& c1, const Vec4& c2, std::array<Point, 9>& p) const {
+    Polygon a{c0, c1, c2};
+    if (!(c0.allFinite() && c1.allFinite() && c2.allFinite())) return 0;
+    Polygon b;
+    int n = 3;
+    Polygon* in = &a;
+    Polygon* outPolygon = &b;
+    for (int plane = 0; plane < 6 && n > 0; ++plane) {
+      bool allInside = true;
+      for (int i = 0; i < n && allInside; ++i) allInside = planes_.distance(plane, (*in)[i]) >= 0.0;
+      if (allInside) continue;
+      n = clipAgainst(planes_, plane, *in, n, *outPolygon);
+      std::swap(in, outPolygon);
+    }
+    for (int i = 0; i < n; ++i) {
+      const Vec4& c = (*in)[i];
+      if (!(c.w() > 0.0)) return 0;  // only the degenerate point (0, 0, 0, 0) survives the guard band at w <= 0
+      p[std::size_t(i)] = snap(c);
+    }
+    return n;
+  }
+
   int width_, height_, tilesX_;
   RasterOptions options_;
   ClipPlanes planes_{};
 };
 
 // Edge tests and the depth test of one triangle over the pixels of one tile.
-void drawInTile(const SetupTriangle& t, int tileX0, int tileX1, int tileY0, int tileY1, VisibilityBuffer& buffer) {
-  const int x0 = std::max(t.x0, tileX0), x1 = std::min(t.x1, tileX1);
-  const int y0 = std::max(t.y0, tileY0), y1 = std::min(t.y1, tileY1);
+void drawInTile(const SetupTriangle& t, TiledRaster::Tile& tile) {
+  const int x0 = std::max(t.x0, tile.x0), x1 = std::min(t.x1, tile.x1);
+  const int y0 = std::max(t.y0, tile.y0), y1 = std::min(t.y1, tile.y1);
   if (x0 > x1 || y0 > y1) return;
   std::int64_t rowStart[3], stepX[3], stepY[3];
   const std::int64_t px = std::int64_t(x0) * kSubpixel + kHalfPixel, py = std::int64_t(y0) * kSubpixel + kHalfPixel;
@@ -232,21 +270,24 @@ void drawInTile(const SetupTriangle& t, int tileX0, int tileX1, int tileY0, int 
     const Point& b = t.v[(e + 1) % 3];
     // E(p) = (b - a) x (p - a): positive inside a counter-clockwise triangle. A centre on a
     // edge that does not own it is pushed out by one unit.
-    rowStart[e] = (b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x) - (isTopLeft(a, b) ? 0 : 1);
-    stepX[e] = -(b.y - a.y) * kSubpixel;
-    stepY[e] = (b.x - a.x) * kSubpixel;
+    const std::int64_t dx = std::int64_t(b.x) - a.x, dy = std::int64_t(b.y) - a.y;
+    rowStart[e] = dx * (py - a.y) - dy * (px - a.x) - (isTopLeft(a, b) ? 0 : 1);
+    stepX[e] = -dy * kSubpixel;
+    stepY[e] = dx * kSubpixel;
   }
+  const DrawnFace* face = &t.drawn;
+  const Vec3 depthPlane = 0.5 * face->interpolator.ndcDepthPlane() + Vec3(0, 0, 0.5);  // glDepthRange(0, 1)
   for (int y = y0; y <= y1; ++y) {
     std::int64_t e0 = rowStart[0], e1 = rowStart[1], e2 = rowStart[2];
-    const int row = buffer.height - 1 - y;
+    const std::size_t row = std::size_t(y - tile.y0) * kTileSize;
     for (int x = x0; x <= x1; ++x) {
       if ((e0 | e1 | e2) >= 0) {
-        const double z = t.depthPlane.dot(Vec3(x + 0.5, y + 0.5, 1.0));
+        const double z = depthPlane.dot(Vec3(x + 0.5, y + 0.5, 1.0));
         const float depth = float(std::clamp(z, 0.0, 1.0));
-        const std::size_t i = buffer.index(x, row);
-        if (depth < buffer.depth[i]) {
-          buffer.depth[i] = depth;
-          buffer.face[i] = t.face;
+        const std::size_t i = row + std::size_t(x - tile.x0);
+        if (depth < tile.depth[i]) {
+          tile.depth[i] = depth;
+          tile.face[i] = face;
         }
       }
       e0 += stepX[0], e1 += stepX[1], e2 += stepX[2];
@@ -285,54 +326,79 @@ TriangleInterpolator::Barycentrics TriangleInterpolator::at(double x, double y) 
   return r;
 }
 
-VisibilityBuffer rasterize(const std::vector<Vec4>& clip, const std::vector<Triangle>& triangles, int width, int height,
-                           const RasterOptions& options, RasterStats* stats) {
+TiledRaster::TiledRaster(const std::vector<Vec4>& clip, const std::vector<Triangle>& triangles, int width,
+                         int height, const RasterOptions& options)
+    : width_(width), height_(height) {
   if (width <= 0 || height <= 0 || width > kMaxViewport || height > kMaxViewport)
     throw UsageError("the image size must lie between 1 x 1 and 16384 x 16384 pixels");
+  tilesX_ = (width + kTileSize - 1) / kTileSize, tilesY_ = (height + kTileSize - 1) / kTileSize;
+  const auto faceCount = std::int64_t(triangles.size());
+  UVTK_CHECK(faceCount <= std::numeric_limits<std::int32_t>::max());
+  const int threads = threadCount(options.threads);
+  const Setup setup(width, height, tilesX_, options);
+
+  std::vector<WindowVertex> window(clip.size());
+  constexpr std::size_t kVertexChunk = std::size_t(1) << 16;
+  parallelFor(int((clip.size() + kVertexChunk - 1) / kVertexChunk), threads, [&](int c) {
+    const std::size_t end = std::min(clip.size(), std::size_t(c + 1) * kVertexChunk);
+    for (std::size_t v = std::size_t(c) * kVertexChunk; v < end; ++v) window[v] = setup.vertex(clip[v]);
+  });
+
+  // Set-up in chunks of consecutive triangles; each chunk bins its own triangles, and tiles read
+  // the chunks in order, so the drawing order is the input order whatever the thread count.
+  const int chunkCount = int(std::clamp<std::int64_t>(faceCount / 4096, 1, 4 * threads));
+  chunks_.resize(static_cast<std::size_t>(chunkCount));
+  parallelFor(chunkCount, threads, [&](int c) {
+    Chunk& chunk = chunks_[std::size_t(c)];
+    chunk.tiles.resize(std::size_t(tileCount()));
+    const std::int64_t begin = faceCount * c / chunkCount, end = faceCount * (c + 1) / chunkCount;
+    chunk.triangles.reserve(std::size_t(end - begin) / 2);  // a closed mesh shows about half its faces
+    for (std::int64_t f = begin; f < end; ++f)
+      setup.triangle(clip, window, triangles[std::size_t(f)], std::int32_t(f), chunk);
+  });
+  for (const Chunk& chunk : chunks_) {
+    stats_.culled += chunk.stats.culled;
+    stats_.clipped += chunk.stats.clipped;
+    stats_.drawn += chunk.stats.drawn;
+  }
+}
+
+TiledRaster::~TiledRaster() = default;
+
+void TiledRaster::draw(int tile, Tile& out) const {
+  const int tx = tile % tilesX_, ty = tile / tilesX_;
+  out.x0 = tx * kTileSize, out.x1 = std::min(width_, out.x0 + kTileSize) - 1;
+  out.y0 = ty * kTileSize, out.y1 = std::min(height_, out.y0 + kTileSize) - 1;
+  out.face.fill(nullptr);
+  out.depth.fill(1.0f);
+  for (const Chunk& chunk : chunks_)
+    for (std::uint32_t index : chunk.tiles[std::size_t(tile)])
+      drawInTile(chunk.triangles[index], out);
+}
+
+VisibilityBuffer rasterize(const std::vector<Vec4>& clip, const std::vector<Triangle>& triangles, int width, int height,
+                           const RasterOptions& options, RasterStats* stats) {
+  const TiledRaster raster(clip, triangles, width, height, options);
   VisibilityBuffer buffer;
   buffer.width = width;
   buffer.height = height;
   buffer.face.assign(std::size_t(width) * std::size_t(height), -1);
   buffer.depth.assign(buffer.face.size(), 1.0f);
-
-  const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
-  const int tileCount = tilesX * tilesY;
-  const auto faceCount = std::int64_t(triangles.size());
-  UVTK_CHECK(faceCount <= std::numeric_limits<std::int32_t>::max());
-
-  // Set-up in chunks of consecutive triangles; each chunk bins its own triangles, and tiles read
-  // the chunks in order, so the drawing order is the input order whatever the thread count.
-  const int threads = threadCount(options.threads);
-  const int chunkCount = int(std::clamp<std::int64_t>(faceCount / 4096, 1, 4 * threads));
-  std::vector<Binned> chunks(static_cast<std::size_t>(chunkCount));
-  const Setup setup(width, height, tilesX, options);
-  parallelFor(chunkCount, threads, [&](int c) {
-    Binned& chunk = chunks[std::size_t(c)];
-    chunk.tiles.resize(std::size_t(tileCount));
-    const std::int64_t begin = faceCount * c / chunkCount, end = faceCount * (c + 1) / chunkCount;
-    for (std::int64_t f = begin; f < end; ++f) setup.triangle(clip, triangles[std::size_t(f)], std::int32_t(f), chunk);
-  });
-
-  Progress progress("rasterizing " + std::to_string(width) + "x" + std::to_string(height), std::uint64_t(tileCount),
-                    "tiles");
-  parallelFor(tileCount, threads, [&](int tile) {
-    const int tx = tile % tilesX, ty = tile / tilesX;
-    const int x0 = tx * kTileSize, x1 = std::min(width, x0 + kTileSize) - 1;
-    const int y0 = ty * kTileSize, y1 = std::min(height, y0 + kTileSize) - 1;
-    for (const Binned& chunk : chunks)
-      for (std::uint32_t index : chunk.tiles[std::size_t(tile)])
-        drawInTile(chunk.triangles[index], x0, x1, y0, y1, buffer);
+  Progress progress("rasterizing " + std::to_string(width) + "x" + std::to_string(height),
+                    std::uint64_t(raster.tileCount()), "tiles");
+  parallelFor(raster.tileCount(), options.threads, [&](int index) {
+    const std::unique_ptr<TiledRaster::Tile> tile(new TiledRaster::Tile);  // draw() fills it
+    raster.draw(index, *tile);
+    for (int y = tile->y0; y <= tile->y1; ++y)
+      for (int x = tile->x0; x <= tile->x1; ++x) {
+        const std::size_t from = std::size_t(y - tile->y0) * TiledRaster::kTileSize + std::size_t(x - tile->x0);
+        const std::size_t to = buffer.index(x, height - 1 - y);
+        buffer.face[to] = tile->face[from] ? tile->face[from]->face : -1;
+        buffer.depth[to] = tile->depth[from];
+      }
     progress.advance();
   });
-
-  if (stats) {
-    *stats = RasterStats{};
-    for (const Binned& chunk : chunks) {
-      stats->culled += chunk.stats.culled;
-      stats->clipped += chunk.stats.clipped;
-      stats->drawn += chunk.stats.drawn;
-    }
-  }
+  if (stats) *stats = raster.stats();
   return buffer;
 }
 

@@ -6,6 +6,7 @@
 // docs/conventions.md §7.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -38,11 +39,6 @@ struct RasterStats {
 
 constexpr int kMaxViewport = 16384;  // pixels a side
 
-// `clip`: clip-space positions, indexed by `triangles`. Throws UsageError for an empty or too
-// large viewport (more than kMaxViewport pixels a side).
-VisibilityBuffer rasterize(const std::vector<Vec4>& clip, const std::vector<Triangle>& triangles, int width, int height,
-                           const RasterOptions& options, RasterStats* stats = nullptr);
-
 // Perspective-correct barycentric coordinates of one triangle at any point of the window, from its
 // unclipped clip-space corners: with M the 3 x 3 matrix of the corners' (x, y, w) as columns,
 // k = M^-1 (X_ndc, Y_ndc, 1) and b = k / (k0 + k1 + k2), which is the interpolation rule
@@ -70,5 +66,51 @@ class TriangleInterpolator {
   Eigen::Matrix3d kFromWindow_;  // row i: k_i as a x + b y + c in window coordinates
   Vec3 depthPlane_ = Vec3::Zero();
 };
+
+// One drawn triangle's set-up, made once by the rasterizer and shared by the shading of its pixels.
+struct DrawnFace {
+  std::int32_t face;
+  TriangleInterpolator interpolator;  // valid: a triangle seen edge-on is not drawn
+};
+
+// The frame's triangles set up and binned into square tiles once; each tile is then drawn on its
+// own, on any thread and in any order, so that a caller can shade a tile while it is in cache.
+// Within a tile the triangles are drawn in input order, whatever the thread count.
+class TiledRaster {
+ public:
+  static constexpr int kTileSize = 64;
+
+  // `clip`: clip-space positions, indexed by `triangles`. Throws UsageError for an empty or too
+  // large viewport (more than kMaxViewport pixels a side).
+  TiledRaster(const std::vector<Vec4>& clip, const std::vector<Triangle>& triangles, int width, int height,
+              const RasterOptions& options);
+  TiledRaster(const TiledRaster&) = delete;  // tiles point into the set-up
+  TiledRaster& operator=(const TiledRaster&) = delete;
+  ~TiledRaster();
+
+  int tileCount() const { return tilesX_ * tilesY_; }
+  const RasterStats& stats() const { return stats_; }
+
+  // A tile's pixels in window coordinates (y up), inclusive, and what it sees: per pixel
+  // (x, y), at index (y - y0) * kTileSize + (x - x0), the nearest triangle (null where nothing
+  // was drawn) and its window depth (1 there).
+  struct Tile {
+    int x0 = 0, x1 = -1, y0 = 0, y1 = -1;
+    std::array<const DrawnFace*, kTileSize * kTileSize> face;
+    std::array<float, kTileSize * kTileSize> depth;
+  };
+  void draw(int tile, Tile& out) const;
+
+  struct Chunk;  // the set-up and bins of a run of consecutive triangles (raster.cpp)
+
+ private:
+  int width_, height_, tilesX_, tilesY_;
+  std::vector<Chunk> chunks_;
+  RasterStats stats_;
+};
+
+// The visibility of the whole frame: TiledRaster's tiles drawn into one buffer.
+VisibilityBuffer rasterize(const std::vector<Vec4>& clip, const std::vector<Triangle>& triangles, int width, int height,
+                           const RasterOptions& options, RasterStats* stats = nullptr);
 
 }  // namespace uvtk::render

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -19,6 +20,7 @@ namespace uvtk::render {
 namespace {
 
 constexpr int kRowsPerBand = 8;
+constexpr int kPrefetchAhead = 4;  // pixels: about the latency of a cache miss in shading time
 constexpr std::uint64_t kLargeRenderBytes = std::uint64_t(1) << 30;  // announced on stderr
 
 // Texture coordinates of one fragment, (s, t, r) / q, and their screen-space derivatives.
@@ -37,7 +39,6 @@ struct FrameData {
   const Mesh& mesh;
   const TexcoordSource& source;
   const RenderOptions& options;
-  const std::vector<Vec4>& clip;   // per vertex
   std::vector<Vec3> normals;       // object space, per corner: for lighting or the pixel mapping
   std::vector<Vec4> cornerColour;  // lit colour per corner when the environment reads it
 };
@@ -54,17 +55,12 @@ class Shader {
  public:
   explicit Shader(const FrameData& frame) : f_(frame) {}
 
-  // The pixel (x, row) of triangle `face`; returns RGB and fills the AOV values.
-  Vec3 shade(int x, int row, std::int32_t face, float* aov) {
+  // The pixel (x, row) of a drawn triangle; returns RGB and fills the AOV values.
+  Vec3 shade(int x, int row, const DrawnFace& drawn, float* aov) const {
     const RenderOptions& o = f_.options;
-    if (face != cachedFace_) {
-      const Triangle& t = f_.mesh.triangles[std::size_t(face)];
-      interpolator_ = TriangleInterpolator(f_.clip[std::size_t(t[0])], f_.clip[std::size_t(t[1])],
-                                           f_.clip[std::size_t(t[2])], o.camera.width, o.camera.height);
-      cachedFace_ = face;
-    }
+    const std::int32_t face = drawn.face;
     const double wx = x + 0.5, wy = o.camera.height - row - 0.5;  // window coordinates, y up
-    const TriangleInterpolator::Barycentrics b = interpolator_.at(wx, wy);
+    const TriangleInterpolator::Barycentrics b = drawn.interpolator.at(wx, wy);
     const FragmentTexcoords tc = f_.source.pixelMapping ? exactTexcoords(face, b) : interpolatedTexcoords(face, b);
     const TextureLookup lookup = o.cubeTexture ? lookUpCube(tc) : lookUp2d(tc);
     Vec4 fragment = Vec4::Ones();
@@ -172,8 +168,6 @@ class Shader {
   }
 
   const FrameData& f_;
-  std::int32_t cachedFace_ = -1;
-  TriangleInterpolator interpolator_{Vec4::Zero(), Vec4::Zero(), Vec4::Zero(), 1, 1};
 };
 
 std::vector<Vec4> clipPositions(const Mesh& mesh, const Mat4& clipFromObject, int threads) {
@@ -187,21 +181,23 @@ std::vector<Vec4> clipPositions(const Mesh& mesh, const Mat4& clipFromObject, in
   return clip;
 }
 
-// One sample at the centre of each pixel of the camera's viewport; `visible` receives the
-// visibility buffer. The arguments are valid.
+// One sample at the centre of each pixel of the camera's viewport. Each tile is shaded right
+// after its visibility is drawn, while both are in cache. `sampleCovered`, when given, receives
+// per pixel (row 0 at the top) whether a triangle covers it. The arguments are valid.
 Rendering renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOptions& o,
-                      VisibilityBuffer& visible) {
+                      std::vector<std::uint8_t>* sampleCovered) {
   const int width = o.camera.width, height = o.camera.height;
   Rendering out;
 
   const auto rasterStart = std::chrono::steady_clock::now();
   const Mat4 eyeFromObject = o.camera.viewFromWorld * o.worldFromObject;
   const std::vector<Vec4> clip = clipPositions(mesh, o.camera.clipFromView * eyeFromObject, o.raster.threads);
-  visible = rasterize(clip, mesh.triangles, width, height, o.raster, &out.raster);
+  const TiledRaster raster(clip, mesh.triangles, width, height, o.raster);
+  out.raster = raster.stats();
   out.rasterMs = millisecondsSince(rasterStart);
 
   const auto shadeStart = std::chrono::steady_clock::now();
-  FrameData frame{mesh, source, o, clip, {}, {}};
+  FrameData frame{mesh, source, o, {}, {}};
   // Normals and lighting only when something reads them.
   const bool lit = readsFragmentColour(o.env);
   if (lit || (source.pixelMapping && source.pixelMapping->needsNormal)) frame.normals = cornerNormals(mesh);
@@ -221,32 +217,50 @@ Rendering renderFrame(const Mesh& mesh, const TexcoordSource& source, const Rend
     out.aovs.channelNames = {"u", "v", "depth", "face", "lod"};
     if (o.cubeTexture) out.aovs.channelNames.push_back("cubeface");
   }
-  const int bands = (height + kRowsPerBand - 1) / kRowsPerBand;
-  std::vector<std::size_t> covered(std::size_t(bands), 0);
-  Progress progress("rendering " + std::to_string(width) + "x" + std::to_string(height), std::uint64_t(height), "rows");
-  parallelFor(bands, o.raster.threads, [&](int band) {
-    Shader shader(frame);
-    const int end = std::min(height, (band + 1) * kRowsPerBand);
-    for (int row = band * kRowsPerBand; row < end; ++row)
-      for (int x = 0; x < width; ++x) {
-        const std::size_t i = visible.index(x, row);
-        const std::int32_t face = visible.face[i];
+  if (sampleCovered) sampleCovered->assign(std::size_t(width) * std::size_t(height), 0);
+  std::vector<std::size_t> covered(std::size_t(raster.tileCount()), 0);
+  Progress progress("rendering " + std::to_string(width) + "x" + std::to_string(height),
+                    std::uint64_t(raster.tileCount()), "tiles");
+  const Shader shader(frame);
+  parallelFor(raster.tileCount(), o.raster.threads, [&](int index) {
+    const std::unique_ptr<TiledRaster::Tile> tile(new TiledRaster::Tile);  // draw() fills it
+    raster.draw(index, *tile);
+    for (int y = tile->y0; y <= tile->y1; ++y) {
+      const int row = height - 1 - y;
+      for (int x = tile->x0; x <= tile->x1; ++x) {
+        const std::size_t i = std::size_t(y - tile->y0) * TiledRaster::kTileSize + std::size_t(x - tile->x0);
+        const DrawnFace* drawn = tile->face[i];
+        // The set-up and texture coordinates of the face a few pixels ahead lie anywhere in memory:
+        // asked for now, they are in cache when that pixel is shaded. (Inline: GCC drops a call
+        // to a function that only prefetches, as it has no effect.)
+        const DrawnFace* ahead = x + kPrefetchAhead <= tile->x1 ? tile->face[i + kPrefetchAhead] : nullptr;
+        if (ahead) {
+          __builtin_prefetch(&ahead->interpolator);
+          if (!source.pixelMapping) {
+            const auto* corners = reinterpret_cast<const char*>(&source.corners[3 * std::size_t(ahead->face)]);
+            __builtin_prefetch(corners);
+            __builtin_prefetch(corners + 64);
+            __builtin_prefetch(corners + 3 * sizeof(Vec4) - 1);
+          }
+        }
         float* aov = o.aovs ? &out.aovs.pixels[out.aovs.index(x, row)] : nullptr;
         Vec3 rgb = o.background;
-        if (face >= 0) {
-          rgb = shader.shade(x, row, face, aov);
-          ++covered[std::size_t(band)];
+        if (drawn) {
+          rgb = shader.shade(x, row, *drawn, aov);
+          ++covered[std::size_t(index)];
+          if (sampleCovered) (*sampleCovered)[std::size_t(row) * std::size_t(width) + std::size_t(x)] = 1;
         } else if (aov) {
           aov[0] = aov[1] = aov[4] = 0.0f;
           if (o.cubeTexture) aov[5] = -1.0f;
         }
         if (aov) {
-          aov[2] = visible.depth[i];
-          aov[3] = float(face);
+          aov[2] = tile->depth[i];
+          aov[3] = drawn ? float(drawn->face) : -1.0f;
         }
         for (int c = 0; c < 3; ++c) out.colour.at(x, row, c) = float(rgb[c]);
       }
-    progress.advance(std::uint64_t(end - band * kRowsPerBand));
+    }
+    progress.advance();
   });
   for (std::size_t n : covered) out.coveredPixels += n;
   out.shadeMs = millisecondsSince(shadeStart);
@@ -265,8 +279,8 @@ int sampleGridSize(int samplesPerPixel) {
 // The supersampled frame down to width x height: each n x n block's mean colour (in double, so
 // that a block of equal samples keeps their value exactly), its sample (n/2, n/2)'s AOVs, covered
 // when any of its samples is.
-Rendering resolve(const Rendering& samples, const VisibilityBuffer& visible, int n, int width, int height,
-                  int threads) {
+Rendering resolve(const Rendering& samples, const std::vector<std::uint8_t>& sampleCovered, int n, int width,
+                  int height, int threads) {
   Rendering out;
   out.colour = Image(width, height, 3);
   const bool aovs = !samples.aovs.pixels.empty();
@@ -284,7 +298,7 @@ Rendering resolve(const Rendering& samples, const VisibilityBuffer& visible, int
         for (int j = row * n; j < (row + 1) * n; ++j)
           for (int i = x * n; i < (x + 1) * n; ++i) {
             for (int c = 0; c < 3; ++c) sum[c] += samples.colour.at(i, j, c);
-            any = any || visible.face[visible.index(i, j)] >= 0;
+            any = any || sampleCovered[std::size_t(j) * std::size_t(samples.colour.width) + std::size_t(i)];
           }
         for (int c = 0; c < 3; ++c) out.colour.at(x, row, c) = float(sum[c] / double(n * n));
         covered[std::size_t(band)] += any;
@@ -329,16 +343,16 @@ Rendering render(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
                      std::to_string(std::int64_t(width) * n) + " x " + std::to_string(std::int64_t(height) * n) +
                      " frame, larger than the rasterizer's " + std::to_string(kMaxViewport) + " pixels a side");
   checkFrameMemory(mesh, source, o);
-  VisibilityBuffer visible;
-  if (n == 1) return renderFrame(mesh, source, o, visible);
+  if (n == 1) return renderFrame(mesh, source, o, nullptr);
 
   // The same projection onto an n times larger viewport puts each sample at a pixel centre.
   RenderOptions big = o;
   big.camera.width = width * n;
   big.camera.height = height * n;
-  const Rendering samples = renderFrame(mesh, source, big, visible);
+  std::vector<std::uint8_t> sampleCovered;
+  const Rendering samples = renderFrame(mesh, source, big, &sampleCovered);
   const auto resolveStart = std::chrono::steady_clock::now();
-  Rendering out = resolve(samples, visible, n, width, height, o.raster.threads);
+  Rendering out = resolve(samples, sampleCovered, n, width, height, o.raster.threads);
   out.shadeMs += millisecondsSince(resolveStart);
   return out;
 }

@@ -1,9 +1,10 @@
 // The verification renderer: a mesh with texture coordinates from any source (a file, a
 // projector, texgen) drawn as OpenGL's fixed-function pipeline draws it, or with the mapping
-// evaluated exactly at every pixel. Visibility first (render/raster.h), then each visible pixel is
-// shaded once: perspective-correct texture coordinates and their analytic derivatives, GL's level
-// of detail and filters, the texture environment. docs/conventions.md §7 and §9. Supersampling
-// draws the same frame at n times the width and height and box-filters each n x n block.
+// evaluated exactly at every pixel. Tile by tile, the visibility (render/raster.h), then each
+// visible pixel shaded once while the tile is in cache: perspective-correct texture coordinates
+// and their analytic derivatives, GL's level of detail and filters, the texture environment.
+// docs/conventions.md §7 and §9. Supersampling draws the same frame at n times the width and
+// height and box-filters each n x n block.
 #pragma once
 
 #include <cstdint>
@@ -73,7 +74,9 @@ struct Rendering {
   Image aovs;
   RasterStats raster;                    // of the frame drawn, n times larger a side with supersampling
   std::size_t coveredPixels = 0;         // pixels where the mesh covers at least one sample
-  double rasterMs = 0.0, shadeMs = 0.0;  // shadeMs includes the box filter
+  // rasterMs: the vertices to clip space, the triangles' set-up and binning into tiles; shadeMs:
+  // each tile's edge and depth tests and its shading, and the box filter.
+  double rasterMs = 0.0, shadeMs = 0.0;
 };
 
 // Throws UsageError when the texture coordinates do not match the mesh (3 per triangle) and

@@ -17,8 +17,10 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Texel coordinates beyond 2^62 are all "far outside"; clamping there keeps the int64 cast defined.
 constexpr double kFarTexel = 4611686018427387904.0;  // 2^62
 
-// i mod n in [0, n) for n > 0, whatever the sign of i.
+// i mod n in [0, n) for n > 0, whatever the sign of i. A power of two, as mipmapped sizes mostly
+// are, takes the low bits (two's complement), which is the same and saves a 64-bit division.
 std::int64_t positiveModulo(std::int64_t i, std::int64_t n) {
+  if ((n & (n - 1)) == 0) return i & (n - 1);
   const std::int64_t r = i % n;
   return r < 0 ? r + n : r;
 }

@@ -285,7 +285,7 @@ TEST_F(SceneCli, ARenderTheProcessCannotHoldIsRefusedBeforeItsBuffersAreAllocate
   const CliRun r = shell("ulimit -v 3000000; " + std::string(UVTK_BINARY) + " run " + path("scene.json") + " -q");
   EXPECT_EQ(r.status, 3) << r.err;
   EXPECT_EQ(r.err.find(path("scene.json") +
-                       ": /outputs/0: rendering 16384x16384 needs about 5.0 GiB of memory for its buffers, more than "
+                       ": /outputs/0: rendering 16384x16384 needs about 3.0 GiB of memory for its buffers, more than "
                        "the "),
             0u)
       << r.err;
