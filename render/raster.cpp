@@ -298,6 +298,22 @@ void drawInTile(const SetupTriangle& t, TiledRaster::Tile& tile) {
 
 }  // namespace
 
+Mat3 inverse3x3(const Mat3& m) {
+  // Eigen 3.4, LU/InverseImpl.h (compute_inverse for size 3): the cofactors of column 0, the
+  // determinant from them summed in index order, and every cofactor times 1 / determinant.
+  const auto cofactor = [&m](int i, int j) {
+    const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+    return m(i1, j1) * m(i2, j2) - m(i1, j2) * m(i2, j1);
+  };
+  const double c00 = cofactor(0, 0), c10 = cofactor(1, 0), c20 = cofactor(2, 0);
+  const double invdet = 1.0 / (c00 * m(0, 0) + c10 * m(1, 0) + c20 * m(2, 0));
+  Mat3 r;
+  r << c00 * invdet, c10 * invdet, c20 * invdet,                      //
+      cofactor(0, 1) * invdet, cofactor(1, 1) * invdet, cofactor(2, 1) * invdet,  //
+      cofactor(0, 2) * invdet, cofactor(1, 2) * invdet, cofactor(2, 2) * invdet;
+  return r;
+}
+
 TriangleInterpolator::TriangleInterpolator(const Vec4& c0, const Vec4& c1, const Vec4& c2, int width, int height) {
   Mat3 m;
   m << c0.x(), c1.x(), c2.x(),  //
@@ -309,7 +325,7 @@ TriangleInterpolator::TriangleInterpolator(const Vec4& c0, const Vec4& c1, const
   ndcFromWindow << 2.0 / width, 0, -1,  //
       0, 2.0 / height, -1,              //
       0, 0, 1;
-  kFromWindow_ = m.inverse() * ndcFromWindow;
+  kFromWindow_ = inverse3x3(m) * ndcFromWindow;
   if (!kFromWindow_.allFinite()) return;
   depthPlane_ = (Vec3(c0.z(), c1.z(), c2.z()).transpose() * kFromWindow_).transpose();
   valid_ = true;

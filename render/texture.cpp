@@ -229,14 +229,39 @@ LevelChoice chooseLevels(const SamplerState& sampler, int levelCount, double lam
   return choice;
 }
 
+namespace {
+
+// sampleLinear on a level whose sizes are powers of two, with REPEAT along both axes: the wrap is
+// the low bits of the texel index, with no check per tap, and the blend is sampleLinear's.
+Vec4 sampleLinearRepeatPow2(const TexelLevel& level, double s, double t) {
+  const LinearTap u = linearTap(s, level.width), v = linearTap(t, level.height);
+  const auto maskS = std::uint64_t(level.width - 1), maskT = std::uint64_t(level.height - 1);
+  const auto i0 = std::size_t(std::uint64_t(u.lower) & maskS), i1 = std::size_t(std::uint64_t(u.lower + 1) & maskS);
+  const std::size_t w = std::size_t(level.width);
+  const Rgba* row0 = &level.texels[std::size_t(std::uint64_t(v.lower) & maskT) * w];
+  const Rgba* row1 = &level.texels[std::size_t(std::uint64_t(v.lower + 1) & maskT) * w];
+  const double a = u.alpha, b = v.alpha;
+  return (1 - a) * (1 - b) * widen(row0[i0]) + a * (1 - b) * widen(row0[i1]) + (1 - a) * b * widen(row1[i0]) +
+         a * b * widen(row1[i1]);
+}
+
+bool isPowerOfTwo(int n) { return (n & (n - 1)) == 0; }
+
+}  // namespace
+
 Vec4 sample(const Texture& texture, const SamplerState& sampler, double s, double t, double lambda) {
   if (!std::isfinite(s) || !std::isfinite(t)) return widen(texture.level(0).at(0, 0));
   UVTK_CHECK(!isMipmapFilter(sampler.minFilter) || texture.hasMipmaps());
   const LevelChoice choice = chooseLevels(sampler, texture.levelCount(), lambda);
+  // Every level of a power-of-two texture has power-of-two sizes.
+  const bool repeatPow2 = choice.linear && sampler.wrapS == Wrap::Repeat && sampler.wrapT == Wrap::Repeat &&
+                          isPowerOfTwo(texture.width()) && isPowerOfTwo(texture.height());
   Vec4 sum = Vec4::Zero();
-  for (int k = 0; k < choice.count; ++k)
+  for (int k = 0; k < choice.count; ++k) {
+    const TexelLevel& level = texture.level(choice.level[std::size_t(k)]);
     sum += choice.weight[std::size_t(k)] *
-           sampleLevel(texture.level(choice.level[std::size_t(k)]), choice.linear, sampler, s, t);
+           (repeatPow2 ? sampleLinearRepeatPow2(level, s, t) : sampleLevel(level, choice.linear, sampler, s, t));
+  }
   return sum;
 }
 

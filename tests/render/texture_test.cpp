@@ -6,7 +6,9 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <random>
 #include <vector>
 
 #include "core/error.h"
@@ -364,6 +366,30 @@ TEST(NeedsMipmaps, IsTrueForTheFourMipmapFilters) {
   EXPECT_TRUE(needsMipmaps(Filter::LinearMipmapNearest));
   EXPECT_TRUE(needsMipmaps(Filter::NearestMipmapLinear));
   EXPECT_TRUE(needsMipmaps(Filter::LinearMipmapLinear));
+}
+
+TEST(Sample, APowerOfTwoRepeatTextureBlendsItsLevelsExactlyAsSampleLinearDoes) {
+  // sample() wraps such a texture by masks; the result must be GL's blend of the per-level taps.
+  TexelLevel base;
+  base.width = 16, base.height = 8;
+  for (int j = 0; j < base.height; ++j)
+    for (int i = 0; i < base.width; ++i)
+      base.texels.emplace_back(float(i) / 16.0f, float(j) / 7.0f, float((i * 7 + j * 3) % 11) / 10.0f, 1.0f);
+  Texture texture(std::move(base), false);
+  texture.buildMipmaps();
+  const SamplerState sampler = samplerFor(Filter::LinearMipmapLinear, Wrap::Repeat);
+  std::mt19937_64 random(26);
+  std::uniform_real_distribution<double> coordinate(-40.0, 40.0), lambda(-1.0, 5.0);
+  for (int n = 0; n < 20000; ++n) {
+    const double s = coordinate(random), t = coordinate(random), l = lambda(random);
+    const LevelChoice choice = chooseLevels(sampler, texture.levelCount(), l);
+    Vec4 expected = Vec4::Zero();
+    for (int k = 0; k < choice.count; ++k)
+      expected += choice.weight[std::size_t(k)] *
+                  sampleLinear(texture.level(choice.level[std::size_t(k)]), Wrap::Repeat, Wrap::Repeat, s, t);
+    const Vec4 actual = sample(texture, sampler, s, t, l);
+    ASSERT_EQ(std::memcmp(actual.data(), expected.data(), sizeof(double) * 4), 0) << s << " " << t << " " << l;
+  }
 }
 
 }  // namespace
