@@ -33,7 +33,6 @@
 #include "param/uv_kernel.h"
 #include "param/reference.h"
 #include "peers/assimp_peer.h"
-#include "render/procedural.h"
 #include "views/pareto.h"
 
 namespace uvtk::inspect {
@@ -280,18 +279,15 @@ std::vector<nlohmann::json> benchEndToEnd(const BenchOptions& a) {
 // ---- Rendering ----
 
 std::vector<nlohmann::json> benchRendering(const BenchOptions& a, const Mesh& mesh) {
-  const int width = a.width, height = a.height;
   const std::vector<int>& threadCounts = a.threads;
   const std::vector<int>& sampleCounts = a.samples;
-  const std::vector<render::Filter>& filters = a.filters;
-  render::Texture texture = *a.texture;
-  texture.buildMipmaps();
-
+  // The scene as `uvtk render` sets it up (cli::renderMeshFile): the camera made on the mesh read,
+  // the mesh mapped, the renderer's options of the frame and the texture. Each row then sets its
+  // filter, samples and threads.
+  const render::Camera camera = a.camera.make(mesh, Mat4::Identity(), a.frame.width, a.frame.height);
   const MappedMesh mapped = mapByProjector(mesh, a.renderProjector.options, false);
   const render::TexcoordSource perVertex = mapped.texcoordSource(false), perPixel = mapped.texcoordSource(true);
-  render::RenderOptions base;
-  base.camera = a.camera.frame(mapped.mesh, width, height);
-  base.texture = &texture;
+  const render::RenderOptions base = renderOptions(a.frame, a.textureOptions, a.texture, camera, Mat4::Identity());
 
   struct RenderCase {
     std::string name, uv;
@@ -303,7 +299,7 @@ std::vector<nlohmann::json> benchRendering(const BenchOptions& a, const Mesh& me
   std::vector<std::unique_ptr<render::RenderOptions>> optionStore;
   auto add = [&](const std::string& uv, render::Filter filter, int spp, int threads) {
     auto options = std::make_unique<render::RenderOptions>(base);
-    options->sampler = render::samplerFor(filter, render::Wrap::Repeat);
+    options->sampler = render::samplerFor(filter, a.textureOptions.wrap);
     options->samplesPerPixel = spp;
     options->raster.threads = threads;
     cases.push_back({"render/" + std::to_string(cases.size()), uv, filter, spp, threads});
@@ -319,16 +315,21 @@ std::vector<nlohmann::json> benchRendering(const BenchOptions& a, const Mesh& me
         ->UseRealTime()
         ->Unit(benchmark::kMillisecond);
   };
+  // Per-vertex UVs (the default): every row interpolates them, and one row per thread count
+  // evaluates them per pixel to show what exact UVs cost. --uv per-pixel: every row evaluates them,
+  // as the user's scene is drawn; interpolated rows would time a picture it never draws.
+  const char* uv = a.frame.perPixel ? "per-pixel" : "per-vertex";
   for (int threads : threadCounts) {
-    for (const char* uv : {"per-vertex", "per-pixel"}) add(uv, render::Filter::LinearMipmapLinear, 1, threads);
-    for (render::Filter filter : filters)
-      if (filter != render::Filter::LinearMipmapLinear) add("per-vertex", filter, 1, threads);  // the row above
+    add(uv, a.filter, 1, threads);
+    if (!a.frame.perPixel) add("per-pixel", a.filter, 1, threads);
+    for (render::Filter filter : a.filters)
+      if (filter != a.filter) add(uv, filter, 1, threads);  // the first row has it
     for (int spp : sampleCounts)
-      if (spp > 1) add("per-vertex", render::Filter::LinearMipmapLinear, spp, threads);
+      if (spp > 1) add(uv, a.filter, spp, threads);
   }
   if (!quiet()) std::fprintf(stderr, "uvtk bench: the 64-sample reference frame ...\n");
   render::RenderOptions referenceOptions = base;
-  referenceOptions.sampler = render::samplerFor(render::Filter::LinearMipmapLinear, render::Wrap::Repeat);
+  referenceOptions.sampler = render::samplerFor(render::Filter::LinearMipmapLinear, a.textureOptions.wrap);
   referenceOptions.samplesPerPixel = 64;
   const Image reference = render::render(mapped.mesh, perPixel, referenceOptions).colour;
   for (RenderCase& c : cases) {
@@ -345,20 +346,33 @@ std::vector<nlohmann::json> benchRendering(const BenchOptions& a, const Mesh& me
   }
 
   // The UV error of interpolation, once: it depends on neither filter nor threads.
-  views::ViewOptions viewOptions;
-  viewOptions.render = base;
-  const views::UvErrorMap uvError = views::uvErrorMap(mapped.viewInput(nullptr), viewOptions);
+  views::UvErrorMap uvError;
+  if (!a.frame.perPixel) {
+    views::ViewOptions viewOptions;
+    viewOptions.render = base;
+    uvError = views::uvErrorMap(mapped.viewInput(nullptr), viewOptions);
+  }
 
   if (!quiet()) std::fprintf(stderr, "uvtk bench: timing %zu rendering configurations ...\n", cases.size());
   const CollectingReporter timings = runBenchmarks();
+  const Vec3 eye = camera.eye();
   std::vector<nlohmann::json> records;
   for (const RenderCase& c : cases) {
     const bool perPixelUv = c.uv == "per-pixel";
     records.push_back({{"section", "rendering"},
                        {"projector", a.renderProjector.name},
                        {"triangles", mapped.mesh.faceCount()},
-                       {"width", width},
-                       {"height", height},
+                       {"width", a.frame.width},
+                       {"height", a.frame.height},
+                       {"camera", a.camera.explicitCamera() ? "explicit" : "auto"},
+                       {"projection", a.camera.ortho.empty() ? "perspective" : "orthographic"},
+                       {"eye", {eye.x(), eye.y(), eye.z()}},
+                       {"texture", a.textureSource},
+                       {"wrap", cli::nameOf(cli::kWrapNames, a.textureOptions.wrap)},
+                       {"env", cli::nameOf(cli::kEnvNames, a.textureOptions.env)},
+                       {"seamless", a.textureOptions.seamless},
+                       {"cull", cli::nameOf(cli::kCullNames, a.frame.cull)},
+                       {"background", {a.frame.background.x(), a.frame.background.y(), a.frame.background.z()}},
                        {"filter", cli::nameOf(cli::kFilterNames, c.filter)},
                        {"uv", c.uv},
                        {"spp", c.spp},
@@ -415,9 +429,12 @@ std::string markdownTables(const std::vector<nlohmann::json>& records, int textu
             formatNumber(r.value("p99_err_texels", nlohmann::json()), "%.3g") + " |\n";
     } else {
       if (!renderHeader)
-        md +=
-            "\n| triangles | size | uv | filter | spp | threads | ms/frame | RMSE vs 64 spp | max err | UV err max "
-            "(texels) | UV err mean (texels) |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
+        md += "\nScene: camera " + r["camera"].get<std::string>() + " (" + r["projection"].get<std::string>() +
+              "), texture " + r["texture"].get<std::string>() + ", wrap " + r["wrap"].get<std::string>() + ", env " +
+              r["env"].get<std::string>() + (r["seamless"].get<bool>() ? ", seamless" : "") + ", cull " +
+              r["cull"].get<std::string>() + ".\n" +
+              "\n| triangles | size | uv | filter | spp | threads | ms/frame | RMSE vs 64 spp | max err | UV err max "
+              "(texels) | UV err mean (texels) |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
             renderHeader = true;
       md += "| " + std::to_string(r["triangles"].get<std::size_t>()) + " | " + std::to_string(r["width"].get<int>()) +
             "x" + std::to_string(r["height"].get<int>()) + " | " + r["uv"].get<std::string>() + " | " +
@@ -483,7 +500,6 @@ std::vector<int> parseCounts(const std::string& text, const std::string& option,
 }  // namespace
 
 BenchOptions BenchArguments::resolve() const {
-  camera.check();
   if (!(minTime > 0)) throw UsageError("--min-time: expected seconds > 0");
   if (textureWidth < 1) throw UsageError("--texture-width: expected a positive number of texels");
   // Every output's folder is checked before the first measurement.
@@ -505,13 +521,27 @@ BenchOptions BenchArguments::resolve() const {
           "--projector cube: the cube chooses its face per triangle; `uvtk bench` times per-vertex mappings");
   }
   if (render) {
-    std::tie(o.width, o.height) = cli::parseImageSize(size, "--size");
     o.samples = parseCounts(samples, "--spp", 1, 256);
-    o.filters = cli::parseNameList(filters, cli::kFilterNames, "--filters");
-    o.texture = render::proceduralTexture(texture);
-    if (!o.texture) throw UsageError("--texture: expected checker:N[:C] or uvgrid[:N], found \"" + texture + "\"");
+    // --filter given: the one filter timed; else the sweep, and the UV and sample-count rows in
+    // linear_mipmap_linear.
+    const bool filterGiven = app && cli::given(app, "--filter");
+    if (filterGiven && cli::given(app, "--filters"))
+      throw UsageError("--filter and --filters exclude each other: --filter times one filter, --filters several");
+    o.filters = filterGiven ? std::vector<render::Filter>{texture.filter}
+                            : cli::parseNameList(filters, cli::kFilterNames, "--filters");
+    o.filter = filterGiven ? texture.filter : render::Filter::LinearMipmapLinear;
     o.renderProjector = {renderProjector, cli::projectorNamed(renderProjector, "isn")};
-    o.camera = camera.resolve();
+    // What `uvtk render` refuses, in its order, before any work.
+    o.frame = frame.options();
+    camera.check();
+    texture.check();
+    cli::checkTextureUse(frame, texture, &o.renderProjector.options);
+    o.camera = camera;
+    o.textureSource = texture.source;
+    o.textureOptions = texture.options();
+    cli::TextureArguments mipmapped = texture;  // the reference reads the mipmaps; level 0 is the texture
+    mipmapped.filter = render::Filter::LinearMipmapLinear;
+    o.texture = mipmapped.load();
   }
   o.mapProjector = {mapProjector, cli::projectorNamed(mapProjector, omap)};
   o.endToEnd = !noEndToEnd;

@@ -1,22 +1,22 @@
 // The speed-accuracy trade measured in one run on the same data, as `uvtk bench` runs it. Mapping:
 // every projector x precision x math mode x thread count, nanoseconds per vertex (Google
-// Benchmark) and the error against the long-double reference. Rendering: per-vertex against
-// per-pixel UVs, and each filter and sample count against a 64-sample supersampled reference. The
-// peer, assimp's aiProcess_GenUVCoords, in the same run when it was built in. A Markdown table,
-// JSON records and Pareto charts (docs/precision.md). Its own target, uvtk_timing: only the
-// program links Google Benchmark.
+// Benchmark) and the error against the long-double reference. Rendering, of the scene `uvtk render`
+// draws from the same camera, texture and frame options: per-vertex against per-pixel UVs, and each
+// filter and sample count against a 64-sample supersampled reference. The peer, assimp's
+// aiProcess_GenUVCoords, in the same run when it was built in. A Markdown table, JSON records and
+// Pareto charts (docs/precision.md). Its own target, uvtk_timing: only the program links Google
+// Benchmark.
 #pragma once
 
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "core/arithmetic.h"
+#include "inspect/frame.h"
 #include "inspect/mapped_mesh.h"
-#include "options/view_camera_cli.h"
+#include "options/render_cli.h"
 #include "param/projector.h"
-#include "render/texture.h"
 
 namespace uvtk::inspect {
 
@@ -41,14 +41,17 @@ struct BenchOptions {
   // `uvtk map` of the mesh file end to end (with `mesh` only), by this projector, once per thread count.
   bool endToEnd = true;
   BenchProjector mapProjector;
-  // Rendering, when `rendering`.
+  // Rendering, when `rendering`: the scene as `uvtk render` sets it up from the same options.
   bool rendering = false;
   BenchProjector renderProjector;
-  int width = 512, height = 512;
-  std::optional<render::Texture> texture;  // set; its mipmaps are built here
-  std::vector<render::Filter> filters;
-  std::vector<int> samples;  // per pixel
-  ViewCamera camera;
+  cli::CameraArguments camera;  // checked; made on the rendered mesh
+  std::string textureSource;    // as given
+  BoundTexture texture;         // loaded, with mipmaps (the 64-sample reference reads them)
+  TextureOptions textureOptions;
+  FrameOptions frame;  // size, culling, background, per-pixel UVs
+  render::Filter filter = render::Filter::LinearMipmapLinear;  // of the UV and sample-count rows
+  std::vector<render::Filter> filters;                          // the sweep
+  std::vector<int> samples;                                     // per pixel
   // Outputs, none when empty; published together.
   std::string json, markdown, plot;  // plot: the mapping's Pareto chart, and FILE-render.png with `rendering`
 };
@@ -63,13 +66,16 @@ struct BenchArguments {
   std::string json, markdown, plot;
   bool noPeers = false, noEndToEnd = false;
   std::string mapProjector = "sphere";
-  // rendering
+  // rendering: `uvtk render`'s camera, texture and frame options, and the lists timed
   bool render = false;
-  std::string renderProjector = "sphere", size = "512x512", texture = "checker:512:16";
+  std::string renderProjector = "sphere";
+  cli::CameraArguments camera;
+  cli::TextureArguments texture;
+  cli::FrameArguments frame;
   std::string filters =
       "nearest,linear,nearest_mipmap_nearest,linear_mipmap_nearest,nearest_mipmap_linear,linear_mipmap_linear";
   std::string samples = "1,4,16";
-  cli::ViewCameraArguments camera;
+  CLI::App* app = nullptr;  // where the options were parsed: tells --filter given from its default
 
   // The options they name; throws UsageError for a malformed value or an output's missing folder,
   // before anything is measured.

@@ -22,6 +22,16 @@ const std::vector<std::pair<std::string, render::Filter>> kFilterNames = {
     {"linear_mipmap_nearest", render::Filter::LinearMipmapNearest},
     {"nearest_mipmap_linear", render::Filter::NearestMipmapLinear},
     {"linear_mipmap_linear", render::Filter::LinearMipmapLinear}};
+const std::vector<std::pair<std::string, render::Wrap>> kWrapNames = {
+    {"repeat", render::Wrap::Repeat},
+    {"clamp_to_edge", render::Wrap::ClampToEdge},
+    {"mirrored_repeat", render::Wrap::MirroredRepeat}};
+const std::vector<std::pair<std::string, render::EnvMode>> kEnvNames = {{"replace", render::EnvMode::Replace},
+                                                                        {"modulate", render::EnvMode::Modulate},
+                                                                        {"decal", render::EnvMode::Decal},
+                                                                        {"blend", render::EnvMode::Blend}};
+const std::vector<std::pair<std::string, render::Cull>> kCullNames = {
+    {"back", render::Cull::Back}, {"front", render::Cull::Front}, {"none", render::Cull::None}};
 
 namespace {
 
@@ -106,15 +116,6 @@ render::Camera CameraArguments::make(const Mesh& mesh, const Mat4& worldFromObje
   return camera;
 }
 
-namespace {
-
-const std::vector<std::pair<std::string, render::Wrap>> kWrapNames = {
-    {"repeat", render::Wrap::Repeat},
-    {"clamp_to_edge", render::Wrap::ClampToEdge},
-    {"mirrored_repeat", render::Wrap::MirroredRepeat}};
-
-}  // namespace
-
 void addTextureOptions(CLI::App& app, TextureArguments& a, const std::string& sourceOption) {
   app.add_option(sourceOption, a.source,
                  "checker:N[:C] (N x N texels, C x C squares, white at texel 0,0), uvgrid[:N], spheremap[:N[:K]], or "
@@ -135,11 +136,7 @@ void addTextureOptions(CLI::App& app, TextureArguments& a, const std::string& so
       ->type_name("repeat|clamp_to_edge|mirrored_repeat");
   app.add_flag("--seamless", a.seamless,
                "Cube maps: filter across face edges (GL's TEXTURE_CUBE_MAP_SEAMLESS; off, as GL's default)");
-  addChoice<render::EnvMode>(app, "--env", a.env,
-                             {{"replace", render::EnvMode::Replace},
-                              {"modulate", render::EnvMode::Modulate},
-                              {"decal", render::EnvMode::Decal},
-                              {"blend", render::EnvMode::Blend}},
+  addChoice<render::EnvMode>(app, "--env", a.env, kEnvNames,
                              "Texture environment; modulate, decal and blend use Blinn-Phong lighting by a head-light")
       ->default_str("replace");
   app.add_option("--env-color", a.envColour, "GL_TEXTURE_ENV_COLOR for blend (r,g,b,a)")->capture_default_str();
@@ -181,22 +178,24 @@ inspect::TextureOptions TextureArguments::options() const {
   return o;
 }
 
-void addFrameOptions(CLI::App& app, FrameArguments& a) {
+void addFrameSceneOptions(CLI::App& app, FrameArguments& a) {
   app.add_option("--size", a.size, "Image size WxH")->capture_default_str();
-  addChoice<render::Cull>(app, "--cull", a.cull,
-                          {{"back", render::Cull::Back}, {"front", render::Cull::Front}, {"none", render::Cull::None}},
-                          "Face culling; front faces are counter-clockwise")
+  addChoice<render::Cull>(app, "--cull", a.cull, kCullNames, "Face culling; front faces are counter-clockwise")
       ->default_str("back");
-  app.add_option("--threads", a.threads, "Threads (0: one per hardware thread); the image does not depend on it")
-      ->capture_default_str();
-  app.add_option("--spp", a.samplesPerPixel,
-                 "Supersampling: samples per pixel on a regular n x n grid (1, 4, 9, 16, ..., 256), box-filtered")
-      ->capture_default_str();
   app.add_option("--background", a.background, "Background colour r,g,b in [0, 1]")->capture_default_str();
   addChoice<FrameArguments::Uv>(
       app, "--uv", a.uv, {{"per-vertex", FrameArguments::Uv::PerVertex}, {"per-pixel", FrameArguments::Uv::PerPixel}},
       "Interpolate per-vertex texture coordinates, or evaluate the mapping at every pixel")
       ->default_str("per-vertex");
+}
+
+void addFrameOptions(CLI::App& app, FrameArguments& a) {
+  addFrameSceneOptions(app, a);
+  app.add_option("--threads", a.threads, "Threads (0: one per hardware thread); the image does not depend on it")
+      ->capture_default_str();
+  app.add_option("--spp", a.samplesPerPixel,
+                 "Supersampling: samples per pixel on a regular n x n grid (1, 4, 9, 16, ..., 256), box-filtered")
+      ->capture_default_str();
   app.add_option("--aov", a.aov, "Also write float AOVs: a list of uv, depth, face, lod, cubeface (cube maps)")
       ->type_name("uv,depth,face,lod,cubeface");
   app.add_option("--aov-output", a.aovOutput, "The AOV file (.exr or .tif; default: the output with .exr)");

@@ -22,8 +22,12 @@
 
 namespace uvtk::cli {
 
-// The minification filters by their GL names in lower case.
+// The minification filters by their GL names in lower case; the wrap modes, texture environments
+// and face culling modes by the values their options take.
 extern const std::vector<std::pair<std::string, render::Filter>> kFilterNames;
+extern const std::vector<std::pair<std::string, render::Wrap>> kWrapNames;
+extern const std::vector<std::pair<std::string, render::EnvMode>> kEnvNames;
+extern const std::vector<std::pair<std::string, render::Cull>> kCullNames;
 
 struct CameraArguments {
   enum class Mode { Auto, Explicit };
@@ -93,6 +97,10 @@ struct FrameArguments {
   // The values as the renderer takes them, once check() has passed.
   inspect::FrameOptions options() const;
 };
+// --size, --cull, --background and --uv: the frame's options that `uvtk bench --render` shares
+// (its --threads and --spp are lists of values to time).
+void addFrameSceneOptions(CLI::App& app, FrameArguments& arguments);
+// addFrameSceneOptions, then --threads, --spp, the AOVs and the inspection views.
 void addFrameOptions(CLI::App& app, FrameArguments& arguments);
 
 // Throws UsageError unless `frame` can draw `texture` with texture coordinates from `projector`

@@ -7,7 +7,7 @@
 
 #include "commands.h"
 #include "inspect/bench.h"
-#include "options/view_camera_cli.h"
+#include "options/render_cli.h"
 
 namespace uvtk::cli {
 
@@ -44,14 +44,18 @@ void addBenchCommand(CLI::App& root) {
                   "memory, against reading and copying the files)")
       ->capture_default_str();
   cmd->add_flag("--no-end-to-end", a->noEndToEnd, "With --mesh: skip the end-to-end `uvtk map`");
-  cmd->add_flag("--render", a->render, "Also measure rendering (default mesh there: a 64 x 32 lat-long sphere)");
+  cmd->add_flag("--render", a->render,
+                "Also measure rendering (default mesh there: a 64 x 32 lat-long sphere), of the scene `uvtk render` "
+                "draws from the same camera, texture, --size, --cull, --background and --uv options");
   cmd->add_option("--render-projector", a->renderProjector, "Projector whose UVs are rendered")->capture_default_str();
-  cmd->add_option("--size", a->size, "Rendering: image size WxH")->capture_default_str();
-  cmd->add_option("--texture", a->texture, "Rendering: procedural texture (checker:N[:C], uvgrid[:N])")
+  addCameraOptions(*cmd, a->camera);
+  addTextureOptions(*cmd, a->texture, "--texture");
+  addFrameSceneOptions(*cmd, a->frame);
+  cmd->add_option("--filters", a->filters,
+                  "Rendering: the minification filters to time (an explicit --filter: that one alone)")
       ->capture_default_str();
-  cmd->add_option("--filters", a->filters, "Rendering: filters to time")->capture_default_str();
   cmd->add_option("--spp", a->samples, "Rendering: samples per pixel to time (squares)")->capture_default_str();
-  addViewCameraOptions(*cmd, a->camera);
+  a->app = cmd;
   cmd->callback([a] { runBench(*a); });
 }
 

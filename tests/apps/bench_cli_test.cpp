@@ -2,8 +2,12 @@
 // configuration measured with the documented keys, errors within their bounds, clear refusals.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 #include "apps/cli_test.h"
 #include "io/image_io.h"
@@ -32,7 +36,9 @@ TEST_F(BenchCli, MeasuresEveryProjectorPrecisionAndMathModeWithTheDocumentedKeys
                           path("b.json") + " --plot " + path("b.png") + " --markdown " + path("b.md"));
   ASSERT_EQ(run.status, 0) << run.err;
   const nlohmann::json j = readJson("b.json");
-  const nlohmann::json& records = j["records"];
+  std::vector<nlohmann::json> records;  // the mapping's (the end-to-end map has its own)
+  for (const nlohmann::json& r : j["records"])
+    if (r["section"] == "mapping") records.push_back(r);
   ASSERT_EQ(records.size(), 6u);  // the plane has no arctangent: one math mode per precision
   for (const nlohmann::json& r : records) {
     for (const char* key :
@@ -77,6 +83,123 @@ TEST_F(BenchCli, RendersPerVertexAgainstPerPixelAndFiltersAgainstTheSupersampled
   // More samples per pixel come closer to the 64-sample reference.
   EXPECT_LT(frames[3]["rmse"].get<double>(), frames[0]["rmse"].get<double>());
   EXPECT_TRUE(fs::exists(path("b-render.png")));
+}
+
+// The root mean square and the largest difference of two images' channel values.
+std::pair<double, double> differences(const Image& a, const Image& b) {
+  EXPECT_EQ(a.pixels.size(), b.pixels.size());
+  double sum = 0, largest = 0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+    const double d = std::fabs(double(a.pixels[i]) - double(b.pixels[i]));
+    sum += d * d;
+    largest = std::max(largest, d);
+  }
+  return {std::sqrt(sum / double(a.pixels.size())), largest};
+}
+
+TEST_F(BenchCli, RenderTakesRendersSceneOptionsAndTimesThePictureItDraws) {
+  // A 16 x 16 image texture whose edges differ (clamping is not repeating).
+  Image texture(16, 16, 3, 0.0f);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      texture.at(x, y, 0) = float((x * 7 + y * 3) % 16) / 15.0f;
+      texture.at(x, y, 1) = float(y) / 15.0f;
+      texture.at(x, y, 2) = float(x) / 15.0f;
+    }
+  io::writeImage(path("tex.png"), texture, io::PixelType::UInt8);
+  const std::string scene = " --eye 0.5,-3,1.5 --center 0,0,0.2 --up 0,0,1 --texture " + path("tex.png") +
+                            " --wrap clamp_to_edge --cull none --background 0.2,0.3,0.4 --size 48x40";
+  const CliRun run = uvtk("bench --mesh " + path("sphere.obj") +
+                          " --projector sphere --precision double --math exact --min-time 0.01 --no-peers"
+                          " --no-end-to-end --render --filter linear --spp 1 --json " +
+                          path("b.json") + " --markdown " + path("b.md") + scene);
+  ASSERT_EQ(run.status, 0) << run.err;
+  const nlohmann::json j = readJson("b.json");
+  std::vector<nlohmann::json> frames;
+  for (const nlohmann::json& r : j["records"])
+    if (r["section"] == "rendering") frames.push_back(r);
+  ASSERT_EQ(frames.size(), 2u);  // --filter linear alone: per-vertex and per-pixel UVs
+  for (const nlohmann::json& r : frames) {
+    EXPECT_EQ(r["filter"], "linear");
+    EXPECT_EQ(r["camera"], "explicit");
+    EXPECT_EQ(r["projection"], "perspective");
+    for (int i = 0; i < 3; ++i)  // the made camera's, from its view matrix
+      EXPECT_NEAR(r["eye"][i].get<double>(), (std::array<double, 3>{0.5, -3.0, 1.5}[i]), 1e-12);
+    EXPECT_EQ(r["texture"], path("tex.png"));
+    EXPECT_EQ(r["wrap"], "clamp_to_edge");
+    EXPECT_EQ(r["env"], "replace");
+    EXPECT_EQ(r["seamless"], false);
+    EXPECT_EQ(r["cull"], "none");
+    EXPECT_EQ(r["background"], nlohmann::json::array({0.2, 0.3, 0.4}));
+    EXPECT_EQ(r["width"], 48);
+    EXPECT_EQ(r["height"], 40);
+  }
+  EXPECT_EQ(frames[0]["uv"], "per-vertex");
+  EXPECT_EQ(frames[1]["uv"], "per-pixel");
+  EXPECT_NE(readText(path("b.md")).find("Scene: camera explicit (perspective), texture " + path("tex.png") +
+                                        ", wrap clamp_to_edge, env replace, cull none."),
+            std::string::npos);
+
+  // `uvtk render` with the same options draws the frame bench timed, and the reference bench
+  // compares it with (64 samples, per-pixel UVs, linear_mipmap_linear): their RMSE and largest
+  // difference are bench's, up to the PNGs' rounding (each value within half a level of 255).
+  // (With --wrap repeat bench measures 0.024 and 0.48 here, against 0.029 and 0.58.)
+  const std::string render = "render " + path("sphere.obj") + " --projector sphere" + scene;
+  ASSERT_EQ(uvtk(render + " --filter linear -o " + path("frame.png")).status, 0);
+  ASSERT_EQ(uvtk(render + " --filter linear_mipmap_linear --spp 64 --uv per-pixel -o " + path("ref.png")).status, 0);
+  const auto [rmse, largest] =
+      differences(io::readImage(path("frame.png")).image, io::readImage(path("ref.png")).image);
+  EXPECT_GT(rmse, 0.01);  // the comparison is not of two blank frames
+  EXPECT_NEAR(frames[0]["rmse"].get<double>(), rmse, 1.0 / 255);
+  EXPECT_NEAR(frames[0]["max_err"].get<double>(), largest, 1.0 / 255);
+}
+
+TEST_F(BenchCli, RenderTakesACubeMapSeamlessAndPerPixelUvsForEveryRow) {
+  const CliRun run = uvtk("bench --mesh " + path("sphere.obj") +
+                          " --projector sphere --precision double --math exact --min-time 0.01 --no-peers"
+                          " --no-end-to-end --render --render-projector cube --texture cube:16 --seamless"
+                          " --uv per-pixel --filters nearest,linear --spp 1,4 --size 32x32 --json " +
+                          path("b.json"));
+  ASSERT_EQ(run.status, 0) << run.err;
+  const nlohmann::json j = readJson("b.json");
+  std::vector<nlohmann::json> frames;
+  for (const nlohmann::json& r : j["records"])
+    if (r["section"] == "rendering") frames.push_back(r);
+  // linear_mipmap_linear (the UV and sample-count rows' filter), nearest, linear, and 4 samples: all
+  // per pixel, so none has an interpolation error.
+  ASSERT_EQ(frames.size(), 4u);
+  for (const nlohmann::json& r : frames) {
+    EXPECT_EQ(r["uv"], "per-pixel");
+    EXPECT_EQ(r["uv_err_max_texels"], 0.0);
+    EXPECT_EQ(r["projector"], "cube");
+    EXPECT_EQ(r["texture"], "cube:16");
+    EXPECT_EQ(r["seamless"], true);
+    EXPECT_EQ(r["wrap"], "clamp_to_edge");  // a cube map's default, as in `uvtk render`
+    EXPECT_EQ(r["camera"], "auto");
+  }
+  EXPECT_EQ(frames[1]["filter"], "nearest");
+  EXPECT_EQ(frames[3]["spp"], 4);
+  EXPECT_LT(frames[3]["rmse"].get<double>(), frames[0]["rmse"].get<double>());
+}
+
+TEST_F(BenchCli, RenderRefusesWhatUvtkRenderRefusesWithItsMessage) {
+  const std::string bench = "bench --mesh " + path("sphere.obj") +
+                            " --projector sphere --precision double --math exact --min-time 0.01 --no-peers"
+                            " --no-end-to-end --render --render-projector sphere --json " +
+                            path("b.json");
+  const std::string render = "render " + path("sphere.obj") + " --projector sphere -o " + path("r.png");
+  for (const char* bad : {" --eye 1,2", " --filter bogus", " --seamless", " --texture cube:8", " --wrap twice",
+                          " --cull sideways", " --size 0x5", " --background red", " --ortho auto --eye 0,0,3",
+                          " --texture none.png"}) {
+    const CliRun b = uvtk(bench + bad), r = uvtk(render + bad);
+    EXPECT_EQ(b.status, r.status) << bad << "\n" << b.err << r.err;
+    EXPECT_NE(b.status, 0) << bad;
+    EXPECT_EQ(b.err, r.err) << bad;
+    EXPECT_FALSE(fs::exists(path("b.json"))) << bad;
+  }
+  const CliRun both = uvtk(bench + " --filter linear --filters nearest,linear");
+  EXPECT_EQ(both.status, 2);
+  EXPECT_NE(both.err.find("--filter and --filters exclude each other"), std::string::npos) << both.err;
 }
 
 TEST_F(BenchCli, RefusesUnknownChoicesBeforeMeasuringAnything) {
