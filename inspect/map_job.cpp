@@ -60,8 +60,11 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   const param::MappingSummary& s = mapped.projection->summary;
 
   clock.start("judging", std::to_string(mapped.mesh.faceCount()) + " faces");
-  const analysis::Judgement judgement = mapped.judge(job.thresholds, job.overlapResolution, job.threads);
+  analysis::Judgement judgement = mapped.judge(job.thresholds, job.overlapResolution, job.threads);
   const double judgeMs = clock.stop();
+  nlohmann::json summary;
+  if (!paths.json.empty()) summary = mapSummaryJson(mapped, judgement, inputSummary, paths.output);
+  std::vector<analysis::FaceDistortion>().swap(judgement.faces);  // every face's measures: not needed while writing
 
   clock.start("writing", paths.output);
   io::MeshWriteOptions write = job.write;
@@ -71,13 +74,12 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   const double writeMs = clock.stop();
 
   if (!paths.json.empty()) {
-    nlohmann::json j = mapSummaryJson(mapped, judgement, inputSummary, paths.output);
     // The mapping stage split as the projection measured it: seams (repair and summary) and the
     // rest (placement, both stages, --seam-place auto).
     const double seamsMs = mapped.projection->milliseconds.seams;
-    j["milliseconds"] = {{"read", readMs},   {"map", mapMs - seamsMs}, {"seams", seamsMs},
-                         {"judge", judgeMs}, {"write", writeMs},       {"total", millisecondsSince(start)}};
-    outputs.writeText(paths.json, j.dump(2) + "\n");
+    summary["milliseconds"] = {{"read", readMs},   {"map", mapMs - seamsMs}, {"seams", seamsMs},
+                               {"judge", judgeMs}, {"write", writeMs},       {"total", millisecondsSince(start)}};
+    outputs.writeText(paths.json, summary.dump(2) + "\n");
   }
   outputs.publish();
   printMappingNotes(paths.input, input.warnings, mapped);
