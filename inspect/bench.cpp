@@ -401,7 +401,7 @@ std::string markdownTables(const std::vector<nlohmann::json>& records, int textu
   for (const nlohmann::json& r : records) {
     if (r["section"] == "end-to-end") {
       if (!endToEndHeader)
-        md += "\n| uvtk map | threads | read | map | seams | judge | write | total ms | floor ms (cat + cp) | x floor | "
+        md += std::string(md.empty() ? "" : "\n") + "| uvtk map | threads | read | map | seams | judge | write | total ms | floor ms (cat + cp) | x floor | "
               "peak MB | output MB | peak / output |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
             endToEndHeader = true;
       const nlohmann::json& ms = r["milliseconds"];
@@ -415,7 +415,7 @@ std::string markdownTables(const std::vector<nlohmann::json>& records, int textu
             formatNumber(r["peak_per_output_byte"], "%.2f") + " |\n";
     } else if (r["section"] != "rendering") {
       if (!mappingHeader)
-        md +=
+        md += std::string(md.empty() ? "" : "\n") +
             "| projector | omap | precision | math | threads | ns/vertex | max err (ulp) | p99 err (ulp) | max err "
             "(texels @" +
             std::to_string(textureWidth) + ") | p99 err (texels) |\n|---|---|---|---|---|---|---|---|---|---|\n",
