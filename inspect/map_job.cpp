@@ -50,7 +50,7 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   StageClock clock("uvtk map", showStages);
   checkMapMemory(paths.input);
   clock.start("reading", paths.input);
-  io::ReadMeshResult input = io::readMesh(paths.input);
+  io::ReadMeshResult input = io::readMesh(paths.input, job.threads);
   const double readMs = clock.stop();
   const nlohmann::json inputSummary = inputJson(paths.input, input);
 
@@ -69,6 +69,7 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   clock.start("writing", paths.output);
   io::MeshWriteOptions write = job.write;
   write.header = "uvtk map " + paths.input;
+  write.threads = job.threads;
   io::OutputSet outputs;
   io::writeMesh(outputs, paths.output, mapped.mesh, &mapped.uv, write);
   const double writeMs = clock.stop();

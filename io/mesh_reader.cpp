@@ -18,7 +18,22 @@
 // - A line longer than 64 MiB is an error: no writer emits one, and it is never held whole.
 // readMesh shows its progress over the file's bytes (core/progress.h), reported every few
 // thousand lines so that the count costs nothing per line but an addition.
+//
+// A regular OBJ file (or OBJ text in memory) is read in chunks split at line ends, on all threads,
+// each thread reading (pread) and parsing its own chunks into their own arrays. A chunk does not
+// know how many vertices precede it, so it keeps positive indices as they are and notes the fewest
+// vertices before it that they need; a chunk that needs more than precede it, uses negative
+// (relative) indices or fails is read again once the counts before it are known, exactly as the
+// sequential reader reads it, with its true line numbers: the first error in file order is the one
+// reported, word for word. Polygons are triangulated once every position is in place. The stream
+// reader (stdin, FIFOs, devices, readObj) is the same code as one chunk that knows its counts from
+// the start. Most lines take a fast path (ObjChunkReader::readPlainLine) that hands anything
+// unusual to the general one.
 #include "io/mesh_reader.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -27,16 +42,20 @@
 #include <climits>
 #include <cmath>
 #include <cstring>
+#include <exception>
 #include <filesystem>
-#include <optional>
 #include <fstream>
 #include <istream>
+#include <memory>
+#include <mutex>
+#include <optional>
 #include <streambuf>
 #include <string_view>
 #include <system_error>
 #include <vector>
 
 #include "core/error.h"
+#include "core/parallel.h"
 #include "core/progress.h"
 #include "io/gltf_reader.h"
 #include "io/mesh_format.h"
@@ -80,13 +99,26 @@ InputError expectedError(const std::string& name, std::size_t line, const std::s
   return inputError(name, line, "expected " + expected + ", found " + found);
 }
 
-// Reads a stream line by line and hands out the whitespace-separated tokens of the current line.
-// It knows the file name and line number, so the errors about the input are raised here. With a
-// Progress it reports the bytes read (the line ending counted as one).
+// Reads text line by line, from a stream or from memory, and hands out the whitespace-separated
+// tokens of the current line. It knows the file name and line number, so the errors about the
+// input are raised here. With a Progress it reports the bytes read (the line ending counted as one).
 class LineReader {
  public:
+  // The lines of a stream, read in blocks.
   LineReader(std::istream& in, const std::string& name, Progress* progress = nullptr)
-      : in_(in), name_(name), progress_(progress) {}
+      : in_(&in), name_(name), progress_(progress) {}
+  // The lines of `text`, held in memory, the first numbered `firstLine`; `fileStart` when the text
+  // opens the file (where a byte-order mark may be).
+  LineReader(std::string_view text, const std::string& name, std::size_t firstLine, bool fileStart,
+             Progress* progress = nullptr)
+      : name_(name),
+        lineNumber_(firstLine - 1),
+        fileStart_(fileStart),
+        progress_(progress),
+        text_(text) {}
+  ~LineReader() {
+    if (progress_) progress_->advance(unreportedBytes_);
+  }
 
   // Advances to the next line, with its line ending and comment removed. False at end of file.
   bool nextLine() {
@@ -97,27 +129,30 @@ class LineReader {
       progress_->advance(unreportedBytes_);
       unreportedBytes_ = 0;
     }
-    std::size_t begin = 0;
-    std::size_t end = line_.size();
-    if (lineNumber_ == 1) {
-      const auto byte = [&](std::size_t i) { return i < end ? static_cast<unsigned char>(line_[i]) : 0u; };
+    const char* begin = line_.data();
+    const char* end = begin + line_.size();
+    if (fileStart_) {
+      fileStart_ = false;
+      const auto byte = [&](std::size_t i) { return i < line_.size() ? static_cast<unsigned char>(begin[i]) : 0u; };
       if ((byte(0) == 0xFF && byte(1) == 0xFE) || (byte(0) == 0xFE && byte(1) == 0xFF))
         fail("ASCII/UTF-8 text", "a UTF-16 byte-order mark");
-      if (byte(0) == 0xEF && byte(1) == 0xBB && byte(2) == 0xBF) begin = 3;
+      if (byte(0) == 0xEF && byte(1) == 0xBB && byte(2) == 0xBF) begin += 3;
     }
-    if (end > begin && line_[end - 1] == '\r') --end;
+    if (end > begin && end[-1] == '\r') --end;
     // One pass both rejects binary data and finds where a comment starts.
-    std::size_t comment = end;
-    for (std::size_t i = begin; i < end; ++i) {
-      const unsigned char c = static_cast<unsigned char>(line_[i]);
-      if ((c < 0x20 && c != '\t') || c == 0x7F) {
-        static constexpr char kHex[] = "0123456789ABCDEF";
-        fail("text", std::string("byte 0x") + kHex[c >> 4] + kHex[c & 15]);
+    const char* comment = end;
+    for (const char* p = begin; p != end; ++p) {
+      const unsigned char c = static_cast<unsigned char>(*p);
+      if (c <= '#' || c == 0x7F) {  // one test for the rare bytes, then which of them
+        if ((c < 0x20 && c != '\t') || c == 0x7F) {
+          static constexpr char kHex[] = "0123456789ABCDEF";
+          fail("text", std::string("byte 0x") + kHex[c >> 4] + kHex[c & 15]);
+        }
+        if (c == '#' && comment == end) comment = p;
       }
-      if (c == '#' && comment == end) comment = i;
     }
-    position_ = line_.data() + begin;
-    end_ = line_.data() + comment;
+    position_ = begin;
+    end_ = comment;
     return true;
   }
 
@@ -169,6 +204,24 @@ class LineReader {
   }
 
   std::size_t lineNumber() const { return lineNumber_; }
+  const std::string& name() const { return name_; }
+
+  // For a reader of common lines beside this one (ObjChunkReader::readPlainLine): the unread text,
+  // empty when reading a stream or when the next line may open the file (its byte-order mark).
+  std::string_view unreadText() const {
+    if (in_ || fileStart_) return {};
+    return text_.substr(next_);
+  }
+  // Passes over the next `length` bytes of unreadText(), one line read by someone else.
+  void skipLine(std::size_t length) {
+    next_ += length;
+    ++lineNumber_;
+    unreportedBytes_ += length;
+    if (progress_ && lineNumber_ % kLinesPerReport == 0) {
+      progress_->advance(unreportedBytes_);
+      unreportedBytes_ = 0;
+    }
+  }
 
   [[noreturn]] void fail(const std::string& expected, const std::string& found) const {
     throw expectedError(name_, lineNumber_, expected, found);
@@ -185,37 +238,54 @@ class LineReader {
   }
 
  private:
-  // Reads the next line into line_ without its '\n', from a buffer refilled in large blocks; a line
-  // may end at end of file without one. False at end of file. A line is never held longer than
-  // kMaxLineBytes, so a file without line breaks cannot exhaust memory.
+  // Points line_ at the next line without its '\n'; a line may end at end of file without one.
+  // False at end of file. A line is never longer than kMaxLineBytes, so a file without line breaks
+  // cannot exhaust memory.
   bool readLine() {
-    line_.clear();
+    if (!in_) {  // in memory: the line is a view of the text
+      if (next_ == text_.size()) return false;
+      const char* begin = text_.data() + next_;
+      const std::size_t available = text_.size() - next_;
+      const char* newline = static_cast<const char*>(std::memchr(begin, '\n', available));
+      const std::size_t length = newline ? std::size_t(newline - begin) : available;
+      if (length > kMaxLineBytes) failLongLine();
+      line_ = {begin, length};
+      next_ += newline ? length + 1 : length;
+      return true;
+    }
+    // From a stream: the line is assembled in lineText_ from a buffer refilled in large blocks.
+    lineText_.clear();
     bool any = false;
     for (;;) {
-      if (next_ == filled_ && !refill()) return any;
+      if (next_ == filled_ && !refill()) break;
       any = true;
       const char* begin = buffer_.data() + next_;
       const std::size_t available = filled_ - next_;
       const char* newline = static_cast<const char*>(std::memchr(begin, '\n', available));
       const std::size_t length = newline ? std::size_t(newline - begin) : available;
-      if (line_.size() + length > kMaxLineBytes)
-        throw expectedError(name_, lineNumber_ + 1, "a line of at most " + std::to_string(kMaxLineBytes >> 20) + " MiB",
-                            "a longer one");
-      line_.append(begin, length);
+      if (lineText_.size() + length > kMaxLineBytes) failLongLine();
+      lineText_.append(begin, length);
       next_ += newline ? length + 1 : length;
-      if (newline) return true;
+      if (newline) break;
     }
+    line_ = lineText_;
+    return any;
+  }
+
+  [[noreturn]] void failLongLine() const {
+    throw expectedError(name_, lineNumber_ + 1, "a line of at most " + std::to_string(kMaxLineBytes >> 20) + " MiB",
+                        "a longer one");
   }
 
   // Reads the next block into buffer_; false at end of file.
   bool refill() {
     next_ = filled_ = 0;
-    if (!in_.good()) return false;  // the previous block ended at end of file
+    if (!in_->good()) return false;  // the previous block ended at end of file
     // Small inputs take a small buffer: the first block is 64 KiB, each next one twice as large.
     buffer_.resize(buffer_.empty() ? kFirstReadBlock : std::min(kReadBlock, 2 * buffer_.size()));
-    in_.read(buffer_.data(), std::streamsize(buffer_.size()));
-    if (in_.bad()) throw inputError(name_, 0, "cannot read: input/output error");
-    filled_ = std::size_t(in_.gcount());
+    in_->read(buffer_.data(), std::streamsize(buffer_.size()));
+    if (in_->bad()) throw inputError(name_, 0, "cannot read: input/output error");
+    filled_ = std::size_t(in_->gcount());
     return filled_ > 0;
   }
 
@@ -238,14 +308,17 @@ class LineReader {
     return value;
   }
 
-  std::istream& in_;
+  std::istream* in_ = nullptr;  // null: the lines of text_
   const std::string& name_;
   std::vector<char> buffer_;
-  std::size_t next_ = 0, filled_ = 0;  // the first unread byte of buffer_, and how many it holds
-  std::string line_;
+  std::size_t next_ = 0, filled_ = 0;  // the first unread byte of buffer_ (or text_), and how many buffer_ holds
+  std::string lineText_;
+  std::string_view line_;  // the current line: lineText_, or a part of text_
   std::size_t lineNumber_ = 0;
+  bool fileStart_ = true;
   Progress* progress_;
   std::uint64_t unreportedBytes_ = 0;
+  std::string_view text_;
   const char* position_ = nullptr;
   const char* end_ = nullptr;
 };
@@ -275,16 +348,26 @@ ReadMeshResult withWarnings(Mesh mesh, const MeshWarnings& readerWarnings) {
   return result;
 }
 
-// Triangles store int indices, so no table may grow past INT_MAX entries.
-template <typename T>
-void pushBounded(LineReader& reader, std::vector<T>& table, const T& value, const char* what) {
-  if (table.size() >= static_cast<std::size_t>(INT_MAX))
-    reader.fail("at most " + std::to_string(INT_MAX) + " " + what, "more");
-  table.push_back(value);
+// Three numbers named in messages: a position ("an x coordinate", ...) or a normal.
+constexpr const char* kPositionNames[3] = {"an x coordinate", "a y coordinate", "a z coordinate"};
+constexpr const char* kNormalNames[3] = {"a normal's x component", "a normal's y component", "a normal's z component"};
+
+Vec3 readVector(LineReader& reader, const char* const (&names)[3]) {
+  Vec3 v;
+  for (int a = 0; a < 3; ++a) v[a] = reader.number(names[a]);
+  return v;
 }
 
 // ---------------------------------------------------------------------------------------------
 // OBJ
+
+bool isIgnoredObjKeyword(std::string_view keyword) {
+  // Grouping, smoothing and material statements, and line and point elements, carry nothing a
+  // triangle mesh keeps.
+  return keyword == "o" || keyword == "g" || keyword == "s" || keyword == "usemtl" || keyword == "mtllib" ||
+         keyword == "l" || keyword == "p";
+}
+
 
 // Which of vt and vn the corners of a face carry, as bits.
 enum CornerForm : int { kVertexOnly = 0, kWithTexcoord = 1, kWithNormal = 2 };
@@ -343,41 +426,416 @@ void appendCorners(std::vector<Triangle>& table, std::size_t triangleIndex, bool
   table.push_back(faceHasIt ? corners : kNoCorners);
 }
 
-void readObjFace(LineReader& reader, Mesh& mesh, std::vector<ObjCorner>& corners, ReaderState& state) {
-  corners.clear();
-  int faceForm = kVertexOnly;
-  for (std::string_view token = reader.token(); !token.empty(); token = reader.token()) {
-    std::string_view parts[3];
-    int form = kVertexOnly;
-    if (!splitCorner(token, parts, form)) reader.fail("a face corner v, v/vt, v//vn or v/vt/vn", quote(token));
-    if (corners.empty()) faceForm = form;
-    if (form != faceForm)
-      reader.fail(std::string("a corner of the same form as the first (") + formName(faceForm) + ")", quote(token));
-    ObjCorner c;
-    c.v = resolveObjIndex(reader, parts[0], mesh.positions.size(), "a vertex index");
-    if (form & kWithTexcoord)
-      c.vt = resolveObjIndex(reader, parts[1], mesh.texcoords.size(), "a texture coordinate index");
-    if (form & kWithNormal) c.vn = resolveObjIndex(reader, parts[2], mesh.normals.size(), "a normal index");
-    corners.push_back(c);
+// The element tables OBJ indices refer to.
+enum ObjTable : int { kPositionTable, kTexcoordTable, kNormalTable };
+using ObjCounts = std::array<std::size_t, 3>;  // elements of each table
+
+// A face of more than three corners, triangulated once every position is known: its n - 2
+// triangles hold their places in the arrays meanwhile.
+struct ObjPolygon {
+  std::size_t firstTriangle;  // in the chunk's triangles
+  std::size_t firstCorner;    // in the chunk's polygonCorners
+  std::size_t corners;
+  int form;
+  std::size_t line;  // the chunk's numbering: add lineOffset
+};
+
+// What the lines of one chunk of an OBJ define, in their order. The corner tables are the chunk's
+// part of the mesh's: they start at the chunk's first face with the attribute (the triangles before
+// it have none). Indices are 0-based into the whole mesh's tables.
+struct ObjChunk {
+  std::vector<Vec3> positions, texcoords, normals;
+  std::vector<Triangle> triangles, cornerTexcoords, cornerNormals;
+  std::vector<ObjPolygon> polygons;
+  std::vector<ObjCorner> polygonCorners;
+  std::size_t lines = 0;
+  std::size_t lineOffset = 0;  // from the chunk's line numbers to the file's
+  std::size_t vertexColours = 0, parameterVertices = 0;
+  // Left by a read that did not know the counts before the chunk (provisional):
+  std::exception_ptr error;                 // the read stopped here (syntax errors do not depend on the counts)
+  bool relative = false;                    // a negative index: it depends on the counts before the chunk
+  std::array<long long, 3> needed = {};     // the fewest elements before the chunk its positive indices need
+
+  ObjCounts counts() const { return {positions.size(), texcoords.size(), normals.size()}; }
+
+  // Whether the chunk must be read again with the counts before it known: it stopped, it has
+  // relative indices, or some index or table is out of range there (an error, then).
+  bool settledBy(const ObjCounts& before) const {
+    if (error || relative) return false;
+    const ObjCounts own = counts();
+    for (int t = 0; t < 3; ++t)
+      if (needed[t] > static_cast<long long>(before[t]) || before[t] + own[t] > static_cast<std::size_t>(INT_MAX))
+        return false;
+    return true;
   }
-  if (corners.size() < 3) reader.fail("at least 3 vertices in a face", std::to_string(corners.size()));
-  state.vertices.clear();
-  for (const ObjCorner& c : corners) state.vertices.push_back(c.v);
-  state.triangulate(mesh, reader);
-  for (const PolygonTriangle& t : state.triangles) {
-    const ObjCorner &a = corners[t[0]], &b = corners[t[1]], &c = corners[t[2]];
-    const std::size_t triangle = mesh.triangles.size();
-    mesh.triangles.push_back({a.v, b.v, c.v});
-    appendCorners(mesh.cornerTexcoords, triangle, faceForm & kWithTexcoord, {a.vt, b.vt, c.vt});
-    appendCorners(mesh.cornerNormals, triangle, faceForm & kWithNormal, {a.vn, b.vn, c.vn});
-  }
+};
+
+// Triangles store int indices, so no table may grow past INT_MAX entries.
+template <typename T>
+void pushBounded(LineReader& reader, std::vector<T>& table, std::size_t before, const T& value, const char* what) {
+  if (before + table.size() >= static_cast<std::size_t>(INT_MAX))
+    reader.fail("at most " + std::to_string(INT_MAX) + " " + what, "more");
+  table.push_back(value);
 }
 
-bool isIgnoredObjKeyword(std::string_view keyword) {
-  // Grouping, smoothing and material statements, and line and point elements, carry nothing a
-  // triangle mesh keeps.
-  return keyword == "o" || keyword == "g" || keyword == "s" || keyword == "usemtl" || keyword == "mtllib" ||
-         keyword == "l" || keyword == "p";
+// Reads the lines of one chunk into `chunk`. With the counts of the elements before the chunk
+// (`before`), every index is resolved and checked as the sequential reader does, and errors are
+// thrown; without them (null), a positive index is kept as it is with the count it needs noted,
+// and a negative one is only noted.
+class ObjChunkReader {
+ public:
+  ObjChunkReader(LineReader& reader, const ObjCounts* before, ObjChunk& chunk)
+      : reader_(reader), before_(before), chunk_(chunk) {}
+
+  // OBJ: `v x y z`, `v x y z w` or `v x y z r g b`; `vt u [v [w]]`; `vn x y z`; `vp u [v [w]]`,
+  // ignored and counted; `f` with corners v, v/vt, v//vn or v/vt/vn, one form per face. w is the
+  // weight of a rational curve's control point, which a polygon mesh has no use for: checked as a
+  // number, then ignored, not divided by (as tinyobjloader, which keeps it apart; Assimp divides).
+  // r g b are the vertex colours MeshLab and others write: checked as numbers, dropped and counted.
+  // A line ending in '\' (a continuation, which few writers emit) is an error rather than joined,
+  // so every message names one physical line.
+  void read() {
+    const std::size_t firstLine = reader_.lineNumber() + 1;
+    chunk_.lineOffset = 0;
+    for (;;) {
+      if (readPlainLine()) continue;
+      if (!reader_.nextLine()) break;
+      if (reader_.endsWithBackslash()) reader_.fail("end of line", "a '\\' line continuation");
+      const std::string_view keyword = reader_.token();
+      if (keyword.empty()) continue;
+      if (keyword == "v") {
+        const Vec3 p = readVector(reader_, kPositionNames);
+        int more = 0;  // w, or r g b
+        for (double ignored = 0.0; reader_.optionalNumber(ignored);) ++more;
+        if (more != 0 && more != 1 && more != 3)
+          reader_.fail("x y z, x y z w or x y z r g b", std::to_string(3 + more) + " numbers");
+        if (more == 3) ++chunk_.vertexColours;
+        pushBounded(reader_, chunk_.positions, before(kPositionTable), p, "vertices");
+      } else if (keyword == "f") {
+        readFace();
+      } else if (keyword == "vt") {
+        Vec3 t = Vec3::Zero();
+        t.x() = reader_.number("a u coordinate");
+        if (reader_.optionalNumber(t.y())) reader_.optionalNumber(t.z());
+        reader_.expectEndOfLine();
+        pushBounded(reader_, chunk_.texcoords, before(kTexcoordTable), t, "texture coordinates");
+      } else if (keyword == "vn") {
+        const Vec3 n = readVector(reader_, kNormalNames);
+        reader_.expectEndOfLine();
+        pushBounded(reader_, chunk_.normals, before(kNormalTable), n, "normals");
+      } else if (keyword == "vp") {
+        double ignored = 0.0;
+        reader_.number("a u parameter");
+        if (reader_.optionalNumber(ignored)) reader_.optionalNumber(ignored);
+        reader_.expectEndOfLine();
+        ++chunk_.parameterVertices;
+      } else if (!isIgnoredObjKeyword(keyword)) {
+        reader_.failAt("a keyword (v, vt, vn, f, ...)", keyword);
+      }
+    }
+    chunk_.lines = reader_.lineNumber() + 1 - firstLine;
+  }
+
+ private:
+  std::size_t before(int table) const { return before_ ? (*before_)[table] : 0; }
+
+  // The 0-based index of a corner's index text into `table`, whose elements so far are `defined`
+  // in the chunk.
+  int index(std::string_view text, int table, const char* what) {
+    const std::size_t defined = table == kPositionTable   ? chunk_.positions.size()
+                                : table == kTexcoordTable ? chunk_.texcoords.size()
+                                                          : chunk_.normals.size();
+    if (before_) return resolveObjIndex(reader_, text, (*before_)[table] + defined, what);
+    long long i = 0;
+    if (parseInteger(text, i) && i != 0) {
+      if (i < 0) {
+        chunk_.relative = true;
+        return 0;
+      }
+      chunk_.needed[table] = std::max(chunk_.needed[table], i - static_cast<long long>(defined));
+      return i <= INT_MAX ? static_cast<int>(i - 1) : 0;  // one beyond INT_MAX needs more than any table holds
+    }
+    return resolveObjIndex(reader_, text, defined, what);  // not an index whatever precedes: throws
+  }
+
+  void readFace() {
+    corners_.clear();
+    int faceForm = kVertexOnly;
+    for (std::string_view token = reader_.token(); !token.empty(); token = reader_.token()) {
+      std::string_view parts[3];
+      int form = kVertexOnly;
+      if (!splitCorner(token, parts, form)) reader_.fail("a face corner v, v/vt, v//vn or v/vt/vn", quote(token));
+      if (corners_.empty()) faceForm = form;
+      if (form != faceForm)
+        reader_.fail(std::string("a corner of the same form as the first (") + formName(faceForm) + ")", quote(token));
+      ObjCorner c;
+      c.v = index(parts[0], kPositionTable, "a vertex index");
+      if (form & kWithTexcoord) c.vt = index(parts[1], kTexcoordTable, "a texture coordinate index");
+      if (form & kWithNormal) c.vn = index(parts[2], kNormalTable, "a normal index");
+      corners_.push_back(c);
+    }
+    if (corners_.size() < 3) reader_.fail("at least 3 vertices in a face", std::to_string(corners_.size()));
+    addFace(faceForm, reader_.lineNumber());
+  }
+
+  // ---- Common lines, read straight from the text
+  //
+  // Most lines of most files are `v x y z`, `vt u v`, `vn x y z` and `f` with positive indices in
+  // one of the four forms, with single blanks, no comment, no sign and nothing unusual: such a
+  // line is read here in one pass, without the tokens and checks of the general reader. Anything
+  // else (a sign, a comment, a stray byte, an index out of range, an error) leaves the line
+  // untouched for the general reader, which then reads it as it reads every line. A number is
+  // what std::from_chars reads up to a blank or the line's end, as the general reader's whole
+  // token, so both readers give the same values.
+
+  // Reads the next line if it is a common one; false (nothing read) otherwise.
+  bool readPlainLine() {
+    const std::string_view rest = reader_.unreadText();
+    if (rest.empty()) return false;
+    const char* p = rest.data();
+    const char* const end = p + rest.size();
+    while (p != end && isBlank(*p)) ++p;
+    if (end - p < 2) return false;
+    if (p[0] == 'v') {
+      const char kind = p[1];
+      if (isBlank(kind)) {
+        Vec3 v;
+        p += 1;
+        if (!readNumbers(p, end, v, 3) || !lineEnds(p, end)) return false;
+        if (before(kPositionTable) + chunk_.positions.size() >= static_cast<std::size_t>(INT_MAX)) return false;
+        chunk_.positions.push_back(v);
+      } else if ((kind == 't' || kind == 'n') && end - p > 2 && isBlank(p[2])) {
+        const int table = kind == 't' ? kTexcoordTable : kNormalTable;
+        std::vector<Vec3>& values = kind == 't' ? chunk_.texcoords : chunk_.normals;
+        Vec3 v = Vec3::Zero();
+        p += 2;
+        if (!readNumbers(p, end, v, kind == 't' ? 2 : 3) || !lineEnds(p, end)) return false;
+        if (before(table) + values.size() >= static_cast<std::size_t>(INT_MAX)) return false;
+        values.push_back(v);
+      } else {
+        return false;
+      }
+    } else if (p[0] == 'f' && isBlank(p[1])) {
+      ++p;
+      corners_.clear();
+      int faceForm = -1;
+      while (p != end && isBlank(*p)) {
+        while (p != end && isBlank(*p)) ++p;
+        if (p == end || *p == '\n' || *p == '\r') break;
+        // The indices are kept in locals and stored into the corner in place: fields written one
+        // by one into a corner then copied whole would stall the copy on every corner.
+        int form = kVertexOnly, vt = -1, vn = -1;
+        const int v = readIndex(p, end, kPositionTable);
+        if (v < 0) return false;
+        if (p != end && *p == '/') {
+          ++p;
+          if (p != end && *p != '/') {
+            if ((vt = readIndex(p, end, kTexcoordTable)) < 0) return false;
+            form |= kWithTexcoord;
+          }
+          if (p != end && *p == '/') {
+            ++p;
+            if ((vn = readIndex(p, end, kNormalTable)) < 0) return false;
+            form |= kWithNormal;
+          }
+          if (form == kVertexOnly) return false;  // "1/": malformed
+        }
+        if (faceForm < 0) faceForm = form;
+        if (form != faceForm) return false;
+        ObjCorner& corner = corners_.emplace_back();
+        corner.v = v, corner.vt = vt, corner.vn = vn;
+      }
+      if (corners_.size() < 3 || !lineEnds(p, end)) return false;
+      addFace(faceForm, reader_.lineNumber() + 1);
+    } else {
+      return false;
+    }
+    const std::size_t length = std::size_t(p - rest.data());
+    if (length > kMaxLineBytes) return false;  // perhaps too long: the general reader knows
+    reader_.skipLine(length);
+    return true;
+  }
+
+  static bool isBlank(char c) { return c == ' ' || c == '\t'; }
+
+  // `count` numbers, each after blanks, none after a sign '+' (the general reader takes that).
+  static bool readNumbers(const char*& p, const char* end, Vec3& v, int count) {
+    for (int a = 0; a < count; ++a) {
+      if (p == end || !isBlank(*p)) return false;
+      do ++p;
+      while (p != end && isBlank(*p));
+      const std::from_chars_result r = std::from_chars(p, end, v[a], std::chars_format::general);
+      if (r.ec != std::errc() || !std::isfinite(v[a])) return false;
+      p = r.ptr;
+    }
+    return true;
+  }
+
+  // Past blanks to the line's end, "\n", "\r\n" or the text's end; false if anything else is there.
+  static bool lineEnds(const char*& p, const char* end) {
+    while (p != end && isBlank(*p)) ++p;
+    if (p == end) return true;
+    if (*p == '\r') ++p;
+    if (p == end) return true;
+    if (*p != '\n') return false;
+    ++p;
+    return true;
+  }
+
+  // The 0-based index of a positive decimal index of at most 9 digits, in range when the counts
+  // before the chunk are known (the counts it needs noted when they are not); -1 for any other text.
+  int readIndex(const char*& p, const char* end, int table) {
+    const char* start = p;
+    long long value = 0;
+    while (p != end && *p >= '0' && *p <= '9' && p - start < 10) value = value * 10 + (*p++ - '0');
+    if (p == start || p - start == 10 || value == 0) return -1;
+    if (p != end && !isBlank(*p) && *p != '/' && *p != '\n' && *p != '\r') return -1;
+    const long long defined = static_cast<long long>(chunk_.counts()[table]);
+    if (before_) {
+      if (value > static_cast<long long>((*before_)[table]) + defined) return -1;
+    } else {
+      chunk_.needed[table] = std::max(chunk_.needed[table], value - defined);
+    }
+    return static_cast<int>(value - 1);
+  }
+
+  // Adds the face of corners_ (at least three, of one form), read on `line`: a triangle at once, a
+  // polygon as the places of its triangles.
+  void addFace(int faceForm, std::size_t line) {
+    const bool texcoords = faceForm & kWithTexcoord, normals = faceForm & kWithNormal;
+    if (corners_.size() == 3) {
+      const ObjCorner &a = corners_[0], &b = corners_[1], &c = corners_[2];
+      const std::size_t triangle = chunk_.triangles.size();
+      chunk_.triangles.push_back({a.v, b.v, c.v});
+      appendCorners(chunk_.cornerTexcoords, triangle, texcoords, {a.vt, b.vt, c.vt});
+      appendCorners(chunk_.cornerNormals, triangle, normals, {a.vn, b.vn, c.vn});
+      return;
+    }
+    chunk_.polygons.push_back(
+        {chunk_.triangles.size(), chunk_.polygonCorners.size(), corners_.size(), faceForm, line});
+    chunk_.polygonCorners.insert(chunk_.polygonCorners.end(), corners_.begin(), corners_.end());
+    for (std::size_t i = 2; i < corners_.size(); ++i) {  // places, filled by joinObjChunks
+      const std::size_t triangle = chunk_.triangles.size();
+      chunk_.triangles.push_back(kNoCorners);
+      appendCorners(chunk_.cornerTexcoords, triangle, texcoords, kNoCorners);
+      appendCorners(chunk_.cornerNormals, triangle, normals, kNoCorners);
+    }
+  }
+
+  LineReader& reader_;
+  const ObjCounts* before_;
+  ObjChunk& chunk_;
+  std::vector<ObjCorner> corners_;  // reused by every face
+};
+
+// Whether any of the chunks has a corner table: then the mesh has one for every triangle.
+bool anyCornerTable(const std::vector<ObjChunk>& chunks, std::vector<Triangle> ObjChunk::*table) {
+  return std::any_of(chunks.begin(), chunks.end(), [&](const ObjChunk& c) { return !(c.*table).empty(); });
+}
+
+// Copies `part` (or -1 for each of `count` triangles if the chunk has no such table) to `at`.
+void placeCornerTable(const std::vector<Triangle>& part, std::size_t count, std::vector<Triangle>::iterator at) {
+  if (part.empty())
+    std::fill_n(at, count, kNoCorners);
+  else
+    std::copy(part.begin(), part.end(), at);
+}
+
+template <typename T>
+void release(std::vector<T>& v) {
+  std::vector<T>().swap(v);
+}
+
+// The mesh of the chunks, read in file order and each settled (every index resolved and checked),
+// with its polygons triangulated; or the error of a file without faces.
+ReadMeshResult joinObjChunks(std::vector<ObjChunk>& chunks, const std::string& name, int threads) {
+  const int n = static_cast<int>(chunks.size());
+  // Where each chunk's elements go.
+  std::vector<ObjCounts> before(n + 1, ObjCounts{});
+  std::vector<std::size_t> trianglesBefore(n + 1, 0);
+  std::size_t lines = 0;
+  MeshWarnings warnings;
+  for (int i = 0; i < n; ++i) {
+    const ObjCounts own = chunks[i].counts();
+    for (int t = 0; t < 3; ++t) before[i + 1][t] = before[i][t] + own[t];
+    trianglesBefore[i + 1] = trianglesBefore[i] + chunks[i].triangles.size();
+    lines += chunks[i].lines;
+    warnings.vertexColours += chunks[i].vertexColours;
+    warnings.parameterVertices += chunks[i].parameterVertices;
+  }
+  if (trianglesBefore[n] == 0) throw expectedError(name, lines + 1, "at least one face", "end of file");
+
+  Mesh mesh;
+  if (n == 1) {  // a stream, or a small file: the chunk's arrays are the mesh's
+    ObjChunk& c = chunks[0];
+    mesh.positions = std::move(c.positions);
+    mesh.texcoords = std::move(c.texcoords);
+    mesh.normals = std::move(c.normals);
+    mesh.triangles = std::move(c.triangles);
+    mesh.cornerTexcoords = std::move(c.cornerTexcoords);
+    mesh.cornerNormals = std::move(c.cornerNormals);
+  } else {
+    mesh.positions.resize(before[n][kPositionTable]);
+    mesh.texcoords.resize(before[n][kTexcoordTable]);
+    mesh.normals.resize(before[n][kNormalTable]);
+    mesh.triangles.resize(trianglesBefore[n]);
+    const bool texcoords = anyCornerTable(chunks, &ObjChunk::cornerTexcoords);
+    const bool normals = anyCornerTable(chunks, &ObjChunk::cornerNormals);
+    if (texcoords) mesh.cornerTexcoords.resize(trianglesBefore[n]);
+    if (normals) mesh.cornerNormals.resize(trianglesBefore[n]);
+    // Each chunk's memory is given back as soon as it is copied, so the mesh is never held twice whole.
+    parallelFor(n, threads, [&](int i) {
+      ObjChunk& c = chunks[i];
+      std::copy(c.positions.begin(), c.positions.end(), mesh.positions.begin() + before[i][kPositionTable]);
+      std::copy(c.texcoords.begin(), c.texcoords.end(), mesh.texcoords.begin() + before[i][kTexcoordTable]);
+      std::copy(c.normals.begin(), c.normals.end(), mesh.normals.begin() + before[i][kNormalTable]);
+      std::copy(c.triangles.begin(), c.triangles.end(), mesh.triangles.begin() + trianglesBefore[i]);
+      const std::size_t count = c.triangles.size();
+      if (texcoords) placeCornerTable(c.cornerTexcoords, count, mesh.cornerTexcoords.begin() + trianglesBefore[i]);
+      if (normals) placeCornerTable(c.cornerNormals, count, mesh.cornerNormals.begin() + trianglesBefore[i]);
+      release(c.positions), release(c.texcoords), release(c.normals);
+      release(c.triangles), release(c.cornerTexcoords), release(c.cornerNormals);
+    });
+  }
+
+  // Polygons into the places their triangles hold, now that every position is known.
+  std::vector<MeshWarnings> nonSimple(n);
+  parallelFor(n, threads, [&](int i) {
+    ObjChunk& c = chunks[i];
+    if (c.polygons.empty()) return;
+    PolygonTriangulator triangulator;
+    std::vector<int> vertices;
+    std::vector<PolygonTriangle> triangles;
+    for (const ObjPolygon& p : c.polygons) {
+      const ObjCorner* corners = c.polygonCorners.data() + p.firstCorner;
+      vertices.clear();
+      for (std::size_t k = 0; k < p.corners; ++k) vertices.push_back(corners[k].v);
+      if (!triangulator.triangulate(mesh.positions, vertices, triangles) && nonSimple[i].nonSimplePolygons++ == 0)
+        nonSimple[i].firstNonSimplePolygonLine = p.line + c.lineOffset;
+      std::size_t at = trianglesBefore[i] + p.firstTriangle;
+      for (const PolygonTriangle& t : triangles) {
+        const ObjCorner &a = corners[t[0]], &b = corners[t[1]], &d = corners[t[2]];
+        mesh.triangles[at] = {a.v, b.v, d.v};
+        if (p.form & kWithTexcoord) mesh.cornerTexcoords[at] = {a.vt, b.vt, d.vt};
+        if (p.form & kWithNormal) mesh.cornerNormals[at] = {a.vn, b.vn, d.vn};
+        ++at;
+      }
+    }
+    release(c.polygons), release(c.polygonCorners);
+  });
+  for (const MeshWarnings& w : nonSimple) {
+    if (warnings.nonSimplePolygons == 0) warnings.firstNonSimplePolygonLine = w.firstNonSimplePolygonLine;
+    warnings.nonSimplePolygons += w.nonSimplePolygons;
+  }
+  return withWarnings(std::move(mesh), warnings);
+}
+
+// An OBJ read sequentially, every index resolved as its line is read.
+ReadMeshResult readObjLines(LineReader& reader) {
+  std::vector<ObjChunk> chunks(1);
+  const ObjCounts none = {};
+  ObjChunkReader(reader, &none, chunks[0]).read();
+  return joinObjChunks(chunks, reader.name(), 1);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -416,16 +874,6 @@ std::string countOf(int n, const char* singular, const char* plural) {
   return std::to_string(n) + " " + (n == 1 ? singular : plural);
 }
 
-// Three numbers named in messages: a position ("an x coordinate", ...) or a normal.
-constexpr const char* kPositionNames[3] = {"an x coordinate", "a y coordinate", "a z coordinate"};
-constexpr const char* kNormalNames[3] = {"a normal's x component", "a normal's y component", "a normal's z component"};
-
-Vec3 readVector(LineReader& reader, const char* const (&names)[3]) {
-  Vec3 v;
-  for (int a = 0; a < 3; ++a) v[a] = reader.number(names[a]);
-  return v;
-}
-
 void readOffVertex(LineReader& reader, const OffLayout& layout, Mesh& mesh) {
   mesh.positions.push_back(readVector(reader, kPositionNames));
   if (layout.normals) mesh.normals.push_back(readVector(reader, kNormalNames));
@@ -458,55 +906,6 @@ void readOffFace(LineReader& reader, ReaderState& state, Mesh& mesh) {
   reader.expectEndOfLine();
   state.triangulate(mesh, reader);
   for (const PolygonTriangle& t : state.triangles) mesh.triangles.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
-}
-
-// OBJ: `v x y z`, `v x y z w` or `v x y z r g b`; `vt u [v [w]]`; `vn x y z`; `vp u [v [w]]`,
-// ignored and counted; `f` with corners v, v/vt, v//vn or v/vt/vn, one form per face. w is the
-// weight of a rational curve's control point, which a polygon mesh has no use for: checked as a
-// number, then ignored, not divided by (as tinyobjloader, which keeps it apart; Assimp divides).
-// r g b are the vertex colours MeshLab and others write: checked as numbers, dropped and counted.
-// A line ending in '\' (a continuation, which few writers emit) is an error rather than joined, so
-// every message names one physical line.
-ReadMeshResult readObjLines(LineReader& reader) {
-  Mesh mesh;
-  std::vector<ObjCorner> corners;  // reused by every face
-  ReaderState state;
-  while (reader.nextLine()) {
-    if (reader.endsWithBackslash()) reader.fail("end of line", "a '\\' line continuation");
-    const std::string_view keyword = reader.token();
-    if (keyword.empty()) continue;
-    if (keyword == "v") {
-      const Vec3 p = readVector(reader, kPositionNames);
-      int more = 0;  // w, or r g b
-      for (double ignored = 0.0; reader.optionalNumber(ignored);) ++more;
-      if (more != 0 && more != 1 && more != 3)
-        reader.fail("x y z, x y z w or x y z r g b", std::to_string(3 + more) + " numbers");
-      if (more == 3) ++state.warnings.vertexColours;
-      pushBounded(reader, mesh.positions, p, "vertices");
-    } else if (keyword == "f") {
-      readObjFace(reader, mesh, corners, state);
-    } else if (keyword == "vt") {
-      Vec3 t = Vec3::Zero();
-      t.x() = reader.number("a u coordinate");
-      if (reader.optionalNumber(t.y())) reader.optionalNumber(t.z());
-      reader.expectEndOfLine();
-      pushBounded(reader, mesh.texcoords, t, "texture coordinates");
-    } else if (keyword == "vn") {
-      const Vec3 n = readVector(reader, kNormalNames);
-      reader.expectEndOfLine();
-      pushBounded(reader, mesh.normals, n, "normals");
-    } else if (keyword == "vp") {
-      double ignored = 0.0;
-      reader.number("a u parameter");
-      if (reader.optionalNumber(ignored)) reader.optionalNumber(ignored);
-      reader.expectEndOfLine();
-      ++state.warnings.parameterVertices;
-    } else if (!isIgnoredObjKeyword(keyword)) {
-      reader.failAt("a keyword (v, vt, vn, f, ...)", keyword);
-    }
-  }
-  if (mesh.triangles.empty()) reader.failAtEndOfFile("at least one face");
-  return withWarnings(std::move(mesh), state.warnings);
 }
 
 // OFF: a header (OFF, NOFF, COFF, CNOFF or NCOFF), optionally followed on its line by the counts
@@ -590,7 +989,217 @@ class ProgressBuffer : public std::streambuf {
   std::array<char, std::size_t{1} << 16> buffer_;
 };
 
+// Bytes read from a file: a vector<char> would zero each byte before the read overwrites it.
+struct ReadBuffer {
+  std::unique_ptr<char[]> data;
+  std::size_t size = 0, capacity = 0;
+
+  // Makes room for `count` more bytes after the first `size`.
+  char* extend(std::size_t count) {
+    if (size + count > capacity) {
+      capacity = std::max(size + count, 2 * capacity);
+      std::unique_ptr<char[]> larger(new char[capacity]);  // not value-initialised: read into
+      if (size > 0) std::memcpy(larger.get(), data.get(), size);
+      data = std::move(larger);
+    }
+    return data.get() + size;
+  }
+};
+
+// Where the chunks of an OBJ come from: text in memory or a regular file, read piece by piece.
+// Chunk i holds the lines that start in [i B, (i + 1) B) (B: the chunk size): it begins at the
+// first line start at or after i B (0, or one past a '\n') and ends at the next chunk's beginning,
+// so every line is in exactly one chunk, however long. The same chunks whatever the source.
+class ObjSource {
+ public:
+  virtual ~ObjSource() = default;
+  virtual std::size_t size() const = 0;
+  // The lines that start in [begin, end); `buffer` holds their text when it is not in memory.
+  virtual std::string_view lines(std::size_t begin, std::size_t end, ReadBuffer& buffer) const = 0;
+};
+
+class TextSource : public ObjSource {
+ public:
+  explicit TextSource(std::string_view text) : text_(text) {}
+  std::size_t size() const override { return text_.size(); }
+  std::string_view lines(std::size_t begin, std::size_t end, ReadBuffer&) const override {
+    const std::size_t first = lineStart(begin), last = lineStart(end);
+    return first < last ? text_.substr(first, last - first) : std::string_view();
+  }
+
+ private:
+  // The first line start at or after `at`.
+  std::size_t lineStart(std::size_t at) const {
+    if (at == 0) return 0;
+    if (at > text_.size()) return text_.size();
+    const void* newline = std::memchr(text_.data() + at - 1, '\n', text_.size() - (at - 1));
+    return newline ? std::size_t(static_cast<const char*>(newline) - text_.data()) + 1 : text_.size();
+  }
+
+  std::string_view text_;
+};
+
+// A regular file, each chunk read with pread() by the thread that parses it: the reading is spread
+// over the threads too, and only a chunk's worth of text per thread is ever held.
+class FileSource : public ObjSource {
+ public:
+  // Throws InputError when `path` cannot be opened.
+  FileSource(const std::string& path, std::size_t size) : path_(path), size_(size) {
+    errno = 0;
+    fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd_ < 0) throw inputError(path, 0, "cannot open: " + std::generic_category().message(errno));
+  }
+  ~FileSource() override { ::close(fd_); }
+  FileSource(const FileSource&) = delete;
+  FileSource& operator=(const FileSource&) = delete;
+
+  std::size_t size() const override { return size_; }
+
+  std::string_view lines(std::size_t begin, std::size_t end, ReadBuffer& buffer) const override {
+    // From the byte before `begin` (a '\n' there starts a line at `begin`) to the first '\n' at
+    // or after end - 1, which ends the last line; the file may have changed size since: its end
+    // ends the last line then.
+    const std::size_t from = begin == 0 ? 0 : begin - 1;
+    buffer.size = 0;
+    bool more = fill(buffer, from, end - from);
+    const char* data = buffer.data.get();
+    std::size_t first = 0;
+    if (begin > 0) {
+      const char* newline = static_cast<const char*>(std::memchr(data, '\n', buffer.size));
+      if (!newline || from + std::size_t(newline - data) >= end - 1) return {};  // no line starts here
+      first = std::size_t(newline - data) + 1;
+    }
+    std::size_t searched = end - 1 - from;
+    for (;;) {
+      data = buffer.data.get();
+      if (searched < buffer.size) {
+        const void* newline = std::memchr(data + searched, '\n', buffer.size - searched);
+        if (newline) return {data + first, std::size_t(static_cast<const char*>(newline) - data) + 1 - first};
+        searched = buffer.size;
+      }
+      if (!more) return {data + first, buffer.size - first};
+      more = fill(buffer, from + buffer.size, std::max<std::size_t>(buffer.size - first, kFirstReadBlock));
+    }
+  }
+
+ private:
+  // Appends up to `count` bytes read at `offset`; false once the file has ended.
+  bool fill(ReadBuffer& buffer, std::size_t offset, std::size_t count) const {
+    char* out = buffer.extend(count);
+    std::size_t got = 0;
+    while (got < count) {
+      const ssize_t n = ::pread(fd_, out + got, count - got, off_t(offset + got));
+      if (n == 0) break;
+      if (n < 0) {
+        if (errno == EINTR) continue;
+        throw inputError(path_, 0, "cannot read: input/output error");
+      }
+      got += std::size_t(n);
+    }
+    buffer.size += got;
+    return got == count;
+  }
+
+  std::string path_;
+  std::size_t size_;
+  int fd_ = -1;
+};
+
+// Buffers handed to the threads in turn, so that each keeps reusing the memory it already has.
+class BufferPool {
+ public:
+  ReadBuffer take() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (free_.empty()) return {};
+    ReadBuffer buffer = std::move(free_.back());
+    free_.pop_back();
+    return buffer;
+  }
+  void give(ReadBuffer&& buffer) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    free_.push_back(std::move(buffer));
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<ReadBuffer> free_;
+};
+
+ReadMeshResult readObjChunks(const ObjSource& source, const std::string& name, int threads, std::size_t chunkBytes,
+                             Progress* progress) {
+  chunkBytes = std::max<std::size_t>(chunkBytes, 1);
+  const std::size_t total = source.size();
+  const int n = static_cast<int>(std::max<std::size_t>((total + chunkBytes - 1) / chunkBytes, 1));
+  const auto range = [&](int i) { return std::pair(i * chunkBytes, i + 1 == n ? total + 1 : (i + 1) * chunkBytes); };
+  std::vector<ObjChunk> chunks(n);
+  BufferPool buffers;
+  parallelFor(n, threads, [&](int i) {
+    ReadBuffer buffer = buffers.take();
+    try {
+      const auto [begin, end] = range(i);
+      LineReader reader(source.lines(begin, end, buffer), name, 1, i == 0, progress);
+      ObjChunkReader(reader, nullptr, chunks[i]).read();
+    } catch (...) {
+      chunks[i].error = std::current_exception();
+    }
+    buffers.give(std::move(buffer));
+  });
+
+  // The counts and the line before each chunk, up to the first that stopped; the chunks read again
+  // with them: those that stopped, have relative indices or are out of range.
+  struct Again {
+    int chunk;
+    ObjCounts before;
+    std::size_t firstLine;
+    std::exception_ptr error;
+  };
+  std::vector<Again> again;
+  ObjCounts before = {};
+  std::size_t line = 1;
+  for (int i = 0; i < n; ++i) {
+    if (!chunks[i].settledBy(before)) again.push_back({i, before, line, nullptr});
+    if (chunks[i].error) break;
+    chunks[i].lineOffset = line - 1;
+    const ObjCounts own = chunks[i].counts();
+    for (int t = 0; t < 3; ++t) before[t] += own[t];
+    line += chunks[i].lines;
+  }
+  parallelFor(static_cast<int>(again.size()), threads, [&](int j) {
+    Again& a = again[j];
+    ObjChunk exact;
+    ReadBuffer buffer = buffers.take();
+    try {
+      const auto [begin, end] = range(a.chunk);
+      LineReader reader(source.lines(begin, end, buffer), name, a.firstLine, a.chunk == 0);
+      ObjChunkReader(reader, &a.before, exact).read();
+    } catch (...) {
+      a.error = std::current_exception();
+    }
+    buffers.give(std::move(buffer));
+    if (a.error) return;
+    if (chunks[a.chunk].error)
+      a.error = chunks[a.chunk].error;  // not an error of the text (memory): what stopped a chunk stops it again
+    else
+      chunks[a.chunk] = std::move(exact);
+  });
+  for (const Again& a : again)  // the first error in file order
+    if (a.error) std::rethrow_exception(a.error);
+  return joinObjChunks(chunks, name, threads);
+}
+
 }  // namespace
+
+ReadMeshResult readObjText(std::string_view text, const std::string& name, int threads, std::size_t chunkBytes) {
+  return readObjChunks(TextSource(text), name, threads, chunkBytes, nullptr);
+}
+
+ReadMeshResult readObjFile(const std::string& path, int threads, std::size_t chunkBytes) {
+  struct stat status {};
+  if (::stat(path.c_str(), &status) != 0 || !S_ISREG(status.st_mode)) return readMesh(path, threads);
+  const FileSource file(path, std::size_t(status.st_size));
+  Progress progress("reading " + path, file.size(), "MB", 1'000'000);
+  return readObjChunks(file, path, threads, chunkBytes, &progress);
+}
 
 ReadMeshResult readObj(std::istream& in, const std::string& name) {
   LineReader reader(in, name);
@@ -602,7 +1211,7 @@ ReadMeshResult readOff(std::istream& in, const std::string& name) {
   return readOffLines(reader);
 }
 
-ReadMeshResult readMesh(const std::string& path) {
+ReadMeshResult readMesh(const std::string& path, int threads) {
   const std::optional<MeshFormat> format = meshFormatOf(path);
   if (!format) {
     const std::string extension = std::filesystem::path(path).extension().string();
@@ -612,6 +1221,10 @@ ReadMeshResult readMesh(const std::string& path) {
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored))
     throw inputError(path, 0, "cannot open: " + std::generic_category().message(EISDIR));
+  // A regular OBJ is read in parallel chunks; anything else as a stream, as it comes.
+  struct stat status {};
+  if (*format == MeshFormat::obj && ::stat(path.c_str(), &status) == 0 && S_ISREG(status.st_mode))
+    return readObjFile(path, threads);
   errno = 0;
   std::ifstream in(path, std::ios::binary);
   if (!in) {

@@ -39,6 +39,7 @@ void writeMesh(OutputSet& outputs, const std::string& path, const Mesh& mesh, co
       obj.header = options.header;
       obj.floatPrecision = options.floatDigits;
       obj.writeW = options.writeW;
+      obj.threads = options.threads;
       return writeObj(outputs, path, mesh, uvs, obj);
     }
     case MeshFormat::ply: {

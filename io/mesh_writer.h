@@ -19,6 +19,7 @@ struct MeshWriteOptions {
   // PLY and glTF: a normal per vertex when the mesh has none of its own: the area-weighted vertex
   // normal, the one projectors cast rays along, so a mapping of the written file sees the same rays.
   bool computedNormals = true;
+  int threads = 0;  // OBJ: threads formatting the text (0: one per core); the bytes do not depend on it
 };
 
 // Throws UsageError when `path` is not an extension writeMesh writes (with `uvs`: one that holds

@@ -15,6 +15,7 @@ struct ObjWriteOptions {
   bool floatPrecision = false;  // UVs as the shortest text that round-trips a float (<= 9 digits), not a double (<= 17)
   bool writeW = false;          // write `vt u v w` with the UvMap's third component (0 where it has none)
   std::string header;           // comment lines written first, each prefixed with "# "
+  int threads = 0;              // threads formatting the text (0: all, core/parallel.h); the bytes are the same
 };
 
 // Writes, in this order: the header, `v` in mesh order (shortest text that round-trips the

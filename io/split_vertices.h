@@ -28,7 +28,8 @@ struct SplitVertices {
 
 // Splits every vertex into one copy per distinct key among its corners. A vertex no face uses
 // gets no copy. Linear time: corners bucketed by vertex (a counting sort), each vertex's few
-// distinct keys found by a scan.
-SplitVertices splitVertices(const Mesh& mesh, const SplitVertexKey& key);
+// distinct keys found by a scan; on `threads` threads (0: all, core/parallel.h), each taking a
+// range of vertices, with the same result whatever their number.
+SplitVertices splitVertices(const Mesh& mesh, const SplitVertexKey& key, int threads = 0);
 
 }  // namespace uvtk::io
