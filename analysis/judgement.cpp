@@ -8,6 +8,7 @@
 
 #include "analysis/overlap.h"
 #include "core/error.h"
+#include "core/parallel.h"
 
 namespace uvtk::analysis {
 
@@ -50,6 +51,15 @@ std::string formatValue(Rule rule, double value) {
     std::snprintf(text, sizeof text, "%.3g", value);
   return text;
 }
+
+// One chunk's share of the judgement's per-face counts and areas.
+struct FaceTally {
+  double surfaceArea = 0.0, poleArea = 0.0;
+  std::array<double, kFaceStatusCount> statusArea{};
+  std::array<std::size_t, kCornerInvalidCount> invalidCorners{};
+  std::size_t otherInvalidFaces = 0, invalidFaces = 0, outOfRangeFaces = 0, straddlingFaces = 0, capFaces = 0,
+              cubeSeamFaces = 0, sphereMapSingularFaces = 0, unrepairedSeamFaces = 0;
+};
 
 // Whether the valid corners of face f span more than half a turn of u (a seam left across it).
 bool spansSeam(const UvMap& uv, std::size_t f) {
@@ -190,35 +200,56 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
   j.summary = summarize(mesh, uv, j.faces, options.overlapResolution,
                         options.poleVertices ? &*options.poleVertices : nullptr, options.threads);
 
-  // Faces by status and by flag, their 3D areas, and the invalid corners by reason.
+  // Faces by status and by flag, their 3D areas, and the invalid corners by reason: tallied in
+  // fixed chunks on threads and added up in chunk order, so the sums do not depend on the threads.
+  constexpr std::size_t kChunk = std::size_t(1) << 16;
+  const int chunks = int((mesh.faceCount() + kChunk - 1) / kChunk);
+  std::vector<FaceTally> tallies(static_cast<std::size_t>(chunks));
+  parallelFor(chunks, options.threads, [&](int c) {
+    FaceTally& t = tallies[std::size_t(c)];
+    for (std::size_t f = std::size_t(c) * kChunk; f < std::min(mesh.faceCount(), std::size_t(c + 1) * kChunk); ++f) {
+      const FaceDistortion& face = j.faces[f];
+      t.surfaceArea += face.area3d;
+      t.statusArea[static_cast<std::size_t>(face.status)] += face.area3d;
+      bool invalid = uv.faceHas(f, kFaceInvalid), outOfRange = false, otherInvalid = false;
+      for (std::size_t corner = 3 * f; corner < 3 * f + 3; ++corner) {
+        const std::uint8_t reason = uv.cornerInvalid.empty() ? std::uint8_t(kCornerValid) : uv.cornerInvalid[corner];
+        UVTK_CHECK(reason < kCornerInvalidCount);
+        ++t.invalidCorners[reason];
+        invalid |= reason != kCornerValid;
+        outOfRange |= reason == kCornerOutOfRange;
+        otherInvalid |= reason != kCornerValid && reason != kCornerOutOfRange;
+      }
+      // A face flagged invalid with no invalid corner counts with the invalid corners' rule.
+      otherInvalid |= invalid && !outOfRange;
+      t.otherInvalidFaces += otherInvalid ? 1 : 0;
+      t.invalidFaces += invalid ? 1 : 0;
+      t.outOfRangeFaces += outOfRange ? 1 : 0;
+      t.straddlingFaces += uv.faceHas(f, kFaceSeamStraddle) ? 1 : 0;
+      t.capFaces += uv.faceHas(f, kFaceCap) ? 1 : 0;
+      t.cubeSeamFaces += uv.faceHas(f, kFaceCubeSeam) ? 1 : 0;
+      t.sphereMapSingularFaces += uv.faceHas(f, kFaceSphereMapSingular) ? 1 : 0;
+      if (uv.faceHas(f, kFacePole)) t.poleArea += face.area3d;
+      // A pole fan and a cap are meant to differ from the side; invalid faces are counted above.
+      if (options.wrapsU && !invalid && !uv.faceHas(f, kFacePole) && !uv.faceHas(f, kFaceCap) && spansSeam(uv, f))
+        ++t.unrepairedSeamFaces;
+    }
+  });
   std::array<double, kFaceStatusCount> statusArea{};
   double poleArea = 0.0;
-  for (std::size_t f = 0; f < mesh.faceCount(); ++f) {
-    const FaceDistortion& face = j.faces[f];
-    j.surfaceArea += face.area3d;
-    statusArea[static_cast<std::size_t>(face.status)] += face.area3d;
-    bool invalid = uv.faceHas(f, kFaceInvalid), outOfRange = false, otherInvalid = false;
-    for (std::size_t corner = 3 * f; corner < 3 * f + 3; ++corner) {
-      const std::uint8_t reason = uv.cornerInvalid.empty() ? std::uint8_t(kCornerValid) : uv.cornerInvalid[corner];
-      UVTK_CHECK(reason < kCornerInvalidCount);
-      ++j.invalidCorners[reason];
-      invalid |= reason != kCornerValid;
-      outOfRange |= reason == kCornerOutOfRange;
-      otherInvalid |= reason != kCornerValid && reason != kCornerOutOfRange;
-    }
-    // A face flagged invalid with no invalid corner counts with the invalid corners' rule.
-    otherInvalid |= invalid && !outOfRange;
-    j.otherInvalidFaces += otherInvalid ? 1 : 0;
-    j.invalidFaces += invalid ? 1 : 0;
-    j.outOfRangeFaces += outOfRange ? 1 : 0;
-    j.straddlingFaces += uv.faceHas(f, kFaceSeamStraddle) ? 1 : 0;
-    j.capFaces += uv.faceHas(f, kFaceCap) ? 1 : 0;
-    j.cubeSeamFaces += uv.faceHas(f, kFaceCubeSeam) ? 1 : 0;
-    j.sphereMapSingularFaces += uv.faceHas(f, kFaceSphereMapSingular) ? 1 : 0;
-    if (uv.faceHas(f, kFacePole)) poleArea += face.area3d;
-    // A pole fan and a cap are meant to differ from the side; invalid faces are counted above.
-    if (options.wrapsU && !invalid && !uv.faceHas(f, kFacePole) && !uv.faceHas(f, kFaceCap) && spansSeam(uv, f))
-      ++j.unrepairedSeamFaces;
+  for (const FaceTally& t : tallies) {
+    j.surfaceArea += t.surfaceArea;
+    for (std::size_t k = 0; k < statusArea.size(); ++k) statusArea[k] += t.statusArea[k];
+    poleArea += t.poleArea;
+    for (std::size_t k = 0; k < j.invalidCorners.size(); ++k) j.invalidCorners[k] += t.invalidCorners[k];
+    j.otherInvalidFaces += t.otherInvalidFaces;
+    j.invalidFaces += t.invalidFaces;
+    j.outOfRangeFaces += t.outOfRangeFaces;
+    j.straddlingFaces += t.straddlingFaces;
+    j.capFaces += t.capFaces;
+    j.cubeSeamFaces += t.cubeSeamFaces;
+    j.sphereMapSingularFaces += t.sphereMapSingularFaces;
+    j.unrepairedSeamFaces += t.unrepairedSeamFaces;
   }
   if (j.summary.overlap.overlappedPixels > 0)
     j.overlappedFaces = countOverlappedFaces(uv, j.faces, j.summary.overlap, measuredFaceBounds(uv, j.faces));

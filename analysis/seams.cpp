@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "core/huge_pages.h"
 
 namespace uvtk::analysis {
 
@@ -45,7 +46,8 @@ std::vector<std::uint64_t> sortedHalfEdges(const Mesh& mesh) {
   std::vector<std::uint32_t> start(mesh.positions.size() + 1, 0);
   for (std::size_t c = 0; c < corners; ++c) ++start[std::size_t(halfEdge(mesh, c).lower) + 1];
   for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
-  std::vector<std::uint64_t> order(corners);
+  std::vector<std::uint64_t> order;
+  resizeOnHugePages(order, corners);
   std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
   for (std::size_t c = 0; c < corners; ++c) {
     const HalfEdge e = halfEdge(mesh, c);

@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "core/error.h"
+#include "core/huge_pages.h"
 #include "core/parallel.h"
 
 namespace uvtk::analysis {
@@ -38,6 +39,7 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
   const auto statistics = [&](auto valueOf, BinSpacing spacing) {
     std::vector<WeightedValue> items;
     items.reserve(s.statusCounts[FaceStatus::Ok]);
+    adviseHugePages(items.data(), items.capacity() * sizeof(WeightedValue));
     for (const FaceDistortion& face : faces)
       if (face.status == FaceStatus::Ok) items.push_back({valueOf(face), face.area3d});
     return weightedStatistics(std::move(items), spacing);

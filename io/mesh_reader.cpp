@@ -55,6 +55,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/huge_pages.h"
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "io/gltf_reader.h"
@@ -775,14 +776,14 @@ ReadMeshResult joinObjChunks(std::vector<ObjChunk>& chunks, const std::string& n
     mesh.cornerTexcoords = std::move(c.cornerTexcoords);
     mesh.cornerNormals = std::move(c.cornerNormals);
   } else {
-    mesh.positions.resize(before[n][kPositionTable]);
-    mesh.texcoords.resize(before[n][kTexcoordTable]);
-    mesh.normals.resize(before[n][kNormalTable]);
-    mesh.triangles.resize(trianglesBefore[n]);
+    resizeOnHugePages(mesh.positions, before[n][kPositionTable]);
+    resizeOnHugePages(mesh.texcoords, before[n][kTexcoordTable]);
+    resizeOnHugePages(mesh.normals, before[n][kNormalTable]);
+    resizeOnHugePages(mesh.triangles, trianglesBefore[n]);
     const bool texcoords = anyCornerTable(chunks, &ObjChunk::cornerTexcoords);
     const bool normals = anyCornerTable(chunks, &ObjChunk::cornerNormals);
-    if (texcoords) mesh.cornerTexcoords.resize(trianglesBefore[n]);
-    if (normals) mesh.cornerNormals.resize(trianglesBefore[n]);
+    if (texcoords) resizeOnHugePages(mesh.cornerTexcoords, trianglesBefore[n]);
+    if (normals) resizeOnHugePages(mesh.cornerNormals, trianglesBefore[n]);
     // Each chunk's memory is given back as soon as it is copied, so the mesh is never held twice whole.
     parallelFor(n, threads, [&](int i) {
       ObjChunk& c = chunks[i];

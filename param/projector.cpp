@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "core/error.h"
+#include "core/huge_pages.h"
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "core/stopwatch.h"
@@ -232,7 +233,7 @@ void mapVerticesThroughKernel(const ProjectorOptions& o, const Affine3& localFro
     throw UsageError("this O-mapping needs one normal per position");
   const LocalFrameT<T> frame(localFromObject);
   const std::size_t n = positions.size();
-  out.resize(n);
+  resizeOnHugePages(out, n);
   const int chunks = threadCount(threads);
   const std::size_t size = (n / std::size_t(chunks) + 255) / 256 * 256;
   parallelFor(chunks, chunks, [&](int chunk) {

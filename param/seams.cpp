@@ -5,11 +5,12 @@
 #include <unordered_map>
 
 #include "core/error.h"
+#include "core/huge_pages.h"
 
 namespace uvtk::param {
 
 void CornerField::resize(std::size_t faceCount) {
-  uv.resize(3 * faceCount);
+  resizeOnHugePages(uv, 3 * faceCount);
   state.assign(3 * faceCount, CornerState::Invalid);
   reason.assign(3 * faceCount, kCornerMiss);
   faceFlags.assign(faceCount, kFaceOk);

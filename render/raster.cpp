@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/progress.h"
+#include "core/huge_pages.h"
 
 namespace uvtk::render {
 
@@ -353,7 +354,8 @@ TiledRaster::TiledRaster(const std::vector<Vec4>& clip, const std::vector<Triang
   const int threads = threadCount(options.threads);
   const Setup setup(width, height, tilesX_, options);
 
-  std::vector<WindowVertex> window(clip.size());
+  std::vector<WindowVertex> window;
+  resizeOnHugePages(window, clip.size());
   constexpr std::size_t kVertexChunk = std::size_t(1) << 16;
   parallelFor(int((clip.size() + kVertexChunk - 1) / kVertexChunk), threads, [&](int c) {
     const std::size_t end = std::min(clip.size(), std::size_t(c + 1) * kVertexChunk);
@@ -369,6 +371,7 @@ TiledRaster::TiledRaster(const std::vector<Vec4>& clip, const std::vector<Triang
     chunk.tiles.resize(std::size_t(tileCount()));
     const std::int64_t begin = faceCount * c / chunkCount, end = faceCount * (c + 1) / chunkCount;
     chunk.triangles.reserve(std::size_t(end - begin) / 2);  // a closed mesh shows about half its faces
+    adviseHugePages(chunk.triangles.data(), chunk.triangles.capacity() * sizeof(SetupTriangle));
     for (std::int64_t f = begin; f < end; ++f)
       setup.triangle(clip, window, triangles[std::size_t(f)], std::int32_t(f), chunk);
   });

@@ -13,6 +13,7 @@
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "core/stopwatch.h"
+#include "core/huge_pages.h"
 #include "render/memory.h"
 
 namespace uvtk::render {
@@ -128,6 +129,13 @@ class Shader {
       dy += b.dbdy[k] * corners[k];
     }
     FragmentTexcoords out;
+    if (!f_.options.cubeTexture) {  // a 2D texture reads (s, t) alone: r stays 0, two divisions fewer
+      const double q = tc.w(), q2 = q * q;
+      out.str.head<2>() = tc.head<2>() / q;
+      out.dx.head<2>() = (dx.head<2>() * q - tc.head<2>() * dx.w()) / q2;  // as projectedDerivative
+      out.dy.head<2>() = (dy.head<2>() * q - tc.head<2>() * dy.w()) / q2;
+      return out;
+    }
     out.str = tc.head<3>() / tc.w();
     out.dx = projectedDerivative(tc, dx);
     out.dy = projectedDerivative(tc, dy);
@@ -171,7 +179,8 @@ class Shader {
 };
 
 std::vector<Vec4> clipPositions(const Mesh& mesh, const Mat4& clipFromObject, int threads) {
-  std::vector<Vec4> clip(mesh.positions.size());
+  std::vector<Vec4> clip;
+  resizeOnHugePages(clip, mesh.positions.size());
   constexpr int kChunk = 1 << 16;
   parallelFor(int((clip.size() + kChunk - 1) / kChunk), threads, [&](int chunk) {
     const std::size_t end = std::min(clip.size(), std::size_t(chunk + 1) * kChunk);
@@ -211,9 +220,11 @@ Rendering renderFrame(const Mesh& mesh, const TexcoordSource& source, const Rend
     }
   }
 
-  out.colour = Image(width, height, 3);
+  out.colour.width = width, out.colour.height = height, out.colour.channels = 3;
+  resizeOnHugePages(out.colour.pixels, std::size_t(width) * std::size_t(height) * 3);
   if (o.aovs) {
-    out.aovs = Image(width, height, o.cubeTexture ? 6 : 5);
+    out.aovs.width = width, out.aovs.height = height, out.aovs.channels = o.cubeTexture ? 6 : 5;
+    resizeOnHugePages(out.aovs.pixels, std::size_t(width) * std::size_t(height) * std::size_t(out.aovs.channels));
     out.aovs.channelNames = {"u", "v", "depth", "face", "lod"};
     if (o.cubeTexture) out.aovs.channelNames.push_back("cubeface");
   }
@@ -225,6 +236,7 @@ Rendering renderFrame(const Mesh& mesh, const TexcoordSource& source, const Rend
   parallelFor(raster.tileCount(), o.raster.threads, [&](int index) {
     const std::unique_ptr<TiledRaster::Tile> tile(new TiledRaster::Tile);  // draw() fills it
     raster.draw(index, *tile);
+    std::size_t tileCovered = 0;  // stored once: neighbouring tiles' counts share a cache line
     for (int y = tile->y0; y <= tile->y1; ++y) {
       const int row = height - 1 - y;
       for (int x = tile->x0; x <= tile->x1; ++x) {
@@ -247,7 +259,7 @@ Rendering renderFrame(const Mesh& mesh, const TexcoordSource& source, const Rend
         Vec3 rgb = o.background;
         if (drawn) {
           rgb = shader.shade(x, row, *drawn, aov);
-          ++covered[std::size_t(index)];
+          ++tileCovered;
           if (sampleCovered) (*sampleCovered)[std::size_t(row) * std::size_t(width) + std::size_t(x)] = 1;
         } else if (aov) {
           aov[0] = aov[1] = aov[4] = 0.0f;
@@ -260,6 +272,7 @@ Rendering renderFrame(const Mesh& mesh, const TexcoordSource& source, const Rend
         for (int c = 0; c < 3; ++c) out.colour.at(x, row, c) = float(rgb[c]);
       }
     }
+    covered[std::size_t(index)] = tileCovered;
     progress.advance();
   });
   for (std::size_t n : covered) out.coveredPixels += n;

@@ -188,8 +188,17 @@ Vec4 sampleLinear(const TexelLevel& level, Wrap wrapS, Wrap wrapT, double s, dou
 double levelOfDetail(int width, int height, const Vec2& dstDx, const Vec2& dstDy) {
   if (dstDx.hasNaN() || dstDy.hasNaN()) return kInfinity;  // undefined footprint: the coarsest level
   // GL 4.6 §8.14.1: rho = max(sqrt((du/dx)^2 + (dv/dx)^2), sqrt((du/dy)^2 + (dv/dy)^2)), u = s w, v = t h
-  const double rho = std::max(std::hypot(dstDx.x() * width, dstDx.y() * height),
-                              std::hypot(dstDy.x() * width, dstDy.y() * height));
+  const double dudx = dstDx.x() * width, dvdx = dstDx.y() * height, dudy = dstDy.x() * width, dvdy = dstDy.y() * height;
+  // hypot is within an ulp of the true length: when the squared lengths, exact to a few ulp,
+  // differ by far more than that, the longer one is rho and the other need not be computed.
+  // Outside [1e-290, 1e290] a square may have overflowed or lost its precision to underflow.
+  const double sx = dudx * dudx + dvdx * dvdx, sy = dudy * dudy + dvdy * dvdy;
+  constexpr double kSeparated = 1.0 + 1e-9, kLow = 1e-290, kHigh = 1e290;
+  if (sx >= kLow && sx <= kHigh && sy >= kLow && sy <= kHigh) {
+    if (sx > sy * kSeparated) return std::log2(std::hypot(dudx, dvdx));
+    if (sy > sx * kSeparated) return std::log2(std::hypot(dudy, dvdy));
+  }
+  const double rho = std::max(std::hypot(dudx, dvdx), std::hypot(dudy, dvdy));
   return std::log2(rho);  // GL 4.6 §8.14.1: lambda_base = log2(rho); log2(0) = -inf, log2(inf) = +inf
 }
 

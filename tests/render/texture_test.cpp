@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -261,6 +262,34 @@ TEST(LevelOfDetail, TakesTheLongerOfTheTwoFootprintAxes) {
   EXPECT_EQ(levelOfDetail(256, 256, Vec2(1.0 / 16, 0.0), Vec2(0.0, 1.0 / 64)), 4.0);
   // Width and height scale their own coordinate: 64 x 16 with ds/dx = dt/dy = 1/16 gives 4 and 1.
   EXPECT_EQ(levelOfDetail(64, 16, Vec2(1.0 / 16, 0.0), Vec2(0.0, 1.0 / 16)), 2.0);
+}
+
+// levelOfDetail computes only the longer axis's hypot when the squared lengths tell it apart: the
+// result must be bit for bit GL's formula with both, also for axes within an ulp of each other
+// and for squares that overflow or underflow.
+TEST(LevelOfDetail, IsBitForBitTheFormulaWithBothAxes) {
+  const auto formula = [](int w, int h, const Vec2& dx, const Vec2& dy) {
+    return std::log2(std::max(std::hypot(dx.x() * w, dx.y() * h), std::hypot(dy.x() * w, dy.y() * h)));
+  };
+  std::mt19937_64 random(26);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-600, 600);
+  for (int i = 0; i < 200000; ++i) {
+    const double scale = std::ldexp(1.0, i % 4 == 0 ? exponent(random) : exponent(random) / 40);
+    Vec2 dx(unit(random) * scale, unit(random) * scale), dy(unit(random) * scale, unit(random) * scale);
+    switch (i % 5) {
+      case 1: dy = Vec2(dx.y(), dx.x()); break;                                  // equal lengths
+      case 2: dy = Vec2(std::nextafter(dx.x(), 2.0 * dx.x()), dx.y()); break;    // an ulp apart
+      case 3: dy = dx * (1.0 + 1e-9 * unit(random)); break;                       // about the margin
+      default: break;
+    }
+    const int w = 1 << (i % 12), h = 1 << ((i / 12) % 12);
+    const double expected = formula(w, h, dx, dy), actual = levelOfDetail(w, h, dx, dy);
+    ASSERT_TRUE(actual == expected || (std::isnan(actual) && std::isnan(expected)))
+        << dx.transpose() << " / " << dy.transpose() << ": " << actual << " != " << expected;
+  }
+  EXPECT_EQ(levelOfDetail(1, 1, Vec2(1e200, 0.0), Vec2(0.0, 1e199)), std::log2(1e200));  // squares overflow
+  EXPECT_EQ(levelOfDetail(1, 1, Vec2(1e-200, 0.0), Vec2(0.0, 1e-201)), std::log2(1e-200));  // squares underflow
 }
 
 TEST(LevelOfDetail, IsMinusInfinityForNoFootprintAndPlusInfinityForAnUndefinedOne) {
