@@ -34,36 +34,9 @@ using namespace uvtk;
 constexpr int kWidth = 1920, kHeight = 1080;
 constexpr double kRepeatsS = 8.0, kRepeatsT = 4.0;  // enough texels per pixel that trilinear minifies
 
-// Longitude and colatitude as (s, t), each triangle's s made continuous across the seam (y = +0)
-// and a pole taking the mean s of its triangle's other corners.
-std::vector<Vec4> sphereTexcoords(const Mesh& mesh) {
-  std::vector<Vec4> corners;
-  corners.reserve(3 * mesh.faceCount());
-  for (const Triangle& t : mesh.triangles) {
-    double s[3], tc[3];
-    bool pole[3];
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 p = mesh.positions[std::size_t(t[k])].normalized();
-      pole[k] = p.x() == 0.0 && p.y() == 0.0;
-      const double longitude = std::atan2(p.y(), p.x()) / kTwoPi;
-      s[k] = longitude < 0.0 ? longitude + 1.0 : longitude;
-      tc[k] = std::acos(std::clamp(p.z(), -1.0, 1.0)) / kPi;
-    }
-    double lo = 1.0, hi = 0.0;
-    for (int k = 0; k < 3; ++k)
-      if (!pole[k]) lo = std::min(lo, s[k]), hi = std::max(hi, s[k]);
-    for (int k = 0; k < 3; ++k)
-      if (!pole[k] && hi - lo > 0.5 && s[k] < 0.5) s[k] += 1.0;
-    for (int k = 0; k < 3; ++k)
-      if (pole[k]) s[k] = 0.5 * (s[(k + 1) % 3] + s[(k + 2) % 3]);
-    for (int k = 0; k < 3; ++k) corners.emplace_back(kRepeatsS * s[k], kRepeatsT * tc[k], 0.0, 1.0);
-  }
-  return corners;
-}
-
 struct Scene {
   Scene() {
-    texcoords.corners = sphereTexcoords(mesh);
+    texcoords.corners = meshes::latLongCornerTexcoords(mesh, kRepeatsS, kRepeatsT);
     texture.buildMipmaps();
     options.camera = render::frameSphere(render::boundingSphere(mesh.positions), Vec3(1, -2, 0.8), Vec3(0, 0, 1), {},
                                          kWidth, kHeight);

@@ -1,5 +1,6 @@
 #include "meshes/generators.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <tuple>
@@ -67,6 +68,30 @@ Mesh latLongSphere(int longitudes, int latitudes, double radius) {
     for (int j = 0; j < longitudes; ++j) addQuad(mesh, ring(i, j), ring(i + 1, j), ring(i + 1, j + 1), ring(i, j + 1));
   for (int j = 0; j < longitudes; ++j) mesh.triangles.push_back({south, ring(latitudes - 1, j + 1), ring(latitudes - 1, j)});
   return mesh;
+}
+
+std::vector<Vec4> latLongCornerTexcoords(const Mesh& mesh, double repeatsS, double repeatsT) {
+  std::vector<Vec4> corners;
+  for (const Triangle& t : mesh.triangles) {
+    double s[3], tc[3];
+    bool pole[3];
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 p = mesh.positions[std::size_t(t[k])].normalized();
+      pole[k] = p.x() == 0.0 && p.y() == 0.0;
+      const double longitude = std::atan2(p.y(), p.x()) / kTwoPi;
+      s[k] = longitude < 0.0 ? longitude + 1.0 : longitude;
+      tc[k] = std::acos(std::clamp(p.z(), -1.0, 1.0)) / kPi;
+    }
+    double lo = 1.0, hi = 0.0;
+    for (int k = 0; k < 3; ++k)
+      if (!pole[k]) lo = std::min(lo, s[k]), hi = std::max(hi, s[k]);
+    for (int k = 0; k < 3; ++k)
+      if (!pole[k] && hi - lo > 0.5 && s[k] < 0.5) s[k] += 1.0;
+    for (int k = 0; k < 3; ++k)
+      if (pole[k]) s[k] = 0.5 * (s[(k + 1) % 3] + s[(k + 2) % 3]);
+    for (int k = 0; k < 3; ++k) corners.emplace_back(repeatsS * s[k], repeatsT * tc[k], 0.0, 1.0);
+  }
+  return corners;
 }
 
 Mesh icosphere(int level, double radius) {

@@ -17,6 +17,12 @@ namespace uvtk::meshes {
 // Vertices: longitudes (latitudes - 1) + 2; faces: 2 longitudes (latitudes - 1).
 Mesh latLongSphere(int longitudes, int latitudes, double radius = 1.0);
 
+// Texture coordinates (repeatsS s, repeatsT t, 0, 1) per corner of a mesh around the origin:
+// longitude / 2 pi and colatitude / pi of each corner's direction, s made continuous across the
+// seam (y = +0) within each triangle and a pole corner given the mean s of its triangle's others.
+// What the rendering benchmark and the rasterizer's identity test draw.
+std::vector<Vec4> latLongCornerTexcoords(const Mesh& mesh, double repeatsS, double repeatsT);
+
 // Icosahedron subdivided `level` times (each triangle into 4), vertices pushed to `radius`.
 // Vertices: 10 * 4^level + 2; faces: 20 * 4^level.
 Mesh icosphere(int level, double radius = 1.0);

@@ -31,32 +31,6 @@ std::uint64_t checksum(const Rendering& r) {
   return h;
 }
 
-// Longitude and colatitude times (rs, rt), s continuous across the seam, a pole at its
-// neighbours' mean s (the benchmark's sphere coordinates).
-std::vector<Vec4> sphereTexcoords(const Mesh& mesh, double rs, double rt) {
-  std::vector<Vec4> corners;
-  for (const Triangle& t : mesh.triangles) {
-    double s[3], tc[3];
-    bool pole[3];
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 p = mesh.positions[std::size_t(t[k])].normalized();
-      pole[k] = p.x() == 0.0 && p.y() == 0.0;
-      const double longitude = std::atan2(p.y(), p.x()) / kTwoPi;
-      s[k] = longitude < 0.0 ? longitude + 1.0 : longitude;
-      tc[k] = std::acos(std::clamp(p.z(), -1.0, 1.0)) / kPi;
-    }
-    double lo = 1.0, hi = 0.0;
-    for (int k = 0; k < 3; ++k)
-      if (!pole[k]) lo = std::min(lo, s[k]), hi = std::max(hi, s[k]);
-    for (int k = 0; k < 3; ++k)
-      if (!pole[k] && hi - lo > 0.5 && s[k] < 0.5) s[k] += 1.0;
-    for (int k = 0; k < 3; ++k)
-      if (pole[k]) s[k] = 0.5 * (s[(k + 1) % 3] + s[(k + 2) % 3]);
-    for (int k = 0; k < 3; ++k) corners.emplace_back(rs * s[k], rt * tc[k], 0.0, 1.0);
-  }
-  return corners;
-}
-
 // (s, t, 0, q) with q varying over the mesh, so that the perspective division matters.
 std::vector<Vec4> projectiveTexcoords(const Mesh& mesh) {
   std::vector<Vec4> corners;
@@ -133,7 +107,7 @@ struct RenderIdentity : ::testing::Test {
 TEST_F(RenderIdentity, ScenesDrawTheImagesTheyDrewBeforeTheSpeedUps) {
   {  // trilinear, mirrored repeat, a labelled grid on a coarse sphere
     TexcoordSource tc;
-    tc.corners = sphereTexcoords(sphere, 2, 1);
+    tc.corners = meshes::latLongCornerTexcoords(sphere, 2, 1);
     RenderOptions o = base();
     o.camera = sphereCamera(sphere, 320, 200);
     o.texture = &grid;
