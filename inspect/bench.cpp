@@ -551,6 +551,9 @@ BenchOptions BenchArguments::resolve() const {
 }
 
 std::string bench(const BenchOptions& a) {
+  std::vector<nlohmann::json> records;
+  // First, from a process that holds no mesh yet (a forked child's peak counts the pages it shares).
+  if (!a.mesh.empty() && a.endToEnd) records = benchEndToEnd(a);
   Mesh mesh;
   std::string meshName;
   if (a.mesh.empty()) {
@@ -565,9 +568,6 @@ std::string bench(const BenchOptions& a) {
   int argc = 1;
   benchmark::Initialize(&argc, &argv0);
 
-  std::vector<nlohmann::json> records;
-  if (!a.mesh.empty() && a.endToEnd)
-    records = benchEndToEnd(a);  // first, while this process is small and its threads are idle
   for (nlohmann::json& r : benchMapping(a, mesh)) records.push_back(std::move(r));
   for (nlohmann::json& r : benchPeers(a, mesh)) records.push_back(std::move(r));
   if (a.rendering) {

@@ -72,6 +72,29 @@ TEST_F(MapCli, WritesTheSummaryAsJson) {
   EXPECT_EQ(j["reasons"][0]["faces"], 32);
 }
 
+// A mesh large enough for several reader chunks (4 MB) and judgement chunks (65,536 faces): one
+// thread and two write the same bytes and judge alike; the stages are timed in the JSON.
+TEST_F(MapCli, ThreadsChangeNothingButTheTime) {
+  io::writeObj(path("big.obj"), meshes::latLongSphere(400, 250), nullptr);  // 199,200 faces, ~10 MB
+  ASSERT_GT(fs::file_size(path("big.obj")), std::uintmax_t(2 * 4 << 20));
+  for (const char* threads : {"1", "2"}) {
+    const CliRun r = uvtk("map " + path("big.obj") + " --projector sphere --threads " + threads + " -o " +
+                          path(std::string("t") + threads + ".obj") + " --json " + path(std::string("t") + threads + ".json"));
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  EXPECT_EQ(readText(path("t1.obj")), readText(path("t2.obj")));
+  nlohmann::json one = nlohmann::json::parse(readText(path("t1.json")));
+  nlohmann::json two = nlohmann::json::parse(readText(path("t2.json")));
+  for (const char* stage : {"read", "map", "seams", "judge", "write", "total"}) {
+    EXPECT_TRUE(one["milliseconds"][stage].is_number()) << stage;
+    EXPECT_GE(one["milliseconds"]["total"].get<double>(), one["milliseconds"][stage].get<double>()) << stage;
+  }
+  one.erase("milliseconds"), two.erase("milliseconds");
+  one.erase("output"), two.erase("output");
+  EXPECT_EQ(one, two);
+  EXPECT_EQ(uvtk("map " + path("big.obj") + " --threads -1 -o " + path("x.obj")).status, 2);
+}
+
 TEST_F(MapCli, HelpListsEveryOptionWithItsDefault) {
   const std::string help = path("help.txt");
   ASSERT_EQ(std::system((std::string(UVTK_BINARY) + " map --help > " + help).c_str()), 0);
