@@ -1,6 +1,7 @@
 #include "analysis/distortion.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -91,15 +92,32 @@ bool isMeasured(FaceStatus status) {
          status == FaceStatus::Flipped;
 }
 
+namespace {
+
+// 1 for a box whose extent lies within 2^-500 .. 2^500, else the power of two that brings it to about 1.
+template <class Box>
+double scaleOfExtent(const Box& box) {
+  if (box.isEmpty()) return 1.0;
+  // Halves: the extent of a box spanning -1e308 .. 1e308 does not overflow.
+  const double extent = (0.5 * box.max() - 0.5 * box.min()).maxCoeff();
+  constexpr double kLow = 0x1p-500, kHigh = 0x1p500;  // about 1e-150 .. 1e150
+  if (!(extent > 0.0) || !std::isfinite(extent) || (extent >= kLow && extent <= kHigh)) return 1.0;
+  return std::ldexp(1.0, -std::ilogb(extent));
+}
+
+}  // namespace
+
 double measureLengthScale(const Mesh& mesh) {
   Eigen::AlignedBox3d box;
   for (const Vec3& p : mesh.positions) box.extend(p);
-  if (box.isEmpty()) return 1.0;
-  // Halves: the extent of a mesh spanning -1e308 .. 1e308 does not overflow.
-  const double extent = (0.5 * box.max() - 0.5 * box.min()).maxCoeff();
-  constexpr double kLow = 0x1p-500, kHigh = 0x1p500;  // about 1e-150 .. 1e150
-  if (!(extent > 0.0) || (extent >= kLow && extent <= kHigh)) return 1.0;
-  return std::ldexp(1.0, -std::ilogb(extent));
+  return scaleOfExtent(box);
+}
+
+double measureUvScale(const UvMap& uv) {
+  Eigen::AlignedBox2d box;
+  for (std::size_t corner = 0; corner < uv.uv.size(); ++corner)
+    if (uv.cornerInvalid.empty() || uv.cornerInvalid[corner] == kCornerValid) box.extend(uv.uv[corner]);
+  return scaleOfExtent(box);
 }
 
 std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const DistortionOptions& options,
@@ -107,10 +125,13 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
   const std::size_t faceCount = mesh.triangles.size();
   UVTK_CHECK(uv.uv.size() == 3 * faceCount && uv.faceFlags.size() == faceCount);
   UVTK_CHECK(uv.cornerInvalid.empty() || uv.cornerInvalid.size() == 3 * faceCount);
-  const double scale = measureLengthScale(mesh);
+  const double scale = measureLengthScale(mesh), uvScale = measureUvScale(uv);
   auto edges = [&](std::size_t f) {
     const Triangle& t = mesh.triangles[f];
     return Edges(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], scale);
+  };
+  auto uvCorners = [&](std::size_t f) {  // times uvScale (exact: a power of two)
+    return std::array<Vec2, 3>{uv.uv[3 * f] * uvScale, uv.uv[3 * f + 1] * uvScale, uv.uv[3 * f + 2] * uvScale};
   };
   // Turned away from the projector: mirrored by design.
   auto turnedAway = [&](const TriangleAreas& a) {
@@ -135,7 +156,7 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
   std::vector<double> votes(std::size_t(chunks), 0.0);  // per chunk, 3D area voting for counter-clockwise UV winding minus area against it
   forEachChunk([&](int c, std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
-      const Vec2* t = &uv.uv[3 * f];
+      const std::array<Vec2, 3> t = uvCorners(f);
       const TriangleAreas a = triangleAreas(edges(f), t[0], t[1], t[2]);
       bool invalid = uv.faceHas(f, kFaceInvalid);
       for (int k = 0; k < 3 && !uv.cornerInvalid.empty(); ++k) invalid = invalid || uv.cornerInvalid[3 * f + k] != 0;
@@ -165,7 +186,7 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
     for (std::size_t f = begin; f < end; ++f) {
       FaceDistortion& face = faces[f];
       if (face.status != FaceStatus::Ok) continue;
-      const Vec2* t = &uv.uv[3 * f];
+      const std::array<Vec2, 3> t = uvCorners(f);
       const bool mirrored = (orientation[f] & (majority > 0.0 ? kClockwise : kCounterClockwise)) != 0;
       if (uv.faceHas(f, kFacePole)) face.status = FaceStatus::PoleFace;
       else if (mirrored) face.status = orientation[f] & kTurnedAway ? FaceStatus::Backfacing : FaceStatus::Flipped;

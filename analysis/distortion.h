@@ -49,7 +49,7 @@ bool isMeasured(FaceStatus status);
 struct FaceDistortion {
   FaceStatus status = FaceStatus::Invalid;
   double area3d = 0.0;  // A3, the triangle's area in object space (times measureLengthScale squared)
-  double areaUv = 0.0;  // Auv, the absolute area of its UV triangle
+  double areaUv = 0.0;  // Auv, the absolute area of its UV triangle (times measureUvScale squared)
   double sigmaMax = 0.0;  // s1, the larger singular value of J
   double sigmaMin = 0.0;  // s2, |s2| <= s1; negative when the face is mirrored against the majority
   double l2Stretch = 0.0;        // sqrt((G^2 + g^2) / 2), G = 1/|s2|, g = 1/s1; in UV units
@@ -72,6 +72,11 @@ struct DistortionOptions {
 // distortion, the summary's stretches, the verdict) do not depend on it; A3, the singular values
 // and the raw stretches are in object units times it.
 double measureLengthScale(const Mesh& mesh);
+
+// The same for the valid corners' UVs (a two-plane layout of a mesh at 1e200 spans about 1e200), so
+// that UV areas and the Jacobian's determinant neither overflow nor underflow. Auv, the singular
+// values and the raw stretches are in UV units times it; the normalised measures do not depend on it.
+double measureUvScale(const UvMap& uv);
 
 // One FaceDistortion per triangle of `mesh`. Precondition: `uv` has 3 corners per triangle.
 // `threads` (0: one per core) share the faces; the result does not depend on them.

@@ -186,5 +186,43 @@ TEST(AnalysisExtremes, AJudgementDoesNotDependOnTheMeshScale) {
   }
 }
 
+// UVs at 1e200 (a planar layout of a mesh at 1e200 spans as much) overflowed the UV areas and the
+// Jacobian's determinant: `uvtk map --projector two-plane` of such a mesh stopped with an internal
+// error. They are measured at unit scale too (measureUvScale), so the judgement agrees exactly.
+TEST(AnalysisExtremes, AJudgementDoesNotDependOnTheUvScale) {
+  const Mesh knot = meshes::torusKnot(2, 3, 64, 8);
+  param::ProjectorOptions o;
+  o.surface = param::SurfaceKind::Cylinder;
+  o.placement.fit = param::Fit::BBox;
+  const param::Projection atOne = param::project(knot, o);
+  const Judgement reference = judge(knot, atOne.uv);
+  EXPECT_EQ(measureUvScale(atOne.uv), 1.0);
+  for (const int exponent : {-997, -664, -510, 510, 664, 997}) {
+    for (const bool meshToo : {false, true}) {
+      SCOPED_TRACE("UVs times 2^" + std::to_string(exponent) + (meshToo ? ", mesh too" : ""));
+      UvMap uv = atOne.uv;
+      for (Vec2& t : uv.uv) t = t.unaryExpr([&](double x) { return std::ldexp(x, exponent); });
+      Mesh mesh = knot;
+      if (meshToo)
+        for (Vec3& p : mesh.positions) p = p.unaryExpr([&](double x) { return std::ldexp(x, exponent); });
+      EXPECT_NE(measureUvScale(uv), 1.0);
+      const Judgement j = judge(mesh, uv);
+      EXPECT_EQ(j.verdict, reference.verdict);
+      ASSERT_EQ(j.reasons.size(), reference.reasons.size());
+      for (std::size_t r = 0; r < j.reasons.size(); ++r) {
+        EXPECT_EQ(j.reasons[r].rule, reference.reasons[r].rule);
+        EXPECT_EQ(j.reasons[r].value, reference.reasons[r].value);
+        EXPECT_EQ(j.reasons[r].faces, reference.reasons[r].faces);
+      }
+      for (std::size_t f = 0; f < j.faces.size(); ++f) {
+        EXPECT_EQ(j.faces[f].status, reference.faces[f].status) << "face " << f;
+        EXPECT_EQ(j.faces[f].areaDistortion, reference.faces[f].areaDistortion) << "face " << f;
+        EXPECT_EQ(j.faces[f].angleDistortion, reference.faces[f].angleDistortion) << "face " << f;
+      }
+      EXPECT_EQ(j.summary.l2Stretch, reference.summary.l2Stretch);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace uvtk::analysis
