@@ -34,6 +34,7 @@
 #include "param/reference.h"
 #include "peers/assimp_peer.h"
 #include "views/pareto.h"
+#include "views/pareto_svg.h"
 
 namespace uvtk::inspect {
 
@@ -448,10 +449,11 @@ std::string markdownTables(const std::vector<nlohmann::json>& records, int textu
   return md;
 }
 
-// Speed against accuracy, one point per configuration of `section`, grouped by projector.
-Image chartOf(const std::vector<nlohmann::json>& records, bool rendering, int textureWidth) {
-  std::vector<views::ChartPoint> points;
-  views::ParetoChartOptions options;
+// Speed against accuracy, one point per configuration of the mapping or the rendering, grouped by
+// projector or by UVs: what both the PNG and the SVG chart draw.
+BenchChart chartOf(const std::vector<nlohmann::json>& records, bool rendering, int textureWidth) {
+  BenchChart chart;
+  views::ParetoChartOptions& options = chart.options;
   for (const nlohmann::json& r : records) {
     if ((r["section"] == "rendering") != rendering || r["section"] == "peer" || r["section"] == "end-to-end") continue;
     const std::string group = rendering ? r["uv"].get<std::string>() : r["projector"].get<std::string>();
@@ -460,7 +462,7 @@ Image chartOf(const std::vector<nlohmann::json>& records, bool rendering, int te
     views::ChartPoint p;
     p.group = int(found - options.groupNames.begin());
     if (rendering) {
-      p.label = r["filter"].get<std::string>() + " " + std::to_string(r["spp"].get<int>()) + "SPP T" +
+      p.label = r["filter"].get<std::string>() + " " + std::to_string(r["spp"].get<int>()) + " spp T" +
                 std::to_string(r["threads"].get<int>());
       p.x = r["ms_per_frame"].get<double>();
       p.y = r["rmse"].get<double>();
@@ -470,13 +472,61 @@ Image chartOf(const std::vector<nlohmann::json>& records, bool rendering, int te
       p.x = r["ns_per_vertex"].get<double>();
       p.y = r["max_err_texels"].get<double>();
     }
-    points.push_back(p);
+    chart.points.push_back(p);
   }
-  options.title = rendering ? "RENDERING: TIME PER FRAME AGAINST RMSE TO A 64-SAMPLE REFERENCE"
-                            : "MAPPING: TIME PER VERTEX AGAINST MAX ERROR";
-  options.xLabel = rendering ? "MS PER FRAME" : "NS PER VERTEX";
-  options.yLabel = rendering ? "RMSE" : "MAX ERROR, TEXELS AT " + std::to_string(textureWidth);
-  return views::paretoChart(points, options);
+  options.title = rendering ? "Rendering: time per frame against RMSE to a 64-sample reference"
+                            : "Mapping: time per vertex against max error";
+  options.xLabel = rendering ? "ms per frame" : "ns per vertex";
+  options.yLabel = rendering ? "RMSE" : "max error, texels at " + std::to_string(textureWidth);
+  return chart;
+}
+
+// The Markdown of markdownTables as HTML: its tables as tables, its other lines as paragraphs.
+std::string htmlOfMarkdown(const std::string& md) {
+  std::string html;
+  bool inTable = false, header = false;
+  std::size_t begin = 0;
+  for (std::size_t end; begin < md.size(); begin = end + 1) {
+    end = std::min(md.find('\n', begin), md.size());
+    const std::string line = md.substr(begin, end - begin);
+    if (line.rfind("|", 0) != 0) {
+      if (inTable) html += "</table>\n", inTable = false;
+      if (!line.empty()) html += "<p>" + views::xmlEscaped(line) + "</p>\n";
+      continue;
+    }
+    if (line.rfind("|---", 0) == 0) continue;  // the separator below the header
+    if (!inTable) html += "<table>\n", inTable = header = true;
+    std::string row = "<tr>";
+    const char* cell = header ? "th" : "td";
+    for (std::size_t at = 1; at < line.size();) {
+      const std::size_t next = std::min(line.find('|', at), line.size());
+      std::string text = line.substr(at, next - at);
+      text.erase(0, text.find_first_not_of(' '));
+      text.erase(text.find_last_not_of(' ') + 1);
+      if (next < line.size()) row += std::string("<") + cell + ">" + views::xmlEscaped(text) + "</" + cell + ">";
+      at = next + 1;
+    }
+    html += row + "</tr>\n";
+    header = false;
+  }
+  return html + (inTable ? "</table>\n" : "");
+}
+
+// One self-contained page: the charts inline, then the tables; nothing external, no script.
+std::string benchHtml(const BenchResult& result) {
+  const std::size_t firstLineEnd = result.markdown.find('\n');
+  std::string html =
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>uvtk bench</title>\n"
+      "<style>\nbody { font-family: \"DejaVu Sans\", sans-serif; margin: 2em; color: #222; }\n"
+      "svg { max-width: 100%; height: auto; }\ntable { border-collapse: collapse; margin: 1em 0; }\n"
+      "th, td { border: 1px solid #bbb; padding: 0.2em 0.5em; }\ntd { text-align: right; }\n"
+      "td:first-child { text-align: left; }\nth { background: #eee; }\n</style>\n</head>\n<body>\n"
+      "<h1>uvtk bench</h1>\n<p>" +
+      views::xmlEscaped(result.markdown.substr(0, firstLineEnd)) + "</p>\n";
+  html += "<h2>Mapping</h2>\n<figure>" + result.mappingSvg + "</figure>\n";
+  if (!result.renderingSvg.empty()) html += "<h2>Rendering</h2>\n<figure>" + result.renderingSvg + "</figure>\n";
+  html += "<h2>Tables</h2>\n" + htmlOfMarkdown(result.markdown.substr(std::min(firstLineEnd, result.markdown.size())));
+  return html + "</body>\n</html>\n";
 }
 
 // `path` with `suffix` before its extension.
@@ -503,7 +553,7 @@ BenchOptions BenchArguments::resolve() const {
   if (!(minTime > 0)) throw UsageError("--min-time: expected seconds > 0");
   if (textureWidth < 1) throw UsageError("--texture-width: expected a positive number of texels");
   // Every output's folder is checked before the first measurement.
-  for (const std::string* path : {&json, &markdown, &plot}) {
+  for (const std::string* path : {&json, &markdown, &plot, &html}) {
     const std::filesystem::path folder = std::filesystem::path(*path).parent_path();
     std::error_code error;
     if (!path->empty() && !folder.empty() && !std::filesystem::is_directory(folder, error))
@@ -546,16 +596,54 @@ BenchOptions BenchArguments::resolve() const {
   o.mapProjector = {mapProjector, cli::projectorNamed(mapProjector, omap)};
   o.endToEnd = !noEndToEnd;
   o.mesh = mesh, o.omap = omap, o.textureWidth = textureWidth, o.minTime = minTime, o.peers = !noPeers;
-  o.rendering = render, o.json = json, o.markdown = markdown, o.plot = plot;
+  o.rendering = render, o.json = json, o.markdown = markdown, o.plot = plot, o.html = html;
   return o;
 }
 
-std::string bench(const BenchOptions& a) {
-  std::vector<nlohmann::json> records;
+void addBenchOptions(CLI::App& cmd, BenchArguments& a) {
+  cmd.add_option("--mesh", a.mesh, "Mesh to measure (default: the built-in 2048 x 1024 lat-long sphere)");
+  cmd.add_option("--projector", a.projectors, "Projectors to time (plane, two-plane, cylinder, sphere)")
+      ->capture_default_str();
+  cmd.add_option("--omap", a.omap, "O-mapping of every projector (isn, centroid, normal, reflection)")
+      ->capture_default_str();
+  cmd.add_option("--precision", a.precisions, "Precisions (double, float)")->capture_default_str();
+  cmd.add_option("--math", a.maths, "Math modes (exact, fast, fast-u10); one for surfaces without atan2")
+      ->capture_default_str();
+  cmd.add_option("--threads", a.threads, "Thread counts, e.g. 1,2")->capture_default_str();
+  cmd.add_option("--texture-width", a.textureWidth, "Texels across the texture errors are measured in")
+      ->capture_default_str();
+  cmd.add_option("--min-time", a.minTime, "Seconds each configuration runs at least")->capture_default_str();
+  cmd.add_option("--json", a.json, "One record per configuration as JSON");
+  cmd.add_option("--markdown", a.markdown, "The table as Markdown to this file (default: stdout)");
+  cmd.add_option("--plot", a.plot, "Pareto chart PNG (with --render also FILE-render.png)");
+  cmd.add_option("--html", a.html, "One self-contained HTML page: the Pareto charts as SVG and the tables");
+  cmd.add_flag("--no-peers", a.noPeers, "Skip the peers (assimp's aiProcess_GenUVCoords)");
+  cmd.add_option("--map-projector", a.mapProjector,
+                 "With --mesh: the projector of the end-to-end `uvtk map` (read, map, seams, judge, write, peak "
+                 "memory, against reading and copying the files)")
+      ->capture_default_str();
+  cmd.add_flag("--no-end-to-end", a.noEndToEnd, "With --mesh: skip the end-to-end `uvtk map`");
+  cmd.add_flag("--render", a.render,
+               "Also measure rendering (default mesh there: a 64 x 32 lat-long sphere), of the scene `uvtk render` "
+               "draws from the same camera, texture, --size, --cull, --background and --uv options");
+  cmd.add_option("--render-projector", a.renderProjector, "Projector whose UVs are rendered")->capture_default_str();
+  cli::addCameraOptions(cmd, a.camera);
+  cli::addTextureOptions(cmd, a.texture, "--texture");
+  cli::addFrameSceneOptions(cmd, a.frame);
+  cmd.add_option("--filters", a.filters,
+                 "Rendering: the minification filters to time (an explicit --filter: that one alone)")
+      ->capture_default_str();
+  cmd.add_option("--spp", a.samples, "Rendering: samples per pixel to time (squares)")->capture_default_str();
+  a.app = &cmd;
+}
+
+BenchResult measureBench(const BenchOptions& a) {
+  BenchResult result;
+  std::vector<nlohmann::json>& records = result.records;
   // First, from a process that holds no mesh yet (a forked child's peak counts the pages it shares).
   if (!a.mesh.empty() && a.endToEnd) records = benchEndToEnd(a);
   Mesh mesh;
-  std::string meshName;
+  std::string& meshName = result.mesh;
   if (a.mesh.empty()) {
     if (!quiet()) std::fprintf(stderr, "uvtk bench: building the 2048 x 1024 lat-long sphere ...\n");
     mesh = meshes::latLongSphere(2048, 1024);
@@ -575,26 +663,42 @@ std::string bench(const BenchOptions& a) {
     for (nlohmann::json& r : benchRendering(a, renderMesh)) records.push_back(std::move(r));
   }
 
-  const std::string md = "Mesh: " + meshName + " (" + std::to_string(mesh.vertexCount()) +
-                         " vertices). atan2: " + param::fastMathInstructionSet() + " for fast modes.\n\n" +
-                         peerNote(a) + markdownTables(records, a.textureWidth);
-  io::OutputSet outputs;  // every file, published together (stdout gets the table once they are in place)
-  if (!a.markdown.empty()) outputs.writeText(a.markdown, md);
+  result.markdown = "Mesh: " + meshName + " (" + std::to_string(mesh.vertexCount()) +
+                    " vertices). atan2: " + param::fastMathInstructionSet() + " for fast modes.\n\n" + peerNote(a) +
+                    markdownTables(records, a.textureWidth);
+  result.mapping = chartOf(records, false, a.textureWidth);
+  result.mappingSvg = views::paretoChartSvg(result.mapping.points, result.mapping.options);
+  if (a.rendering) {
+    result.rendering = chartOf(records, true, a.textureWidth);
+    result.renderingSvg = views::paretoChartSvg(result.rendering.points, result.rendering.options);
+  }
+  return result;
+}
+
+void writeBenchOutputs(io::OutputSet& outputs, const BenchOptions& a, const BenchResult& result) {
+  if (!a.markdown.empty()) outputs.writeText(a.markdown, result.markdown);
   if (!a.json.empty()) {
-    const nlohmann::json j = {{"mesh", meshName},
+    const nlohmann::json j = {{"mesh", result.mesh},
                               {"texture_width", a.textureWidth},
                               {"fast_math_isa", param::fastMathInstructionSet()},
-                              {"records", records}};
+                              {"records", result.records}};
     outputs.writeText(a.json, j.dump(2) + "\n");
   }
   if (!a.plot.empty()) {
-    io::writeImage(outputs, a.plot, chartOf(records, false, a.textureWidth), io::PixelType::UInt8);
+    const auto png = [](const BenchChart& c) { return views::paretoChart(c.points, c.options); };
+    io::writeImage(outputs, a.plot, png(result.mapping), io::PixelType::UInt8);
     if (a.rendering)
-      io::writeImage(outputs, withSuffix(a.plot, "-render"), chartOf(records, true, a.textureWidth),
-                     io::PixelType::UInt8);
+      io::writeImage(outputs, withSuffix(a.plot, "-render"), png(result.rendering), io::PixelType::UInt8);
   }
+  if (!a.html.empty()) outputs.writeText(a.html, benchHtml(result));
+}
+
+std::string bench(const BenchOptions& a) {
+  const BenchResult result = measureBench(a);
+  io::OutputSet outputs;  // every file, published together (stdout gets the table once they are in place)
+  writeBenchOutputs(outputs, a, result);
   outputs.publish();
-  return md;
+  return result.markdown;
 }
 
 }  // namespace uvtk::inspect

@@ -3,11 +3,13 @@
 // Benchmark) and the error against the long-double reference. Rendering, of the scene `uvtk render`
 // draws from the same camera, texture and frame options: per-vertex against per-pixel UVs, and each
 // filter and sample count against a 64-sample supersampled reference. The peer, assimp's
-// aiProcess_GenUVCoords, in the same run when it was built in. A Markdown table, JSON records and
-// Pareto charts (docs/precision.md). Its own target, uvtk_timing: only the program links Google
-// Benchmark.
+// aiProcess_GenUVCoords, in the same run when it was built in. A Markdown table, JSON records,
+// Pareto charts as PNG, and one HTML page with the charts as SVG and the tables (docs/precision.md).
+// Its own target, uvtk_timing: only the program and scenes link Google Benchmark.
 #pragma once
 
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,8 +17,10 @@
 #include "core/arithmetic.h"
 #include "inspect/frame.h"
 #include "inspect/mapped_mesh.h"
+#include "io/atomic_file.h"
 #include "options/render_cli.h"
 #include "param/projector.h"
+#include "views/pareto.h"
 
 namespace uvtk::inspect {
 
@@ -54,6 +58,7 @@ struct BenchOptions {
   std::vector<int> samples;                                     // per pixel
   // Outputs, none when empty; published together.
   std::string json, markdown, plot;  // plot: the mapping's Pareto chart, and FILE-render.png with `rendering`
+  std::string html;                  // the charts as SVG and the tables, one self-contained page
 };
 
 // `uvtk bench`'s options as typed: lists are names or numbers separated by commas.
@@ -63,7 +68,7 @@ struct BenchArguments {
   std::string precisions = "double,float", maths = "exact,fast,fast-u10", threads = "1";
   int textureWidth = 4096;
   double minTime = 0.3;
-  std::string json, markdown, plot;
+  std::string json, markdown, plot, html;
   bool noPeers = false, noEndToEnd = false;
   std::string mapProjector = "sphere";
   // rendering: `uvtk render`'s camera, texture and frame options, and the lists timed
@@ -82,8 +87,33 @@ struct BenchArguments {
   BenchOptions resolve() const;
 };
 
-// Measures, writes the outputs, and returns the Markdown tables (after a line naming the mesh).
-// Progress goes to stderr.
+// `uvtk bench`'s options, registered on `app` into `arguments`: the subcommand's, and a scene's
+// bench output's (scene/scene.cpp), one parser for both.
+void addBenchOptions(CLI::App& app, BenchArguments& arguments);
+
+// A Pareto chart's points and texts, drawn as PNG (views::paretoChart) and as SVG (views::paretoChartSvg).
+struct BenchChart {
+  std::vector<views::ChartPoint> points;
+  views::ParetoChartOptions options;
+};
+
+// What one run measured.
+struct BenchResult {
+  std::string mesh;                     // the mesh file, or the built-in sphere's name
+  std::string markdown;                 // a line naming the mesh, then the tables
+  std::vector<nlohmann::json> records;  // one per configuration, as --json writes them
+  BenchChart mapping, rendering;        // rendering: with `rendering` only
+  std::string mappingSvg;               // the mapping's chart as an <svg> element
+  std::string renderingSvg;             // the rendering's, with `rendering`; else empty
+};
+
+// Measures (progress on stderr) and writes nothing.
+BenchResult measureBench(const BenchOptions& options);
+
+// Stages the outputs `options` names (json, markdown, plot, html) in `outputs`.
+void writeBenchOutputs(io::OutputSet& outputs, const BenchOptions& options, const BenchResult& result);
+
+// Measures, writes the outputs, publishes them together, and returns the Markdown tables.
 std::string bench(const BenchOptions& options);
 
 }  // namespace uvtk::inspect

@@ -336,9 +336,9 @@ CheckRun checkStoredUvs(const CheckOptions& a) {
         face = views::CheckedFace::Pole;
     }
     const std::string size = std::to_string(a.textureSize);
-    in.title = {"UV ERROR, STORED VS EXPECTED,", "IN TEXELS OF " + size + "X" + size,
-                "MAX " + views::formatNumber(check.main.max * texels) + "  P99 " +
-                    views::formatNumber(check.main.p99 * texels) + "  MEAN " +
+    in.title = {"UV error, stored vs expected, in texels of " + size + "×" + size,
+                "max " + views::formatNumber(check.main.max * texels) + "   p99 " +
+                    views::formatNumber(check.main.p99 * texels) + "   mean " +
                     views::formatNumber(check.main.mean * texels)};
     render::RenderOptions render;
     render.camera = render::frameSphere(render::boundingSphere(mesh.positions), a.viewDir, a.viewUp,

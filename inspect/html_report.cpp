@@ -2,44 +2,18 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <sstream>
 
 #include "core/error.h"
+#include "inspect/html_page.h"
+#include "inspect/mesh_view.h"
 #include "io/image_io.h"
 
 namespace uvtk::inspect {
 
 namespace {
-
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '&':
-        out += "&amp;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
-}
 
 // A JSON leaf as table text.
 std::string cell(const nlohmann::json& value) {
@@ -81,27 +55,66 @@ void tableRows(std::ostringstream& html, const nlohmann::json& object, const std
     if (value.is_object()) {
       tableRows(html, value, prefix + key + ".");
     } else {
-      html << "<tr><th>" << escaped(prefix + key) << "</th><td>" << cell(value) << "</td></tr>\n";
+      html << "<tr><th>" << escaped(prefix + key) << "</th><td class=\"num\">" << cell(value) << "</td></tr>\n";
     }
   }
+}
+
+// Every measure of the report, one collapsible table per group: its top-level values, then each
+// record ("stretch_l2_faces", "seams", "mapping"...) with its leaves.
+std::string measureGroups(const nlohmann::json& report) {
+  std::ostringstream html;
+  html << "<details open><summary>mesh</summary><table>\n";
+  for (const auto& [key, value] : report.items())
+    if (!value.is_object()) html << "<tr><th>" << escaped(key) << "</th><td class=\"num\">" << cell(value) << "</td></tr>\n";
+  html << "</table></details>\n";
+  for (const auto& [key, value] : report.items())
+    if (value.is_object()) {
+      html << "<details><summary>" << escaped(key) << "</summary><table>\n";
+      tableRows(html, value, "");
+      html << "</table></details>\n";
+    }
+  return html.str();
+}
+
+// The measures a reader checks first, each with what it means (docs/conventions.md section 8).
+std::string keyMeasures(const nlohmann::json& report) {
+  struct Row {
+    std::string name, value, meaning;
+  };
+  const auto three = [&](const char* key) {
+    const nlohmann::json& s = report.at(key);
+    return number(s.at("mean").get<double>()) + " / " + number(s.at("p99").get<double>()) + " / " +
+           number(s.at("max").get<double>());
+  };
+  const nlohmann::json& counts = report.at("status_counts");
+  const nlohmann::json& seams = report.at("seams");
+  const std::vector<Row> rows{
+      {"L2 stretch, whole mesh", number(report.at("stretch_l2").get<double>()),
+       "Sander's root-mean-square stretch, normalised: 1 is isometric (no texel stretched)"},
+      {"L2 stretch per face: mean / p99 / max", three("stretch_l2_faces"), "the same per face, area-weighted over ok faces"},
+      {"Linf stretch per face: mean / p99 / max", three("stretch_linf_faces"), "the largest stretch in any direction"},
+      {"angle distortion: mean / p99 / max", three("angle"), "s1 / s2: 1 is conformal (angles kept)"},
+      {"area distortion log2 r: mean / p99 / max", three("area"), "0 is equiareal; +1: twice the texels per area, -1: half"},
+      {"flipped faces", cell(counts.at("flipped")), "UV triangles mirrored against the majority's winding"},
+      {"invalid faces", cell(counts.at("invalid")), "a corner without a valid UV (a missed ray, not finite, no vt)"},
+      {"pole faces", cell(counts.at("pole_face")), "faces at a projector's pole, where u is undefined"},
+      {"seams: wrap / cut edges", cell(seams.at("wrap_edges")) + " / " + cell(seams.at("cut_edges")),
+       "edges whose faces' UVs differ: by a whole turn (wrap) or otherwise (cut)"},
+      {"overlap", number(100.0 * report.at("overlap_fraction").get<double>()) + " %",
+       "share of the covered UV pixels that more than one face covers"}};
+  std::ostringstream html;
+  html << "<table class=\"key-measures\">\n<tr><th>measure</th><th>value</th><th>meaning</th></tr>\n";
+  for (const Row& r : rows)
+    html << "<tr><th>" << escaped(r.name) << "</th><td class=\"num\">" << r.value << "</td><td>" << escaped(r.meaning)
+         << "</td></tr>\n";
+  html << "</table>\n";
+  return html.str();
 }
 
 }  // namespace
 
 namespace {
-
-constexpr const char* kStyle =
-    "<style>body{font-family:sans-serif;margin:2em;max-width:80em}table{border-collapse:collapse}"
-    "th,td{border:1px solid #ccc;padding:2px 8px;text-align:left}td{font-family:monospace}"
-    "figure{display:inline-block;margin:0 1em 1em 0;vertical-align:top}img{max-width:36em}"
-    ".failed{color:#b00}.verdict{display:inline-block;padding:2px 10px;border-radius:4px;color:#fff;"
-    "font-weight:bold;text-transform:uppercase}.verdict.pass{background:#2a7d2a}.verdict.warn{background:#b07800}"
-    ".verdict.fail{background:#b00}</style>";
-
-std::string pageStart(const std::string& title) {
-  return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + escaped(title) + "</title>\n" +
-         kStyle + "</head><body>\n<h1>" + escaped(title) + "</h1>\n";
-}
 
 // The files of the gallery's page: their links relative to the page, and only those that exist.
 class PageFiles {
@@ -130,15 +143,10 @@ class PageFiles {
   std::filesystem::path folder_;
 };
 
-// A verdict badge ("pass", "warn", "fail"), coloured.
-std::string verdictBadge(const std::string& verdict) {
-  return "<span class=\"verdict " + escaped(verdict) + "\">" + escaped(verdict) + "</span>";
-}
-
-// The first screen of a report: the verdict and every reason, as a list.
+// The verdict and every reason, as a list.
 std::string verdictSection(const nlohmann::json& report) {
   std::ostringstream html;
-  html << "<h2>Verdict " << verdictBadge(report.at("verdict").get<std::string>()) << "</h2>\n";
+  html << "<section id=\"verdict\"><h2>Verdict " << verdictBadge(report.at("verdict").get<std::string>()) << "</h2>\n";
   const nlohmann::json& reasons = report.at("reasons");
   if (reasons.empty()) {
     html << "<p>No rule triggered (docs/conventions.md section 11 lists the rules and thresholds).</p>\n";
@@ -149,6 +157,7 @@ std::string verdictSection(const nlohmann::json& report) {
            << "</li>\n";
     html << "</ul>\n";
   }
+  html << "</section>\n";
   return html.str();
 }
 
@@ -159,7 +168,8 @@ bool isPicture(const std::string& file) {
 
 }  // namespace
 
-std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath) {
+std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath,
+                        const std::vector<std::pair<std::string, std::string>>& views3d) {
   const PageFiles files(pagePath);
   std::ostringstream html;
   html << pageStart(run.at("title").get<std::string>());
@@ -173,6 +183,49 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath) 
   }
   const nlohmann::json& outputs = run.at("outputs");
   const auto kind = [](const nlohmann::json& o) { return o.at("kind").get<std::string>(); };
+  // Each mapping's report page, where it has one: its verdict badges open it.
+  std::map<std::string, std::string> reportPages;
+  for (const nlohmann::json& o : outputs)
+    if (kind(o) == "report" && o.contains("mapping"))
+      for (const nlohmann::json& file : o.at("files"))
+        if (std::filesystem::path(file.get<std::string>()).extension() == ".html")
+          if (const std::optional<std::string> href = files.link(file.get<std::string>()))
+            reportPages.emplace(o.at("mapping").get<std::string>(), *href);
+  const auto badge = [&](const nlohmann::json& o) {
+    const std::string b = verdictBadge(o.at("verdict").get<std::string>());
+    const auto page = reportPages.find(o.value("mapping", std::string()));
+    return page == reportPages.end() ? b : "<a href=\"" + escaped(page->second) + "\" title=\"open the report\">" + b + "</a>";
+  };
+
+  html << "<h2>Mappings</h2>\n<table>\n<tr><th>mesh</th><th>mapping</th><th>verdict (opens the report)</th>"
+          "<th>L2 stretch</th><th>Linf stretch</th><th>angle (mean)</th><th>seam length</th><th>overlap</th>"
+          "<th>files</th></tr>\n";
+  for (const nlohmann::json& o : outputs)
+    if (kind(o) == "report" && o.contains("stretch_l2"))
+      html << "<tr><td>" << cell(o.at("mesh")) << "</td><td>" << cell(o.at("mapping")) << "</td><td>" << badge(o) << " "
+           << cell(o.at("first_reason")) << "</td><td class=\"num\">" << cell(o.at("stretch_l2"))
+           << "</td><td class=\"num\">" << cell(o.at("stretch_linf")) << "</td><td class=\"num\">"
+           << cell(o.at("angle_mean")) << "</td><td class=\"num\">" << cell(o.at("seam_length"))
+           << "</td><td class=\"num\">" << cell(o.at("overlap_fraction")) << "</td><td>" << files.links(o.at("files"))
+           << "</td></tr>\n";
+  html << "</table>\n";
+
+  if (!views3d.empty()) {
+    html << "<h2>In 3D</h2>\n";
+    for (std::size_t v = 0; v < views3d.size(); ++v)
+      html << "<details" << (v == 0 ? " open" : "") << "><summary>" << escaped(views3d[v].first) << "</summary>\n"
+           << views3d[v].second << "</details>\n";
+  }
+
+  bool benchTitle = false;
+  for (const nlohmann::json& o : outputs)
+    if (kind(o) == "bench" && o.contains("svg")) {
+      if (!benchTitle) html << "<h2>Speed and accuracy</h2>\n";
+      benchTitle = true;
+      html << "<figure class=\"chart\">" << o.at("svg").get<std::string>() << "<figcaption>"
+           << escaped(o.value("title", std::string())) << ", mesh " << cell(o.at("mesh")) << " (point at a dot for its "
+           << "configuration): " << files.links(o.at("files")) << "</figcaption></figure>\n";
+    }
 
   html << "<h2>Pictures</h2>\n";
   for (const nlohmann::json& o : outputs)
@@ -183,24 +236,11 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath) 
           kind(o) == "compare" ? "ranking of " + o.value("mesh", std::string()) : o.value("mapping", std::string());
       if (o.contains("views")) caption += ": " + o.at("views").dump();
       std::string verdict;  // each mapping's picture says how its mapping was judged
-      if (o.contains("verdict"))
-        verdict = verdictBadge(o.at("verdict").get<std::string>()) + " " +
-                  escaped(o.value("first_reason", std::string())) + "<br>";
+      if (o.contains("verdict")) verdict = badge(o) + " " + escaped(o.value("first_reason", std::string())) + "<br>";
       html << "<figure><a href=\"" << escaped(*src) << "\"><img alt=\"" << escaped(caption) << "\" src=\""
            << escaped(*src) << "\"></a><figcaption>" << verdict << escaped(caption) << "<br><code>" << escaped(*src)
            << "</code></figcaption></figure>\n";
     }
-
-  html << "<h2>Measures</h2>\n<table>\n<tr><th>mesh</th><th>mapping</th><th>verdict</th><th>L2 stretch</th><th>Linf stretch</th>"
-          "<th>angle (mean)</th><th>seam length</th><th>overlap</th><th>files</th></tr>\n";
-  for (const nlohmann::json& o : outputs)
-    if (kind(o) == "report" && o.contains("stretch_l2"))
-      html << "<tr><td>" << cell(o.at("mesh")) << "</td><td>" << cell(o.at("mapping")) << "</td><td>"
-           << verdictBadge(o.at("verdict").get<std::string>()) << " " << cell(o.at("first_reason")) << "</td><td>"
-           << cell(o.at("stretch_l2")) << "</td><td>" << cell(o.at("stretch_linf")) << "</td><td>"
-           << cell(o.at("angle_mean")) << "</td><td>" << cell(o.at("seam_length")) << "</td><td>"
-           << cell(o.at("overlap_fraction")) << "</td><td>" << files.links(o.at("files")) << "</td></tr>\n";
-  html << "</table>\n";
 
   html << "<h2>Rankings</h2>\n";
   for (const nlohmann::json& o : outputs)
@@ -209,7 +249,7 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath) 
            << "</p>\n<table>\n<tr><th>rank</th><th>mapping</th><th>verdict</th><th>L2 stretch</th><th>why</th></tr>\n";
       for (const nlohmann::json& r : o.at("top"))
         html << "<tr><td>" << cell(r.at("rank")) << "</td><td>" << cell(r.at("name")) << "</td><td>"
-             << verdictBadge(r.at("verdict").get<std::string>()) << "</td><td>" << cell(r.at("stretch_l2"))
+             << verdictBadge(r.at("verdict").get<std::string>()) << "</td><td class=\"num\">" << cell(r.at("stretch_l2"))
              << "</td><td>" << cell(r.at("first_reason")) << "</td></tr>\n";
       html << "</table>\n";
     }
@@ -217,13 +257,13 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath) 
   html << "<h2>Meshes with UVs</h2>\n<table>\n<tr><th>mapping</th><th>verdict</th><th>seam edges</th><th>pole faces</th>"
           "<th>invalid vertices</th><th>files</th></tr>\n";
   for (const nlohmann::json& o : outputs)
-    if (kind(o) == "obj" && o.contains("summary")) {
+    if ((kind(o) == "obj" || kind(o) == "mesh") && o.contains("summary")) {
       const nlohmann::json& summary = o.at("summary");
       const nlohmann::json& seams = summary.at("judgement").at("seams");
-      html << "<tr><td>" << cell(o.value("mapping", nlohmann::json())) << "</td><td>"
-           << verdictBadge(o.at("verdict").get<std::string>()) << " " << cell(o.at("first_reason")) << "</td><td>"
-           << cell(seams.at("wrap_edges").get<std::size_t>() + seams.at("cut_edges").get<std::size_t>()) << "</td><td>"
-           << cell(summary.value("pole_faces", nlohmann::json())) << "</td><td>"
+      html << "<tr><td>" << cell(o.value("mapping", nlohmann::json())) << "</td><td>" << badge(o) << " "
+           << cell(o.at("first_reason")) << "</td><td class=\"num\">"
+           << cell(seams.at("wrap_edges").get<std::size_t>() + seams.at("cut_edges").get<std::size_t>())
+           << "</td><td class=\"num\">" << cell(summary.value("pole_faces", nlohmann::json())) << "</td><td class=\"num\">"
            << cell(summary.value("invalid_vertices", nlohmann::json())) << "</td><td>" << files.links(o.at("files"))
            << "</td></tr>\n";
     }
@@ -233,17 +273,27 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath) 
           "<th>subject</th><th>computes</th><th>ms</th><th>status</th></tr>\n";
   for (const nlohmann::json& stage : run.at("stages"))
     html << "<tr><td>" << cell(stage.at("stage")) << "</td><td>" << cell(stage.at("subject")) << "</td><td>"
-         << cell(stage.at("computes")) << "</td><td>" << cell(stage.value("milliseconds", nlohmann::json()))
+         << cell(stage.at("computes")) << "</td><td class=\"num\">" << cell(stage.value("milliseconds", nlohmann::json()))
          << "</td><td>" << cell(stage.at("status")) << "</td></tr>\n";
-  html << "</table>\n</body></html>\n";
+  html << "</table>\n";
+  if (!views3d.empty()) html << meshViewScripts();
+  html << "</body></html>\n";
   return html.str();
 }
 
-std::string htmlReport(const nlohmann::json& report, const std::vector<std::pair<std::string, Image>>& views) {
+std::string htmlReport(const nlohmann::json& report, const std::vector<std::pair<std::string, Image>>& views,
+                       const std::string& view3d) {
   const std::string title = "uvtk report: " + report.at("input").at("path").get<std::string>();
   std::ostringstream html;
   html << pageStart(title);
+  html << "<style>.first-screen{display:flex;flex-wrap:wrap;gap:1.5em;align-items:flex-start}"
+          ".first-screen .view3d{flex:1 1 32em;max-width:46em}.first-screen .key-measures{flex:1 1 28em}"
+          ".key-measures td:last-child{color:#555;font-size:.9em}</style>\n";
   html << verdictSection(report);
+  html << "<div class=\"first-screen\">\n" << view3d << keyMeasures(report) << "</div>\n";
+  html << "<h2>All measures</h2>\n" << measureGroups(report)
+       << "<p>Measures: docs/conventions.md section 8 (Sander et al. 2001 stretch; area-weighted statistics over the "
+          "faces of status ok).</p>\n";
   html << "<h2>Views</h2>\n";
   for (const auto& [name, image] : views)
     html << "<figure><img alt=\"" << escaped(name) << " view\" src=\"" << io::pngDataUri(image) << "\" width=\""
@@ -252,10 +302,8 @@ std::string htmlReport(const nlohmann::json& report, const std::vector<std::pair
   html << "<h2>Histograms</h2>\n";
   for (const char* key : {"stretch_l2_faces", "stretch_linf_faces", "angle", "area"})
     html << histogramSvg(key, report.at(key)) << "\n";
-  html << "<h2>Measures</h2>\n<table>\n";
-  tableRows(html, report, "");
-  html << "</table>\n<p>Measures: docs/conventions.md section 8 (Sander et al. 2001 stretch; area-weighted "
-          "statistics over the faces of status ok).</p>\n</body></html>\n";
+  if (!view3d.empty()) html << meshViewScripts();
+  html << "</body></html>\n";
   return html.str();
 }
 

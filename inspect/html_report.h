@@ -12,12 +12,18 @@
 
 namespace uvtk::inspect {
 
-// The page for `report` (the JSON `uvtk report` writes) and the named view pictures.
-std::string htmlReport(const nlohmann::json& report, const std::vector<std::pair<std::string, Image>>& views);
+// The page for `report` (the JSON `uvtk report` writes): first the verdict with its reasons, the
+// 3D view `view3d` (meshViewHtml; none when empty) and the key measures with their meaning; then
+// every measure in collapsible groups, the named view pictures and the histograms.
+std::string htmlReport(const nlohmann::json& report, const std::vector<std::pair<std::string, Image>>& views,
+                       const std::string& view3d = {});
 
 // The gallery page of a scene run: `run` holds the title, the scene, the stages with their times,
 // the outputs (each with its kind and files) and the failures. Pictures and links are relative to
-// the page at `pagePath`, and only to files that exist.
-std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath);
+// the page at `pagePath`, and only to files that exist. Each mapping's verdict badge opens its
+// report page where it has one; `views3d` are the 3D views (meshViewHtml) with their titles, the
+// first one open; a bench output's chart is inlined (its record's "svg").
+std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath,
+                        const std::vector<std::pair<std::string, std::string>>& views3d = {});
 
 }  // namespace uvtk::inspect

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "inspect/html_report.h"
+#include "inspect/mesh_view.h"
 #include "inspect/measures_json.h"
 #include "inspect/summary_json.h"
 #include "io/atomic_file.h"
@@ -62,7 +63,16 @@ nlohmann::json writeReport(io::OutputSet& outputs, const ReportOptions& o, const
   }
   if (!milliseconds.is_null()) report["milliseconds"] = milliseconds;
   if (!o.json.empty()) outputs.writeText(o.json, report.dump(2) + "\n");
-  if (!o.html.empty()) outputs.writeText(o.html, htmlReport(report, pictures));
+  if (!o.html.empty()) {
+    std::string view3d;
+    if (o.view3dFaces > 0) {
+      MeshViewOptions viewOptions;
+      viewOptions.faceBudget = o.view3dFaces;
+      viewOptions.camera = o.camera;
+      view3d = meshViewHtml(mapped, judgement, viewOptions);
+    }
+    outputs.writeText(o.html, htmlReport(report, pictures, view3d));
+  }
   return report;
 }
 

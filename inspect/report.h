@@ -23,6 +23,7 @@ struct ReportOptions {
   int overlapResolution = 1024;     // pixels across the layout raster that measures overlap
   int textureSize = 1024;           // texels across the texture whose texels uverror counts
   int threads = 0;                  // threads for the views (0: one per hardware thread)
+  std::size_t view3dFaces = 200000;  // the page's 3D view: faces shown before it decimates; 0: no 3D view
 
   void check() const;  // throws UsageError for a value out of range, before any work
 };

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/page_bytes.h"
 #include "io/atomic_file.h"
 #include "io/image_backend.h"
 #include "io/image_plugin.h"
@@ -238,17 +239,6 @@ std::string encodePng(const Image& image) {
   return bytes;
 }
 
-std::string pngDataUri(const Image& image) {
-  static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  const std::string bytes = encodePng(image);
-  std::string uri = "data:image/png;base64,";
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
-    std::uint32_t group = 0;
-    for (std::size_t k = 0; k < 3; ++k) group = group << 8 | (k < n ? std::uint8_t(bytes[i + k]) : 0u);
-    for (std::size_t k = 0; k < 4; ++k) uri += k <= n ? kDigits[group >> (18 - 6 * k) & 63] : '=';
-  }
-  return uri;
-}
+std::string pngDataUri(const Image& image) { return "data:image/png;base64," + base64(encodePng(image)); }
 
 }  // namespace uvtk::io

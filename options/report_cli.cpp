@@ -27,6 +27,8 @@ void addReportOptions(CLI::App& app, ReportArguments& a) {
   app.add_option("--overlap-resolution", a.overlapResolution, "Pixels across the layout raster that measures overlap")
       ->capture_default_str();
   app.add_option("--threads", a.threads, "Threads for the views (0: one per hardware thread)")->capture_default_str();
+  app.add_option("--view3d-faces", a.view3dFaces, "Faces the page's 3D view shows before it decimates (0: no 3D view)")
+      ->capture_default_str();
 }
 
 inspect::ReportOptions ReportArguments::options() const {
@@ -36,6 +38,7 @@ inspect::ReportOptions ReportArguments::options() const {
   o.overlapResolution = overlapResolution;
   o.textureSize = textureSize;
   o.threads = threads;
+  o.view3dFaces = view3dFaces;
   o.check();
   if (!html.empty()) o.views = views::parseViewList(views);  // the page's views: read only for a page
   std::tie(o.width, o.height) = parseImageSize(size, "--size");

@@ -16,6 +16,7 @@ struct ReportArguments {
   std::string size = "384x384";
   ViewCameraArguments camera;
   int overlapResolution = 1024, textureSize = 1024, threads = 0;
+  std::size_t view3dFaces = 200000;
 
   void check() const { options(); }  // throws UsageError before any work
   inspect::ReportOptions options() const;

@@ -1,4 +1,5 @@
-// A 5 x 7 bitmap font for labels drawn into images (texture grids, legends).
+// A 5 x 7 bitmap font for the labels of the procedural uvgrid texture, texture content compared
+// pixel for pixel with Mesa (the views' text is views/type.h).
 #pragma once
 
 #include <string>

@@ -329,11 +329,53 @@ class SceneReader {
       o.compare.options.markdown = output(o.compare.options.markdown, pointer + "/markdown");
       o.compare.options.sheet = output(o.compare.options.sheet, pointer + "/sheet");
       at(pointer, [&] { o.compare.check(); });
+    } else if (kind == "bench") {
+      o.kind = SceneOutput::Kind::Bench;
+      o.bench = bench(j, pointer, o, scene);
     } else {
       o.kind = SceneOutput::Kind::Gallery;
       o.title = j.value("title", scene.title);
     }
     return o;
+  }
+
+  // `uvtk bench` of the mapping kernel on a mesh of the scene: that mesh's file, the projectors
+  // named (or the one of `mapping`), quick by default. Neither the end-to-end `uvtk map`, which
+  // forks, nor rendering: the schema has neither's keys.
+  inspect::BenchOptions bench(const json& j, const std::string& pointer, const SceneOutput& o,
+                              const Scene& scene) const {
+    if (j.contains("mesh") == j.contains("mapping")) fail(pointer, "expected mesh or mapping, one of them");
+    inspect::BenchArguments arguments;
+    arguments.minTime = 0.01;  // a look at the trade beside the pictures, not a measurement to publish
+    CLI::App parser;
+    inspect::addBenchOptions(parser, arguments);
+    parseOptions(parser, j, {"kind", "mesh", "mapping", "path"}, pointer);
+    const SceneMapping* mapping = o.mapping ? &scene.mappings[*o.mapping] : nullptr;
+    if (mapping) {
+      for (const char* key : {"projector", "omap"})
+        if (j.contains(key))
+          fail(pointer + "/" + key,
+               std::string(key) + " and mapping exclude each other: the mapping's projector is timed");
+      if (mapping->kind != SceneMapping::Kind::Projector)
+        fail(pointer + "/mapping",
+             "mapping \"" + mapping->name + "\" is not a projector: `uvtk bench` times projectors");
+      if (mapping->projector.surface == param::SurfaceKind::Cube)
+        fail(pointer + "/mapping",
+             "mapping \"" + mapping->name +
+                 "\" is a cube, which chooses its face per triangle; `uvtk bench` times per-vertex mappings");
+    }
+    arguments.mesh = scene.meshes[mapping ? mapping->mesh : *o.mesh].path;
+    arguments.noEndToEnd = true;
+    // Checked without the files: their folders are created when the scene runs.
+    inspect::BenchArguments unwritten = arguments;
+    unwritten.json = unwritten.markdown = unwritten.plot = unwritten.html = "";
+    inspect::BenchOptions options = at(pointer, [&] { return unwritten.resolve(); });
+    if (mapping) options.projectors = {{mapping->name, mapping->projector}};
+    options.html = o.path;
+    options.json = output(arguments.json, pointer + "/json");
+    options.markdown = output(arguments.markdown, pointer + "/markdown");
+    options.plot = output(arguments.plot, pointer + "/plot");
+    return options;
   }
 
   // No two outputs write the same file, and no output overwrites an input.
@@ -383,6 +425,7 @@ std::vector<std::string> SceneOutput::files() const {
   if (kind == Kind::Render && !frame.aov.empty()) add(frame.aovOutput);
   if (kind == Kind::Report) add(report.json), add(report.html);
   if (kind == Kind::Compare) add(compare.options.json), add(compare.options.markdown), add(compare.options.sheet);
+  if (kind == Kind::Bench) add(bench.json), add(bench.markdown), add(bench.plot);
   return out;
 }
 

@@ -15,6 +15,7 @@
 #include "analysis/judgement.h"
 #include "options/compare_cli.h"
 #include "core/math.h"
+#include "inspect/bench.h"
 #include "io/mesh_writer.h"
 #include "param/projector.h"
 #include "options/render_cli.h"
@@ -60,7 +61,7 @@ struct SceneTexture {
 };
 
 struct SceneOutput {
-  enum class Kind { Mesh, Render, Report, Compare, Gallery };
+  enum class Kind { Mesh, Render, Report, Compare, Gallery, Bench };
   Kind kind = Kind::Mesh;
   std::string pointer;
   std::optional<std::size_t> mapping, mesh, camera, texture;
@@ -69,6 +70,7 @@ struct SceneOutput {
   cli::FrameArguments frame;                      // render
   cli::ReportArguments report;                    // report
   cli::CompareArguments compare;                  // compare
+  inspect::BenchOptions bench;                    // bench: `uvtk bench` of the mesh, html = path
   std::string title;                         // gallery
   std::shared_ptr<CLI::App> parser;
 

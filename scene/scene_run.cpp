@@ -12,11 +12,13 @@
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "core/stopwatch.h"
+#include "inspect/bench.h"
 #include "inspect/html_report.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
 #include "io/obj_writer.h"
 #include "inspect/mapped_mesh.h"
+#include "inspect/mesh_view.h"
 #include "render/shading.h"
 #include "inspect/run_report.h"
 
@@ -33,6 +35,9 @@ using nlohmann::json;
 // The overlap raster of the judgement the views, the OBJ summaries and the gallery read
 // (MappedMesh::judge's default).
 constexpr int kViewsOverlapResolution = 1024;
+
+// The faces each 3D view of the gallery shows before it decimates: the page holds every report's.
+constexpr std::size_t kGalleryViewFaces = 50000;
 
 // The verdict and first reason of a mapping, for the run report and the gallery.
 void addVerdict(json& record, const analysis::Judgement& judgement) {
@@ -67,6 +72,21 @@ std::vector<std::string> renderComputes(const Scene& scene, const SceneOutput& o
   return computes;
 }
 
+// What a bench output times: the configurations of the mapping kernel, each for at least min_time.
+std::vector<std::string> benchComputes(const BenchOptions& b) {
+  std::size_t configurations = 0;
+  for (const BenchProjector& p : b.projectors) {
+    const bool wraps =
+        p.options.surface == param::SurfaceKind::Cylinder || p.options.surface == param::SurfaceKind::Sphere;
+    configurations += b.precisions.size() * (wraps ? b.maths.size() : 1) * b.threads.size();
+  }
+  char text[96];
+  std::snprintf(text, sizeof text, "the mapping kernel: %zu configurations, %g s each", configurations, b.minTime);
+  std::vector<std::string> computes = {text, "the long-double reference"};
+  if (b.peers) computes.push_back("the peers");
+  return computes;
+}
+
 // A usage error while running is a problem of the scene's content, so bad input.
 int statusOf(const std::exception& e) { return exitStatus(e) == 2 ? 3 : exitStatus(e); }
 
@@ -84,6 +104,7 @@ class SceneRunner {
     records_ = planJson(scene, plan)["stages"];
     for (json& record : records_) record["status"] = "not run";
     outputs_.resize(scene.outputs.size());
+    views3d_.resize(scene.outputs.size());
   }
 
   RunResult run(const RunOptions& options) {
@@ -95,8 +116,11 @@ class SceneRunner {
     std::vector<std::size_t> shared, last;
     std::vector<std::size_t> groupOrder;
     std::map<std::size_t, std::vector<std::size_t>> groups;
+    std::vector<std::size_t> timed;  // benchmarks: alone, so that nothing else runs beside them
     for (std::size_t i = 0; i < plan_.size(); ++i) {
-      if (plan_[i].mesh) {
+      if (plan_[i].kind == Stage::Kind::Bench) {
+        timed.push_back(i);
+      } else if (plan_[i].mesh) {
         if (!groups.count(*plan_[i].mesh)) groupOrder.push_back(*plan_[i].mesh);
         groups[*plan_[i].mesh].push_back(i);
       } else {
@@ -108,6 +132,7 @@ class SceneRunner {
       MeshWork work;
       runStages(groups[groupOrder[std::size_t(g)]], &work, scene_.meshes[groupOrder[std::size_t(g)]].name);
     });
+    runStages(timed, nullptr, "bench");
     publishOutputs();
     runStages(last, nullptr, "gallery");
     publishOutputs();
@@ -231,6 +256,12 @@ class SceneRunner {
                                  {"angle_mean", report["angle"]["mean"]},
                                  {"seam_length", report["seams"]["length"]},
                                  {"overlap_fraction", report["overlap_fraction"]}};
+        if (hasGallery()) {
+          MeshViewOptions view;
+          view.faceBudget = std::min<std::size_t>(o.report.view3dFaces, kGalleryViewFaces);
+          view.camera = o.report.camera.resolve();
+          if (view.faceBudget > 0) views3d_[stage.index] = meshViewHtml(mapped, judgement, view);
+        }
         return;
       }
       case Stage::Kind::Compare: {
@@ -250,6 +281,20 @@ class SceneRunner {
         outputs_[stage.index] = {{"mesh", scene_.meshes[*o.mesh].name}, {"best", comparison.best}, {"top", top}};
         return;
       }
+      case Stage::Kind::Bench: {
+        const SceneOutput& o = scene_.outputs[stage.index];
+        const BenchResult result = measureBench(o.bench);
+        writeBenchOutputs(outputs, o.bench, result);
+        const std::size_t mesh = o.mapping ? scene_.mappings[*o.mapping].mesh : *o.mesh;
+        // What the gallery shows: the mapping's chart inline.
+        json record = {{"mesh", scene_.meshes[mesh].name},
+                       {"configurations", result.mapping.points.size()},
+                       {"title", result.mapping.options.title},
+                       {"svg", result.mappingSvg}};
+        if (o.mapping) record["mapping"] = scene_.mappings[*o.mapping].name;
+        outputs_[stage.index] = record;
+        return;
+      }
       case Stage::Kind::Gallery: {
         const SceneOutput& o = scene_.outputs[stage.index];
         json report = {{"title", o.title},
@@ -257,10 +302,21 @@ class SceneRunner {
                        {"stages", records_},
                        {"outputs", outputsJson()},
                        {"failures", failures_}};
-        outputs.writeText(o.path, galleryHtml(report, o.path));
+        std::vector<std::pair<std::string, std::string>> views;
+        for (std::size_t i = 0; i < views3d_.size(); ++i)
+          if (!views3d_[i].empty())
+            views.emplace_back(outputs_[i].value("mapping", std::string()) + " (" + outputs_[i].value("mesh", std::string()) +
+                                   "): " + outputs_[i].value("verdict", std::string()),
+                               views3d_[i]);
+        outputs.writeText(o.path, galleryHtml(report, o.path, views));
         return;
       }
     }
+  }
+
+  bool hasGallery() const {
+    return std::any_of(scene_.outputs.begin(), scene_.outputs.end(),
+                       [](const SceneOutput& o) { return o.kind == SceneOutput::Kind::Gallery; });
   }
 
   MappedMesh map(const SceneMapping& m, const MeshWork& work) const {
@@ -317,7 +373,7 @@ class SceneRunner {
   json outputsJson() const {
     json out = json::array();
     for (std::size_t i = 0; i < scene_.outputs.size(); ++i) {
-      static const char* kKinds[] = {"obj", "render", "report", "compare", "gallery"};
+      static const char* kKinds[] = {"obj", "render", "report", "compare", "gallery", "bench"};
       json record = outputs_[i].is_null() ? json::object() : outputs_[i];
       record["kind"] = kKinds[int(scene_.outputs[i].kind)];
       record["files"] = scene_.outputs[i].files();
@@ -330,6 +386,7 @@ class SceneRunner {
   const std::vector<Stage>& plan_;
   json records_;
   std::vector<json> outputs_;  // per output, written by the thread of its mesh
+  std::vector<std::string> views3d_;  // per report output, its mapping's 3D view for the gallery (if any)
   std::map<std::size_t, BoundTexture> textures_;
   json failures_ = json::array();
   int status_ = 0;
@@ -341,7 +398,8 @@ class SceneRunner {
 }  // namespace
 
 const char* toString(Stage::Kind kind) {
-  static const char* kNames[] = {"texture", "read", "map", "measure", "obj", "render", "report", "compare", "gallery"};
+  static const char* kNames[] = {"texture", "read",   "map",     "measure", "obj",
+                                 "render",  "report", "compare", "gallery", "bench"};
   return kNames[int(kind)];
 }
 
@@ -358,6 +416,7 @@ std::vector<Stage> planScene(const Scene& s) {
            (o.kind == SceneOutput::Kind::Render && (gallery || o.frame.showsMeasures()));
   };
   for (const SceneOutput& o : s.outputs) {
+    if (o.kind == SceneOutput::Kind::Bench) continue;  // it reads its mesh itself
     if (o.mapping) mappingUsed[*o.mapping] = true, meshUsed[s.mappings[*o.mapping].mesh] = true;
     if (o.kind == SceneOutput::Kind::Compare) meshUsed[*o.mesh] = true;
     if (o.kind == SceneOutput::Kind::Render) textureUsed[o.texture.value_or(defaultTexture)] = true;
@@ -409,7 +468,7 @@ std::vector<Stage> planScene(const Scene& s) {
     for (std::size_t i = 0; i < s.outputs.size(); ++i) {
       const SceneOutput& o = s.outputs[i];
       const std::optional<std::size_t> mesh = o.mapping ? std::optional(s.mappings[*o.mapping].mesh) : o.mesh;
-      if (o.kind == SceneOutput::Kind::Gallery || mesh != m) continue;
+      if (o.kind == SceneOutput::Kind::Gallery || o.kind == SceneOutput::Kind::Bench || mesh != m) continue;
       const std::vector<std::string> files = o.files();
       static const Stage::Kind kKinds[] = {Stage::Kind::Mesh, Stage::Kind::Render, Stage::Kind::Report,
                                            Stage::Kind::Compare};
@@ -424,6 +483,12 @@ std::vector<Stage> planScene(const Scene& s) {
       if (o.kind == SceneOutput::Kind::Report) needs.push_back(measureStage[{*o.mapping, o.report.overlapResolution}]);
       plan.push_back({kKinds[int(o.kind)], i, 0, m, joined(files), computes, needs});
     }
+  }
+  for (std::size_t i = 0; i < s.outputs.size(); ++i) {
+    const SceneOutput& o = s.outputs[i];
+    if (o.kind != SceneOutput::Kind::Bench) continue;
+    const std::size_t mesh = o.mapping ? s.mappings[*o.mapping].mesh : *o.mesh;
+    plan.push_back({Stage::Kind::Bench, i, 0, mesh, joined(o.files()), benchComputes(o.bench), {}});
   }
   for (std::size_t i = 0; i < s.outputs.size(); ++i)
     if (s.outputs[i].kind == SceneOutput::Kind::Gallery)

@@ -12,7 +12,7 @@
 namespace uvtk::scene {
 
 struct Stage {
-  enum class Kind { Texture, Read, Map, Measure, Mesh, Render, Report, Compare, Gallery };
+  enum class Kind { Texture, Read, Map, Measure, Mesh, Render, Report, Compare, Gallery, Bench };
   Kind kind = Kind::Read;
   std::size_t index = 0;              // of the texture (textures.size(): the default one), mesh, mapping or output
   int overlapResolution = 0;          // Measure
@@ -25,7 +25,8 @@ struct Stage {
 const char* toString(Stage::Kind kind);
 
 // The stages the outputs of `scene` need, in an order that runs: textures, then each used mesh's
-// reading, mappings, measures and outputs, the gallery last. A mesh no output uses is not read, a
+// reading, mappings, measures and outputs, then the benchmarks (each reads its mesh itself), the
+// gallery last. A mesh no output uses is not read, a
 // mapping no output uses not computed, a measure taken once per mapping (and overlap resolution).
 std::vector<Stage> planScene(const Scene& scene);
 
@@ -42,7 +43,8 @@ struct RunResult {
 };
 
 // Runs `plan`. A failing stage stops only the stages that need its results (a failing mesh does
-// not stop the others); the failure is recorded and printed on stderr as it happens.
+// not stop the others); the failure is recorded and printed on stderr as it happens. The meshes
+// are worked on in parallel, then the benchmarks one after another on an otherwise idle process.
 RunResult runScene(const Scene& scene, const std::vector<Stage>& plan, const RunOptions& options);
 
 }  // namespace uvtk::scene

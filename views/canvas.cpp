@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "render/font.h"
 
 namespace uvtk::views {
 
@@ -28,11 +27,6 @@ Vec3 pixelColour(const Image& image, int x, int row) {
 void fillRect(Image& image, int x, int row, int width, int height, const Vec3& colour) {
   for (int j = std::max(0, row); j < std::min(image.height, row + height); ++j)
     for (int i = std::max(0, x); i < std::min(image.width, x + width); ++i) setPixel(image, i, j, colour);
-}
-
-void drawLabel(Image& image, int x, int row, const std::string& text, int scale, const Vec3& colour) {
-  const float rgba[4] = {float(colour.x()), float(colour.y()), float(colour.z()), 1.0f};
-  render::drawText(image, x, row, text, scale, rgba);
 }
 
 void drawSegment(Image& image, const Vec2& a, const Vec2& b, int width, const Vec3& colour, const SegmentTest& test) {

@@ -1,9 +1,9 @@
 // Drawing into RGB images in image coordinates: x to the right, y down, pixel (x, row) the unit
-// square whose centre is (x + 1/2, row + 1/2). Pixels outside the image are skipped.
+// square whose centre is (x + 1/2, row + 1/2). Pixels outside the image are skipped. Text is
+// views/type.h.
 #pragma once
 
 #include <functional>
-#include <string>
 
 #include "core/image.h"
 #include "core/math.h"
@@ -13,9 +13,6 @@ namespace uvtk::views {
 void setPixel(Image& image, int x, int row, const Vec3& colour);
 Vec3 pixelColour(const Image& image, int x, int row);
 void fillRect(Image& image, int x, int row, int width, int height, const Vec3& colour);
-
-// render::drawText at `scale` in `colour`.
-void drawLabel(Image& image, int x, int row, const std::string& text, int scale, const Vec3& colour);
 
 // Whether a pixel of a segment is drawn, given the parameter t in [0, 1] of its point on the
 // segment a + t (b - a).

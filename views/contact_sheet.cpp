@@ -3,9 +3,9 @@
 #include <cstddef>
 
 #include "core/error.h"
-#include "render/font.h"
 #include "views/canvas.h"
 #include "views/palette.h"
+#include "views/type.h"
 #include "views/views.h"
 
 namespace uvtk::views {
@@ -14,7 +14,7 @@ namespace {
 
 constexpr int kSheetPadding = 8;  // around and between cells
 constexpr int kLabelGap = 4;      // between a tile and its label
-constexpr int kLabelScale = 2;
+constexpr double kLabelSize = 15;
 
 // A tile's pixel as RGB: grey (and grey with alpha) spread to three channels, RGBA without alpha.
 Vec3 tileColour(const Image& tile, int x, int row) {
@@ -34,9 +34,10 @@ Image contactSheet(const std::vector<std::pair<std::string, Image>>& tiles, int 
     const auto& [label, tile] = tiles[k];
     UVTK_CHECK(tile.channels >= 1);
     int& width = columnWidth[k % perRow];
-    width = std::max({width, tile.width, render::textWidth(label, kLabelScale)});
+    const TextMetrics text = measureText(label, kLabelSize);
+    width = std::max({width, tile.width, text.width});
     int& height = rowHeight[k / perRow];
-    height = std::max(height, tile.height + kLabelGap + render::textHeight(kLabelScale));
+    height = std::max(height, tile.height + kLabelGap + text.height);
   }
   auto offsets = [](const std::vector<int>& sizes) {  // where each cell starts
     std::vector<int> start(1, kSheetPadding);
@@ -52,7 +53,7 @@ Image contactSheet(const std::vector<std::pair<std::string, Image>>& tiles, int 
     const int left = x0[k % perRow], top = y0[k / perRow];
     for (int row = 0; row < tile.height; ++row)
       for (int x = 0; x < tile.width; ++x) setPixel(sheet, left + x, top + row, tileColour(tile, x, row));
-    drawLabel(sheet, left, top + tile.height + kLabelGap, label, kLabelScale, kTextColour);
+    drawText(sheet, left, top + tile.height + kLabelGap, label, kLabelSize, kTextColour);
   }
   return sheet;
 }

@@ -92,7 +92,7 @@ Image drawCornerError(const CornerErrorInput& in, const render::RenderOptions& o
   for (int k = kLowestDecade; k <= topDecade; ++k) decades.push_back(std::pow(10.0, k));
   const std::vector<std::string> labels = distinctLabels(decades);
   ColourBar bar{scale, {}};
-  for (std::size_t k = 0; k < decades.size(); ++k) bar.ticks.push_back({decades[k], (k == 0 ? "<=" : "") + labels[k]});
+  for (std::size_t k = 0; k < decades.size(); ++k) bar.ticks.push_back({decades[k], (k == 0 ? "≤" : "") + labels[k]});
   Legend legend;
   legend.title = in.title;
   legend.bar = bar;

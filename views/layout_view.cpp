@@ -77,7 +77,7 @@ DrawnView drawLayout(const ViewInput& in, const ViewOptions& options) {
 
   Legend legend = colouring.legend;
   const Eigen::AlignedBox2d& shown = grid.bounds;
-  legend.title.insert(legend.title.begin(), "UV LAYOUT, U " + range(shown.min().x(), shown.max().x()) + "  V " +
+  legend.title.insert(legend.title.begin(), "UV layout, u " + range(shown.min().x(), shown.max().x()) + "   v " +
                                                 range(shown.min().y(), shown.max().y()));
   // The hatching is drawn at this picture's resolution; the numbers are the judgement's.
   const analysis::Overlap& overlap = judgement.summary.overlap;

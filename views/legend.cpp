@@ -7,8 +7,8 @@
 #include <utility>
 
 #include "core/error.h"
-#include "render/font.h"
 #include "views/canvas.h"
+#include "views/type.h"
 
 namespace uvtk::views {
 
@@ -18,8 +18,13 @@ constexpr int kSwatchGap = 8;       // between a swatch and its label
 constexpr int kTickLabelGap = 2;    // between a tick mark and its label
 constexpr int kMinLabelSpacing = 6; // between neighbouring tick labels; a label that would come closer is left out
 
-int lineHeight() { return render::textHeight(kLegendTextScale); }
-int textWidth(const std::string& text) { return render::textWidth(text, kLegendTextScale); }
+// Every line is the face's line box at kLegendTextSize, whatever its text.
+int lineHeight() { return measureText("", kLegendTextSize).height; }
+int textWidth(const std::string& text) { return measureText(text, kLegendTextSize).width; }
+void drawLine(Image& image, int x, int top, const std::string& text) { drawText(image, x, top, text, kLegendTextSize, kTextColour); }
+
+// A swatch: a square as high as the text's ascent, centred on its line.
+int swatchSize() { return measureText("", kLegendTextSize).ascent; }
 
 void drawBar(Image& image, const ColourBar& bar, const BarPlacement& at) {
   for (int i = 0; i < kBarLength; ++i)
@@ -40,13 +45,13 @@ void drawBar(Image& image, const ColourBar& bar, const BarPlacement& at) {
       return left < other.second + kMinLabelSpacing && other.first < left + width + kMinLabelSpacing;
     });
     if (!fits) continue;
-    drawLabel(image, left, labelTop, tick.label, kLegendTextScale, kTextColour);
+    drawLine(image, left, labelTop, tick.label);
     drawn.emplace_back(left, left + width);
   }
 }
 
-void drawSwatch(Image& image, int x, int row, const LegendEntry& entry) {
-  const int size = lineHeight();
+void drawSwatch(Image& image, int x, int lineTop, const LegendEntry& entry) {
+  const int size = swatchSize(), row = lineTop + (lineHeight() - size) / 2;
   fillRect(image, x, row, size, size, entry.colour);
   for (int j = row; j < row + size; ++j)
     for (int i = x; i < x + size; ++i)
@@ -59,7 +64,7 @@ std::pair<int, int> paintLegend(const Legend& legend, int top, Image* image) {
   const int line = lineHeight();
   int right = 0;  // the rightmost column used
   auto text = [&](int x, int y, const std::string& label) {
-    if (image) drawLabel(*image, x, y, label, kLegendTextScale, kTextColour);
+    if (image) drawLine(*image, x, y, label);
     right = std::max(right, x + textWidth(label));
   };
   for (std::size_t k = 0; k < legend.title.size(); ++k)
@@ -73,7 +78,7 @@ std::pair<int, int> paintLegend(const Legend& legend, int top, Image* image) {
   }
   for (const LegendEntry& entry : legend.entries) {
     if (image) drawSwatch(*image, kLegendPadding, y, entry);
-    text(kLegendPadding + line + kSwatchGap, y, entry.label);
+    text(kLegendPadding + swatchSize() + kSwatchGap, y, entry.label);
     y += line + kLegendLineGap;
   }
   return {right + kLegendPadding, y - kLegendLineGap + kLegendPadding - top};

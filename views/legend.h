@@ -42,7 +42,7 @@ std::vector<std::string> distinctLabels(const std::vector<double>& values);
 
 struct LegendEntry {
   Vec3 colour = Vec3::Zero();
-  std::string label;      // e.g. "FLIPPED: 3"
+  std::string label;      // e.g. "flipped: 3"
   int hatchCount = 0;     // >= 2: the swatch shows overlapHatch(hatchCount) over `colour`
 };
 
@@ -56,9 +56,10 @@ struct Legend {
   std::vector<std::string> lines() const;
 };
 
-// The legend's geometry. Text is render/font.h at scale 2 (14 pixels high); every block is
-// indented by kLegendPadding and separated by kLegendLineGap.
-constexpr int kLegendTextScale = 2;
+// The legend's geometry. Text is views/type.h at kLegendTextSize pixels per em, every line the
+// face's line box at that size (17 pixels high); every block is indented by kLegendPadding and
+// separated by kLegendLineGap.
+constexpr double kLegendTextSize = 13;
 constexpr int kLegendPadding = 8;
 constexpr int kLegendLineGap = 6;
 constexpr int kBarLength = 384, kBarHeight = 16, kTickLength = 4;

@@ -15,10 +15,10 @@ constexpr double kMinTop = 1.0001;  // the scale keeps a width when every face i
 constexpr int kTickCount = 5;
 
 std::vector<std::string> titleOf(View measure) {
-  if (measure == View::Stretch) return {"L2 STRETCH, NORMALISED (1: ISOMETRIC)"};
-  if (measure == View::Linf) return {"LINF STRETCH, NORMALISED (1: ISOMETRIC)"};
-  if (measure == View::Angle) return {"ANGLE DISTORTION S1/S2 (1: CONFORMAL)"};
-  return {"AREA DISTORTION LOG2 R (0: EQUIAREAL)", "BLUE: COMPRESSED  RED: STRETCHED"};
+  if (measure == View::Stretch) return {"L2 stretch, normalised (1: isometric)"};
+  if (measure == View::Linf) return {"L∞ stretch, normalised (1: isometric)"};
+  if (measure == View::Angle) return {"Angle distortion σ₁/σ₂ (1: conformal)"};
+  return {"Area distortion log₂ r (0: equiareal)", "Blue: compressed   red: stretched"};
 }
 
 // Evenly spaced over the scale; the ends say that values beyond them take the end colours.
@@ -26,8 +26,8 @@ std::vector<Tick> ticksOf(const ColourScale& scale) {
   std::vector<double> values;
   for (int k = 0; k < kTickCount; ++k) values.push_back(scale.lo + (scale.hi - scale.lo) * k / (kTickCount - 1));
   std::vector<std::string> labels = distinctLabels(values);
-  if (scale.palette == Palette::Diverging) labels.front() = "<=" + labels.front();
-  labels.back() = ">=" + labels.back();
+  if (scale.palette == Palette::Diverging) labels.front() = "≤" + labels.front();
+  labels.back() = "≥" + labels.back();
   std::vector<Tick> ticks;
   for (int k = 0; k < kTickCount; ++k) ticks.push_back({values[std::size_t(k)], labels[std::size_t(k)]});
   return ticks;

@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "core/error.h"
-#include "render/font.h"
 #include "views/canvas.h"
 #include "views/legend.h"
 #include "views/palette.h"
+#include "views/type.h"
 
 namespace uvtk::views {
 
@@ -22,8 +22,8 @@ namespace {
 constexpr int kMinSize = 200;
 constexpr int kPadding = 8;          // around the chart
 constexpr int kLineGap = 6;          // between lines of text
-constexpr int kTextScale = 2;        // title, legend, axes: as the views' legends
-constexpr int kPointLabelScale = 1;  // front labels: small, since there may be many
+constexpr double kTextSize = 14;        // title (bold), legend, axes
+constexpr double kPointLabelSize = 11;  // front labels: smaller, since there may be many
 constexpr int kTickLength = 4, kMinorTickLength = 2, kTickGap = 2;
 constexpr int kMinLabelSpacing = 6;                 // between neighbouring tick labels
 constexpr int kMinGridSpacing = 8;                  // the least decade, in pixels, with a grid line each
@@ -37,15 +37,24 @@ constexpr int kLabelOffset = 8, kLabelRise = 2;  // from a front dot's centre to
 const Vec3 kGridColour{0.24, 0.24, 0.24};
 const Vec3 kAxisColour{0.60, 0.60, 0.60};
 
-int lineHeight() { return render::textHeight(kTextScale); }
-int textWidth(const std::string& text) { return render::textWidth(text, kTextScale); }
+// Every line of chart text is the face's line box at kTextSize.
+int lineHeight() { return measureText("", kTextSize).height; }
+int textWidth(const std::string& text) { return measureText(text, kTextSize).width; }
+void drawLine(Image& image, int x, int top, const std::string& text, Weight weight = Weight::Regular) {
+  drawText(image, x, top, text, kTextSize, kTextColour, weight);
+}
 
 bool finite(const ChartPoint& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
-// "1", "10", "100", "1000" and otherwise "1E<exponent>": short, and exact for every decade.
+// 0.001 to 1000 written out, beyond that 10 with the exponent in superscript digits (as the SVG
+// chart writes them): short, and exact for every decade.
 std::string decadeLabel(int exponent) {
-  if (exponent >= 0 && exponent <= 3) return std::string("1") + std::string(std::size_t(exponent), '0');
-  return "1E" + std::to_string(exponent);
+  if (exponent >= 0 && exponent <= 3) return "1" + std::string(std::size_t(exponent), '0');
+  if (exponent < 0 && exponent >= -3) return "0." + std::string(std::size_t(-exponent - 1), '0') + "1";
+  static const char* const kSuperscript[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+  std::string label = exponent < 0 ? "10⁻" : "10";
+  for (char digit : std::to_string(std::abs(exponent))) label += kSuperscript[digit - '0'];
+  return label;
 }
 
 // Every `step`-th decade from lo gets a label, the smallest step whose labels keep `needed` pixels
@@ -154,7 +163,7 @@ Layout layoutChart(const std::vector<ChartPoint>& points, const ParetoChartOptio
 void drawFrontLabels(Image& image, const Layout& layout, const std::vector<ChartPoint>& points,
                      const std::vector<std::size_t>& front, const std::vector<bool>& onFront) {
   const ChartFrame& frame = layout.frame;
-  const int height = render::textHeight(kPointLabelScale);
+  const int height = measureText("", kPointLabelSize).height;
   std::vector<Rect> taken;  // the dots, then the labels drawn
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!finite(points[i])) continue;
@@ -173,7 +182,7 @@ void drawFrontLabels(Image& image, const Layout& layout, const std::vector<Chart
   for (std::size_t k = 0; k < front.size(); ++k) {
     const ChartPoint& p = points[front[k]];
     const Vec2 centre = dotCentre(frame, p);
-    const int width = render::textWidth(p.label, kPointLabelScale);
+    const int width = measureText(p.label, kPointLabelSize).width;
     std::optional<Rect> chosen;
     for (const Place& place : k % 2 == 0 ? kAboveRight : kBelowLeft) {
       const int left = int(centre.x()) + (place.right ? kLabelOffset : -kLabelOffset - width);
@@ -188,7 +197,7 @@ void drawFrontLabels(Image& image, const Layout& layout, const std::vector<Chart
         break;
       }
     }
-    drawLabel(image, chosen->left, chosen->top, p.label, kPointLabelScale, kTextColour);
+    drawText(image, chosen->left, chosen->top, p.label, kPointLabelSize, kTextColour);
     taken.push_back(*chosen);
   }
 }
@@ -226,7 +235,7 @@ void drawAxes(Image& image, const Layout& layout) {
     if (!labelled) continue;
     const std::string label = decadeLabel(e);
     const int left = std::clamp(column - textWidth(label) / 2, kPadding, image.width - kPadding - textWidth(label));
-    drawLabel(image, left, layout.tickLabelTop, label, kTextScale, kTextColour);
+    drawLine(image, left, layout.tickLabelTop, label);
   }
   for (int e = f.yDecadeLo; e <= f.yDecadeHi; ++e) {
     const bool labelled = (e - f.yDecadeLo) % yStep == 0;
@@ -236,7 +245,7 @@ void drawAxes(Image& image, const Layout& layout) {
     fillRect(image, f.left - kTickLength, r, kTickLength, 1, kAxisColour);
     if (!labelled) continue;
     const std::string label = decadeLabel(e);
-    drawLabel(image, labelRight - textWidth(label), r - lineHeight() / 2, label, kTextScale, kTextColour);
+    drawLine(image, labelRight - textWidth(label), r - lineHeight() / 2, label);
   }
   // The box, and for zero errors a dotted baseline below it: apart from the log axis it is not on.
   fillRect(image, f.left, f.top, f.right - f.left + 1, 1, kAxisColour);
@@ -247,7 +256,7 @@ void drawAxes(Image& image, const Layout& layout) {
     const int r = int(f.zeroRowY());
     for (int column = f.left; column <= f.right; column += 4) setPixel(image, column, r, kAxisColour);
     fillRect(image, f.left - kTickLength, r, kTickLength, 1, kAxisColour);
-    drawLabel(image, labelRight - textWidth("0"), r - lineHeight() / 2, "0", kTextScale, kTextColour);
+    drawLine(image, labelRight - textWidth("0"), r - lineHeight() / 2, "0");
   }
 }
 
@@ -341,22 +350,21 @@ Image paretoChart(const std::vector<ChartPoint>& points, const ParetoChartOption
     drawDot(image, dotCentre(frame, points[i]), kFrontDotRadius, groupColour(points[i].group));
   }
 
-  if (layout.titleTop) drawLabel(image, kPadding, *layout.titleTop, options.title, kTextScale, kTextColour);
+  if (layout.titleTop) drawLine(image, kPadding, *layout.titleTop, options.title, Weight::Bold);
   for (std::size_t g = 0; g < layout.legendAt.size(); ++g) {
     const auto [x, row] = layout.legendAt[g];
     fillRect(image, x, row, lineHeight(), lineHeight(), groupColour(int(g)));
-    drawLabel(image, x + lineHeight() + kSwatchGap, row, options.groupNames[g], kTextScale, kTextColour);
+    drawLine(image, x + lineHeight() + kSwatchGap, row, options.groupNames[g]);
   }
-  if (layout.yLabelTop) drawLabel(image, kPadding, *layout.yLabelTop, options.yLabel, kTextScale, kTextColour);
+  if (layout.yLabelTop) drawLine(image, kPadding, *layout.yLabelTop, options.yLabel);
   if (layout.xLabelTop) {
     const int centre = (frame.left + frame.right) / 2;
-    drawLabel(image, std::max(kPadding, centre - textWidth(options.xLabel) / 2), *layout.xLabelTop, options.xLabel,
-              kTextScale, kTextColour);
+    drawLine(image, std::max(kPadding, centre - textWidth(options.xLabel) / 2), *layout.xLabelTop, options.xLabel);
   }
   if (layout.noteTop) {
     const std::string note =
-        std::to_string(layout.skipped) + (layout.skipped == 1 ? " POINT" : " POINTS") + " SKIPPED: NOT FINITE";
-    drawLabel(image, kPadding, *layout.noteTop, note, kTextScale, kTextColour);
+        std::to_string(layout.skipped) + (layout.skipped == 1 ? " point" : " points") + " skipped: not finite";
+    drawLine(image, kPadding, *layout.noteTop, note);
   }
   return image;
 }

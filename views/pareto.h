@@ -1,6 +1,6 @@
 // A Pareto chart of cost against error (e.g. `uvtk bench`: ns per vertex against max error in
-// texels) on log-log axes, drawn with the views' own canvas and 5 x 7 font, in the legend's style:
-// kTextColour on kPanelColour.
+// texels) on log-log axes, drawn with the views' own canvas and typeface (views/type.h), in the
+// legend's style: kTextColour on kPanelColour.
 #pragma once
 
 #include <cstddef>
@@ -13,7 +13,7 @@
 namespace uvtk::views {
 
 struct ChartPoint {
-  std::string label;  // e.g. "SPHERE FLOAT FAST"; drawn in capitals (render/font.h has no others)
+  std::string label;  // e.g. "sphere float fast T4"
   double x = 0;       // cost, e.g. ns per vertex (> 0)
   double y = 0;       // error, e.g. max error in texels (>= 0)
   int group = 0;      // colour group (e.g. one per projector); the legend names groups
@@ -61,13 +61,14 @@ constexpr int kZeroRowGap = 16;  // between the box's bottom line and the zero r
 // with x <= 0 or y < 0, width or height < 200, or a size that leaves the plot box too small.
 ChartFrame chartFrame(const std::vector<ChartPoint>& points, const ParetoChartOptions& options);
 
-// An RGB chart of options.width x options.height: the title, the legend of groupNames, log-log
-// axes padded to whole decades with tick labels (... 1E-2, 1E-1, 1, 10, 100, 1000, 1E4 ...; every
-// n-th where decades crowd), one dot per point in its group's colour, each group's Pareto front
-// joined by a line in its colour, its dots ringed and labelled beside them (alternately above right and below left, moved to
-// another side or a line further out while they overlap a dot or an earlier label), y = 0 points on
-// a row labelled "0" below the box, the axis labels, and a note of the points skipped for a
-// non-finite x or y. Throws as chartFrame.
+// An RGB chart of options.width x options.height: the title (bold), the legend of groupNames,
+// log-log axes padded to whole decades with tick labels (... 10⁻⁴, 0.001, 0.01, 0.1, 1, 10, 100,
+// 1000, 10⁴ ...; every n-th where decades crowd), one dot per point in its group's colour, each
+// group's Pareto front joined by a line in its colour, its dots ringed and labelled beside them
+// (alternately above right and below left, moved to another side or a line further out while they
+// overlap a dot or an earlier label), y = 0 points on a row labelled "0" below the box, the axis
+// labels, and a note of the points skipped for a non-finite x or y. Text is views/type.h: 14
+// pixels per em, the front's labels 11. Throws as chartFrame.
 Image paretoChart(const std::vector<ChartPoint>& points, const ParetoChartOptions& options);
 
 }  // namespace uvtk::views

@@ -135,7 +135,7 @@ DrawnView drawSeams(const ViewInput& in, const ViewOptions& options) {
 
   auto count = [](const char* what, std::size_t n) { return std::string(what) + ": " + std::to_string(n); };
   Legend legend;
-  legend.title = {"SEAMS AND POLES"};
+  legend.title = {"Seams and poles"};
   // The counts are the judgement's (a face both flipped and straddling is drawn flipped and
   // counted in both), so that the legend equals `uvtk map --json` and `uvtk report`.
   using analysis::FaceStatus;

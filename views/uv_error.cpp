@@ -123,11 +123,11 @@ DrawnView drawUvError(const ViewInput& in, const ViewOptions& options) {
   for (int k = kLowestDecade; k <= topDecade; ++k) decades.push_back(std::pow(10.0, k));
   const std::vector<std::string> labels = distinctLabels(decades);
   ColourBar bar{scale, {}};
-  for (std::size_t k = 0; k < decades.size(); ++k) bar.ticks.push_back({decades[k], (k == 0 ? "<=" : "") + labels[k]});
+  for (std::size_t k = 0; k < decades.size(); ++k) bar.ticks.push_back({decades[k], (k == 0 ? "≤" : "") + labels[k]});
   const auto [texelsU, texelsV] = texelCounts(options.render);
   Legend legend;
-  legend.title = {"UV ERROR, PER-VERTEX VS EXACT,", "IN TEXELS OF " + std::to_string(texelsU) + "X" + std::to_string(texelsV),
-                  "MAX " + formatNumber(map.max) + "  MEAN " + formatNumber(map.mean)};
+  legend.title = {"UV error, per-vertex vs exact, in texels of " + std::to_string(texelsU) + "×" + std::to_string(texelsV),
+                  "max " + formatNumber(map.max) + "   mean " + formatNumber(map.mean)};
   legend.bar = bar;
   if (map.invalidPixels > 0)
     legend.entries.push_back({statusColour(analysis::FaceStatus::Invalid), "no value: " + std::to_string(map.invalidPixels) + " pixels"});

@@ -78,8 +78,8 @@ struct UvErrorMap {
 };
 UvErrorMap uvErrorMap(const ViewInput& in, const ViewOptions& options);
 
-// Tiles in a grid, `columns` per row, each with its label drawn under it (render/font.h), on a
-// dark grey background. Throws UsageError for no tiles or columns < 1.
+// Tiles in a grid, `columns` per row, each with its label drawn under it (views/type.h, 15 pixels
+// per em), on a dark grey background. Throws UsageError for no tiles or columns < 1.
 Image contactSheet(const std::vector<std::pair<std::string, Image>>& tiles, int columns);
 
 }  // namespace uvtk::views

@@ -174,7 +174,7 @@ TEST(Heatmaps, AFlippedFaceShowsTheFlippedColourAndIsListedInTheLegend) {
 
 // Separate triangles in z = 0, each mapped by its (x, y) scaled by (1, s): a different stretch
 // per face. Each face's colour is the legend bar's at the face's value, and the largest value
-// (the p99 of the four, the top of the scale, labelled ">=") is the bar's last pixel.
+// (the p99 of the four, the top of the scale, labelled "≥") is the bar's last pixel.
 TEST(Heatmaps, FaceColoursMatchTheLegendBarAtTheirValues) {
   Mapped m;
   const double scales[] = {1.0, 1.6, 2.5, 4.0};
@@ -192,7 +192,7 @@ TEST(Heatmaps, FaceColoursMatchTheLegendBarAtTheirValues) {
   for (View view : {View::Stretch, View::Linf, View::Angle, View::Area}) {
     const FaceColouring colouring = colourByMeasure(view, m.judgement);
     const ColourBar& bar = *colouring.legend.bar;
-    EXPECT_EQ(bar.ticks.back().label.substr(0, 2), ">=");
+    EXPECT_EQ(bar.ticks.back().label.substr(0, 3), "≥");
     const Image image = drawView(view, m.input(), o);
     const BarPlacement at = barPlacement(colouring.legend, 96);
     const Scene scene = rasterizeScene(m.mesh, o.render);

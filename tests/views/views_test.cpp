@@ -10,10 +10,10 @@
 #include "analysis/overlap.h"
 #include "analysis/seams.h"
 #include "core/error.h"
-#include "render/font.h"
 #include "views/canvas.h"
 #include "views/legend.h"
 #include "views/palette.h"
+#include "views/type.h"
 
 namespace uvtk::views {
 namespace {
@@ -113,9 +113,9 @@ TEST(Legend, LabelsAreDistinctWithFewDigits) {
 TEST(Legend, StripBelowTheViewWithBarSwatchesAndText) {
   Image view(50, 40, 3, 0.25f);
   Legend legend;
-  legend.title = {"TITLE"};
+  legend.title = {"Title"};
   legend.bar = ColourBar{{Palette::Sequential, 0.0, 1.0, false}, {{0.0, "0"}, {1.0, "1"}}};
-  legend.entries = {{Vec3(1, 0, 1), "FLIPPED: 1"}, {Vec3(0.3, 0.3, 0.3), "TWICE", 2}};
+  legend.entries = {{Vec3(1, 0, 1), "flipped: 1"}, {Vec3(0.3, 0.3, 0.3), "twice", 2}};
   const Image out = withLegend(view, legend);
   EXPECT_EQ(out.width, 2 * kLegendPadding + kBarLength);  // the bar is wider than the view
   EXPECT_GT(out.height, view.height + kBarHeight);
@@ -146,10 +146,13 @@ TEST(ContactSheet, GridOfTilesWithTheirLabelsUnderThem) {
   Image green(20, 50, 3, 0.0f);
   for (int row = 0; row < 50; ++row)
     for (int x = 0; x < 20; ++x) green.at(x, row, 1) = 1.0f;
-  const std::vector<std::pair<std::string, Image>> tiles = {{"A", black}, {"GREEN TILE", green}, {"G", grey}};
+  const std::vector<std::pair<std::string, Image>> tiles = {{"A", black}, {"Green tile ≥ 2", green}, {"G", grey}};
   const Image sheet = contactSheet(tiles, 2);
-  const int pad = 8, gap = 4, text = render::textHeight(2);
-  const int column0 = 40, column1 = std::max(20, render::textWidth("GREEN TILE", 2));
+  const TextMetrics label = measureText("Green tile ≥ 2", 15);
+  const int pad = 8, gap = 4, text = label.height;
+  EXPECT_EQ(text, measureText("A", 15).height);  // one line box for all labels
+  const int column0 = 40, column1 = std::max(20, label.width);
+  EXPECT_GT(column1, 20);  // the label is wider than its tile
   EXPECT_EQ(sheet.width, pad + column0 + pad + column1 + pad);
   EXPECT_EQ(sheet.height, pad + (50 + gap + text) + pad + (1 + gap + text) + pad);
   EXPECT_EQ(sheet.channels, 3);
@@ -159,15 +162,15 @@ TEST(ContactSheet, GridOfTilesWithTheirLabelsUnderThem) {
   EXPECT_EQ(pixelColour(sheet, pad, row1), Vec3::Constant(0.5));                        // grey spread to RGB
   EXPECT_TRUE(near(pixelColour(sheet, pad + 1, row1), kPanelColour));
 
-  // The label under the green tile, exactly as drawText draws it on the panel.
+  // The label under the green tile, exactly as drawText draws it on the panel at 15 pixels per em.
   Image expected(sheet.width, sheet.height, 3);
   fillRect(expected, 0, 0, expected.width, expected.height, kPanelColour);
-  drawLabel(expected, pad + column0 + pad, pad + 50 + gap, "GREEN TILE", 2, kTextColour);
+  drawText(expected, pad + column0 + pad, pad + 50 + gap, "Green tile ≥ 2", 15, kTextColour);
   int textPixels = 0;
   for (int row = pad + 50 + gap; row < pad + 50 + gap + text; ++row)
     for (int x = pad + column0 + pad; x < sheet.width - pad; ++x) {
       ASSERT_EQ(pixelColour(sheet, x, row), pixelColour(expected, x, row)) << x << ", " << row;
-      textPixels += near(pixelColour(sheet, x, row), kTextColour);
+      textPixels += !near(pixelColour(sheet, x, row), kPanelColour);
     }
   EXPECT_GT(textPixels, 50);
 
