@@ -18,11 +18,13 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/markup.h"
 #include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "io/mesh_format.h"
 #include "io/mesh_reader.h"
 #include "core/stopwatch.h"
+#include "inspect/html_page.h"
 #include "inspect/map_job.h"
 #include "meshes/generators.h"
 #include "options/cli_values.h"
@@ -491,7 +493,7 @@ std::string htmlOfMarkdown(const std::string& md) {
     const std::string line = md.substr(begin, end - begin);
     if (line.rfind("|", 0) != 0) {
       if (inTable) html += "</table>\n", inTable = false;
-      if (!line.empty()) html += "<p>" + views::xmlEscaped(line) + "</p>\n";
+      if (!line.empty()) html += "<p>" + xmlEscaped(line) + "</p>\n";
       continue;
     }
     if (line.rfind("|---", 0) == 0) continue;  // the separator below the header
@@ -503,7 +505,7 @@ std::string htmlOfMarkdown(const std::string& md) {
       std::string text = line.substr(at, next - at);
       text.erase(0, text.find_first_not_of(' '));
       text.erase(text.find_last_not_of(' ') + 1);
-      if (next < line.size()) row += std::string("<") + cell + ">" + views::xmlEscaped(text) + "</" + cell + ">";
+      if (next < line.size()) row += std::string("<") + cell + ">" + xmlEscaped(text) + "</" + cell + ">";
       at = next + 1;
     }
     html += row + "</tr>\n";
@@ -515,14 +517,9 @@ std::string htmlOfMarkdown(const std::string& md) {
 // One self-contained page: the charts inline, then the tables; nothing external, no script.
 std::string benchHtml(const BenchResult& result) {
   const std::size_t firstLineEnd = result.markdown.find('\n');
-  std::string html =
-      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>uvtk bench</title>\n"
-      "<style>\nbody { font-family: \"DejaVu Sans\", sans-serif; margin: 2em; color: #222; }\n"
-      "svg { max-width: 100%; height: auto; }\ntable { border-collapse: collapse; margin: 1em 0; }\n"
-      "th, td { border: 1px solid #bbb; padding: 0.2em 0.5em; }\ntd { text-align: right; }\n"
-      "td:first-child { text-align: left; }\nth { background: #eee; }\n</style>\n</head>\n<body>\n"
-      "<h1>uvtk bench</h1>\n<p>" +
-      views::xmlEscaped(result.markdown.substr(0, firstLineEnd)) + "</p>\n";
+  std::string html = pageStart("uvtk bench") +
+                     "<style>svg{max-width:100%;height:auto}td{text-align:right}td:first-child{text-align:left}</style>\n<p>" +
+                     xmlEscaped(result.markdown.substr(0, firstLineEnd)) + "</p>\n";
   html += "<h2>Mapping</h2>\n<figure>" + result.mappingSvg + "</figure>\n";
   if (!result.renderingSvg.empty()) html += "<h2>Rendering</h2>\n<figure>" + result.renderingSvg + "</figure>\n";
   html += "<h2>Tables</h2>\n" + htmlOfMarkdown(result.markdown.substr(std::min(firstLineEnd, result.markdown.size())));

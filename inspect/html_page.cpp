@@ -2,30 +2,9 @@
 
 #include <cstdio>
 
-namespace uvtk::inspect {
+#include "core/markup.h"
 
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '&':
-        out += "&amp;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
+namespace uvtk::inspect {
 
 std::string number(double value) {
   char text[32];
@@ -49,11 +28,11 @@ constexpr const char* kStyle =
 std::string pageStart(const std::string& title) {
   return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"><title>" +
-         escaped(title) + "</title>\n" + kStyle + "</head><body>\n<h1>" + escaped(title) + "</h1>\n";
+         xmlEscaped(title) + "</title>\n" + kStyle + "</head><body>\n<h1>" + xmlEscaped(title) + "</h1>\n";
 }
 
 std::string verdictBadge(const std::string& verdict) {
-  return "<span class=\"verdict " + escaped(verdict) + "\">" + escaped(verdict) + "</span>";
+  return "<span class=\"verdict " + xmlEscaped(verdict) + "\">" + xmlEscaped(verdict) + "</span>";
 }
 
 }  // namespace uvtk::inspect

@@ -1,13 +1,10 @@
-// What every uvtk page shares: text escaped for HTML, numbers as the pages print them, the page's
-// head and style, and the verdict badge.
+// What every uvtk page shares: numbers as the pages print them, the page's head and style, and the
+// verdict badge. Text goes in through xmlEscaped (core/markup.h).
 #pragma once
 
 #include <string>
 
 namespace uvtk::inspect {
-
-// `text` with < > & " as entities.
-std::string escaped(const std::string& text);
 
 // "%.6g".
 std::string number(double value);

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/markup.h"
 #include "inspect/html_page.h"
 #include "inspect/mesh_view.h"
 #include "io/image_io.h"
@@ -18,9 +19,9 @@ namespace {
 // A JSON leaf as table text.
 std::string cell(const nlohmann::json& value) {
   if (value.is_number_float()) return number(value.get<double>());
-  if (value.is_string()) return escaped(value.get<std::string>());
+  if (value.is_string()) return xmlEscaped(value.get<std::string>());
   if (value.is_array() && value.size() > 8) return std::to_string(value.size()) + " entries (see the JSON report)";
-  return escaped(value.dump());
+  return xmlEscaped(value.dump());
 }
 
 // A bar chart of a histogram record of statisticsJson: bar heights are the weight fractions.
@@ -33,7 +34,7 @@ std::string histogramSvg(const std::string& title, const nlohmann::json& statist
   for (double f : fractions) highest = std::max(highest, f);
   std::ostringstream svg;
   svg << "<figure><svg width=\"" << width << "\" height=\"" << height + 20 << "\" role=\"img\" aria-label=\""
-      << escaped(title) << "\">";
+      << xmlEscaped(title) << "\">";
   for (int i = 0; i < bars && highest > 0.0; ++i) {
     const double barHeight = height * fractions[std::size_t(i)] / highest;
     svg << "<rect x=\"" << number(double(width) * i / bars) << "\" y=\"" << number(height - barHeight) << "\" width=\""
@@ -43,7 +44,7 @@ std::string histogramSvg(const std::string& title, const nlohmann::json& statist
   }
   svg << "<text x=\"0\" y=\"" << height + 15 << "\" font-size=\"11\">" << number(edges.front()) << "</text>"
       << "<text x=\"" << width << "\" y=\"" << height + 15 << "\" font-size=\"11\" text-anchor=\"end\">"
-      << number(edges.back()) << "</text></svg><figcaption>" << escaped(title) << " ("
+      << number(edges.back()) << "</text></svg><figcaption>" << xmlEscaped(title) << " ("
       << h.at("spacing").get<std::string>() << " bins, bar height: fraction of the surface area)</figcaption></figure>";
   return svg.str();
 }
@@ -55,7 +56,7 @@ void tableRows(std::ostringstream& html, const nlohmann::json& object, const std
     if (value.is_object()) {
       tableRows(html, value, prefix + key + ".");
     } else {
-      html << "<tr><th>" << escaped(prefix + key) << "</th><td class=\"num\">" << cell(value) << "</td></tr>\n";
+      html << "<tr><th>" << xmlEscaped(prefix + key) << "</th><td class=\"num\">" << cell(value) << "</td></tr>\n";
     }
   }
 }
@@ -66,11 +67,11 @@ std::string measureGroups(const nlohmann::json& report) {
   std::ostringstream html;
   html << "<details open><summary>mesh</summary><table>\n";
   for (const auto& [key, value] : report.items())
-    if (!value.is_object()) html << "<tr><th>" << escaped(key) << "</th><td class=\"num\">" << cell(value) << "</td></tr>\n";
+    if (!value.is_object()) html << "<tr><th>" << xmlEscaped(key) << "</th><td class=\"num\">" << cell(value) << "</td></tr>\n";
   html << "</table></details>\n";
   for (const auto& [key, value] : report.items())
     if (value.is_object()) {
-      html << "<details><summary>" << escaped(key) << "</summary><table>\n";
+      html << "<details><summary>" << xmlEscaped(key) << "</summary><table>\n";
       tableRows(html, value, "");
       html << "</table></details>\n";
     }
@@ -93,9 +94,9 @@ std::string keyMeasures(const nlohmann::json& report) {
       {"L2 stretch, whole mesh", number(report.at("stretch_l2").get<double>()),
        "Sander's root-mean-square stretch, normalised: 1 is isometric (no texel stretched)"},
       {"L2 stretch per face: mean / p99 / max", three("stretch_l2_faces"), "the same per face, area-weighted over ok faces"},
-      {"Linf stretch per face: mean / p99 / max", three("stretch_linf_faces"), "the largest stretch in any direction"},
-      {"angle distortion: mean / p99 / max", three("angle"), "s1 / s2: 1 is conformal (angles kept)"},
-      {"area distortion log2 r: mean / p99 / max", three("area"), "0 is equiareal; +1: twice the texels per area, -1: half"},
+      {"L∞ stretch per face: mean / p99 / max", three("stretch_linf_faces"), "the largest stretch in any direction"},
+      {"angle distortion σ₁/σ₂: mean / p99 / max", three("angle"), "1 is conformal (angles kept)"},
+      {"area distortion log₂ r: mean / p99 / max", three("area"), "0 is equiareal; +1: twice the texels per area, -1: half"},
       {"flipped faces", cell(counts.at("flipped")), "UV triangles mirrored against the majority's winding"},
       {"invalid faces", cell(counts.at("invalid")), "a corner without a valid UV (a missed ray, not finite, no vt)"},
       {"pole faces", cell(counts.at("pole_face")), "faces at a projector's pole, where u is undefined"},
@@ -106,7 +107,7 @@ std::string keyMeasures(const nlohmann::json& report) {
   std::ostringstream html;
   html << "<table class=\"key-measures\">\n<tr><th>measure</th><th>value</th><th>meaning</th></tr>\n";
   for (const Row& r : rows)
-    html << "<tr><th>" << escaped(r.name) << "</th><td class=\"num\">" << r.value << "</td><td>" << escaped(r.meaning)
+    html << "<tr><th>" << xmlEscaped(r.name) << "</th><td class=\"num\">" << r.value << "</td><td>" << xmlEscaped(r.meaning)
          << "</td></tr>\n";
   html << "</table>\n";
   return html.str();
@@ -135,7 +136,7 @@ class PageFiles {
     std::string html;
     for (const nlohmann::json& file : files)
       if (const std::optional<std::string> href = link(file.get<std::string>()))
-        html += "<a href=\"" + escaped(*href) + "\">" + escaped(*href) + "</a> ";
+        html += "<a href=\"" + xmlEscaped(*href) + "\">" + xmlEscaped(*href) + "</a> ";
     return html;
   }
 
@@ -153,7 +154,7 @@ std::string verdictSection(const nlohmann::json& report) {
   } else {
     html << "<ul class=\"reasons\">\n";
     for (const nlohmann::json& r : reasons)
-      html << "<li>" << verdictBadge(r.at("severity").get<std::string>()) << " " << escaped(r.at("text").get<std::string>())
+      html << "<li>" << verdictBadge(r.at("severity").get<std::string>()) << " " << xmlEscaped(r.at("text").get<std::string>())
            << "</li>\n";
     html << "</ul>\n";
   }
@@ -173,12 +174,12 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath,
   const PageFiles files(pagePath);
   std::ostringstream html;
   html << pageStart(run.at("title").get<std::string>());
-  html << "<p>Scene <code>" << escaped(run.at("scene").get<std::string>()) << "</code>, written by uvtk "
+  html << "<p>Scene <code>" << xmlEscaped(run.at("scene").get<std::string>()) << "</code>, written by uvtk "
        << UVTK_VERSION << " (<code>uvtk run</code>).</p>\n";
   if (!run.at("failures").empty()) {
     html << "<h2 class=\"failed\">Failures</h2>\n<ul>\n";
     for (const nlohmann::json& failure : run.at("failures"))
-      html << "<li class=\"failed\">" << escaped(failure.at("message").get<std::string>()) << "</li>\n";
+      html << "<li class=\"failed\">" << xmlEscaped(failure.at("message").get<std::string>()) << "</li>\n";
     html << "</ul>\n";
   }
   const nlohmann::json& outputs = run.at("outputs");
@@ -194,7 +195,7 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath,
   const auto badge = [&](const nlohmann::json& o) {
     const std::string b = verdictBadge(o.at("verdict").get<std::string>());
     const auto page = reportPages.find(o.value("mapping", std::string()));
-    return page == reportPages.end() ? b : "<a href=\"" + escaped(page->second) + "\" title=\"open the report\">" + b + "</a>";
+    return page == reportPages.end() ? b : "<a href=\"" + xmlEscaped(page->second) + "\" title=\"open the report\">" + b + "</a>";
   };
 
   html << "<h2>Mappings</h2>\n<table>\n<tr><th>mesh</th><th>mapping</th><th>verdict (opens the report)</th>"
@@ -213,7 +214,7 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath,
   if (!views3d.empty()) {
     html << "<h2>In 3D</h2>\n";
     for (std::size_t v = 0; v < views3d.size(); ++v)
-      html << "<details" << (v == 0 ? " open" : "") << "><summary>" << escaped(views3d[v].first) << "</summary>\n"
+      html << "<details" << (v == 0 ? " open" : "") << "><summary>" << xmlEscaped(views3d[v].first) << "</summary>\n"
            << views3d[v].second << "</details>\n";
   }
 
@@ -223,7 +224,7 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath,
       if (!benchTitle) html << "<h2>Speed and accuracy</h2>\n";
       benchTitle = true;
       html << "<figure class=\"chart\">" << o.at("svg").get<std::string>() << "<figcaption>"
-           << escaped(o.value("title", std::string())) << ", mesh " << cell(o.at("mesh")) << " (point at a dot for its "
+           << xmlEscaped(o.value("title", std::string())) << ", mesh " << cell(o.at("mesh")) << " (point at a dot for its "
            << "configuration): " << files.links(o.at("files")) << "</figcaption></figure>\n";
     }
 
@@ -236,9 +237,9 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath,
           kind(o) == "compare" ? "ranking of " + o.value("mesh", std::string()) : o.value("mapping", std::string());
       if (o.contains("views")) caption += ": " + o.at("views").dump();
       std::string verdict;  // each mapping's picture says how its mapping was judged
-      if (o.contains("verdict")) verdict = badge(o) + " " + escaped(o.value("first_reason", std::string())) + "<br>";
-      html << "<figure><a href=\"" << escaped(*src) << "\"><img alt=\"" << escaped(caption) << "\" src=\""
-           << escaped(*src) << "\"></a><figcaption>" << verdict << escaped(caption) << "<br><code>" << escaped(*src)
+      if (o.contains("verdict")) verdict = badge(o) + " " + xmlEscaped(o.value("first_reason", std::string())) + "<br>";
+      html << "<figure><a href=\"" << xmlEscaped(*src) << "\"><img alt=\"" << xmlEscaped(caption) << "\" src=\""
+           << xmlEscaped(*src) << "\"></a><figcaption>" << verdict << xmlEscaped(caption) << "<br><code>" << xmlEscaped(*src)
            << "</code></figcaption></figure>\n";
     }
 
@@ -296,8 +297,8 @@ std::string htmlReport(const nlohmann::json& report, const std::vector<std::pair
           "faces of status ok).</p>\n";
   html << "<h2>Views</h2>\n";
   for (const auto& [name, image] : views)
-    html << "<figure><img alt=\"" << escaped(name) << " view\" src=\"" << io::pngDataUri(image) << "\" width=\""
-         << image.width << "\" height=\"" << image.height << "\"><figcaption>" << escaped(name)
+    html << "<figure><img alt=\"" << xmlEscaped(name) << " view\" src=\"" << io::pngDataUri(image) << "\" width=\""
+         << image.width << "\" height=\"" << image.height << "\"><figcaption>" << xmlEscaped(name)
          << "</figcaption></figure>\n";
   html << "<h2>Histograms</h2>\n";
   for (const char* key : {"stretch_l2_faces", "stretch_linf_faces", "angle", "area"})

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/markup.h"
 #include "inspect/html_page.h"
 #include "io/image_io.h"
 #include "io/page_bytes.h"
@@ -191,8 +192,8 @@ std::string cssColour(const Vec3& colour) {
 // A legend as HTML: its title lines, its colour bar with the ticks, its swatches.
 std::string legendHtml(const views::Legend& legend, const std::string& layer) {
   std::ostringstream html;
-  html << "<div class=\"legend\" data-layer=\"" << escaped(layer) << "\" hidden>";
-  for (const std::string& line : legend.title) html << "<div class=\"legend-title\">" << escaped(line) << "</div>";
+  html << "<div class=\"legend\" data-layer=\"" << xmlEscaped(layer) << "\" hidden>";
+  for (const std::string& line : legend.title) html << "<div class=\"legend-title\">" << xmlEscaped(line) << "</div>";
   if (legend.bar) {
     const views::ColourScale& scale = legend.bar->scale;
     constexpr int kSteps = 90, kWidth = 360;  // the bar in steps of 4 pixels, each at its centre's colour
@@ -203,7 +204,7 @@ std::string legendHtml(const views::Legend& legend, const std::string& layer) {
     for (const views::Tick& tick : legend.bar->ticks) {
       const double x = 20.0 + kWidth * scale.position(tick.value);
       html << "<line x1=\"" << number(x) << "\" x2=\"" << number(x) << "\" y1=\"16\" y2=\"21\" stroke=\"#333\"/>"
-           << "<text x=\"" << number(x) << "\" y=\"34\" text-anchor=\"middle\">" << escaped(tick.label) << "</text>";
+           << "<text x=\"" << number(x) << "\" y=\"34\" text-anchor=\"middle\">" << xmlEscaped(tick.label) << "</text>";
     }
     html << "</svg>";
   }
@@ -211,7 +212,7 @@ std::string legendHtml(const views::Legend& legend, const std::string& layer) {
     html << "<ul class=\"legend-entries\">";
     for (const views::LegendEntry& entry : legend.entries)
       html << "<li><span class=\"swatch\" style=\"background:" << cssColour(entry.colour) << "\"></span>"
-           << escaped(entry.label) << "</li>";
+           << xmlEscaped(entry.label) << "</li>";
     html << "</ul>";
   }
   html << "</div>";
@@ -352,7 +353,7 @@ std::string meshViewHtml(const MappedMesh& mapped, const analysis::Judgement& ju
   std::ostringstream html;
   html << "<div class=\"view3d\">\n<div class=\"view3d-bar\"><label>Layer <select class=\"layers\">";
   for (const Layer& layer : layers)
-    html << "<option value=\"" << escaped(layer.name) << "\">" << escaped(layer.label) << "</option>";
+    html << "<option value=\"" << xmlEscaped(layer.name) << "\">" << xmlEscaped(layer.label) << "</option>";
   html << "</select></label> <label><input type=\"checkbox\" class=\"show-seams\" checked> seams (<span style=\"color:"
        << cssColour(views::kWrapSeamColour) << "\">wrap " << judgement.summary.seams.wrapEdges
        << "</span>, <span style=\"color:" << cssColour(views::kCutColour) << "\">cut " << judgement.summary.seams.cutEdges

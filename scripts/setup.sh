@@ -2,9 +2,10 @@
 # Installs the Debian packages uvtk needs (only those missing), then configures and builds.
 # Usage: scripts/setup.sh [build-dir]   the release build (default: build)
 #        scripts/setup.sh --fuzz        the fuzz preset (clang, ASan + UBSan + libFuzzer): build-fuzz
-#        scripts/setup.sh --validator   the Khronos glTF-Validator for the tests (Debian's nodejs and
-#                                       npm, then the npm package pinned in tests/gltf_validator) in
-#                                       build/gltf-validator; nothing is built
+#        scripts/setup.sh --validator   the Khronos glTF-Validator and the browser test's tools (Debian's
+#                                       nodejs, npm and chromium, then the npm packages pinned in
+#                                       tests/gltf_validator and tests/browser) in build/gltf-validator
+#                                       and build/browser-test; nothing is built
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -16,6 +17,7 @@ packages=(cmake ninja-build g++ pkg-config
           libhwy-dev       # Google Highway: portable SIMD for the rasterizer and the mapping kernel
           libassimp-dev    # the peer `uvtk bench` times (aiProcess_GenUVCoords); optional to the build
           libosmesa6-dev   # Mesa's software OpenGL: the reference the texgen tests compare with
+          libfreetype-dev fonts-dejavu-core  # the views' type: DejaVu Sans drawn by FreeType (views/type.h)
           python3-dev pybind11-dev python3-numpy python3-pytest)  # the Python module (docs/python.md) and its tests
 preset=""
 build_dir=${1:-build}
@@ -29,6 +31,7 @@ if [ "${1:-}" = "--validator" ]; then
   packages=()
   command -v node > /dev/null || packages+=(nodejs)
   command -v npm > /dev/null || packages+=(npm)
+  [ -x /usr/bin/chromium ] || packages+=(chromium)  # the browser test's headless browser (tests/browser)
 fi
 
 missing=()
@@ -48,6 +51,10 @@ if [ "${1:-}" = "--validator" ]; then
   cp tests/gltf_validator/package.json tests/gltf_validator/package-lock.json tests/gltf_validator/validate.mjs \
     build/gltf-validator/
   (cd build/gltf-validator && npm ci --no-audit --no-fund --loglevel=error) >&2
+  # puppeteer-core drives Debian's Chromium; tests/browser/run.sh runs check_pages.mjs from the source tree.
+  mkdir -p build/browser-test
+  cp tests/browser/package.json tests/browser/package-lock.json build/browser-test/
+  (cd build/browser-test && npm ci --no-audit --no-fund --loglevel=error) >&2
   exit 0
 fi
 

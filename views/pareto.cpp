@@ -100,29 +100,11 @@ Layout layoutChart(const std::vector<ChartPoint>& points, const ParetoChartOptio
                      " pixels, got " + std::to_string(width) + " x " + std::to_string(height));
   Layout layout;
   ChartFrame& frame = layout.frame;
-  double xMin = std::numeric_limits<double>::infinity(), xMax = -xMin, yMin = xMin, yMax = -xMin;
-  for (const ChartPoint& p : points) {
-    if (!finite(p)) {
-      ++layout.skipped;
-      continue;
-    }
-    if (p.x <= 0.0 || p.y < 0.0)
-      throw UsageError("pareto chart: point \"" + p.label + "\" has cost " + formatNumber(p.x) + " and error " +
-                       formatNumber(p.y) + "; expected cost > 0 and error >= 0 for log axes");
-    xMin = std::min(xMin, p.x), xMax = std::max(xMax, p.x);
-    if (p.y == 0.0)
-      frame.hasZeroRow = true;
-    else
-      yMin = std::min(yMin, p.y), yMax = std::max(yMax, p.y);
-  }
-  if (layout.skipped == points.size())
-    throw UsageError("pareto chart: no point with a finite cost and error among " + std::to_string(points.size()));
-  frame.xDecadeLo = int(std::floor(std::log10(xMin)));
-  frame.xDecadeHi = std::max(frame.xDecadeLo + 1, int(std::ceil(std::log10(xMax))));
-  if (yMin <= yMax) {  // else only zero errors: any decade serves
-    frame.yDecadeLo = int(std::floor(std::log10(yMin)));
-    frame.yDecadeHi = std::max(frame.yDecadeLo + 1, int(std::ceil(std::log10(yMax))));
-  }
+  const ChartDecades decades = chartDecades(points);
+  layout.skipped = decades.skipped;
+  frame.hasZeroRow = decades.zeroRow;
+  frame.xDecadeLo = decades.xLo, frame.xDecadeHi = decades.xHi;
+  frame.yDecadeLo = decades.yLo, frame.yDecadeHi = decades.yHi;
 
   // From the top: title, legend (entries flowing into lines), y label, then the box.
   const int line = lineHeight();
@@ -171,20 +153,12 @@ void drawFrontLabels(Image& image, const Layout& layout, const std::vector<Chart
     const int r = int(std::ceil(onFront[i] ? kRingRadius : kDotRadius));
     taken.push_back({int(centre.x()) - r, int(centre.y()) - r, 2 * r + 1, 2 * r + 1});
   }
-  struct Place {
-    bool right, above;
-    int linesOut;
-  };
-  constexpr Place kAboveRight[] = {{true, true, 0},  {false, false, 0}, {true, false, 0},
-                                   {false, true, 0}, {true, true, 1},   {false, false, 1}};
-  constexpr Place kBelowLeft[] = {{false, false, 0}, {true, true, 0},   {false, true, 0},
-                                  {true, false, 0},  {false, false, 1}, {true, true, 1}};
   for (std::size_t k = 0; k < front.size(); ++k) {
     const ChartPoint& p = points[front[k]];
     const Vec2 centre = dotCentre(frame, p);
     const int width = measureText(p.label, kPointLabelSize).width;
     std::optional<Rect> chosen;
-    for (const Place& place : k % 2 == 0 ? kAboveRight : kBelowLeft) {
+    for (const LabelPlace& place : labelPlaces(k)) {
       const int left = int(centre.x()) + (place.right ? kLabelOffset : -kLabelOffset - width);
       const int out = place.linesOut * (height + kLineGap);
       const int top = int(centre.y()) + (place.above ? -kLabelRise - height - out : kLabelRise + out);
@@ -319,6 +293,42 @@ Vec2 ChartFrame::pixelOf(double x, double y) const {
 }
 
 double ChartFrame::zeroRowY() const { return bottom + kZeroRowGap + 0.5; }
+
+const std::array<LabelPlace, 6>& labelPlaces(std::size_t k) {
+  static constexpr std::array<LabelPlace, 6> kAboveRight{
+      {{true, true, 0}, {false, false, 0}, {true, false, 0}, {false, true, 0}, {true, true, 1}, {false, false, 1}}};
+  static constexpr std::array<LabelPlace, 6> kBelowLeft{
+      {{false, false, 0}, {true, true, 0}, {false, true, 0}, {true, false, 0}, {false, false, 1}, {true, true, 1}}};
+  return k % 2 == 0 ? kAboveRight : kBelowLeft;
+}
+
+ChartDecades chartDecades(const std::vector<ChartPoint>& points) {
+  ChartDecades out;
+  double xMin = std::numeric_limits<double>::infinity(), xMax = -xMin, yMin = xMin, yMax = -xMin;
+  for (const ChartPoint& p : points) {
+    if (!finite(p)) {
+      ++out.skipped;
+      continue;
+    }
+    if (p.x <= 0.0 || p.y < 0.0)
+      throw UsageError("pareto chart: point \"" + p.label + "\" has cost " + formatNumber(p.x) + " and error " +
+                       formatNumber(p.y) + "; expected cost > 0 and error >= 0 for log axes");
+    xMin = std::min(xMin, p.x), xMax = std::max(xMax, p.x);
+    if (p.y == 0.0)
+      out.zeroRow = true;
+    else
+      yMin = std::min(yMin, p.y), yMax = std::max(yMax, p.y);
+  }
+  if (out.skipped == points.size())
+    throw UsageError("pareto chart: no point with a finite cost and error among " + std::to_string(points.size()));
+  out.xLo = int(std::floor(std::log10(xMin)));
+  out.xHi = std::max(out.xLo + 1, int(std::ceil(std::log10(xMax))));
+  if (yMin <= yMax) {  // else only zero errors: any decade serves
+    out.yLo = int(std::floor(std::log10(yMin)));
+    out.yHi = std::max(out.yLo + 1, int(std::ceil(std::log10(yMax))));
+  }
+  return out;
+}
 
 ChartFrame chartFrame(const std::vector<ChartPoint>& points, const ParetoChartOptions& options) {
   return layoutChart(points, options).frame;

@@ -3,6 +3,7 @@
 // legend's style: kTextColour on kPanelColour.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -37,6 +38,26 @@ std::vector<std::size_t> paretoFront(const std::vector<ChartPoint>& points);
 // paretoFront within each group: one front per group present, by increasing group number. A front
 // compares configurations of one kind (one projector), never one kind's speed with another's accuracy.
 std::vector<std::vector<std::size_t>> paretoFrontsByGroup(const std::vector<ChartPoint>& points);
+
+// The whole decades a chart of `points` spans: x from floor(log10 of the least x) to ceil(log10 of
+// the greatest), at least one decade; y likewise over the non-zero values (0 .. 1 when all are 0);
+// whether some y is 0 (the zero row), and how many points a non-finite x or y leaves out. Throws
+// UsageError for no finite point, or a finite point with x <= 0 or y < 0 (log axes).
+struct ChartDecades {
+  int xLo = 0, xHi = 1, yLo = 0, yHi = 1;
+  bool zeroRow = false;
+  std::size_t skipped = 0;
+};
+ChartDecades chartDecades(const std::vector<ChartPoint>& points);
+
+// Where the label of the k-th point of a front may go, in the order tried: beside the dot to its
+// right or left, above or below, `linesOut` lines further out. Even k try above right first, odd k
+// below left, so that neighbouring labels alternate.
+struct LabelPlace {
+  bool right, above;
+  int linesOut;
+};
+const std::array<LabelPlace, 6>& labelPlaces(std::size_t k);
 
 // Where paretoChart puts data: the plot box and its decades.
 struct ChartFrame {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/markup.h"
 #include "views/palette.h"
 
 namespace uvtk::views {
@@ -110,29 +111,10 @@ Layout layoutChart(const std::vector<ChartPoint>& points, const ParetoChartOptio
     throw UsageError("pareto chart: expected at least " + std::to_string(kMinSize) + " x " + std::to_string(kMinSize) +
                      " units, got " + std::to_string(options.width) + " x " + std::to_string(options.height));
   Layout l;
-  double xMin = std::numeric_limits<double>::infinity(), xMax = -xMin, yMin = xMin, yMax = -xMin;
-  for (const ChartPoint& p : points) {
-    if (!finite(p)) {
-      ++l.skipped;
-      continue;
-    }
-    if (p.x <= 0.0 || p.y < 0.0)
-      throw UsageError("pareto chart: point \"" + p.label + "\" has cost " + value(p.x) + " and error " + value(p.y) +
-                       "; expected cost > 0 and error >= 0 for log axes");
-    xMin = std::min(xMin, p.x), xMax = std::max(xMax, p.x);
-    if (p.y == 0.0)
-      l.zeroRow = true;
-    else
-      yMin = std::min(yMin, p.y), yMax = std::max(yMax, p.y);
-  }
-  if (l.skipped == points.size())
-    throw UsageError("pareto chart: no point with a finite cost and error among " + std::to_string(points.size()));
-  l.xLo = int(std::floor(std::log10(xMin)));
-  l.xHi = std::max(l.xLo + 1, int(std::ceil(std::log10(xMax))));
-  if (yMin <= yMax) {  // else only zero errors: any decade serves
-    l.yLo = int(std::floor(std::log10(yMin)));
-    l.yHi = std::max(l.yLo + 1, int(std::ceil(std::log10(yMax))));
-  }
+  const ChartDecades decades = chartDecades(points);
+  l.skipped = decades.skipped;
+  l.zeroRow = decades.zeroRow;
+  l.xLo = decades.xLo, l.xHi = decades.xHi, l.yLo = decades.yLo, l.yHi = decades.yHi;
 
   // From the top: title, legend (entries flowing into lines), y label, then the box.
   double row = kPadding;
@@ -242,20 +224,12 @@ std::string frontLabels(const Layout& l, const ParetoChartOptions& options, cons
     const double r = onFront[i] ? kFrontDotRadius + kRingWidth : kDotRadius;
     taken.push_back({l.xOf(points[i]) - r, l.yOf(points[i]) - r, 2 * r, 2 * r});
   }
-  struct Place {
-    bool right, above;
-    int linesOut;
-  };
-  constexpr Place kAboveRight[] = {{true, true, 0},  {false, false, 0}, {true, false, 0},
-                                   {false, true, 0}, {true, true, 1},   {false, false, 1}};
-  constexpr Place kBelowLeft[] = {{false, false, 0}, {true, true, 0},   {false, true, 0},
-                                  {true, false, 0},  {false, false, 1}, {true, true, 1}};
   std::string svg;
   for (std::size_t k = 0; k < front.size(); ++k) {
     const ChartPoint& p = points[front[k]];
     const double x = l.xOf(p), y = l.yOf(p), width = textWidth(p.label, kPointLabelSize);
     std::optional<Rect> chosen;
-    for (const Place& place : k % 2 == 0 ? kAboveRight : kBelowLeft) {
+    for (const LabelPlace& place : labelPlaces(k)) {
       const double left = x + (place.right ? kLabelOffset : -kLabelOffset - width);
       const double out = place.linesOut * (kPointLabelSize + kLineGap);
       const double top = y + (place.above ? -kLabelRise - kPointLabelSize - out : kLabelRise + out);
@@ -276,31 +250,6 @@ std::string frontLabels(const Layout& l, const ParetoChartOptions& options, cons
 
 }  // namespace
 
-std::string xmlEscaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 std::string paretoChartSvg(const std::vector<ChartPoint>& points, const ParetoChartOptions& options) {
   const Layout l = layoutChart(points, options);

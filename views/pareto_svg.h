@@ -11,9 +11,6 @@
 
 namespace uvtk::views {
 
-// `text` with & < > " ' as entities: safe in XML and HTML text and in quoted attributes.
-std::string xmlEscaped(const std::string& text);
-
 // An <svg> element of options.width x options.height user units (no <?xml?> header): the title,
 // the legend of groupNames, log-log axes padded to whole decades with a grid and labels at the
 // decades (0.001, 0.01, 0.1, 1, 10, 100, 1000, beyond that 10 with a superscript exponent; every
