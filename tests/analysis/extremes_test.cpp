@@ -151,6 +151,23 @@ INSTANTIATE_TEST_SUITE_P(Rows, SliverExtremes, testing::Range<std::size_t>(0, ro
 namespace uvtk::analysis {
 namespace {
 
+// The verdict, its reasons, every face's status and area distortion, and the mesh's L2 stretch are those of `reference`.
+void expectSameJudgement(const Judgement& j, const Judgement& reference) {
+  EXPECT_EQ(j.verdict, reference.verdict);
+  ASSERT_EQ(j.reasons.size(), reference.reasons.size());
+  for (std::size_t r = 0; r < j.reasons.size(); ++r) {
+    EXPECT_EQ(j.reasons[r].rule, reference.reasons[r].rule);
+    EXPECT_EQ(j.reasons[r].value, reference.reasons[r].value);
+    EXPECT_EQ(j.reasons[r].faces, reference.reasons[r].faces);
+  }
+  ASSERT_EQ(j.faces.size(), reference.faces.size());
+  for (std::size_t f = 0; f < j.faces.size(); ++f) {
+    EXPECT_EQ(j.faces[f].status, reference.faces[f].status) << "face " << f;
+    EXPECT_EQ(j.faces[f].areaDistortion, reference.faces[f].areaDistortion) << "face " << f;
+  }
+  EXPECT_EQ(j.summary.l2Stretch, reference.summary.l2Stretch);
+}
+
 // A mesh at 1e-200 or 1e200 gets the verdict it gets at scale 1: its areas would underflow to 0
 // (every face zero_area_3d) or overflow to inf (NaN stretches, an internal error in the
 // statistics), so they are measured at unit scale (measureLengthScale). Scaling by a power of two
@@ -170,19 +187,9 @@ TEST(AnalysisExtremes, AJudgementDoesNotDependOnTheMeshScale) {
     for (Vec3& p : scaled.positions) p = p.unaryExpr([&](double x) { return std::ldexp(x, exponent); });
     EXPECT_NE(measureLengthScale(scaled), 1.0);
     const Judgement j = judge(scaled, atOne.uv);  // the same UVs: only the 3D lengths scale
-    EXPECT_EQ(j.verdict, reference.verdict);
-    ASSERT_EQ(j.reasons.size(), reference.reasons.size());
-    for (std::size_t r = 0; r < j.reasons.size(); ++r) {
-      EXPECT_EQ(j.reasons[r].rule, reference.reasons[r].rule);
-      EXPECT_EQ(j.reasons[r].value, reference.reasons[r].value);
-      EXPECT_EQ(j.reasons[r].faces, reference.reasons[r].faces);
-    }
-    for (std::size_t f = 0; f < j.faces.size(); ++f) {
-      EXPECT_EQ(j.faces[f].status, reference.faces[f].status) << "face " << f;
-      EXPECT_EQ(j.faces[f].areaDistortion, reference.faces[f].areaDistortion) << "face " << f;
+    expectSameJudgement(j, reference);
+    for (std::size_t f = 0; f < j.faces.size(); ++f)
       EXPECT_TRUE(std::isfinite(j.faces[f].l2Stretch) && std::isfinite(j.faces[f].area3d)) << "face " << f;
-    }
-    EXPECT_EQ(j.summary.l2Stretch, reference.summary.l2Stretch);
   }
 }
 
@@ -207,19 +214,9 @@ TEST(AnalysisExtremes, AJudgementDoesNotDependOnTheUvScale) {
         for (Vec3& p : mesh.positions) p = p.unaryExpr([&](double x) { return std::ldexp(x, exponent); });
       EXPECT_NE(measureUvScale(uv), 1.0);
       const Judgement j = judge(mesh, uv);
-      EXPECT_EQ(j.verdict, reference.verdict);
-      ASSERT_EQ(j.reasons.size(), reference.reasons.size());
-      for (std::size_t r = 0; r < j.reasons.size(); ++r) {
-        EXPECT_EQ(j.reasons[r].rule, reference.reasons[r].rule);
-        EXPECT_EQ(j.reasons[r].value, reference.reasons[r].value);
-        EXPECT_EQ(j.reasons[r].faces, reference.reasons[r].faces);
-      }
-      for (std::size_t f = 0; f < j.faces.size(); ++f) {
-        EXPECT_EQ(j.faces[f].status, reference.faces[f].status) << "face " << f;
-        EXPECT_EQ(j.faces[f].areaDistortion, reference.faces[f].areaDistortion) << "face " << f;
+      expectSameJudgement(j, reference);
+      for (std::size_t f = 0; f < j.faces.size(); ++f)
         EXPECT_EQ(j.faces[f].angleDistortion, reference.faces[f].angleDistortion) << "face " << f;
-      }
-      EXPECT_EQ(j.summary.l2Stretch, reference.summary.l2Stretch);
     }
   }
 }
