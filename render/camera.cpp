@@ -22,8 +22,14 @@ BoundingSphere boundingSphere(const std::vector<Vec3>& points) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
+  // Beyond about 1e154 a squared length overflows: halves and stableNorm there (elsewhere the same
+  // bits as before).
   s.center = 0.5 * (lo + hi);
-  for (const Vec3& p : points) s.radius = std::max(s.radius, (p - s.center).norm());
+  if (!s.center.allFinite()) s.center = 0.5 * lo + 0.5 * hi;
+  for (const Vec3& p : points) {
+    const double distance = (p - s.center).norm();
+    s.radius = std::max(s.radius, std::isfinite(distance) ? distance : (p - s.center).stableNorm());
+  }
   return s;
 }
 

@@ -30,6 +30,17 @@ TEST(LookAt, EqualsTheGluLookAtMatrixOfAWorkedExample) {
   EXPECT_NEAR((m.topLeftCorner<3, 3>() * m.topLeftCorner<3, 3>().transpose() - Mat3::Identity()).norm(), 0.0, 1e-15);
 }
 
+// A mesh at 1e200 puts the eye 1e200 from the center: the direction's squared length overflows,
+// so the frame is normalised without squaring (the worked example scaled by 2^664, exactly).
+TEST(LookAt, AnEyeFarBeyondTheSquareRootOfTheLargestDoubleStillGivesTheFrame) {
+  const double big = std::ldexp(1.0, 664);  // about 1.2e200
+  const Mat4 m = lookAt(Vec3(3 * big, 0, 0), Vec3::Zero(), Vec3(0, 2 * big, 0));
+  ASSERT_TRUE(m.allFinite());
+  const Mat3 rotation = lookAt(Vec3(3, 0, 0), Vec3::Zero(), Vec3(0, 2, 0)).topLeftCorner<3, 3>();
+  EXPECT_EQ(Mat3(m.topLeftCorner<3, 3>()), rotation);
+  EXPECT_EQ(m(2, 3), -3 * big);
+}
+
 TEST(LookAt, CoincidentEyeAndCenterOrAParallelUpAreUsageErrors) {
   EXPECT_THROW(lookAt(Vec3(1, 2, 3), Vec3(1, 2, 3), Vec3::UnitY()), UsageError);
   EXPECT_THROW(lookAt(Vec3::Zero(), Vec3(0, 5, 0), Vec3(0, -2, 0)), UsageError);
