@@ -134,10 +134,12 @@
     scene.add(seams);
 
     const canvas = root.querySelector('canvas');
-    // Transparent where no face is: the canvas's own background (viewer.css) shows.
-    const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, alpha: true, preserveDrawingBuffer: true });
+    // Opaque, so that the pixels read back from the canvas are what a person sees.
+    const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
     renderer.outputColorSpace = THREE.LinearSRGBColorSpace;  // colours as the static views have them
-    renderer.setClearColor(0x000000, 0);
+    // three.js takes a colour given in hex as sRGB and turns it linear; written out unconverted, sRGB
+    // 0x727272 (linear 0.165) is 0x2a2a2a, the canvas background of viewer.css.
+    renderer.setClearColor(0x727272, 1);
     renderer.setPixelRatio(window.devicePixelRatio || 1);
     const camera = new THREE.PerspectiveCamera(30, 1, 0.01, 100);
     const controls = new THREE.OrbitControls(camera, canvas);
