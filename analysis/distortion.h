@@ -59,6 +59,12 @@ struct FaceDistortion {
   double areaDistortion = 0.0;   // log2(r), r = areaRatio sum(A3) / sum(Auv) over the ok faces: 0 where equiareal
 };
 
+// The texels of the texture a texel density counts in: W x H (docs/conventions.md, "Texel density").
+struct TextureSize {
+  int width = 1024, height = 1024;
+  bool operator==(const TextureSize& other) const { return width == other.width && height == other.height; }
+};
+
 struct DistortionOptions {
   // The direction the projector looks along, in object space (for the plane projector the image
   // of local +z: localFromObject.inverse().linear().col(2)). Unset: no face is backfacing.

@@ -32,6 +32,7 @@ constexpr RuleEntry kRules[kRuleCount] = {
     {"stretch_p99", 3.0, kNever, false},            // 1 % of the area stretched 3 times the mean warns
     {"pole_area", 0.02, kNever, false},             // pole fans over 2 % of the area warn
     {"backfacing_area", 0.0, kNever, false},        // a planar projection's back faces warn
+    {"density_spread", 2.0, kNever, false},         // the best-resolved tenth with twice the texels per unit of the worst warns
 };
 
 const RuleEntry& entry(Rule rule) { return kRules[static_cast<std::size_t>(rule)]; }
@@ -62,14 +63,14 @@ struct FaceTally {
 };
 
 // Whether the valid corners of face f span more than half a turn of u (a seam left across it).
-bool spansSeam(const UvMap& uv, std::size_t f) {
+bool spansSeam(const UvMap& uv, std::size_t f, double period) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (std::size_t corner = 3 * f; corner < 3 * f + 3; ++corner) {
     if (!uv.cornerInvalid.empty() && uv.cornerInvalid[corner] != kCornerValid) continue;
     lo = std::min(lo, uv.uv[corner].x());
     hi = std::max(hi, uv.uv[corner].x());
   }
-  return hi - lo > 0.5;
+  return hi - lo > 0.5 * period;
 }
 
 // Faces that cover the centre of a pixel another face covers too, on the overlap's own raster.
@@ -198,7 +199,7 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
   Judgement j;
   j.faces = measureFaces(mesh, uv, options.distortion, options.threads);
   j.summary = summarize(mesh, uv, j.faces, options.overlapResolution,
-                        options.poleVertices ? &*options.poleVertices : nullptr, options.threads);
+                        options.poleVertices ? &*options.poleVertices : nullptr, options.threads, options.textureSize);
 
   // Faces by status and by flag, their 3D areas, and the invalid corners by reason: tallied in
   // fixed chunks on threads and added up in chunk order, so the sums do not depend on the threads.
@@ -231,7 +232,8 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
       t.sphereMapSingularFaces += uv.faceHas(f, kFaceSphereMapSingular) ? 1 : 0;
       if (uv.faceHas(f, kFacePole)) t.poleArea += face.area3d;
       // A pole fan and a cap are meant to differ from the side; invalid faces are counted above.
-      if (options.wrapsU && !invalid && !uv.faceHas(f, kFacePole) && !uv.faceHas(f, kFaceCap) && spansSeam(uv, f))
+      if (options.wrapsU && !invalid && !uv.faceHas(f, kFacePole) && !uv.faceHas(f, kFaceCap) &&
+          spansSeam(uv, f, options.uPeriod))
         ++t.unrepairedSeamFaces;
     }
   });
@@ -278,6 +280,15 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
   set(Rule::PoleArea, share(poleArea), j.summary.poleFaces);
   set(Rule::BackfacingArea, share(statusArea[std::size_t(FaceStatus::Backfacing)]),
       j.statusCount(FaceStatus::Backfacing));
+  // The faces at either end of the spread: at or below p10, at or above p90.
+  const TexelDensity& density = j.summary.density;
+  std::size_t spread = 0;
+  for (const FaceDistortion& face : j.faces)
+    if (face.status == FaceStatus::Ok) {
+      const double d = scaledTexelDensity(face, density.textureSize);
+      spread += d <= density.scaled.p10 || d >= density.scaled.p90 ? 1 : 0;
+    }
+  set(Rule::DensitySpread, density.spread, spread);
   applyThresholds(j, options.thresholds);
   return j;
 }

@@ -34,8 +34,9 @@ enum class Rule : std::uint8_t {
   StretchP99,           // the 99th percentile of the normalised per-face L2 stretch
   PoleArea,             // pole faces' share of the 3D area
   BackfacingArea,       // backfacing faces' share of the 3D area (planar projections)
+  DensitySpread,        // p90 / p10 of the ok faces' texel density
 };
-constexpr int kRuleCount = 9;
+constexpr int kRuleCount = 10;
 const char* toString(Rule rule);  // "invalid_corners", "out_of_range_corners", ...
 std::optional<Rule> parseRule(std::string_view name);
 
@@ -67,8 +68,10 @@ struct Reason {
 struct JudgementOptions {
   DistortionOptions distortion;              // where a planar projector looks (backfacing faces)
   std::optional<std::vector<int>> poleVertices;  // the source's own pole vertices; else the fanned poles found in the UVs
-  bool wrapsU = false;                       // u has period 1 (cylinder, sphere): seams are expected, not failed
+  bool wrapsU = false;                       // u has period uPeriod (cylinder, sphere): seams are expected, not failed
+  double uPeriod = 1.0;                      // 1, or what `uvtk map --density` scaled the UVs by
   int overlapResolution = 1024;              // pixels across the raster that measures overlap
+  TextureSize textureSize;                   // the texels a texel density counts
   Thresholds thresholds;
   int threads = 0;                           // 0: one per core; the judgement does not depend on it
 };

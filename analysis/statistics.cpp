@@ -86,10 +86,10 @@ Statistics weightedStatistics(std::vector<WeightedValue> items, BinSpacing spaci
   }
 
   // Weighted percentiles by selection (which reorders the items).
-  const double fractions[3] = {0.50, 0.90, 0.99};
-  double* const percentiles[3] = {&s.p50, &s.p90, &s.p99};
+  const double fractions[4] = {0.10, 0.50, 0.90, 0.99};
+  double* const percentiles[4] = {&s.p10, &s.p50, &s.p90, &s.p99};
   Selected from{items.data(), 0.0};  // each percentile lies at or right of the one before
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < 4; ++k) {
     const std::optional<Selected> p =
         weightedSelect(from.item, items.data() + items.size(), from.weightBefore, fractions[k] * s.totalWeight);
     // Rounding may leave the whole weight short of the total: then the largest value.

@@ -25,7 +25,7 @@ struct Statistics {
   double mean = 0.0;  // weighted mean
   // Weighted percentiles: the smallest value v such that the values <= v carry at least that
   // fraction of the total weight (the lower inverse of the weighted distribution; no interpolation).
-  double p50 = 0.0, p90 = 0.0, p99 = 0.0;
+  double p10 = 0.0, p50 = 0.0, p90 = 0.0, p99 = 0.0;
   double min = 0.0, max = 0.0;
   Histogram histogram;  // `bins` bins over [min, max]; all the weight in bin 0 when min = max
 };

@@ -28,6 +28,26 @@ struct StatusCounts {
   std::size_t operator[](FaceStatus status) const { return faces[static_cast<std::size_t>(status)]; }
 };
 
+// Texel density, texels per object unit: sqrt(Auv W H / A3) per face with Auv in UV units and A3
+// in object units (docs/conventions.md, "Texel density"). FaceDistortion's areas are measured at
+// scale (measureLengthScale, measureUvScale: powers of two), so a face's density is computed at
+// that scale and multiplied by 2^exponent, exactly; a density beyond a double's range is flagged
+// (finite = false), never infinite.
+struct TexelDensity {
+  TextureSize textureSize;
+  int exponent = 0;  // log2(measureLengthScale(mesh) / measureUvScale(uv))
+  // Over the ok faces, weighted by A3, log2-spaced bins: `scaled` in texels per object unit times
+  // 2^-exponent (always finite), `statistics` in texels per object unit (zeros when !finite).
+  Statistics scaled, statistics;
+  bool finite = true;   // every ok face's density, times 2^exponent, is a normal double
+  double spread = 0.0;  // p90 / p10 of the ok faces' densities (scale-free); 0 when there is no ok face
+};
+
+// sqrt(Auv W H / A3) of a face with A3 > 0, at the measure scale (times 2^-exponent).
+double scaledTexelDensity(const FaceDistortion& face, TextureSize size);
+// The face's density in texels per object unit: may be 0 or infinite where !density.finite.
+double texelDensity(const FaceDistortion& face, const TexelDensity& density);
+
 struct Summary {
   StatusCounts statusCounts;
   // sqrt(sum(A3 L2^2) / sum(A3)) sqrt(sum(Auv) / sum(A3)); 0 when there is no ok face.
@@ -38,6 +58,7 @@ struct Summary {
   // as the mesh values are (a face at 1 is stretched like an isometric layout of the same area).
   // Ratios get log2-spaced bins (angle, L2, Linf); area distortion, already a log2, linear bins.
   Statistics angleDistortion, areaDistortion, l2Stretches, linfStretches;
+  TexelDensity density;
   SeamEdges seams;                 // classifySeamEdges with the pole vertices
   std::size_t poleFaces = 0;       // faces flagged kFacePole, whatever their status
   std::vector<int> poleVertices;   // the given pole vertices, or fannedPoleVertices
@@ -47,8 +68,9 @@ struct Summary {
 
 // The report for `faces` = measureFaces(mesh, uv, ...). `poleVertices`: the source's own pole
 // vertices (a projector knows them); null: the fanned poles found in the UVs (fannedPoleVertices).
-// Preconditions: matching sizes.
+// Preconditions: matching sizes, a texture of at least 1 x 1 texels.
 Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDistortion>& faces,
-                  int overlapResolution = 1024, const std::vector<int>* poleVertices = nullptr, int threads = 0);
+                  int overlapResolution = 1024, const std::vector<int>* poleVertices = nullptr, int threads = 0,
+                  TextureSize textureSize = {});
 
 }  // namespace uvtk::analysis

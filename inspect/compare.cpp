@@ -44,7 +44,7 @@ RankedMapping measure(std::string name, MappedMesh mapped, const CompareOptions&
   RankedMapping c;
   c.name = std::move(name);
   c.mapped = std::move(mapped);
-  c.judgement = c.mapped.judge(a.thresholds, a.overlapResolution);
+  c.judgement = c.mapped.judge(a.thresholds, a.overlapResolution, 0, a.textureSize);
   c.key = rankKey(c.summary(), a.by);
   c.record = judgementJson(c.mapped, c.judgement);
   c.record["name"] = c.name;

@@ -21,6 +21,7 @@ struct CompareOptions {
   int top = 8;                      // candidates on the contact sheet
   int tileSize = 256;               // pixels across each picture of the sheet
   int overlapResolution = 512;      // pixels across the layout raster that measures overlap
+  analysis::TextureSize textureSize;  // the texture texel density counts in
   int baselineMaxFaces = 200000;    // LSCM and ARAP only on meshes up to this size
   int threads = 0;                  // threads for the pictures (0: one per hardware thread)
   bool seamPlaceAuto = false;       // place the seam of cylinder and sphere

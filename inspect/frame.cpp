@@ -181,12 +181,12 @@ DrawnFrame drawFrame(const FrameOptions& frame, const MappedMesh& mapped, const 
 
   render::RenderOptions withAovs = options;
   withAovs.aovs = !frame.aovs.empty();
-  const render::Rendering rendering = render::render(mapped.mesh, mapped.texcoordSource(frame.perPixel), withAovs);
+  const render::Rendering rendering = render::render(mapped.mesh, mapped.texcoordSource(frame.perPixel, frame.baked), withAovs);
   DrawnFrame out;
   out.picture = rendering.colour;
   if (!frame.aovs.empty()) out.aovs = selectChannels(rendering.aovs, frame.aovs);
   out.record = {{"texcoords", mapped.source},
-                {"uv", frame.perPixel ? "per-pixel" : "per-vertex"},
+                {"uv", frame.perPixel ? "per-pixel" : frame.baked ? "baked" : "per-vertex"},
                 {"spp", options.samplesPerPixel},
                 {"width", options.camera.width},
                 {"height", options.camera.height},

@@ -53,6 +53,7 @@ struct FrameOptions {
   int samplesPerPixel = 1;                     // a regular n x n grid, box-filtered
   Vec3 background = Vec3::Zero();              // colour r,g,b in [0, 1]
   bool perPixel = false;                       // evaluate the mapping at every pixel (else per vertex)
+  bool baked = false;                          // per vertex: the camera projector's divided (u, v), not (s, t, q)
   std::vector<std::string> aovs;               // the float AOV channels (Rendering::aovs names); none: no AOVs
   std::vector<views::View> views;              // inspection views instead of the textured picture
   views::View layoutFill = views::View::Stretch;  // the measure that fills the layout view

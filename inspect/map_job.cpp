@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -45,6 +46,38 @@ void checkMapMemory(const std::string& input) {
                          (available ? " (" + formatBytes(*available) + " available)" : ""));
 }
 
+namespace {
+
+std::string numberText(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+}  // namespace
+
+double scaleToTexelDensity(MappedMesh& mapped, const analysis::Judgement& judgement, double density,
+                           const std::string& path) {
+  UVTK_CHECK(density > 0.0 && std::isfinite(density));
+  const analysis::TexelDensity& d = judgement.summary.density;
+  const auto refuse = [&](const std::string& why) {
+    throw InputError(path + ": error: --density " + numberText(density) + ": " + why);
+  };
+  if (judgement.statusCount(analysis::FaceStatus::Ok) == 0) refuse("no face is ok, so there is no texel density to scale");
+  if (!d.finite || !(d.statistics.mean > 0.0))
+    refuse("the mean texel density is not a finite positive number of texels per unit");
+  const double factor = density / d.statistics.mean;
+  std::vector<Vec2> scaled = mapped.uv.uv;
+  for (std::size_t corner = 0; corner < scaled.size(); ++corner) {
+    if (!mapped.uv.cornerInvalid.empty() && mapped.uv.cornerInvalid[corner] != kCornerValid) continue;
+    scaled[corner] *= factor;
+    if (!scaled[corner].allFinite()) refuse("the scaled UVs would not be finite (factor " + numberText(factor) + ")");
+  }
+  mapped.uv.uv = std::move(scaled);
+  mapped.uvScale *= factor;
+  return factor;
+}
+
 MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   const auto start = std::chrono::steady_clock::now();
   StageClock clock("uvtk map", showStages);
@@ -55,15 +88,23 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   const nlohmann::json inputSummary = inputJson(paths.input, input);
 
   clock.start("mapping", std::to_string(input.mesh.faceCount()) + " faces");
-  const MappedMesh mapped = mapByProjector(std::move(input.mesh), job.projector, job.seamPlaceAuto, job.threads);
+  MappedMesh mapped = mapByProjector(std::move(input.mesh), job.projector, job.seamPlaceAuto, job.threads);
   const double mapMs = clock.stop();
   const param::MappingSummary& s = mapped.projection->summary;
 
   clock.start("judging", std::to_string(mapped.mesh.faceCount()) + " faces");
-  analysis::Judgement judgement = mapped.judge(job.thresholds, job.overlapResolution, job.threads);
+  analysis::Judgement judgement = mapped.judge(job.thresholds, job.overlapResolution, job.threads, job.textureSize);
+  double densityFactor = 1.0;
+  if (job.density) {  // judged again: the summary and the verdict are those of the UVs written
+    densityFactor = scaleToTexelDensity(mapped, judgement, *job.density, paths.input);
+    judgement = mapped.judge(job.thresholds, job.overlapResolution, job.threads, job.textureSize);
+  }
   const double judgeMs = clock.stop();
   nlohmann::json summary;
-  if (!paths.json.empty()) summary = mapSummaryJson(mapped, judgement, inputSummary, paths.output);
+  if (!paths.json.empty()) {
+    summary = mapSummaryJson(mapped, judgement, inputSummary, paths.output);
+    if (job.density) summary["density_scale"] = {{"density", *job.density}, {"factor", densityFactor}};
+  }
   std::vector<analysis::FaceDistortion>().swap(judgement.faces);  // every face's measures: not needed while writing
 
   clock.start("writing", paths.output);

@@ -3,12 +3,14 @@
 // folder (docs/scale-out.md).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "analysis/judgement.h"
 #include "io/mesh_format.h"
 #include "io/mesh_writer.h"
+#include "inspect/mapped_mesh.h"
 #include "param/projector.h"
 
 namespace uvtk::inspect {
@@ -21,10 +23,21 @@ struct MapJob {
   io::MeshFormat batchFormat = io::MeshFormat::obj;  // what a batch writes, OUTDIR/STEM.obj by default
   analysis::Thresholds thresholds;
   int overlapResolution = 1024;
+  analysis::TextureSize textureSize;  // the texture texel density counts in
+  std::optional<double> density;      // --density D: the UVs scaled so that the mean texel density is D
   // Threads each mesh is read, mapped, judged and written with; 0: one per hardware thread for a
   // single mesh, one for each mesh of a batch (whose meshes run side by side).
   int threads = 0;
 };
+
+// Multiplies every valid corner's (u, v) by D / mean about (0, 0), mean the area-weighted texel
+// density of `judgement`'s ok faces (judged on `mapped`), so that the mean becomes `density` (a
+// density is linear in a uniform scale of the UVs); records the factor in mapped.uvScale and
+// returns it. Throws InputError naming `path`, changing nothing, when there is no ok face, when
+// the mean is not a finite positive number, or when a scaled UV would not be finite.
+// Precondition: density > 0 and finite.
+double scaleToTexelDensity(MappedMesh& mapped, const analysis::Judgement& judgement, double density,
+                           const std::string& path);
 
 // Memory before work: a file the machine cannot map is refused (InputError) before it is read,
 // and a large one announced.

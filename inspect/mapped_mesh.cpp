@@ -20,14 +20,16 @@ analysis::DistortionOptions MappedMesh::distortionOptions() const {
 }
 
 analysis::Judgement MappedMesh::judge(const analysis::Thresholds& thresholds, int overlapResolution,
-                                      int threads) const {
+                                      int threads, analysis::TextureSize textureSize) const {
   analysis::JudgementOptions options;
   options.distortion = distortionOptions();
   if (projection) options.poleVertices = projection->summary.poleVertexList;
   options.wrapsU = projector && exact && exact->wrapsS;  // a wrapping projector's seam is expected
+  options.uPeriod = uvScale;
   options.overlapResolution = overlapResolution;
   options.thresholds = thresholds;
   options.threads = threads;
+  options.textureSize = textureSize;
   return analysis::judge(mesh, uv, options);
 }
 
@@ -45,12 +47,12 @@ views::ViewInput MappedMesh::viewInput(const analysis::Judgement* judgement) con
 
 bool MappedMesh::cubeFaceIds() const { return projector && writesCubeFaceIds(*projector); }
 
-render::TexcoordSource MappedMesh::texcoordSource(bool perPixel) const {
+render::TexcoordSource MappedMesh::texcoordSource(bool perPixel, bool baked) const {
   render::TexcoordSource out;
   if (perPixel) {
     out.pixelMapping = exact;
   } else {
-    out.corners = corners();
+    out.corners = corners(baked);
   }
   out.cubeFaceIds = cubeFaceIds();
   return out;
@@ -60,10 +62,12 @@ bool writesCubeFaceIds(const param::ProjectorOptions& options) {
   return options.surface == param::SurfaceKind::Cube && options.cubeLayout == CubeLayout::Faces;
 }
 
-std::vector<Vec4> MappedMesh::corners() const {
+std::vector<Vec4> MappedMesh::corners(bool baked) const {
   std::vector<Vec4> out(uv.uv.size());
   for (std::size_t c = 0; c < out.size(); ++c)
     out[c] = Vec4(uv.uv[c].x(), uv.uv[c].y(), uv.w.empty() ? 0.0 : uv.w[c], q.empty() ? 1.0 : q[c]);
+  if (!baked && !cameraQ.empty())  // (s, t, q) = (u q, v q, q): the divide happens per pixel
+    for (std::size_t c = 0; c < out.size(); ++c) out[c] = Vec4(out[c][0] * cameraQ[c], out[c][1] * cameraQ[c], 0, cameraQ[c]);
   return out;
 }
 
@@ -133,6 +137,16 @@ MappedMesh mapByProjector(Mesh mesh, param::ProjectorOptions options, bool seamP
   out.projector = options;
   out.source = "projector";
   out.exact = projectorPixelMapping(options, out.projection->localFromObject, out.mesh, out.uv);
+  if (options.surface == param::SurfaceKind::Camera) {
+    const param::CameraTransform camera(options.camera);
+    out.cameraQ.assign(out.uv.uv.size(), 1.0);
+    for (std::size_t f = 0; f < out.mesh.faceCount(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t c = 3 * f + std::size_t(k);
+        if (out.uv.cornerInvalid[c] == kCornerValid)
+          out.cameraQ[c] = camera.homogeneous(out.mesh.positions[out.mesh.triangles[f][k]]).w();
+      }
+  }
   return out;
 }
 

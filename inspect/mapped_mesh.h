@@ -23,25 +23,31 @@ struct MappedMesh {
   Mesh mesh;                                         // with a projector and --seam cut, the cut mesh
   UvMap uv;                                          // (s, t) per corner, and r in uv.w where the source has it
   std::vector<double> q;                             // texgen's q per corner; empty means 1
+  // The camera projector's q = w_c per corner (1 where invalid), while uv holds the divided
+  // (u, v) = (s/q, t/q) the OBJ writes: the renderer interpolates (u q, v q, q) unless baked.
+  std::vector<double> cameraQ;
   std::string source;                                // "file", "projector" or "texgen"
   std::optional<param::ProjectorOptions> projector;  // set when a projector made the UVs
   std::optional<param::Projection> projection;       // its summary and frame (its mesh and uv moved out)
   std::optional<param::SeamPlacement> seamPlacement;
   std::optional<render::PixelMapping> exact;  // the mapping evaluated at every pixel (§9); none for a file
+  double uvScale = 1.0;  // what scaleToTexelDensity multiplied the UVs by (exact still evaluates the unscaled mapping)
 
-  // (s, t, r, q) per corner, as the renderer takes them.
-  std::vector<Vec4> corners() const;
+  // (s, t, r, q) per corner, as the renderer takes them; `baked`: the camera projector's divided
+  // (u, v) with q = 1, as a baked OBJ gives them (perspective-correct, but not projective).
+  std::vector<Vec4> corners(bool baked = false) const;
   // r holds cube face ids (writesCubeFaceIds), not a direction's third component.
   bool cubeFaceIds() const;
-  // What the renderer interpolates (per-vertex) or evaluates at every pixel (per-pixel).
-  render::TexcoordSource texcoordSource(bool perPixel) const;
+  // What the renderer interpolates (per-vertex, `baked` as corners() says) or evaluates at every
+  // pixel (per-pixel).
+  render::TexcoordSource texcoordSource(bool perPixel, bool baked = false) const;
   // Where a planar projector looks, so that faces turned away count as backfacing, not flipped.
   analysis::DistortionOptions distortionOptions() const;
   // The judgement of these UVs (analysis/judgement.h): per-face measures, counts, the summary
   // with the projector's own pole vertices (for other sources the fanned poles found in the UVs),
-  // and the verdict under `thresholds`.
+  // and the verdict under `thresholds`; texel densities counted in `textureSize` texels.
   analysis::Judgement judge(const analysis::Thresholds& thresholds = {}, int overlapResolution = 1024,
-                            int threads = 0) const;
+                            int threads = 0, analysis::TextureSize textureSize = {}) const;
   // What the views draw: this mesh and its UVs with their judgement (null for views without
   // measures; it must outlive the result).
   views::ViewInput viewInput(const analysis::Judgement* judgement) const;

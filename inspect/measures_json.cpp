@@ -9,6 +9,7 @@ nlohmann::json statisticsJson(const analysis::Statistics& s) {
   nlohmann::json edges = nlohmann::json::array();
   for (int i = 0; i <= int(h.weightFraction.size()); ++i) edges.push_back(h.edge(i));
   return {{"mean", s.mean},
+          {"p10", s.p10},
           {"p50", s.p50},
           {"p90", s.p90},
           {"p99", s.p99},
@@ -18,6 +19,18 @@ nlohmann::json statisticsJson(const analysis::Statistics& s) {
            {{"spacing", h.spacing == analysis::BinSpacing::Log2 ? "log2" : "linear"},
             {"edges", edges},
             {"weight_fraction", h.weightFraction}}}};
+}
+
+nlohmann::json texelDensityJson(const analysis::TexelDensity& d) {
+  nlohmann::json out = statisticsJson(d.statistics);
+  // Beyond a double's range: no number rather than a wrong one (docs/robustness.md).
+  if (!d.finite)
+    for (const char* key : {"mean", "p10", "p50", "p90", "p99", "min", "max", "histogram"}) out[key] = nullptr;
+  out["finite"] = d.finite;
+  out["spread"] = d.spread;
+  out["texture_size"] = {d.textureSize.width, d.textureSize.height};
+  out["unit"] = "texels per object unit";
+  return out;
 }
 
 namespace {
@@ -79,6 +92,7 @@ nlohmann::json judgementJson(const MappedMesh& mapped, const analysis::Judgement
           {"area", statisticsJson(s.areaDistortion)},
           {"stretch_l2_faces", statisticsJson(s.l2Stretches)},
           {"stretch_linf_faces", statisticsJson(s.linfStretches)},
+          {"texel_density", texelDensityJson(s.density)},
           {"status_counts", counts},
           {"face_flags",
            {{"invalid", j.invalidFaces},

@@ -9,12 +9,16 @@
 
 namespace uvtk::inspect {
 
-// mean, p50, p90, p99, min, max (area-weighted) and the histogram.
+// mean, p10, p50, p90, p99, min, max (area-weighted) and the histogram.
 nlohmann::json statisticsJson(const analysis::Statistics& statistics);
+
+// statisticsJson of the densities in texels per object unit (each null when !finite), with finite,
+// spread (p90 / p10), texture_size [W, H] and unit "texels per object unit".
+nlohmann::json texelDensityJson(const analysis::TexelDensity& density);
 
 // The judgement of a mapping: verdict, reasons ({code, severity, value, threshold, faces}), rule_values,
 // thresholds, vertices, faces, stretch_l2, stretch_linf, angle, area, stretch_l2_faces,
-// stretch_linf_faces, status_counts, face_flags, invalid_corners, seams, poles, uv_bounds,
+// stretch_linf_faces, texel_density, status_counts, face_flags, invalid_corners, seams, poles, uv_bounds,
 // overlap_fraction, overlap. Every number is read from `judgement`.
 nlohmann::json judgementJson(const MappedMesh& mapped, const analysis::Judgement& judgement);
 

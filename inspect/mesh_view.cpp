@@ -268,25 +268,37 @@ std::string meshViewHtml(const MappedMesh& mapped, const analysis::Judgement& ju
   std::vector<Layer> layers{{"checker", "checker (shaded)", "checker"}, {"uvgrid", "UV grid", "uvgrid"}};
   std::ostringstream legends;
   nlohmann::json blobs, tables = nlohmann::json::object(), measures = nlohmann::json::array();
-  for (const views::View view : {views::View::Stretch, views::View::Linf, views::View::Angle, views::View::Area}) {
+  const analysis::TexelDensity& density = judgement.summary.density;
+  std::vector<views::View> shownMeasures{views::View::Stretch, views::View::Linf, views::View::Angle, views::View::Area};
+  if (density.finite) shownMeasures.push_back(views::View::Density);  // else no face has a density to show
+  nlohmann::json fullValues = nlohmann::json::array();
+  for (const views::View view : shownMeasures) {
     const std::string name = views::toString(view);
     const views::ColourScale scale = views::measureScale(view, judgement.faces, judgement.summary);
+    // Densities span any range (texels per object unit): whole floats; the others as halves.
+    const bool full = view == views::View::Density;
     std::vector<std::uint8_t> codes(faceCount);
-    std::vector<std::uint16_t> values(faceCount, 0);
+    std::vector<std::uint16_t> halves(full ? 0 : faceCount, 0);
+    std::vector<float> floats(full ? faceCount : 0, 0.0f);
     for (std::size_t f = 0; f < faceCount; ++f) {
       const analysis::FaceDistortion& face = judgement.faces[shown.faceOf[f]];
-      if (analysis::isMeasured(face.status)) values[f] = toHalf(float(views::measureValue(view, face, totals)));
+      const double value = analysis::isMeasured(face.status) ? views::measureValue(view, face, totals, &density) : 0.0;
+      if (full)
+        floats[f] = std::isfinite(float(value)) ? float(value) : 0.0f;
+      else
+        halves[f] = toHalf(float(value));
       codes[f] = face.status == analysis::FaceStatus::Ok
-                     ? std::uint8_t(std::lround(scale.position(views::measureValue(view, face, totals)) * (kRampCodes - 1)))
+                     ? std::uint8_t(std::lround(scale.position(value) * (kRampCodes - 1)))
                      : std::uint8_t(kRampCodes + int(face.status));
     }
+    if (full) fullValues.push_back(name);
     nlohmann::json table = nlohmann::json::array();
     for (int c = 0; c < kRampCodes; ++c) table.push_back(rgb(views::paletteColour(scale.palette, double(c) / (kRampCodes - 1))));
     for (int s = 0; s < analysis::kFaceStatusCount; ++s)
       table.push_back(s == 0 ? std::array<int, 3>{0, 0, 0} : rgb(views::statusColour(analysis::FaceStatus(s))));
     tables[name] = table;
     blobs["codes_" + name] = blob(bytesOf(codes));
-    blobs["values_" + name] = blob(bytesOf(values));
+    blobs["values_" + name] = blob(full ? bytesOf(floats) : bytesOf(halves));
     measures.push_back(name);
     const views::FaceColouring colouring = views::colourByMeasure(view, judgement);
     layers.push_back({name, colouring.legend.title.front(), "faces"});
@@ -334,6 +346,7 @@ std::string meshViewHtml(const MappedMesh& mapped, const analysis::Judgement& ju
   data["blobs"] = blobs;
   data["tables"] = tables;
   data["measures"] = measures;
+  data["float_measures"] = fullValues;
   data["layers"] = nlohmann::json::array();
   for (const Layer& layer : layers) data["layers"].push_back({{"name", layer.name}, {"label", layer.label}, {"kind", layer.kind}});
   data["statuses"] = nlohmann::json::array();

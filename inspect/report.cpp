@@ -1,5 +1,7 @@
 #include "inspect/report.h"
 
+#include <algorithm>
+
 #include "core/error.h"
 #include "inspect/html_report.h"
 #include "inspect/mesh_view.h"
@@ -14,7 +16,8 @@ void ReportOptions::check() const {
   if (json.empty() && html.empty()) throw UsageError("expected --json OUT.json, --html OUT.html or both");
   if (overlapResolution < 1 || overlapResolution > 16384)
     throw UsageError("--overlap-resolution: expected 1 to 16384 pixels");
-  if (textureSize < 1 || textureSize > 16384) throw UsageError("--texture-size: expected 1 to 16384 texels");
+  if (textureSize.width < 1 || textureSize.height < 1 || textureSize.width > 16384 || textureSize.height > 16384)
+    throw UsageError("--texture-size: expected 1 to 16384 texels");
 }
 
 namespace {
@@ -26,6 +29,22 @@ std::vector<views::View> pageViews(const MappedMesh& mapped, const ReportOptions
   for (const views::View view : options.views)
     if (!views::needsExactMapping(view) || mapped.exact) out.push_back(view);
   return out;
+}
+
+// The texture uverror counts texels in: W x H, checks of an eighth of the smaller side as
+// render::checkerTexture's (whose texture is square).
+render::Texture uverrorTexture(analysis::TextureSize size) {
+  if (size.width == size.height) return render::checkerTexture(size.width, std::max(1, size.width / 8));
+  render::checkTextureSize(size.width, size.height);
+  const int c = std::max(1, std::min(size.width, size.height) / 8);
+  render::TexelLevel base;
+  base.width = size.width, base.height = size.height;
+  base.texels.resize(std::size_t(size.width) * std::size_t(size.height));
+  for (int j = 0; j < size.height; ++j)
+    for (int i = 0; i < size.width; ++i)
+      base.texels[std::size_t(j) * std::size_t(size.width) + std::size_t(i)] =
+          (i / c + j / c) % 2 == 0 ? render::Rgba(1.0f, 1.0f, 1.0f, 1.0f) : render::Rgba(0.0f, 0.0f, 0.0f, 1.0f);
+  return render::Texture(std::move(base), true);
 }
 
 }  // namespace
@@ -51,7 +70,7 @@ nlohmann::json writeReport(io::OutputSet& outputs, const ReportOptions& o, const
   nlohmann::json report = reportJson(mapped, judgement, o, input);
   std::vector<std::pair<std::string, Image>> pictures;
   if (!o.html.empty()) {
-    const render::Texture texture = render::checkerTexture(o.textureSize, std::max(1, o.textureSize / 8));
+    const render::Texture texture = uverrorTexture(o.textureSize);
     const views::ViewInput in = mapped.viewInput(&judgement);
     views::ViewOptions options;
     options.render.camera = o.camera.frame(mapped.mesh, o.width, o.height);

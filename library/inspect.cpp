@@ -161,9 +161,10 @@ std::string report(const Mapping& mapping, const ReportOptions& options) {
     const inspect::ReportOptions o = command.options();
     const inspect::MappedMesh& mapped = mapping.detail->mapped;
     const analysis::Judgement& judged = mapping.detail->judgement;
-    const analysis::Judgement judgement = o.overlapResolution == mapping.detail->overlapResolution
-                                              ? judged
-                                              : mapped.judge(judged.thresholds, o.overlapResolution);
+    const bool asJudged = o.overlapResolution == mapping.detail->overlapResolution &&
+                          o.textureSize == judged.summary.density.textureSize;
+    const analysis::Judgement judgement =
+        asJudged ? judged : mapped.judge(judged.thresholds, o.overlapResolution, 0, o.textureSize);
     const nlohmann::json& input = mapping.detail->input;
     const nlohmann::json record = o.json.empty() && o.html.empty() ? inspect::reportJson(mapped, judgement, o, input)
                                                                     : inspect::writeReport(o, mapped, judgement, input);

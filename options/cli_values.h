@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "analysis/distortion.h"
 #include "core/math.h"
 
 namespace uvtk::cli {
@@ -91,6 +92,10 @@ inline bool given(const CLI::App* app, const char* name) { return app->get_optio
 
 // An image size "WxH" with 1 <= W, H <= 16384; throws UsageError naming `option`.
 std::pair<int, int> parseImageSize(const std::string& text, const std::string& option);
+
+// A texture size "W,H", or "N" meaning N,N, with 1 <= W, H <= 16384 texels; throws UsageError
+// naming `option`.
+analysis::TextureSize parseTextureSize(const std::string& text, const std::string& option);
 
 // A 4x4 matrix from 16 numbers separated by spaces or commas, column-major like glLoadMatrix.
 Mat4 parseMatrix(const std::string& text, const std::string& option);

@@ -8,6 +8,7 @@ inspect::CompareOptions CompareArguments::resolve() const {
   inspect::CompareOptions o = options;
   o.check();
   o.camera = camera.resolve();
+  o.textureSize = parseTextureSize(textureSize, "--texture-size");
   return o;
 }
 
@@ -27,6 +28,8 @@ void addCompareOptions(CLI::App& app, CompareArguments& arguments) {
   app.add_option("--tile-size", a.tileSize, "Pixels across each picture of the sheet")->capture_default_str();
   addViewCameraOptions(app, arguments.camera);
   app.add_option("--overlap-resolution", a.overlapResolution, "Pixels across the layout raster that measures overlap")
+      ->capture_default_str();
+  app.add_option("--texture-size", arguments.textureSize, "Texels W,H (or N: N,N) of the texture texel density counts in")
       ->capture_default_str();
   app.add_flag("--seam-place-auto", a.seamPlaceAuto, "Place the seam of cylinder and sphere (as --seam-place auto)");
   app.add_flag("!--no-baselines", a.baselines, "Leave out CGAL's LSCM and ARAP");

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <string>
 
 #include "inspect/compare.h"
 #include "options/view_camera_cli.h"
@@ -12,6 +13,7 @@ namespace uvtk::cli {
 struct CompareArguments {
   inspect::CompareOptions options;  // all but the camera, bound to the options directly
   ViewCameraArguments camera;
+  std::string textureSize = "1024,1024";  // W,H or N
 
   void check() const { resolve(); }  // throws UsageError before any work
   inspect::CompareOptions resolve() const;

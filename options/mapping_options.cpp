@@ -11,7 +11,7 @@ namespace uvtk::cli {
 namespace {
 
 // Options a projector and texgen both read, with a meaning each (see the header).
-const char* const kSharedOptions[] = {"--eye", "--center", "--precision", "--help"};
+const char* const kSharedOptions[] = {"--eye", "--center", "--up", "--precision", "--help"};
 
 std::vector<std::string> optionNames(const CLI::App& app) {
   std::vector<std::string> names;
@@ -32,11 +32,14 @@ void addMappingOptions(CLI::App& app, MappingArguments& a, param::Fit defaultFit
       a.projectorOnlyOptions.push_back(name);
   app.get_option("--fit")->default_str(defaultFit == param::Fit::None ? "none" : "bbox");
   app.get_option("--eye")->description(
-      "reflection: the eye in object space (required); texgen: gluLookAt eye (default 0,0,0)");
+      "reflection: the eye in object space (required); camera: gluLookAt eye (required); texgen: gluLookAt eye "
+      "(default 0,0,0)");
   app.get_option("--center")
-      ->description("Explicit placement: origin x,y,z (replaces the fit); texgen: gluLookAt centre (default 0,0,-1)");
+      ->description(
+          "Explicit placement: origin x,y,z (replaces the fit); camera: gluLookAt centre (default 0,0,0); texgen: "
+          "gluLookAt centre (default 0,0,-1)");
+  app.get_option("--up")->description("camera: gluLookAt up; texgen: gluLookAt up (default 0,1,0 for both)");
   addTexgenOptions(app, a.texgen, "--texgen");
-  app.add_option("--up", a.up, "texgen: gluLookAt up (default 0,1,0)")->type_name("X,Y,Z");
   app.add_option("--model", a.model,
                  "texgen: model matrix, 16 numbers column-major (default identity); eye_linear planes are given under "
                  "the view alone");
@@ -45,7 +48,7 @@ void addMappingOptions(CLI::App& app, MappingArguments& a, param::Fit defaultFit
 ResolvedMapping resolveMapping(const MappingArguments& a) {
   ResolvedMapping out;
   if (!a.isTexgen()) {
-    for (const char* name : {"--up", "--model", "--texmatrix", "--no-normalize"})
+    for (const char* name : {"--model", "--texmatrix", "--no-normalize"})
       if (given(a.app, name)) throw UsageError(std::string(name) + " goes with --texgen or --s/--t/--r/--q only");
     out.projector = a.projector.resolve();
     out.seamPlaceAuto = a.projector.seamPlaceAuto();
@@ -57,7 +60,7 @@ ResolvedMapping resolveMapping(const MappingArguments& a) {
   const std::string &eye = a.projector.eye, &center = a.projector.center;
   const Mat4 view = lookAt(eye.empty() ? Vec3::Zero() : parseVec3(eye, "--eye"),
                            center.empty() ? Vec3(0, 0, -1) : parseVec3(center, "--center"),
-                           a.up.empty() ? Vec3::UnitY() : parseVec3(a.up, "--up"));
+                           a.projector.up.empty() ? Vec3::UnitY() : parseVec3(a.projector.up, "--up"));
   const Mat4 model = a.model.empty() ? Mat4::Identity() : parseMatrix(a.model, "--model");
   TexgenArguments texgen = a.texgen;
   texgen.arithmetic.precision = a.projector.options.arithmetic.precision;

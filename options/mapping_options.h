@@ -18,7 +18,7 @@ namespace uvtk::cli {
 struct MappingArguments {
   ProjectorArguments projector;
   TexgenArguments texgen;
-  std::string up, model;                          // texgen's view; eye and centre are the projector's strings
+  std::string model;  // texgen's model matrix; its view's eye, centre and up are the projector's strings
   std::vector<std::string> projectorOnlyOptions;  // the options texgen does not take
   CLI::App* app = nullptr;
 
@@ -32,12 +32,13 @@ struct ResolvedMapping {
   bool seamPlaceAuto = false;  // --seam-place auto: the caller, which has the mesh, places the seam
 };
 
-// Adds the projector options, the texgen options and the view options (--up, --model) to `app`.
+// Adds the projector options, the texgen options and the model matrix (--model) to `app`; texgen's
+// view takes the projector's --eye, --center and --up (the camera projector's).
 // `defaultFit` is the projector's fit when --fit is not given (`uvtk eval`: none, since points have
 // no mesh to fit to unless one is named).
 void addMappingOptions(CLI::App& app, MappingArguments& arguments, param::Fit defaultFit);
 
-// Throws UsageError for options of the other kind (a projector option with --texgen, --up with a
+// Throws UsageError for options of the other kind (a projector option with --texgen, --model with a
 // projector) and for everything the projector or texgen options reject.
 ResolvedMapping resolveMapping(const MappingArguments& arguments);
 

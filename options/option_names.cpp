@@ -14,7 +14,8 @@ const std::vector<std::pair<std::string, SurfaceKind>> kSurfaceNames = {{"plane"
                                                                         {"two-plane", SurfaceKind::TwoPlane},
                                                                         {"cylinder", SurfaceKind::Cylinder},
                                                                         {"sphere", SurfaceKind::Sphere},
-                                                                        {"cube", SurfaceKind::Cube}};
+                                                                        {"cube", SurfaceKind::Cube},
+                                                                        {"camera", SurfaceKind::Camera}};
 const std::vector<std::pair<std::string, RayKind>> kRayNames = {{"isn", RayKind::SurfaceNormal},
                                                                 {"centroid", RayKind::Centroid},
                                                                 {"normal", RayKind::ObjectNormal},
@@ -82,6 +83,14 @@ nlohmann::json projectorOptionsJson(const ProjectorOptions& o) {
                   {"ref_dir", {f->refDir.x(), f->refDir.y(), f->refDir.z()}},
                   {"scale", f->scale}};
   if (o.eye) j["eye"] = {o.eye->x(), o.eye->y(), o.eye->z()};
+  if (o.surface == SurfaceKind::Camera) {
+    const CameraProjector& c = o.camera;
+    j["camera"] = {{"eye", {c.eye.x(), c.eye.y(), c.eye.z()}},
+                   {"center", {c.center.x(), c.center.y(), c.center.z()}},
+                   {"up", {c.up.x(), c.up.y(), c.up.z()}},
+                   {"fovy", c.fovyDegrees},
+                   {"aspect", c.aspect}};
+  }
   if (o.ray == RayKind::Reflection) j["at_infinity"] = o.atInfinity;
   return j;
 }

@@ -84,7 +84,9 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEy
   addChoice<int>(app, "--axis", o.placement.axis, kAxisNames, "Object axis that becomes the local z of a bbox fit")
       ->default_str("z");
   app.add_option(cameraOwnsEye ? "--frame-center" : "--center", a.center,
-                 "Explicit placement: origin x,y,z (replaces the fit)")
+                 cameraOwnsEye ? "Explicit placement: origin x,y,z (replaces the fit)"
+                               : "Explicit placement: origin x,y,z (replaces the fit); camera: gluLookAt centre "
+                                 "(default 0,0,0)")
       ->type_name("X,Y,Z");
   app.add_option("--axis-dir", a.axisDir, "Explicit placement: local z direction")
       ->type_name("X,Y,Z")
@@ -112,7 +114,8 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEy
                         "cube: faces (face id as w), cross, strip, 3x2")
       ->default_str("faces");
   if (!cameraOwnsEye)
-    app.add_option("--eye", a.eye, "reflection: eye position in object space (required)")->type_name("X,Y,Z");
+    app.add_option("--eye", a.eye, "reflection: eye position in object space (required); camera: gluLookAt eye (required)")
+        ->type_name("X,Y,Z");
   app.add_flag("--at-infinity", o.atInfinity, "reflection: look up by the reflected direction only");
   addChoice<SeamMode>(app, "--seam", o.seam, kSeamNames, "Seam repair: none, shift (u in [0,1.5)), cut (u in [0,1])")
       ->default_str("shift");
@@ -129,6 +132,28 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEy
   app.add_option("--uv-rotate", o.uvTransform.rotateDegrees, "UV transform: degrees about (0.5,0.5)")->default_str("0");
   app.add_flag("--flip-u", o.uvTransform.flipU, "UV transform: u -> 1 - u (first)");
   app.add_flag("--flip-v", o.uvTransform.flipV, "UV transform: v -> 1 - v (first)");
+  // The camera projector's own, in their own names where the command's camera has the plain ones.
+  const auto freeName = [&](const char* name) {
+    return cameraOwnsEye || app.get_option_no_throw(std::string("--") + name) ? std::string("--proj-") + name
+                                                                               : std::string("--") + name;
+  };
+  param::CameraOptionNames& names = a.cameraNames;
+  if (cameraOwnsEye) {
+    names.eye = "--proj-eye";
+    names.center = "--proj-center";
+    app.add_option(names.eye, a.projEye, "camera: gluLookAt eye of the camera projector (required)")
+        ->type_name("X,Y,Z");
+    app.add_option(names.center, a.projCenter, "camera: gluLookAt centre of the camera projector")
+        ->type_name("X,Y,Z")
+        ->default_str("0,0,0");
+  }
+  names.up = freeName("up");
+  names.fovy = freeName("fovy");
+  names.aspect = freeName("aspect");
+  app.add_option(names.up, a.up, "camera: gluLookAt up")->type_name("X,Y,Z")->default_str("0,1,0");
+  app.add_option(names.fovy, o.camera.fovyDegrees, "camera: gluPerspective field of view in y, degrees in (0, 180)")
+      ->default_str("45");
+  app.add_option(names.aspect, o.camera.aspect, "camera: gluPerspective aspect, width / height")->default_str("1");
   addArithmeticOptions(app, o.arithmetic);
   addChoice<Convention>(
       app, "--convention", a.convention, kConventionNames,
@@ -141,6 +166,33 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEy
 
 ProjectorOptions ProjectorArguments::resolve() const {
   ProjectorOptions o = options;
+  if (o.surface == SurfaceKind::Camera) {  // no surface: none of the surface projectors' options apply
+    for (const char* name : {"--omap", "--fit", "--axis", "--axis-dir", "--ref-dir", "--scale", "--plane-u",
+                             "--plane-v", "--caps", "--cap-angle", "--sphere-preset", "--cube-convention",
+                             "--cube-layout", "--at-infinity", "--seam", "--pole", "--pole-eps", "--seam-place",
+                             "--convention", "--frame-center"})
+      if (app->get_option_no_throw(name) && given(app, name))
+        throw UsageError(std::string(name) + " goes with the surface projectors, not --projector camera");
+    const std::string& eyeText = cameraOwnsEye ? projEye : eye;
+    const std::string& centerText = cameraOwnsEye ? projCenter : center;
+    const param::CameraOptionNames& names = cameraNames;
+    if (eyeText.empty()) throw UsageError("--projector camera: expected " + names.eye + " x,y,z");
+    o.camera.eye = parseVec3(eyeText, names.eye.c_str());
+    o.camera.center = centerText.empty() ? Vec3::Zero() : parseVec3(centerText, names.center.c_str());
+    o.camera.up = up.empty() ? Vec3::UnitY() : parseVec3(up, names.up.c_str());
+    checkCameraProjector(o.camera, names);
+    if (!cameraOwnsEye) o.eye.reset();  // --eye was the camera's, not a reflection's
+    o.placement = PlacementOptions{};
+    o.placement.fit = Fit::None;
+    o.uvTransform.scale = parseVec2(uvScale, "--uv-scale");
+    o.uvTransform.offset = parseVec2(uvOffset, "--uv-offset");
+    if (!std::isfinite(o.uvTransform.rotateDegrees)) throw UsageError("--uv-rotate: expected a finite number");
+    return o;
+  }
+  std::vector<std::string> cameraOnly = {cameraNames.up, cameraNames.fovy, cameraNames.aspect};
+  if (cameraOwnsEye) cameraOnly.insert(cameraOnly.end(), {cameraNames.eye, cameraNames.center});
+  for (const std::string& name : cameraOnly)
+    if (given(app, name.c_str())) throw UsageError(name + " goes with --projector camera only");
   const char* centerOption = cameraOwnsEye ? "--frame-center" : "--center";
   if (convention != Convention::Uvtk) {
     std::vector<const char*> owned(std::begin(kConventionOwnedOptions), std::end(kConventionOwnedOptions));

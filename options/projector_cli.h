@@ -31,6 +31,11 @@ struct ProjectorArguments {
   Convention convention = Convention::Uvtk;
   CLI::App* app = nullptr;
   bool cameraOwnsEye = false;  // `uvtk render`: --eye and --center belong to the camera
+  // --projector camera: --eye and --center above are its gluLookAt eye and centre; where the
+  // command's own camera has a name (`uvtk render`: all five; `uvtk report`: --up), the camera
+  // projector's option is --proj-NAME instead. The names given are kept for the messages.
+  std::string up, projEye, projCenter;
+  param::CameraOptionNames cameraNames;
 
   // Checks combinations and parses vectors; throws UsageError. `--seam-place auto` is left to
   // the caller, which has the mesh (mapByProjector in mapped_mesh.h).

@@ -184,8 +184,12 @@ void addFrameSceneOptions(CLI::App& app, FrameArguments& a) {
       ->default_str("back");
   app.add_option("--background", a.background, "Background colour r,g,b in [0, 1]")->capture_default_str();
   addChoice<FrameArguments::Uv>(
-      app, "--uv", a.uv, {{"per-vertex", FrameArguments::Uv::PerVertex}, {"per-pixel", FrameArguments::Uv::PerPixel}},
-      "Interpolate per-vertex texture coordinates, or evaluate the mapping at every pixel")
+      app, "--uv", a.uv,
+      {{"per-vertex", FrameArguments::Uv::PerVertex},
+       {"per-pixel", FrameArguments::Uv::PerPixel},
+       {"baked", FrameArguments::Uv::Baked}},
+      "Interpolate per-vertex texture coordinates, or evaluate the mapping at every pixel; baked: the camera "
+      "projector's divided per-vertex (u, v), as an OBJ holds them, instead of its (s, t, q)")
       ->default_str("per-vertex");
 }
 
@@ -200,16 +204,20 @@ void addFrameOptions(CLI::App& app, FrameArguments& a) {
       ->type_name("uv,depth,face,lod,cubeface");
   app.add_option("--aov-output", a.aovOutput, "The AOV file (.exr or .tif; default: the output with .exr)");
   app.add_option("--view", a.view,
-                 "Draw inspection views instead: checker, uvgrid, stretch, linf, angle, area, seams, uverror, layout "
-                 "(several: a contact sheet)")
+                 "Draw inspection views instead: checker, uvgrid, stretch, linf, angle, area, seams, uverror, layout, "
+                 "density (several: a contact sheet)")
       ->type_name("NAME[,NAME...]");
   addChoice<views::View>(app, "--layout-fill", a.layoutFill,
                          {{"stretch", views::View::Stretch},
                           {"linf", views::View::Linf},
                           {"angle", views::View::Angle},
-                          {"area", views::View::Area}},
+                          {"area", views::View::Area},
+                          {"density", views::View::Density}},
                          "The measure that fills the triangles of the layout view")
       ->default_str("stretch");
+  app.add_option("--texture-size", a.textureSize,
+                 "Texels W,H (or N: N,N) of the texture the density view counts texel density in")
+      ->capture_default_str();
   app.add_option("--layout-size", a.layoutSize, "Pixels across the layout view's UV square")->capture_default_str();
   app.add_option("--checks", a.checks, "Checks across the unit square in the checker view (1 to 1024)")
       ->capture_default_str();
@@ -223,6 +231,7 @@ void FrameArguments::check(const std::string& output) {
   if (!aov.empty() && aovOutput == output) throw UsageError("--aov-output must differ from --output");
   if (!view.empty() && !aov.empty()) throw UsageError("--view and --aov exclude each other");
   views();
+  densityTexture();
   if (layoutSize < 16 || layoutSize > 16384) throw UsageError("--layout-size: expected 16 to 16384 pixels");
   if (checks < 1 || checks > 1024) throw UsageError("--checks: expected 1 to 1024 checks, got " + std::to_string(checks));
   io::checkImageType(output, io::PixelType::UInt8);
@@ -230,6 +239,8 @@ void FrameArguments::check(const std::string& output) {
 }
 
 std::pair<int, int> FrameArguments::imageSize() const { return parseImageSize(size, "--size"); }
+
+analysis::TextureSize FrameArguments::densityTexture() const { return parseTextureSize(textureSize, "--texture-size"); }
 
 std::vector<views::View> FrameArguments::views() const {
   return view.empty() ? std::vector<views::View>() : views::parseViewList(view);
@@ -256,6 +267,7 @@ inspect::FrameOptions FrameArguments::options() const {
   o.samplesPerPixel = samplesPerPixel;
   o.background = parseVec3(background, "--background");
   o.perPixel = uv == Uv::PerPixel;
+  o.baked = uv == Uv::Baked;
   if (!aov.empty()) o.aovs = aovChannels(aov);
   o.views = views();
   o.layoutFill = layoutFill;
@@ -317,7 +329,7 @@ RenderResult renderMeshFile(RenderJob a) {
 
   clock.start(a.frame.view.empty() ? "rendering" : "drawing", a.frame.size);
   analysis::Judgement judgement;
-  const auto measured = [&]() -> const analysis::Judgement& { return judgement = mapped.judge(); };
+  const auto measured = [&]() -> const analysis::Judgement& { return judgement = mapped.judge({}, 1024, 0, a.frame.densityTexture()); };
   io::OutputSet outputs;  // the picture, its AOVs and the record, published together
   const FrameOptions frame = a.frame.options();
   RenderResult result;

@@ -74,7 +74,7 @@ struct TextureArguments {
 void addTextureOptions(CLI::App& app, TextureArguments& arguments, const std::string& sourceOption);
 
 struct FrameArguments {
-  enum class Uv { PerVertex, PerPixel };
+  enum class Uv { PerVertex, PerPixel, Baked };
   std::string size = "512x512";
   render::Cull cull = render::Cull::Back;
   int threads = 0;
@@ -86,6 +86,7 @@ struct FrameArguments {
   views::View layoutFill = views::View::Stretch;
   int layoutSize = 512;
   int checks = 16;  // the checker view's checks across the unit square
+  std::string textureSize = "1024,1024";  // W,H or N: the texture the density view counts texels of
 
   // Checks the values for a frame written to `output` (and fills the default AOV file name);
   // throws UsageError. Nothing is written when a check fails.
@@ -94,6 +95,7 @@ struct FrameArguments {
   std::vector<views::View> views() const;
   bool showsMeasures() const;  // a view draws distortion measures
   bool needsExact() const;     // per-pixel UVs or the uverror view
+  analysis::TextureSize densityTexture() const;  // --texture-size
   // The values as the renderer takes them, once check() has passed.
   inspect::FrameOptions options() const;
 };

@@ -22,7 +22,8 @@ void addReportOptions(CLI::App& app, ReportArguments& a) {
   app.add_option("--views", a.views, "The views on the HTML page")->capture_default_str();
   app.add_option("--size", a.size, "Size of each view WxH")->capture_default_str();
   addViewCameraOptions(app, a.camera);
-  app.add_option("--texture-size", a.textureSize, "Texels across the texture whose texels uverror counts")
+  app.add_option("--texture-size", a.textureSize,
+                 "Texels W,H (or N: N,N) of the texture that texel density and uverror count in")
       ->capture_default_str();
   app.add_option("--overlap-resolution", a.overlapResolution, "Pixels across the layout raster that measures overlap")
       ->capture_default_str();
@@ -36,7 +37,7 @@ inspect::ReportOptions ReportArguments::options() const {
   o.json = json;
   o.html = html;
   o.overlapResolution = overlapResolution;
-  o.textureSize = textureSize;
+  o.textureSize = parseTextureSize(textureSize, "--texture-size");
   o.threads = threads;
   o.view3dFaces = view3dFaces;
   o.check();

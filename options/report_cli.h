@@ -15,7 +15,8 @@ struct ReportArguments {
   std::string views = "checker,uvgrid,stretch,linf,angle,area,seams,layout";
   std::string size = "384x384";
   ViewCameraArguments camera;
-  int overlapResolution = 1024, textureSize = 1024, threads = 0;
+  std::string textureSize = "1024,1024";  // W,H or N
+  int overlapResolution = 1024, threads = 0;
   std::size_t view3dFaces = 200000;
 
   void check() const { options(); }  // throws UsageError before any work

@@ -43,7 +43,8 @@ double positiveOr(double value, double fallback) { return value > 0.0 && std::is
 // The frame of the fit or of the explicit placement, before the turn about its axis.
 Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options) {
   Affine3 localFromObject = Affine3::Identity();
-  if (surface == SurfaceKind::TwoPlane) return localFromObject;
+  // two-plane works in object space; the camera's own view is its frame
+  if (surface == SurfaceKind::TwoPlane || surface == SurfaceKind::Camera) return localFromObject;
   if (options.frame) {
     const ExplicitFrame& f = *options.frame;
     if (!(f.axisDir.norm() > 0.0) || !f.axisDir.allFinite())
@@ -103,7 +104,9 @@ Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface,
       for (int a = 0; a < 3; ++a) scale[a] = 1.0 / positiveOr(0.5 * extent[a], largest);
       break;
     }
-    case SurfaceKind::TwoPlane: break;
+    case SurfaceKind::TwoPlane:
+    case SurfaceKind::Camera:
+      break;
   }
 
   // Back to object units: local = s (rotation p - w), with s = 2^-exponent scale (Center keeps
@@ -157,7 +160,7 @@ UnitBox toUnitBox(const std::vector<Vec3>& positions) {
 
 Affine3 fitPlacement(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options) {
   const Affine3 frame = frameBeforeTurn(positions, surface, options);
-  if (options.turnDegrees == 0.0 || surface == SurfaceKind::TwoPlane) return frame;
+  if (options.turnDegrees == 0.0 || surface == SurfaceKind::TwoPlane || surface == SurfaceKind::Camera) return frame;
   if (!std::isfinite(options.turnDegrees)) throw UsageError("--seam-place: expected a finite angle in degrees");
   // Turning the frame by +a puts the point at old azimuth a on the new local +x axis. Quarter
   // turns are exact: a seam moved to -y (Blender's) must not leave 6e-17 of x in local y.

@@ -10,7 +10,9 @@
 
 namespace uvtk::param {
 
-enum class SurfaceKind { Plane, TwoPlane, Cylinder, Sphere, Cube };
+// Camera is no intermediate surface: the perspective projection of param/camera_projector.h,
+// which bypasses placement, O-mapping, seams and poles.
+enum class SurfaceKind { Plane, TwoPlane, Cylinder, Sphere, Cube, Camera };
 
 enum class Fit {
   None,  // local = object coordinates

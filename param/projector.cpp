@@ -198,6 +198,34 @@ void checkOptions(const ProjectorOptions& o) {
   if (!(o.poleEpsilon >= 0.0 && o.poleEpsilon < 1.0)) throw UsageError("--pole-eps: expected a number in [0, 1)");
   if (!(o.capAngleDegrees >= 0.0 && o.capAngleDegrees <= 90.0))
     throw UsageError("--cap-angle: expected degrees in [0, 90]");
+  if (o.surface == SurfaceKind::Camera) checkCameraProjector(o.camera);
+}
+
+// The camera projector at every corner (no placement, seam or pole: the one formula per point).
+Evaluated evaluateCamera(const Mesh& mesh, const CameraProjector& camera, int threads) {
+  const CameraTransform transform(camera);
+  const std::size_t faceCount = mesh.triangles.size();
+  Evaluated result;
+  CornerField& c = result.corners;
+  c.resize(faceCount);
+  result.evaluateAt = [transform](const Vec3& p, const Vec3&) { return cameraVertexUv(transform, p); };
+  const int chunks = int((faceCount + kSamplesPerReport - 1) / kSamplesPerReport);
+  parallelFor(chunks, threads, [&](int chunk) {
+    const std::size_t begin = std::size_t(chunk) * kSamplesPerReport;
+    for (std::size_t f = begin; f < std::min(faceCount, begin + kSamplesPerReport); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t corner = 3 * f + std::size_t(k);
+        const VertexUv s = cameraVertexUv(transform, mesh.positions[mesh.triangles[f][k]]);
+        if (s.state == CornerState::Invalid) {
+          c.invalidate(corner, s.reason);
+          continue;
+        }
+        c.uv[corner] = s.uv;
+        c.state[corner] = CornerState::Ok;
+        c.reason[corner] = kCornerValid;
+      }
+  });
+  return result;
 }
 
 // Calls f with a value of the scalar type the precision names (0.0f or 0.0).
@@ -290,6 +318,8 @@ std::optional<Eigen::AlignedBox3d> sensibleBox(const std::vector<Vec3>& position
       break;
     case SurfaceKind::TwoPlane:  // object space: no unit shape
       break;
+    case SurfaceKind::Camera:  // no surface to hit: nothing is out of range
+      return std::nullopt;
   }
   if (box.isEmpty() || !box.sizes().allFinite() || !(box.sizes().maxCoeff() > 0.0)) return std::nullopt;
   return box;
@@ -310,15 +340,51 @@ void mapVertices(const ProjectorOptions& o, const Affine3& localFromObject, cons
                  const std::vector<Vec3>& normals, std::vector<VertexUv>& out, int threads,
                  const std::optional<Eigen::AlignedBox3d>& sensible) {
   checkOptions(o);
+  if (o.surface == SurfaceKind::Camera) {
+    const CameraTransform camera(o.camera);
+    resizeOnHugePages(out, positions.size());
+    parallelFor(threadCount(threads), threads, [&](int chunk) {
+      const std::size_t n = positions.size(), chunks = std::size_t(threadCount(threads));
+      for (std::size_t i = n * std::size_t(chunk) / chunks; i < n * (std::size_t(chunk) + 1) / chunks; ++i)
+        out[i] = cameraVertexUv(camera, positions[i]);
+    });
+    return;
+  }
   withPrecision(o.arithmetic.precision, [&](auto zero) {
     mapVerticesThroughKernel<decltype(zero)>(o, localFromObject, positions, normals, out, threads, sensible);
   });
+}
+
+VertexUv cameraVertexUv(const CameraTransform& camera, const Vec3& position) {
+  VertexUv out;
+  const Vec4 h = camera.homogeneous(position);
+  if (!h.allFinite()) {
+    out.reason = kCornerNotFinite;
+    return out;
+  }
+  if (!(h.w() > 0.0)) {
+    out.reason = kCornerBehind;
+    return out;
+  }
+  const Vec2 uv(h.x() / h.w(), h.y() / h.w());
+  if (!uv.allFinite()) {  // a q so small that the divide overflows
+    out.reason = kCornerNotFinite;
+    return out;
+  }
+  out.uv = uv;
+  out.state = CornerState::Ok;
+  out.reason = kCornerValid;
+  return out;
 }
 
 PointMapping::PointMapping(const ProjectorOptions& o, const Affine3& localFromObject,
                            const std::optional<Eigen::AlignedBox3d>& sensible)
     : uvTransform_(o.uvTransform) {
   checkOptions(o);
+  if (o.surface == SurfaceKind::Camera) {
+    evaluate_ = [camera = CameraTransform(o.camera)](const Vec3& p, const Vec3&) { return cameraVertexUv(camera, p); };
+    return;
+  }
   withPrecision(o.arithmetic.precision, [&](auto zero) {
     using T = decltype(zero);
     const LocalFrameT<T> frame(localFromObject);
@@ -393,9 +459,11 @@ Projection project(Mesh mesh, const ProjectorOptions& o, int threads) {
   Projection out;
   const auto start = std::chrono::steady_clock::now();
   out.localFromObject = fitPlacement(mesh.positions, o.surface, o.placement);
-  Evaluated evaluated = withPrecision(o.arithmetic.precision, [&](auto zero) {
-    return evaluateMesh<decltype(zero)>(mesh, out.localFromObject, o, threads);
-  });
+  Evaluated evaluated = o.surface == SurfaceKind::Camera
+                            ? evaluateCamera(mesh, o.camera, threads)
+                            : withPrecision(o.arithmetic.precision, [&](auto zero) {
+                                return evaluateMesh<decltype(zero)>(mesh, out.localFromObject, o, threads);
+                              });
   CornerField& corners = evaluated.corners;
   out.milliseconds.map = millisecondsSince(start);
   const auto seamStart = std::chrono::steady_clock::now();

@@ -11,6 +11,7 @@
 #include "core/arithmetic.h"
 #include "core/mesh.h"
 #include "core/uv_map.h"
+#include "param/camera_projector.h"
 #include "param/formulas.h"
 #include "param/placement.h"
 
@@ -56,6 +57,7 @@ struct ProjectorOptions {
   // reflection: the eye in object space (required), and lookup by direction only
   std::optional<Vec3> eye;
   bool atInfinity = false;
+  CameraProjector camera;  // SurfaceKind::Camera: the view projected from (not the reflection eye above)
   SeamMode seam = SeamMode::Shift;
   PoleMode pole = PoleMode::Fan;
   double poleEpsilon = 1e-6;  // a pole: hypot(x, y) <= eps |q|
@@ -114,6 +116,12 @@ struct Projection {
 // pass it in.
 std::optional<Eigen::AlignedBox3d> sensibleBox(const std::vector<Vec3>& positions, const ProjectorOptions& options,
                                                const Affine3& localFromObject);
+
+// The camera projector's (u, v) = (s/q, t/q) at an object-space point (CameraTransform), in
+// double whatever the precision: invalid with kCornerBehind where q <= 0 (at or behind the eye
+// plane), kCornerNotFinite where a value is not finite. u, v outside [0, 1] (outside the view's
+// sides) stay as they are, as Blender's Project from View leaves them.
+VertexUv cameraVertexUv(const CameraTransform& camera, const Vec3& position);
 
 // The two-stage mapping of single vertices in object space: placement, O-mapping, surface,
 // S-mapping, no seam or pole repair and no UV transform. `normals` is read only by the normal

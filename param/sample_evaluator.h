@@ -63,6 +63,9 @@ SurfaceT<T> makeSurface(const ProjectorOptions& o) {
       return SphereSurfaceT<T>{o.spherePreset};
     case SurfaceKind::Cube:
       return CubeSurfaceT<T>{o.cubeConvention, o.cubeLayout};
+    case SurfaceKind::Camera:  // no surface: project(), mapVertices and PointMapping go round this
+      UVTK_CHECK(false);
+      break;
   }
   return PlaneSurfaceT<T>{};
 }

@@ -70,6 +70,7 @@ std::optional<SimdVariant> simdVariantOf(const ProjectorOptions& o) {
     case SurfaceKind::TwoPlane:
       return foot ? SimdVariant::TwoPlaneFoot : SimdVariant::TwoPlaneCentral;
     case SurfaceKind::Cube:
+    case SurfaceKind::Camera:
       break;
   }
   return std::nullopt;

@@ -22,6 +22,9 @@ Vec3 toVec3(const Vector3& v) { return {v[0], v[1], v[2]}; }
 const char* missReason(const param::ProjectorOptions& o, CornerInvalid reason) {
   using param::RayKind;
   static_assert(param::kSensibleRange == 2.0, "the out-of-range text below names the factor");
+  if (o.surface == SurfaceKind::Camera)
+    return reason == kCornerBehind ? "the point is at or behind the camera's eye plane (q <= 0)"
+                                   : "the result is not finite";
   switch (reason) {
     case kCornerBehind:
       return o.surface == SurfaceKind::Cube ? "the ray meets the cube face's plane only behind the point"
@@ -48,6 +51,8 @@ const char* missReason(const param::ProjectorOptions& o, CornerInvalid reason) {
       return "the ray misses the sphere";
     case SurfaceKind::Cube:
       return "the ray misses the cube, or is parallel to its face's plane";
+    case SurfaceKind::Camera:
+      break;
   }
   return "the ray misses the surface";
 }
@@ -82,6 +87,7 @@ PointEvaluator::PointEvaluator(const cli::ResolvedMapping& mapping, const Affine
     return;
   }
   projector_ = mapping.projector;
+  if (projector_->surface == SurfaceKind::Camera) camera_.emplace(projector_->camera);
   param::ProjectorOptions raw = *projector_;
   raw.uvTransform = param::UvTransform{};
   raw.cubeLayout = CubeLayout::Faces;
@@ -113,6 +119,7 @@ Result PointEvaluator::projectorAt(const Vec3& p, const Vec3& n, Result out) con
   if (raw.state == CornerState::Invalid) return invalid(out, missReason(o, raw.reason));
   Vec2 uv = raw.uv;
   out.status = Status::Ok;
+  if (camera_) out.q = camera_->homogeneous(p).w();  // (u, v) are s/q, t/q: q is w_c, the divisor
   if (raw.state == CornerState::Pole) {
     out.status = Status::Pole;
     out.reason = "on the axis: u is undefined there (written as 0), v is exact";

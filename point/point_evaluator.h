@@ -32,6 +32,7 @@ class PointEvaluator {
   std::optional<param::ProjectorOptions> projector_;
   std::optional<param::PointMapping> raw_;  // without the UV transform, cube faces unlaid: seams are visible
   std::optional<param::CylinderCaps> caps_;  // with --caps on the cylinder
+  std::optional<param::CameraTransform> camera_;  // --projector camera: its q
   std::optional<texgen::TexgenOptions> texgen_;
   Vec2 period_ = Vec2::Zero();
   std::string description_;

@@ -486,7 +486,8 @@ as the same double):
   --format csv   header x,y,z[,nx,ny,nz][,ex,ey,ez],u,v,w,q,status,reason; reason quoted
   --format json  {"p": [...], "n": [...], "eye": [...], "u", "v", "w", "q", "status", "reason"}
   u, v: the projector's (u, v) or texgen's (s, t); w: the cube face id 0..5 (+X -X +Y -Y +Z -Z)
-  with --cube-layout faces, texgen's r, else 0; q: texgen's q (not divided out), else 1.
+  with --cube-layout faces, texgen's r, else 0; q: texgen's q (not divided out), the camera
+  projector's w_c (its u, v are already s/q, t/q), else 1.
   nx,ny,nz appear when normals were given, ex,ey,ez when rows brought eyes.
 Status: ok; pole (on a wrapping surface's axis: v exact, u undefined and written 0; texgen: the
 sphere map's singular point, s = t = 1/2); on-seam (u = 0 and u = 1 are the same point, or a cube

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <deque>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -245,8 +246,10 @@ class SceneRunner {
       case Stage::Kind::Report: {
         const SceneOutput& o = scene_.outputs[stage.index];
         const MappedMesh& mapped = work->mapped.at(*o.mapping);
-        const analysis::Judgement& judgement = work->judgements.at({*o.mapping, o.report.overlapResolution});
-        const json report = writeReport(outputs, o.report.options(), mapped, judgement, work->inputSummary);
+        const ReportOptions options = o.report.options();
+        const analysis::Judgement& judgement = judgementFor(work->judgements.at({*o.mapping, o.report.overlapResolution}),
+                                                            mapped, o.report.overlapResolution, options.textureSize);
+        const json report = writeReport(outputs, options, mapped, judgement, work->inputSummary);
         outputs_[stage.index] = {{"mapping", scene_.mappings[*o.mapping].name},
                                  {"verdict", report["verdict"]},
                                  {"first_reason", judgement.firstReason()},
@@ -314,6 +317,15 @@ class SceneRunner {
     }
   }
 
+  // The planned judgement, or where the output counts texel density in another texture size than
+  // the plan's 1024 x 1024, a judgement of its own (kept until the run ends).
+  const analysis::Judgement& judgementFor(const analysis::Judgement& planned, const MappedMesh& mapped,
+                                          int overlapResolution, const analysis::TextureSize& textureSize) {
+    if (planned.summary.density.textureSize == textureSize) return planned;
+    std::lock_guard<std::mutex> lock(ownJudgementsMutex_);
+    return ownJudgements_.emplace_back(mapped.judge(scene_.thresholds, overlapResolution, 0, textureSize));
+  }
+
   bool hasGallery() const {
     return std::any_of(scene_.outputs.begin(), scene_.outputs.end(),
                        [](const SceneOutput& o) { return o.kind == SceneOutput::Kind::Gallery; });
@@ -356,8 +368,12 @@ class SceneRunner {
     const render::Camera camera = o.camera ? scene_.cameras[*o.camera].arguments.make(mapped.mesh, model, width, height)
                                            : CameraArguments{}.make(mapped.mesh, model, width, height);
     const std::size_t texture = o.texture.value_or(scene_.textures.size());
+    const analysis::Judgement* judged = nullptr;  // on the first call only
     const auto judgement = [&]() -> const analysis::Judgement& {
-      return work.judgements.at({*o.mapping, kViewsOverlapResolution});
+      if (!judged)
+        judged = &judgementFor(work.judgements.at({*o.mapping, kViewsOverlapResolution}), mapped,
+                               kViewsOverlapResolution, o.frame.densityTexture());
+      return *judged;
     };
     const FrameOptions frame = o.frame.options();
     json record = writeFrame(outputs, frame, o.path, o.frame.aovOutput, mapped,
@@ -386,7 +402,9 @@ class SceneRunner {
   const std::vector<Stage>& plan_;
   json records_;
   std::vector<json> outputs_;  // per output, written by the thread of its mesh
-  std::vector<std::string> views3d_;  // per report output, its mapping's 3D view for the gallery (if any)
+  std::vector<std::string> views3d_;
+  std::deque<analysis::Judgement> ownJudgements_;  // judgementFor's, in a deque: references stay valid
+  std::mutex ownJudgementsMutex_;  // per report output, its mapping's 3D view for the gallery (if any)
   std::map<std::size_t, BoundTexture> textures_;
   json failures_ = json::array();
   int status_ = 0;

@@ -1,4 +1,4 @@
-// stretch, linf, angle, area: each visible face in its measure's colour times a head-light shade.
+// stretch, linf, angle, area, density: each visible face in its measure's colour times a head-light shade.
 #include "core/error.h"
 #include "views/draw.h"
 #include "views/legend.h"

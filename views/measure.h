@@ -11,7 +11,7 @@
 
 namespace uvtk::views {
 
-// Stretch, Linf, Angle and Area are measures; the other views are not.
+// Stretch, Linf, Angle, Area and Density are measures; the other views are not.
 bool isMeasure(View view);
 
 // The value a measure shows for a face with a Jacobian (analysis::isMeasured):
@@ -19,14 +19,21 @@ bool isMeasure(View view);
 //   linf     linfStretch, normalised likewise
 //   angle    angleDistortion, s1 / |s2|
 //   area     areaDistortion, log2 r
-// `totals`: okAreaTotals of the mesh's faces. Precondition: isMeasure(measure).
-double measureValue(View measure, const analysis::FaceDistortion& face, const analysis::AreaTotals& totals);
+//   density  texel density sqrt(Auv W H / A3) in texels per object unit (analysis::texelDensity),
+//            times 2^-density->exponent when !density->finite, so that it stays finite
+// `totals`: okAreaTotals of the mesh's faces; `density`: the summary's, required by Density.
+// Precondition: isMeasure(measure).
+double measureValue(View measure, const analysis::FaceDistortion& face, const analysis::AreaTotals& totals,
+                    const analysis::TexelDensity* density = nullptr);
 
 // The colour scale of a measure:
 //   stretch, linf, angle: sequential from 1 (isometric, conformal) to top = the measure's p99 over
 //                         the ok faces (the summary's statistics), at least 1.0001;
 //   area:                 diverging from -R to +R, R = the p99 of |log2 r| over the ok faces
-//                         (weighted by their 3D area), at least log2(1.0001).
+//                         (weighted by their 3D area), at least log2(1.0001);
+//   density:              sequential and logarithmic, centred on the median m of the ok faces'
+//                         densities: from min(m/2, p10) to max(2m, p90), so that a flat density is
+//                         the palette's middle and a factor of 2 either way is visible.
 // Values beyond the ends take the end colours.
 ColourScale measureScale(View measure, const std::vector<analysis::FaceDistortion>& faces,
                          const analysis::Summary& summary);

@@ -9,8 +9,8 @@ namespace uvtk::views {
 
 namespace {
 
-constexpr View kViews[] = {View::Checker, View::Uvgrid, View::Stretch, View::Linf, View::Angle,
-                           View::Area,    View::Seams,  View::UvError, View::Layout};
+constexpr View kViews[] = {View::Checker, View::Uvgrid, View::Stretch, View::Linf,   View::Angle,
+                           View::Area,    View::Seams,  View::UvError, View::Layout, View::Density};
 
 std::string validNames() {
   std::string names;
@@ -31,6 +31,7 @@ const char* toString(View view) {
     case View::Seams: return "seams";
     case View::UvError: return "uverror";
     case View::Layout: return "layout";
+    case View::Density: return "density";
   }
   return "checker";
 }
@@ -69,7 +70,8 @@ DrawnView drawViewAndLegend(View view, const ViewInput& in, const ViewOptions& o
     case View::Stretch:
     case View::Linf:
     case View::Angle:
-    case View::Area: return drawHeatmap(view, in, options);
+    case View::Area:
+    case View::Density: return drawHeatmap(view, in, options);
     case View::Seams: return drawSeams(in, options);
     case View::UvError: return drawUvError(in, options);
     case View::Layout: return drawLayout(in, options);

@@ -21,9 +21,9 @@
 
 namespace uvtk::views {
 
-enum class View { Checker, Uvgrid, Stretch, Linf, Angle, Area, Seams, UvError, Layout };
+enum class View { Checker, Uvgrid, Stretch, Linf, Angle, Area, Seams, UvError, Layout, Density };
 
-// "checker", "uvgrid", "stretch", "linf", "angle", "area", "seams", "uverror", "layout".
+// "checker", "uvgrid", "stretch", "linf", "angle", "area", "seams", "uverror", "layout", "density".
 const char* toString(View view);
 std::optional<View> parseView(std::string_view name);
 // "stretch,seams" -> {Stretch, Seams}, in the given order. Throws UsageError naming the bad entry
@@ -48,7 +48,7 @@ struct ViewOptions {
   // Camera, model, raster options, lighting, background; render.texture = the bound texture
   // (uverror measures in its texels; checker and uvgrid bind their own).
   render::RenderOptions render;
-  View layoutFill = View::Stretch;  // measure that fills triangles in the layout view: Stretch, Linf, Angle or Area
+  View layoutFill = View::Stretch;  // measure that fills triangles in the layout view: Stretch, Linf, Angle, Area or Density
   int layoutSize = 512;             // layout image is layoutSize x layoutSize (+ legend)
   int checks = 16;                  // checker view: checks across the unit square, 1..1024 (UsageError outside)
 };

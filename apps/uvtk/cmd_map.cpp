@@ -1,9 +1,11 @@
 // `uvtk map`: assign UVs to a mesh with a projector and write an OBJ with per-corner UVs; or do
 // so for every mesh of a folder or a list, several meshes at once, into an output folder
 // (docs/scale-out.md).
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "commands.h"
@@ -29,6 +31,8 @@ struct MapArguments {
   ProjectorArguments projector;
   VerdictArguments verdict;
   int overlapResolution = 1024;
+  std::string textureSize = "1024,1024";
+  std::optional<double> density;
 };
 
 void runMap(const MapArguments& a) {
@@ -44,6 +48,13 @@ void runMap(const MapArguments& a) {
   job.batchFormat = a.batchFormat;
   job.thresholds = a.verdict.thresholds();
   job.overlapResolution = a.overlapResolution;
+  job.textureSize = parseTextureSize(a.textureSize, "--texture-size");
+  if (a.density && !(*a.density > 0.0 && std::isfinite(*a.density))) {
+    char found[32];
+    std::snprintf(found, sizeof found, "%g", *a.density);
+    throw UsageError(std::string("--density: expected a positive number of texels per object unit, found ") + found);
+  }
+  job.density = a.density;
   job.threads = a.threads;
   std::error_code ignored;
   if (!a.list.empty() || std::filesystem::is_directory(a.input, ignored)) {
@@ -109,6 +120,11 @@ void addMapCommand(CLI::App& root) {
   map->add_option("--overlap-resolution", arguments->overlapResolution,
                   "Pixels across the layout raster that measures overlap for the verdict")
       ->capture_default_str();
+  map->add_option("--texture-size", arguments->textureSize,
+                  "Texels W,H (or N: N,N) of the texture that texel density counts in")
+      ->capture_default_str();
+  map->add_option("--density", arguments->density,
+                  "Scale the UVs about (0, 0) so that the mean texel density is this many texels per object unit");
   map->callback([arguments] { runMap(*arguments); });
 }
 

@@ -50,7 +50,8 @@ void runReport(const ReportCommandArguments& a) {
   const double mapMs = clock.stop();
 
   clock.start("measuring", std::to_string(mapped.mesh.faceCount()) + " faces");
-  const analysis::Judgement judgement = mapped.judge(a.verdict.thresholds(), a.report.overlapResolution);
+  const analysis::Judgement judgement = mapped.judge(a.verdict.thresholds(), a.report.overlapResolution, 0,
+                                                     a.report.options().textureSize);
   const double measureMs = clock.stop();
 
   clock.start("writing", a.report.html.empty() ? a.report.json : a.report.html);

@@ -65,8 +65,10 @@
       fragColour = vec4(colour, 1.0);
     }`;
 
-  function format(value) {
-    return Math.abs(value) >= 65504 ? (value < 0 ? '<= -65504' : '>= 65504') : Number(value.toPrecision(3)).toString();
+  // 3 significant digits; a half at its largest stands for any value beyond (mesh_view.cpp's toHalf).
+  function format(value, half) {
+    if (half && Math.abs(value) >= 65504) return (value < 0 ? '<= ' : '>= ') + '65504';
+    return Number(value.toPrecision(3)).toString();
   }
 
   async function start(root) {
@@ -173,7 +175,11 @@
     const codes = {};
     for (const name of data.measures) codes[name] = new Uint8Array(blobs['codes_' + name]);
     const values = {};
-    for (const name of data.measures) values[name] = new Uint16Array(blobs['values_' + name]);
+    for (const name of data.measures) {
+      const whole = data.float_measures.includes(name);  // else IEEE halves
+      values[name] = whole ? new Float32Array(blobs['values_' + name])
+                           : Float32Array.from(new Uint16Array(blobs['values_' + name]), fromHalf);
+    }
     const select = root.querySelector('select.layers');
     const legends = root.querySelectorAll('.legend');
     const showLayer = (name) => {
@@ -205,7 +211,7 @@
       if (!hit) return;
       const f = hit.faceIndex, s = status[f];
       let text = 'face ' + (faceOf ? faceOf[f] : f) + ': ' + data.statuses[s];
-      if (data.measured[s]) for (const name of data.measures) text += ' \u00b7 ' + name + ' ' + format(fromHalf(values[name][f]));
+      if (data.measured[s]) for (const name of data.measures) text += ' \u00b7 ' + name + ' ' + format(values[name][f], !data.float_measures.includes(name));
       if (hit.uv) text += ' \u00b7 uv (' + hit.uv.x.toPrecision(4) + ', ' + hit.uv.y.toPrecision(4) + ')';
       hover.textContent = text;
     };

@@ -20,7 +20,7 @@ struct ReportOptions {
   std::string size = "384x384";  // --size: each view's pixels, WxH
   Vector3 viewDir{1, -1.5, 0.8};  // --view-dir: the direction from the mesh to the views' camera
   Vector3 up{0, 0, 1};            // --up: the views' camera's up
-  int textureSize = 1024;        // --texture-size: texels across the texture whose texels uverror counts
+  int textureSize = 1024;        // --texture-size: texels N (N x N) of the texture texel density and uverror count in
   int overlapResolution = 1024;  // --overlap-resolution: the mapping is judged again when it differs from map()'s
   int threads = 0;               // --threads: 0, one per hardware thread
 

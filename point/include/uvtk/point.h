@@ -39,7 +39,7 @@ inline const char* statusName(Status status) {
 struct Result {
   double u = 0.0, v = 0.0;  // a projector's (u, v), or texgen's (s, t); 0 when invalid
   double w = 0.0;           // the cube face id (0..5: +X -X +Y -Y +Z -Z) in the faces layout, texgen's r; else 0
-  double q = 1.0;           // texgen's q, not divided out; else 1
+  double q = 1.0;           // texgen's q, not divided out; the camera projector's w_c (u, v divided by it); else 1
   Status status = Status::Invalid;
   const char* reason = "";  // why the status is not ok, one sentence (static storage); empty when ok
   // One turn about a wrapping surface's axis, in (u, v): (1, 0) unless a UV transform scales or turns
