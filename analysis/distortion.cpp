@@ -134,7 +134,9 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
     return std::array<Vec2, 3>{uv.uv[3 * f] * uvScale, uv.uv[3 * f + 1] * uvScale, uv.uv[3 * f + 2] * uvScale};
   };
   // Turned away from the projector: mirrored by design.
-  auto turnedAway = [&](const TriangleAreas& a) {
+  UVTK_CHECK(options.faceProjectionDirections.empty() || options.faceProjectionDirections.size() == faceCount);
+  auto turnedAway = [&](const TriangleAreas& a, std::size_t f) {
+    if (!options.faceProjectionDirections.empty()) return a.normal.dot(options.faceProjectionDirections[f]) < 0.0;
     return options.projectionDirection && a.normal.dot(*options.projectionDirection) < 0.0;
   };
 
@@ -171,9 +173,10 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
         face.status = FaceStatus::ZeroAreaUv;
       } else {
         face.status = FaceStatus::Ok;  // until the majority winding is known
-        votes[std::size_t(c)] += (a.signedAreaUv > 0.0) != turnedAway(a) ? a.area3d : -a.area3d;
+        const bool away = turnedAway(a, f);
+        votes[std::size_t(c)] += (a.signedAreaUv > 0.0) != away ? a.area3d : -a.area3d;
         orientation[f] = std::uint8_t((a.signedAreaUv > 0.0 ? kCounterClockwise : 0) |
-                                      (a.signedAreaUv < 0.0 ? kClockwise : 0) | (turnedAway(a) ? kTurnedAway : 0));
+                                      (a.signedAreaUv < 0.0 ? kClockwise : 0) | (away ? kTurnedAway : 0));
       }
     }
   });

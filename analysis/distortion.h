@@ -12,7 +12,8 @@
 //   zero_area_uv  Auv <= 1e-14 (longest UV edge)^2
 //   pole_face     the face has kFacePole
 //   backfacing    mirrored, and its 3D normal n satisfies n . direction < 0 for the caller's
-//                 projection direction: planar projections mirror the faces turned away by design
+//                 projection direction (or the face's own): planar and triplanar projections
+//                 mirror the faces turned away by design
 //   flipped       mirrored: its UV winding is opposite to the mesh's majority winding
 //   ok
 // The zero-area thresholds are relative, so they do not depend on the units; 1e-14 lies about
@@ -69,6 +70,9 @@ struct DistortionOptions {
   // The direction the projector looks along, in object space (for the plane projector the image
   // of local +z: localFromObject.inverse().linear().col(2)). Unset: no face is backfacing.
   std::optional<Vec3> projectionDirection;
+  // Per face, in place of projectionDirection when not empty: a projector whose direction changes
+  // from face to face (triplanar: the facing of each face's projection, param::triplanarFacing).
+  std::vector<Vec3> faceProjectionDirections;
 };
 
 // The factor every 3D length is measured in: 1 for a mesh whose extent lies within 2^-500 .. 2^500

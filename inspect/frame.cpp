@@ -71,6 +71,13 @@ DrawnFrame drawViews(const FrameOptions& frame, const MappedMesh& mapped, const 
       out.record["uverror_texels"] = {
           {"max", error.max}, {"mean", error.mean}, {"pixels", error.pixels}, {"invalid_pixels", error.invalidPixels}};
     }
+    if ((view == views::View::Weights || view == views::View::BlendZone) && !out.record.contains("blend_zone")) {
+      const views::BlendZone zone = views::blendZone(mapped.viewInput(measured), options);
+      out.record["blend_zone"] = {{"threshold", zone.threshold},
+                                  {"pixels", zone.pixels},
+                                  {"covered_pixels", zone.coveredPixels},
+                                  {"invalid_pixels", zone.invalidPixels}};
+    }
   }
   out.picture =
       tiles.size() == 1 ? tiles.front().second : views::contactSheet(tiles, std::min<int>(3, int(tiles.size())));
@@ -142,7 +149,8 @@ BoundTexture loadTexture(const std::string& source, render::Filter filter) {
 
 bool FrameOptions::showsMeasures() const {
   return std::any_of(views.begin(), views.end(), [](views::View v) {
-    return v != views::View::Checker && v != views::View::Uvgrid && v != views::View::UvError;
+    return v != views::View::Checker && v != views::View::Uvgrid && v != views::View::UvError &&
+           v != views::View::Weights && v != views::View::BlendZone;
   });
 }
 

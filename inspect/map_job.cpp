@@ -125,6 +125,14 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   }
   outputs.publish();
   printMappingNotes(paths.input, input.warnings, mapped);
+  if (job.projector.surface == param::SurfaceKind::Triplanar && !quiet()) {
+    char note[256];
+    std::snprintf(note, sizeof note,
+                  "uvtk map: %s holds one UV per corner, not a triplanar blend: each face has its dominant axis's "
+                  "projection (a box mapping: %zu faces x, %zu y, %zu z); uvtk render shows the blend",
+                  paths.output.c_str(), s.triplanarFaces[0], s.triplanarFaces[1], s.triplanarFaces[2]);
+    printProgressMessage(note);
+  }
   const analysis::Summary& measured = judgement.summary;
   char numbers[256];
   std::snprintf(numbers, sizeof numbers,

@@ -16,6 +16,14 @@ analysis::DistortionOptions MappedMesh::distortionOptions() const {
   analysis::DistortionOptions options;
   if (projector && projector->surface == param::SurfaceKind::Plane)
     options.projectionDirection = projection->localFromObject.inverse().linear().col(2);
+  if (projector && projector->surface == param::SurfaceKind::Triplanar) {
+    // A local direction d is the object-space normal L^T d (normals transform by the inverse transpose).
+    const Mat3 toObject = projection->localFromObject.linear().transpose();
+    std::array<Vec3, 3> facing;
+    for (int a = 0; a < 3; ++a) facing[std::size_t(a)] = toObject * param::triplanarFacing(projector->triplanar, a);
+    options.faceProjectionDirections.reserve(projection->triplanarAxis.size());
+    for (const std::uint8_t axis : projection->triplanarAxis) options.faceProjectionDirections.push_back(facing[axis]);
+  }
   return options;
 }
 
@@ -76,6 +84,16 @@ namespace {
 // The projector evaluated at every pixel (docs/conventions.md §9).
 render::PixelMapping projectorPixelMapping(const param::ProjectorOptions& options, const Affine3& localFromObject,
                                            const Mesh& mesh, const UvMap& uv) {
+  if (options.surface == param::SurfaceKind::Triplanar) {  // three lookups blended by the pixel's normal
+    render::PixelMapping blend;
+    blend.needsNormal = true;
+    blend.blendAt = [mapping = param::TriplanarMapping(options, localFromObject)](const Vec3& p, const Vec3& n,
+                                                                                 std::int32_t) {
+      const param::TriplanarSample s = mapping.at(p, n);
+      return render::TexcoordBlend{s.uv, s.weights};
+    };
+    return blend;
+  }
   // The range rule as project() applied it, so that per-pixel and per-vertex values agree on it.
   auto mapping = std::make_shared<param::PointMapping>(options, localFromObject,
                                                        param::sensibleBox(mesh.positions, options, localFromObject));
@@ -177,7 +195,7 @@ void addMappingOrigin(nlohmann::json& record, const MappedMesh& mapped) {
 
 nlohmann::json mapSummaryJson(const MappedMesh& mapped, const analysis::Judgement& judgement,
                               const nlohmann::json& input, const std::string& output) {
-  nlohmann::json j = mapped.projection ? summaryJson(mapped.projection->summary) : nlohmann::json::object();
+  nlohmann::json j = mapped.projection ? summaryJson(mapped.projection->summary, mapped.projector && mapped.projector->surface == param::SurfaceKind::Triplanar) : nlohmann::json::object();
   j["judgement"] = judgementJson(mapped, judgement);
   j["verdict"] = j["judgement"]["verdict"];
   j["reasons"] = j["judgement"]["reasons"];

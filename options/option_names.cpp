@@ -15,7 +15,10 @@ const std::vector<std::pair<std::string, SurfaceKind>> kSurfaceNames = {{"plane"
                                                                         {"cylinder", SurfaceKind::Cylinder},
                                                                         {"sphere", SurfaceKind::Sphere},
                                                                         {"cube", SurfaceKind::Cube},
-                                                                        {"camera", SurfaceKind::Camera}};
+                                                                        {"camera", SurfaceKind::Camera},
+                                                                        {"triplanar", SurfaceKind::Triplanar}};
+const std::vector<std::pair<std::string, TriplanarPreset>> kTriplanarPresetNames = {
+    {"unity", TriplanarPreset::Unity}, {"materialx", TriplanarPreset::MaterialX}, {"godot", TriplanarPreset::Godot}};
 const std::vector<std::pair<std::string, RayKind>> kRayNames = {{"isn", RayKind::SurfaceNormal},
                                                                 {"centroid", RayKind::Centroid},
                                                                 {"normal", RayKind::ObjectNormal},
@@ -91,6 +94,11 @@ nlohmann::json projectorOptionsJson(const ProjectorOptions& o) {
                    {"fovy", c.fovyDegrees},
                    {"aspect", c.aspect}};
   }
+  if (o.surface == SurfaceKind::Triplanar)
+    j["triplanar"] = {{"preset", nameOf(kTriplanarPresetNames, o.triplanar.preset)},
+                      {"tile", o.triplanar.tile},
+                      {"blend", o.triplanar.blend},
+                      {"exponent", triplanarExponent(o.triplanar)}};
   if (o.ray == RayKind::Reflection) j["at_infinity"] = o.atInfinity;
   return j;
 }

@@ -23,6 +23,7 @@ extern const std::vector<std::pair<std::string, param::CubeConvention>> kCubeCon
 extern const std::vector<std::pair<std::string, CubeLayout>> kCubeLayoutNames;
 extern const std::vector<std::pair<std::string, param::SeamMode>> kSeamNames;
 extern const std::vector<std::pair<std::string, param::PoleMode>> kPoleNames;
+extern const std::vector<std::pair<std::string, param::TriplanarPreset>> kTriplanarPresetNames;
 extern const std::vector<std::pair<std::string, Precision>> kPrecisionNames;
 extern const std::vector<std::pair<std::string, MathMode>> kMathNames;
 extern const std::vector<std::pair<std::string, texgen::TexgenMode>> kTexgenModeNames;

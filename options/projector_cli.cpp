@@ -132,6 +132,15 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEy
   app.add_option("--uv-rotate", o.uvTransform.rotateDegrees, "UV transform: degrees about (0.5,0.5)")->default_str("0");
   app.add_flag("--flip-u", o.uvTransform.flipU, "UV transform: u -> 1 - u (first)");
   app.add_flag("--flip-v", o.uvTransform.flipV, "UV transform: v -> 1 - v (first)");
+  app.add_option("--tile", o.triplanar.tile, "triplanar: UV units per unit of the projector's frame (T)")
+      ->default_str("1");
+  app.add_option("--blend", o.triplanar.blend,
+                 "triplanar: the weights' exponent B, w = |n|^B / sum (materialx: its blend b, exponent 1/max(b, 0.03))")
+      ->default_str("1");
+  addChoice<TriplanarPreset>(app, "--triplanar-preset", o.triplanar.preset, kTriplanarPresetNames,
+                             "triplanar: unity (Shader Graph's Triplanar node), materialx (triplanarprojection, "
+                             "upaxis Z), godot (BaseMaterial3D's triplanar)")
+      ->default_str("unity");
   // The camera projector's own, in their own names where the command's camera has the plain ones.
   const auto freeName = [&](const char* name) {
     return cameraOwnsEye || app.get_option_no_throw(std::string("--") + name) ? std::string("--proj-") + name
@@ -193,6 +202,17 @@ ProjectorOptions ProjectorArguments::resolve() const {
   if (cameraOwnsEye) cameraOnly.insert(cameraOnly.end(), {cameraNames.eye, cameraNames.center});
   for (const std::string& name : cameraOnly)
     if (given(app, name.c_str())) throw UsageError(name + " goes with --projector camera only");
+  const bool triplanar = o.surface == SurfaceKind::Triplanar;
+  for (const char* name : {"--tile", "--blend", "--triplanar-preset"})
+    if (!triplanar && given(app, name)) throw UsageError(std::string(name) + " goes with --projector triplanar only");
+  if (triplanar) {  // three planes and no surface: the O-mapping, seam, pole and surface options do not apply
+    for (const char* name : {"--omap", "--plane-u", "--plane-v", "--caps", "--cap-angle", "--sphere-preset",
+                             "--cube-convention", "--cube-layout", "--at-infinity", "--seam", "--pole", "--pole-eps",
+                             "--seam-place", "--convention"})
+      if (app->get_option_no_throw(name) && given(app, name))
+        throw UsageError(std::string(name) + " goes with the surface projectors, not --projector triplanar");
+    if (!given(app, "--fit")) o.placement.fit = Fit::None;  // object space, as the engines project
+  }
   const char* centerOption = cameraOwnsEye ? "--frame-center" : "--center";
   if (convention != Convention::Uvtk) {
     std::vector<const char*> owned(std::begin(kConventionOwnedOptions), std::end(kConventionOwnedOptions));

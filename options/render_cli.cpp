@@ -189,7 +189,8 @@ void addFrameSceneOptions(CLI::App& app, FrameArguments& a) {
        {"per-pixel", FrameArguments::Uv::PerPixel},
        {"baked", FrameArguments::Uv::Baked}},
       "Interpolate per-vertex texture coordinates, or evaluate the mapping at every pixel; baked: the camera "
-      "projector's divided per-vertex (u, v), as an OBJ holds them, instead of its (s, t, q)")
+      "projector's divided per-vertex (u, v), as an OBJ holds them, instead of its (s, t, q); --projector triplanar "
+      "defaults to per-pixel, its blend")
       ->default_str("per-vertex");
 }
 
@@ -205,7 +206,7 @@ void addFrameOptions(CLI::App& app, FrameArguments& a) {
   app.add_option("--aov-output", a.aovOutput, "The AOV file (.exr or .tif; default: the output with .exr)");
   app.add_option("--view", a.view,
                  "Draw inspection views instead: checker, uvgrid, stretch, linf, angle, area, seams, uverror, layout, "
-                 "density (several: a contact sheet)")
+                 "density, weights, blendzone (several: a contact sheet)")
       ->type_name("NAME[,NAME...]");
   addChoice<views::View>(app, "--layout-fill", a.layoutFill,
                          {{"stretch", views::View::Stretch},
@@ -331,6 +332,9 @@ RenderResult renderMeshFile(RenderJob a) {
   analysis::Judgement judgement;
   const auto measured = [&]() -> const analysis::Judgement& { return judgement = mapped.judge({}, 1024, 0, a.frame.densityTexture()); };
   io::OutputSet outputs;  // the picture, its AOVs and the record, published together
+  // A triplanar blend exists per pixel only: drawn so unless --uv asks for the box mapping an OBJ holds.
+  if (projectorGiven && a.projector.options.surface == param::SurfaceKind::Triplanar && !given(a.projector.app, "--uv"))
+    a.frame.uv = FrameArguments::Uv::PerPixel;
   const FrameOptions frame = a.frame.options();
   RenderResult result;
   nlohmann::json& j = result.record;

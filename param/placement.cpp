@@ -104,6 +104,10 @@ Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface,
       for (int a = 0; a < 3; ++a) scale[a] = 1.0 / positiveOr(0.5 * extent[a], largest);
       break;
     }
+    case SurfaceKind::Triplanar:
+      origin = lo;
+      scale = Vec3::Constant(1.0 / positiveOr(extent.maxCoeff(), 1.0));
+      break;
     case SurfaceKind::TwoPlane:
     case SurfaceKind::Camera:
       break;

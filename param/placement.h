@@ -11,8 +11,9 @@
 namespace uvtk::param {
 
 // Camera is no intermediate surface: the perspective projection of param/camera_projector.h,
-// which bypasses placement, O-mapping, seams and poles.
-enum class SurfaceKind { Plane, TwoPlane, Cylinder, Sphere, Cube, Camera };
+// which bypasses placement, O-mapping, seams and poles. Triplanar neither: three planar
+// projections blended by the normal (param/triplanar.h), placed as the others are.
+enum class SurfaceKind { Plane, TwoPlane, Cylinder, Sphere, Cube, Camera, Triplanar };
 
 enum class Fit {
   None,  // local = object coordinates
@@ -46,7 +47,8 @@ struct PlacementOptions {
 // The frame for `surface` over `positions`. Fitted scales: plane, the box's x, y extent to
 // [0,1]^2; cylinder, radius 1 and height to [0,1]; sphere, radius 1; cube, the box to [-1,1]^3.
 // A zero extent takes another: plane x or y the larger of the two, z that one; cylinder height
-// the radius; cube a half extent the largest; and with nothing left (or a zero radius) the
+// the radius; cube a half extent the largest; triplanar the box's lowest corner to the origin
+// and its largest extent to 1, the same scale on every axis (texels stay square); and with nothing left (or a zero radius) the
 // UnitBox's unit, half the box's largest extent rounded up to a power of two (1 for a single
 // point). The fits are scale-invariant: the mesh times 2^n has the same frame after it (linear
 // times 2^-n, the same translation). Any finite positions give a finite frame with orthonormal

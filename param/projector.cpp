@@ -43,6 +43,8 @@ using PointEvaluator = std::function<VertexUv(const Vec3& position, const Vec3& 
 struct Evaluated {
   CornerField corners;
   PointEvaluator evaluateAt;
+  std::array<std::size_t, 3> triplanarFaces{};  // triplanar: faces written by the x, y, z projection
+  std::vector<std::uint8_t> triplanarAxis;      // and the projection of each face
 };
 
 // The cube: a face per triangle, then each corner projected onto it by its own probe.
@@ -199,6 +201,18 @@ void checkOptions(const ProjectorOptions& o) {
   if (!(o.capAngleDegrees >= 0.0 && o.capAngleDegrees <= 90.0))
     throw UsageError("--cap-angle: expected degrees in [0, 90]");
   if (o.surface == SurfaceKind::Camera) checkCameraProjector(o.camera);
+  if (o.surface == SurfaceKind::Triplanar) checkTriplanarOptions(o.triplanar);
+}
+
+// A corner from a per-point formula's value (the camera, triplanar): its UV, or invalid for the value's reason.
+void storeCorner(CornerField& c, std::size_t corner, const VertexUv& s) {
+  if (s.state == CornerState::Invalid) {
+    c.invalidate(corner, s.reason);
+    return;
+  }
+  c.uv[corner] = s.uv;
+  c.state[corner] = CornerState::Ok;
+  c.reason[corner] = kCornerValid;
 }
 
 // The camera projector at every corner (no placement, seam or pole: the one formula per point).
@@ -215,16 +229,53 @@ Evaluated evaluateCamera(const Mesh& mesh, const CameraProjector& camera, int th
     for (std::size_t f = begin; f < std::min(faceCount, begin + kSamplesPerReport); ++f)
       for (int k = 0; k < 3; ++k) {
         const std::size_t corner = 3 * f + std::size_t(k);
-        const VertexUv s = cameraVertexUv(transform, mesh.positions[mesh.triangles[f][k]]);
-        if (s.state == CornerState::Invalid) {
-          c.invalidate(corner, s.reason);
-          continue;
-        }
-        c.uv[corner] = s.uv;
-        c.state[corner] = CornerState::Ok;
-        c.reason[corner] = kCornerValid;
+        storeCorner(c, corner, cameraVertexUv(transform, mesh.positions[mesh.triangles[f][k]]));
       }
   });
+  return result;
+}
+
+// The direction of a triangle's normal, from edges scaled to a largest component of about 1 so
+// that the cross product neither overflows (a mesh at 1e200) nor underflows (at 1e-200).
+Vec3 faceDirection(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 e1 = b - a, e2 = c - a;
+  const double largest = std::max(e1.cwiseAbs().maxCoeff(), e2.cwiseAbs().maxCoeff());
+  if (!(largest > 0.0) || !std::isfinite(largest)) return e1.cross(e2);
+  const int exponent = std::ilogb(largest);
+  return Vec3(e1 * std::ldexp(1.0, -exponent)).cross(Vec3(e2 * std::ldexp(1.0, -exponent)));
+}
+
+// The triplanar projector at every corner: each face by the projection of its normal's dominant
+// axis in the projector's frame (the box mapping an OBJ can hold; the blend is per pixel).
+Evaluated evaluateTriplanar(const Mesh& mesh, const Affine3& localFromObject, const TriplanarOptions& options,
+                            int threads) {
+  const LocalFrameT<double> frame(localFromObject);
+  const std::size_t faceCount = mesh.triangles.size();
+  Evaluated result;
+  CornerField& c = result.corners;
+  c.resize(faceCount);
+  result.triplanarAxis.resize(faceCount);
+  result.evaluateAt = [frame, options](const Vec3& p, const Vec3& n) {
+    return triplanarVertexUv(options, dominantAxis(frame.normal(n)), frame.point(p));
+  };
+  const int chunks = int((faceCount + kSamplesPerReport - 1) / kSamplesPerReport);
+  std::vector<std::array<std::size_t, 3>> facesPerAxis(std::size_t(chunks), std::array<std::size_t, 3>{});
+  parallelFor(chunks, threads, [&](int chunk) {
+    const std::size_t begin = std::size_t(chunk) * kSamplesPerReport;
+    for (std::size_t f = begin; f < std::min(faceCount, begin + kSamplesPerReport); ++f) {
+      const Triangle& t = mesh.triangles[f];
+      const Vec3 normal = frame.normal(faceDirection(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]));
+      const int axis = dominantAxis(normal);
+      ++facesPerAxis[std::size_t(chunk)][std::size_t(axis)];
+      result.triplanarAxis[f] = std::uint8_t(axis);
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t corner = 3 * f + std::size_t(k);
+        storeCorner(c, corner, triplanarVertexUv(options, axis, frame.point(mesh.positions[t[k]])));
+      }
+    }
+  });
+  for (const auto& counts : facesPerAxis)
+    for (std::size_t a = 0; a < 3; ++a) result.triplanarFaces[a] += counts[a];
   return result;
 }
 
@@ -319,6 +370,7 @@ std::optional<Eigen::AlignedBox3d> sensibleBox(const std::vector<Vec3>& position
     case SurfaceKind::TwoPlane:  // object space: no unit shape
       break;
     case SurfaceKind::Camera:  // no surface to hit: nothing is out of range
+    case SurfaceKind::Triplanar:
       return std::nullopt;
   }
   if (box.isEmpty() || !box.sizes().allFinite() || !(box.sizes().maxCoeff() > 0.0)) return std::nullopt;
@@ -350,9 +402,24 @@ void mapVertices(const ProjectorOptions& o, const Affine3& localFromObject, cons
     });
     return;
   }
+  if (o.surface == SurfaceKind::Triplanar)
+    throw UsageError("mapVertices: triplanar chooses a projection per triangle; use project() or PointMapping");
   withPrecision(o.arithmetic.precision, [&](auto zero) {
     mapVerticesThroughKernel<decltype(zero)>(o, localFromObject, positions, normals, out, threads, sensible);
   });
+}
+
+VertexUv triplanarVertexUv(const TriplanarOptions& options, int axis, const Vec3& local) {
+  VertexUv out;
+  const Vec2 uv = triplanarUv(options, axis, local);
+  if (!uv.allFinite()) {
+    out.reason = kCornerNotFinite;
+    return out;
+  }
+  out.uv = uv;
+  out.state = CornerState::Ok;
+  out.reason = kCornerValid;
+  return out;
 }
 
 VertexUv cameraVertexUv(const CameraTransform& camera, const Vec3& position) {
@@ -383,6 +450,13 @@ PointMapping::PointMapping(const ProjectorOptions& o, const Affine3& localFromOb
   checkOptions(o);
   if (o.surface == SurfaceKind::Camera) {
     evaluate_ = [camera = CameraTransform(o.camera)](const Vec3& p, const Vec3&) { return cameraVertexUv(camera, p); };
+    return;
+  }
+  if (o.surface == SurfaceKind::Triplanar) {
+    needsNormal_ = true;
+    evaluate_ = [frame = LocalFrameT<double>(localFromObject), options = o.triplanar](const Vec3& p, const Vec3& n) {
+      return triplanarVertexUv(options, dominantAxis(frame.normal(n)), frame.point(p));
+    };
     return;
   }
   withPrecision(o.arithmetic.precision, [&](auto zero) {
@@ -451,6 +525,21 @@ std::optional<CubeFace> PointMapping::cubeFaceAt(const Vec3& position, const Vec
   return cubeFace_ ? cubeFace_(position, normal) : std::nullopt;
 }
 
+TriplanarMapping::TriplanarMapping(const ProjectorOptions& o, const Affine3& localFromObject) {
+  checkTriplanarOptions(o.triplanar);
+  evaluate_ = [frame = LocalFrameT<double>(localFromObject), options = o.triplanar, transform = o.uvTransform](
+                  const Vec3& p, const Vec3& n) {
+    TriplanarSample s = triplanarAt(options, frame.point(p), frame.normal(n));
+    if (!transform.isIdentity())
+      for (Vec2& uv : s.uv) uv = transform.apply(uv);
+    return s;
+  };
+}
+
+TriplanarSample TriplanarMapping::at(const Vec3& position, const Vec3& normal) const {
+  return evaluate_(position, normal);
+}
+
 Projection project(Mesh mesh, const ProjectorOptions& o, int threads) {
   checkOptions(o);
   mesh.texcoords.clear();
@@ -459,8 +548,8 @@ Projection project(Mesh mesh, const ProjectorOptions& o, int threads) {
   Projection out;
   const auto start = std::chrono::steady_clock::now();
   out.localFromObject = fitPlacement(mesh.positions, o.surface, o.placement);
-  Evaluated evaluated = o.surface == SurfaceKind::Camera
-                            ? evaluateCamera(mesh, o.camera, threads)
+  Evaluated evaluated = o.surface == SurfaceKind::Camera      ? evaluateCamera(mesh, o.camera, threads)
+                        : o.surface == SurfaceKind::Triplanar ? evaluateTriplanar(mesh, out.localFromObject, o.triplanar, threads)
                             : withPrecision(o.arithmetic.precision, [&](auto zero) {
                                 return evaluateMesh<decltype(zero)>(mesh, out.localFromObject, o, threads);
                               });
@@ -479,6 +568,8 @@ Projection project(Mesh mesh, const ProjectorOptions& o, int threads) {
     if (o.pole == PoleMode::Fan) fanPoleCorners(corners);
   }
   out.summary = summarize(mesh, corners, seams);
+  out.summary.triplanarFaces = evaluated.triplanarFaces;
+  out.triplanarAxis = std::move(evaluated.triplanarAxis);
   if (!o.uvTransform.isIdentity()) {
     bool overflowed = false;
     for (std::size_t i = 0; i < corners.uv.size(); ++i) {

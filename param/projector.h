@@ -14,6 +14,7 @@
 #include "param/camera_projector.h"
 #include "param/formulas.h"
 #include "param/placement.h"
+#include "param/triplanar.h"
 
 namespace uvtk::param {
 
@@ -58,6 +59,7 @@ struct ProjectorOptions {
   std::optional<Vec3> eye;
   bool atInfinity = false;
   CameraProjector camera;  // SurfaceKind::Camera: the view projected from (not the reflection eye above)
+  TriplanarOptions triplanar;  // SurfaceKind::Triplanar
   SeamMode seam = SeamMode::Shift;
   PoleMode pole = PoleMode::Fan;
   double poleEpsilon = 1e-6;  // a pole: hypot(x, y) <= eps |q|
@@ -92,6 +94,7 @@ struct MappingSummary {
   std::array<std::size_t, kCornerInvalidCount> invalidCorners{};
   std::size_t cubeSeamFaces = 0, capFaces = 0;
   std::size_t addedVertices = 0, addedFaces = 0;  // by --seam cut
+  std::array<std::size_t, 3> triplanarFaces{};    // triplanar: faces written by the x, y, z projection (box UVs)
   std::vector<int> invalidVertexList;             // vertex indices (input numbering, 0-based)
   std::vector<int> poleVertexList;
   std::vector<int> poleFaceList;                  // face indices of the output mesh
@@ -102,6 +105,7 @@ struct Projection {
   UvMap uv;
   MappingSummary summary;
   Affine3 localFromObject = Affine3::Identity();
+  std::vector<std::uint8_t> triplanarAxis;  // triplanar: the projection (0: x, 1: y, 2: z) each face carries
   struct {
     double map = 0.0;    // the placement fit and every corner through both stages
     double seams = 0.0;  // seam and pole repair, the summary, the UV transform
@@ -123,11 +127,16 @@ std::optional<Eigen::AlignedBox3d> sensibleBox(const std::vector<Vec3>& position
 // sides) stay as they are, as Blender's Project from View leaves them.
 VertexUv cameraVertexUv(const CameraTransform& camera, const Vec3& position);
 
+// The triplanar projector's per-corner UVs: the projection of the dominant axis of `faceNormal`
+// (dominantAxis; a face normal in the projector's frame) at a point of that frame, invalid with
+// kCornerNotFinite where they are not finite. A face gets one projection: a box mapping.
+VertexUv triplanarVertexUv(const TriplanarOptions& options, int axis, const Vec3& local);
+
 // The two-stage mapping of single vertices in object space: placement, O-mapping, surface,
 // S-mapping, no seam or pole repair and no UV transform. `normals` is read only by the normal
 // and reflection O-mappings (then it has one unit normal per position). `out` is resized, so a
-// caller that maps repeatedly reuses its memory. The cube chooses faces per triangle and is a
-// UsageError here. `threads` (0: one per core) split the positions into contiguous ranges. Hits
+// caller that maps repeatedly reuses its memory. The cube and triplanar choose per triangle and are
+// a UsageError here. `threads` (0: one per core) split the positions into contiguous ranges. Hits
 // beyond the range of `sensible` (sensibleBox) are kCornerOutOfRange; without it nothing is.
 void mapVertices(const ProjectorOptions& options, const Affine3& localFromObject, const std::vector<Vec3>& positions,
                  const std::vector<Vec3>& normals, std::vector<VertexUv>& out, int threads = 1,
@@ -154,7 +163,8 @@ class CylinderCaps {
 // project() chooses one face per triangle); a face project() mapped by a cylinder cap maps by the
 // cap projection, mirrored by the sign of the given normal along the axis (pass the face normal).
 // A hit beyond the range of `sensible` (sensibleBox of the mesh) is kCornerOutOfRange; without a
-// box nothing is.
+// box nothing is. Triplanar gives the dominant projection of the given normal (point::PointEvaluator
+// and the renderer read all three and the weights through triplanarAt).
 class PointMapping {
  public:
   // Throws UsageError like project() for inconsistent options.
@@ -172,6 +182,18 @@ class PointMapping {
   std::function<std::optional<CubeFace>(const Vec3&, const Vec3&)> cubeFace_;
   UvTransform uvTransform_;
   bool wrapsU_ = false, needsNormal_ = false;
+};
+
+// The triplanar projector at object-space points: the point and normal carried into the
+// projector's frame, its three projections with their weights (triplanarAt), and the UV transform
+// applied to each projection. What `uvtk eval` reports and the renderer blends per pixel.
+class TriplanarMapping {
+ public:
+  TriplanarMapping(const ProjectorOptions& options, const Affine3& localFromObject);  // checks the options
+  TriplanarSample at(const Vec3& position, const Vec3& normal) const;
+
+ private:
+  std::function<TriplanarSample(const Vec3&, const Vec3&)> evaluate_;
 };
 
 // Seam placement (`--seam-place auto`): the turn of a wrapping projector about its axis

@@ -44,8 +44,13 @@ struct LocalFrameT {
 
   Vec3T<T> point(const Vec3& p) const { return (linear * (p.cast<Wide>() - origin) + residue).template cast<T>(); }
   Vec3T<T> normal(const Vec3& n) const {
-    const Vec3T<Wide> m = normalMatrix * n.cast<Wide>();
-    const Wide length = m.norm();
+    Vec3T<Wide> m = normalMatrix * n.cast<Wide>();
+    Wide length = m.norm();
+    if (!(length > Wide(0) && std::isfinite(length))) {  // a normal beyond about 1e+-154 squares out of range
+      const Wide largest = m.cwiseAbs().maxCoeff();
+      if (largest > Wide(0) && std::isfinite(largest)) m /= largest;
+      length = m.norm();
+    }
     return length > Wide(0) && std::isfinite(length) ? Vec3T<T>((m / length).template cast<T>()) : Vec3T<T>::Zero();
   }
 };
@@ -63,7 +68,8 @@ SurfaceT<T> makeSurface(const ProjectorOptions& o) {
       return SphereSurfaceT<T>{o.spherePreset};
     case SurfaceKind::Cube:
       return CubeSurfaceT<T>{o.cubeConvention, o.cubeLayout};
-    case SurfaceKind::Camera:  // no surface: project(), mapVertices and PointMapping go round this
+    case SurfaceKind::Camera:  // no surface: project(), mapVertices and PointMapping go round these
+    case SurfaceKind::Triplanar:
       UVTK_CHECK(false);
       break;
   }

@@ -71,6 +71,7 @@ std::optional<SimdVariant> simdVariantOf(const ProjectorOptions& o) {
       return foot ? SimdVariant::TwoPlaneFoot : SimdVariant::TwoPlaneCentral;
     case SurfaceKind::Cube:
     case SurfaceKind::Camera:
+    case SurfaceKind::Triplanar:
       break;
   }
   return std::nullopt;

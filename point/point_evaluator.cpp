@@ -22,6 +22,7 @@ Vec3 toVec3(const Vector3& v) { return {v[0], v[1], v[2]}; }
 const char* missReason(const param::ProjectorOptions& o, CornerInvalid reason) {
   using param::RayKind;
   static_assert(param::kSensibleRange == 2.0, "the out-of-range text below names the factor");
+  if (o.surface == SurfaceKind::Triplanar) return "the result is not finite";
   if (o.surface == SurfaceKind::Camera)
     return reason == kCornerBehind ? "the point is at or behind the camera's eye plane (q <= 0)"
                                    : "the result is not finite";
@@ -52,6 +53,7 @@ const char* missReason(const param::ProjectorOptions& o, CornerInvalid reason) {
     case SurfaceKind::Cube:
       return "the ray misses the cube, or is parallel to its face's plane";
     case SurfaceKind::Camera:
+    case SurfaceKind::Triplanar:
       break;
   }
   return "the ray misses the surface";
@@ -88,6 +90,7 @@ PointEvaluator::PointEvaluator(const cli::ResolvedMapping& mapping, const Affine
   }
   projector_ = mapping.projector;
   if (projector_->surface == SurfaceKind::Camera) camera_.emplace(projector_->camera);
+  if (projector_->surface == SurfaceKind::Triplanar) triplanar_.emplace(*projector_, localFromObject);
   param::ProjectorOptions raw = *projector_;
   raw.uvTransform = param::UvTransform{};
   raw.cubeLayout = CubeLayout::Faces;
@@ -114,6 +117,7 @@ Result PointEvaluator::at(const Vector3& position, const Vector3& normal) const 
 
 Result PointEvaluator::projectorAt(const Vec3& p, const Vec3& n, Result out) const {
   const param::ProjectorOptions& o = *projector_;
+  if (triplanar_) return triplanarAt(p, n, out);
   const bool cap = caps_ && caps_->isCap(n);  // as project() decides it
   const param::VertexUv raw = raw_->at(p, n, cap);
   if (raw.state == CornerState::Invalid) return invalid(out, missReason(o, raw.reason));
@@ -144,6 +148,22 @@ Result PointEvaluator::projectorAt(const Vec3& p, const Vec3& n, Result out) con
   out.u = uv.x();
   out.v = uv.y();
   out.period = {cap ? 0.0 : period_.x(), cap ? 0.0 : period_.y()};
+  return out;
+}
+
+Result PointEvaluator::triplanarAt(const Vec3& p, const Vec3& n, Result out) const {
+  const param::TriplanarSample s = triplanar_->at(p, n);
+  if (!s.weights.allFinite()) return invalid(out, "the normal is zero: the weights need its direction");
+  for (const Vec2& uv : s.uv)
+    if (!uv.allFinite()) return invalid(out, "the result is not finite");
+  const std::size_t axis = std::size_t(s.dominant);
+  out.u = s.uv[axis].x();
+  out.v = s.uv[axis].y();
+  for (std::size_t i = 0; i < 3; ++i) {
+    out.triplanarUv[i] = {s.uv[i].x(), s.uv[i].y()};
+    out.triplanarWeights[i] = s.weights[int(i)];
+  }
+  out.status = Status::Ok;
   return out;
 }
 

@@ -287,28 +287,38 @@ std::string jsonTripleText(const Vector3& v) {
 }
 
 // The first line of CSV output (JSON lines have none).
-std::string outputHeader(TextFormat format, bool withNormals, bool withEyes) {
+std::string outputHeader(TextFormat format, bool withNormals, bool withEyes, bool triplanar) {
   if (format != TextFormat::Csv) return "";
-  return std::string("x,y,z") + (withNormals ? ",nx,ny,nz" : "") + (withEyes ? ",ex,ey,ez" : "") +
-         ",u,v,w,q,status,reason\n";
+  return std::string("x,y,z") + (withNormals ? ",nx,ny,nz" : "") + (withEyes ? ",ex,ey,ez" : "") + ",u,v,w,q" +
+         (triplanar ? ",u_x,v_x,u_y,v_y,u_z,v_z,weight_x,weight_y,weight_z" : "") + ",status,reason\n";
 }
 
-// One point's line of output.
-std::string outputLine(const Output& o, TextFormat format, bool withNormals, bool withEyes) {
+// One point's line of output; with `triplanar` the three projections and their weights too.
+std::string outputLine(const Output& o, TextFormat format, bool withNormals, bool withEyes, bool triplanar) {
   const Result& r = o.result;
+  const auto& uv = r.triplanarUv;
+  const auto& weight = r.triplanarWeights;
   std::string text;
   if (format == TextFormat::Csv) {
     text = eyeText(o.row.position);
     if (withNormals) text += "," + eyeText(o.normal);
     if (withEyes) text += "," + eyeText(o.eye);
-    return text + "," + number(r.u) + "," + number(r.v) + "," + number(r.w) + "," + number(r.q) + "," +
-           statusName(r.status) + "," + csvQuote(o.reason) + "\n";
+    text += "," + number(r.u) + "," + number(r.v) + "," + number(r.w) + "," + number(r.q);
+    if (triplanar)
+      for (const double x : {uv[0][0], uv[0][1], uv[1][0], uv[1][1], uv[2][0], uv[2][1], weight[0], weight[1], weight[2]})
+        text += "," + number(x);
+    return text + "," + statusName(r.status) + "," + csvQuote(o.reason) + "\n";
   }
   text = "{\"p\":" + jsonTripleText(o.row.position);
   if (withNormals) text += ",\"n\":" + jsonTripleText(o.normal);
   if (withEyes) text += ",\"eye\":" + jsonTripleText(o.eye);
-  return text + ",\"u\":" + number(r.u) + ",\"v\":" + number(r.v) + ",\"w\":" + number(r.w) + ",\"q\":" + number(r.q) +
-         ",\"status\":\"" + statusName(r.status) + "\",\"reason\":" + nlohmann::json(o.reason).dump() + "}\n";
+  text += ",\"u\":" + number(r.u) + ",\"v\":" + number(r.v) + ",\"w\":" + number(r.w) + ",\"q\":" + number(r.q);
+  if (triplanar) {
+    const auto pair = [](const std::array<double, 2>& p) { return "[" + number(p[0]) + "," + number(p[1]) + "]"; };
+    text += ",\"uv_x\":" + pair(uv[0]) + ",\"uv_y\":" + pair(uv[1]) + ",\"uv_z\":" + pair(uv[2]) + ",\"weights\":[" +
+            number(weight[0]) + "," + number(weight[1]) + "," + number(weight[2]) + "]";
+  }
+  return text + ",\"status\":\"" + statusName(r.status) + "\",\"reason\":" + nlohmann::json(o.reason).dump() + "}\n";
 }
 
 }  // namespace
@@ -396,8 +406,8 @@ EvalCounts evaluatePoints(const EvalJob& job, const cli::MappingArguments& mappi
   }
   if (!withNormals && evaluators.needsNormal() && !rows.empty())
     throw UsageError(
-        "this mapping reads the normal (--omap normal or reflection, --caps, or a texgen mode that uses "
-        "normals): give --normal x,y,z, or nx,ny,nz columns (\"n\" in JSON lines)");
+        "this mapping reads the normal (--omap normal or reflection, --caps, --projector triplanar, or a texgen "
+        "mode that uses normals): give --normal x,y,z, or nx,ny,nz columns (\"n\" in JSON lines)");
 
   // Every row was read and checked above: from here on each point is written as it is evaluated,
   // to the temporary of -o (renamed at the end) or to stdout.
@@ -409,7 +419,8 @@ EvalCounts evaluatePoints(const EvalJob& job, const cli::MappingArguments& mappi
     else
       std::fwrite(text.data(), 1, text.size(), stdout);
   };
-  write(outputHeader(job.format, withNormals, withEyes));
+  const bool triplanar = !isTexgen && resolved.projector->surface == param::SurfaceKind::Triplanar;
+  write(outputHeader(job.format, withNormals, withEyes, triplanar));
   EvalCounts counts;
   counts.points = rows.size();
   for (const PointRow& row : rows) {
@@ -426,7 +437,7 @@ EvalCounts evaluatePoints(const EvalJob& job, const cli::MappingArguments& mappi
       o.result.status = Status::Invalid;
     }
     ++counts.byStatus[int(o.result.status)];
-    write(outputLine(o, job.format, withNormals, withEyes));
+    write(outputLine(o, job.format, withNormals, withEyes, triplanar));
   }
   if (file) {
     file->commit();
@@ -485,6 +496,8 @@ Out (stdout, or -o FILE written atomically), one line per point, every number %.
 as the same double):
   --format csv   header x,y,z[,nx,ny,nz][,ex,ey,ez],u,v,w,q,status,reason; reason quoted
   --format json  {"p": [...], "n": [...], "eye": [...], "u", "v", "w", "q", "status", "reason"}
+  --projector triplanar adds u_x,v_x,u_y,v_y,u_z,v_z,weight_x,weight_y,weight_z before status
+  (JSON: "uv_x", "uv_y", "uv_z" pairs and "weights"); u, v are the dominant axis's projection.
   u, v: the projector's (u, v) or texgen's (s, t); w: the cube face id 0..5 (+X -X +Y -Y +Z -Z)
   with --cube-layout faces, texgen's r, else 0; q: texgen's q (not divided out), the camera
   projector's w_c (its u, v are already s/q, t/q), else 1.

@@ -37,6 +37,9 @@ MemoryEstimate estimateMemory(const Mesh& mesh, const TexcoordSource& source, co
   if (lit || (source.pixelMapping && source.pixelMapping->needsNormal)) e.frame += 3 * faces * sizeof(Vec3);
   if (lit) e.frame += 3 * faces * sizeof(Vec4);
   if (o.texture) e.texture = textureBytes(*o.texture);
+  if (source.pixelMapping && source.pixelMapping->blendAt)
+    for (const Texture* t : o.axisTextures)
+      if (t && t != o.texture) e.texture += textureBytes(*t);
   if (o.cubeTexture)
     for (int f = 0; f < kCubeFaceCount; ++f) e.texture += textureBytes(o.cubeTexture->face(CubeFace(f)));
   return e;

@@ -54,7 +54,8 @@ struct TextureLookup {
 
 class Shader {
  public:
-  explicit Shader(const FrameData& frame) : f_(frame) {}
+  explicit Shader(const FrameData& frame)
+      : f_(frame), blends_(frame.source.pixelMapping && frame.source.pixelMapping->blendAt) {}
 
   // The pixel (x, row) of a drawn triangle; returns RGB and fills the AOV values.
   Vec3 shade(int x, int row, const DrawnFace& drawn, float* aov) const {
@@ -62,8 +63,13 @@ class Shader {
     const std::int32_t face = drawn.face;
     const double wx = x + 0.5, wy = o.camera.height - row - 0.5;  // window coordinates, y up
     const TriangleInterpolator::Barycentrics b = drawn.interpolator.at(wx, wy);
-    const FragmentTexcoords tc = f_.source.pixelMapping ? exactTexcoords(face, b) : interpolatedTexcoords(face, b);
-    const TextureLookup lookup = o.cubeTexture ? lookUpCube(tc) : lookUp2d(tc);
+    TextureLookup lookup;
+    if (blends_) {
+      lookup = lookUpBlend(face, b);
+    } else {
+      const FragmentTexcoords tc = f_.source.pixelMapping ? exactTexcoords(face, b) : interpolatedTexcoords(face, b);
+      lookup = o.cubeTexture ? lookUpCube(tc) : lookUp2d(tc);
+    }
     Vec4 fragment = Vec4::Ones();
     if (!f_.cornerColour.empty()) {
       fragment = Vec4::Zero();
@@ -120,6 +126,39 @@ class Shader {
     return out;
   }
 
+  // The three lookups of a blend, each as lookUp2d reads an exact mapping, and their weighted
+  // sum; u, v and lambda of the heaviest. Without a value, what lookUp2d shows for a non-finite
+  // (s, t): its derivatives are 0, so lambda = -inf, and the texel is the bound texture's (0, 0).
+  TextureLookup lookUpBlend(std::int32_t face, const TriangleInterpolator::Barycentrics& b) const {
+    constexpr double h = 1e-3;  // as exactTexcoords
+    const RenderOptions& o = f_.options;
+    const TexcoordBlend at = blendAt(face, b.b);
+    const Vec3& w = at.weights;
+    bool valid = w.allFinite();
+    for (int i = 0; i < 3 && valid; ++i) valid = !(w[i] > 0.0) || at.st[std::size_t(i)].allFinite();
+    TextureLookup out;
+    if (!valid) {
+      out.st = Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
+      out.lambda = -std::numeric_limits<double>::infinity();
+      out.texel = sample(*o.texture, o.sampler, out.st.x(), out.st.y(), out.lambda);
+      return out;
+    }
+    const TexcoordBlend xPlus = blendAt(face, b.b + h * b.dbdx), xMinus = blendAt(face, b.b - h * b.dbdx);
+    const TexcoordBlend yPlus = blendAt(face, b.b + h * b.dbdy), yMinus = blendAt(face, b.b - h * b.dbdy);
+    int heaviest = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (!(w[int(i)] > 0.0)) continue;
+      const Texture& texture = o.axisTextures[i] ? *o.axisTextures[i] : *o.texture;
+      const Vec2 dx = difference(xPlus.st[i], xMinus.st[i]) / (2 * h);
+      const Vec2 dy = difference(yPlus.st[i], yMinus.st[i]) / (2 * h);
+      const double lambda = levelOfDetail(texture.width(), texture.height(), dx, dy);
+      out.texel += w[int(i)] * sample(texture, o.sampler, at.st[i].x(), at.st[i].y(), lambda);
+      if (w[int(i)] > w[heaviest]) heaviest = int(i);
+      if (int(i) == heaviest) out.st = at.st[i], out.lambda = lambda;
+    }
+    return out;
+  }
+
   FragmentTexcoords interpolatedTexcoords(std::int32_t face, const TriangleInterpolator::Barycentrics& b) const {
     const Vec4* corners = &f_.source.corners[3 * std::size_t(face)];
     Vec4 tc = Vec4::Zero(), dx = Vec4::Zero(), dy = Vec4::Zero();
@@ -154,28 +193,44 @@ class Shader {
     return out;
   }
 
-  Vec3 difference(const Vec3& a, const Vec3& b) const {
-    Vec3 d = a - b;
-    if (!d.allFinite()) return Vec3::Zero();
+  template <typename V>
+  V difference(const V& a, const V& b) const {
+    V d = a - b;
+    if (!d.allFinite()) return V::Zero();
     if (f_.source.pixelMapping->wrapsS) d.x() -= std::round(d.x());
     return d;
   }
 
-  Vec3 exactAt(std::int32_t face, const Vec3& b) const {
+  // The fragment's object-space position and unit normal (0 without normals) at barycentrics b.
+  struct SurfacePoint {
+    Vec3 position, normal;
+  };
+  SurfacePoint surfaceAt(std::int32_t face, const Vec3& b) const {
     const Triangle& t = f_.mesh.triangles[std::size_t(face)];
-    const Vec3 position =
-        b[0] * f_.mesh.positions[t[0]] + b[1] * f_.mesh.positions[t[1]] + b[2] * f_.mesh.positions[t[2]];
-    Vec3 normal = Vec3::Zero();
+    SurfacePoint p;
+    p.position = b[0] * f_.mesh.positions[t[0]] + b[1] * f_.mesh.positions[t[1]] + b[2] * f_.mesh.positions[t[2]];
+    p.normal = Vec3::Zero();
     if (!f_.normals.empty()) {
-      for (int k = 0; k < 3; ++k) normal += b[k] * f_.normals[3 * std::size_t(face) + std::size_t(k)];
-      const double length = normal.norm();
-      normal = length > 0.0 ? Vec3(normal / length) : Vec3::Zero();
+      for (int k = 0; k < 3; ++k) p.normal += b[k] * f_.normals[3 * std::size_t(face) + std::size_t(k)];
+      const double length = p.normal.norm();
+      p.normal = length > 0.0 ? Vec3(p.normal / length) : Vec3::Zero();
     }
-    const Vec4 tc = f_.source.pixelMapping->texcoordAt(position, normal, face);
+    return p;
+  }
+
+  Vec3 exactAt(std::int32_t face, const Vec3& b) const {
+    const SurfacePoint p = surfaceAt(face, b);
+    const Vec4 tc = f_.source.pixelMapping->texcoordAt(p.position, p.normal, face);
     return tc.head<3>() / tc.w();
   }
 
+  TexcoordBlend blendAt(std::int32_t face, const Vec3& b) const {
+    const SurfacePoint p = surfaceAt(face, b);
+    return f_.source.pixelMapping->blendAt(p.position, p.normal, face);
+  }
+
   const FrameData& f_;
+  const bool blends_;  // the pixel mapping is a blend of three lookups
 };
 
 std::vector<Vec4> clipPositions(const Mesh& mesh, const Mat4& clipFromObject, int threads) {
@@ -349,6 +404,13 @@ Rendering render(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
   if (!source.pixelMapping && source.corners.size() != 3 * mesh.triangles.size())
     throw UsageError("render: expected 3 texture coordinates per triangle");
   UVTK_CHECK(!needsMipmaps(o.sampler.minFilter) || (o.texture ? o.texture->hasMipmaps() : o.cubeTexture->hasMipmaps()));
+  if (source.pixelMapping) {
+    const PixelMapping& m = *source.pixelMapping;
+    UVTK_CHECK(!m.texcoordAt != !m.blendAt);
+    if (m.blendAt && o.cubeTexture) throw UsageError("render: a triplanar blend reads 2D textures");
+    if (m.blendAt)
+      for (const Texture* t : o.axisTextures) UVTK_CHECK(!t || !needsMipmaps(o.sampler.minFilter) || t->hasMipmaps());
+  }
   const int n = sampleGridSize(o.samplesPerPixel);
   const int width = o.camera.width, height = o.camera.height;
   if (n > 1 && (std::int64_t(width) * n > kMaxViewport || std::int64_t(height) * n > kMaxViewport))

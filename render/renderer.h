@@ -7,6 +7,7 @@
 // height and box-filters each n x n block.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -22,13 +23,25 @@
 
 namespace uvtk::render {
 
+// Three lookups blended per pixel (triplanar): their texture coordinates and weights at a point.
+struct TexcoordBlend {
+  std::array<Vec2, 3> st;
+  Vec3 weights = Vec3::Zero();  // weights >= 0, sum 1; a non-finite st or weights: no value
+};
+
 // Texture coordinates evaluated at each pixel: the fragment's object-space position (interpolated
 // perspective-correctly) and unit normal (interpolated and renormalised) go through the mapping.
+// Exactly one of texcoordAt and blendAt is set.
 struct PixelMapping {
   // (s, t, r, q) at a point of triangle `face`; non-finite where the mapping has no value.
   std::function<Vec4(const Vec3& position, const Vec3& normal, std::int32_t face)> texcoordAt;
   bool wrapsS = false;  // s has period 1: its derivatives take the nearest difference
   bool needsNormal = false;
+  // Set instead of texcoordAt: the colour is sum_i w_i texture_i(st_i), each lookup with its own
+  // derivatives (central differences of its st) and level of detail, the weights taken at the
+  // fragment alone. A lookup of weight 0 is not made. Non-finite weights, or a non-finite st of
+  // positive weight, show what texcoordAt's non-finite value shows. 2D textures only.
+  std::function<TexcoordBlend(const Vec3& position, const Vec3& normal, std::int32_t face)> blendAt{};
 };
 
 // Where the texture coordinates come from: per corner (interpolated), or per pixel.
@@ -47,6 +60,9 @@ struct RenderOptions {
   // The bound texture, 2D or cube map (exactly one), with its mipmaps when the filter needs them.
   const Texture* texture = nullptr;
   const CubeTexture* cubeTexture = nullptr;
+  // With a blend (PixelMapping::blendAt), lookup i reads axisTextures[i] when set, else `texture`;
+  // each with its own size for the level of detail, its mipmaps when the filter needs them.
+  std::array<const Texture*, 3> axisTextures{};
   SamplerState sampler;
   bool seamless = false;  // cube maps: GL's TEXTURE_CUBE_MAP_SEAMLESS
   EnvMode env = EnvMode::Replace;
@@ -65,7 +81,8 @@ struct Rendering {
   Image colour;  // RGB, row 0 at the top
   // With RenderOptions::aovs: channels u, v (s/q, t/q as interpolated, before wrapping), depth
   // (window depth), face (triangle index, -1 for the background) and lod (lambda); the background
-  // has u = v = lod = 0 and depth 1. With a cube map, u and v are the (s, t) on the selected face
+  // has u = v = lod = 0 and depth 1. With a blend, u, v and lod are those of the lookup of largest
+// weight (of equal weights the first, x before y before z). With a cube map, u and v are the (s, t) on the selected face
   // and a sixth channel, cubeface, holds its id (0..5; -1 on the background and where there is no
   // direction). With n x n samples per pixel, every channel is that of the
   // single sample (n/2, n/2) (integer division; column, row from the top left): the pixel's centre
@@ -80,7 +97,7 @@ struct Rendering {
 };
 
 // Throws UsageError when the texture coordinates do not match the mesh (3 per triangle) and
-// there is no pixel mapping, when there is no texture or two, when samplesPerPixel is not one of the
+// there is no pixel mapping, when there is no texture or two, when a blend has a cube map, when samplesPerPixel is not one of the
 // allowed squares, or when the supersampled frame exceeds kMaxViewport pixels a side.
 Rendering render(const Mesh& mesh, const TexcoordSource& texcoords, const RenderOptions& options);
 

@@ -13,5 +13,7 @@ DrawnView drawHeatmap(View view, const ViewInput& in, const ViewOptions& options
 DrawnView drawSeams(const ViewInput& in, const ViewOptions& options);
 DrawnView drawUvError(const ViewInput& in, const ViewOptions& options);
 DrawnView drawLayout(const ViewInput& in, const ViewOptions& options);
+DrawnView drawWeights(const ViewInput& in, const ViewOptions& options);    // triplanar weights
+DrawnView drawBlendZone(const ViewInput& in, const ViewOptions& options);  // triplanar blend zone
 
 }  // namespace uvtk::views

@@ -9,8 +9,8 @@ namespace uvtk::views {
 
 namespace {
 
-constexpr View kViews[] = {View::Checker, View::Uvgrid, View::Stretch, View::Linf,   View::Angle,
-                           View::Area,    View::Seams,  View::UvError, View::Layout, View::Density};
+constexpr View kViews[] = {View::Checker, View::Uvgrid, View::Stretch, View::Linf,    View::Angle,    View::Area,
+                           View::Seams,   View::UvError, View::Layout, View::Density, View::Weights, View::BlendZone};
 
 std::string validNames() {
   std::string names;
@@ -32,6 +32,8 @@ const char* toString(View view) {
     case View::UvError: return "uverror";
     case View::Layout: return "layout";
     case View::Density: return "density";
+    case View::Weights: return "weights";
+    case View::BlendZone: return "blendzone";
   }
   return "checker";
 }
@@ -55,7 +57,7 @@ std::vector<View> parseViewList(const std::string& commaList) {
   }
 }
 
-bool needsExactMapping(View view) { return view == View::UvError; }
+bool needsExactMapping(View view) { return view == View::UvError || view == View::Weights || view == View::BlendZone; }
 
 Image drawView(View view, const ViewInput& in, const ViewOptions& options) {
   const DrawnView drawn = drawViewAndLegend(view, in, options);
@@ -75,6 +77,8 @@ DrawnView drawViewAndLegend(View view, const ViewInput& in, const ViewOptions& o
     case View::Seams: return drawSeams(in, options);
     case View::UvError: return drawUvError(in, options);
     case View::Layout: return drawLayout(in, options);
+    case View::Weights: return drawWeights(in, options);
+    case View::BlendZone: return drawBlendZone(in, options);
   }
   checkFailed("a known view", __FILE__, __LINE__);
 }

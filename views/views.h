@@ -21,15 +21,17 @@
 
 namespace uvtk::views {
 
-enum class View { Checker, Uvgrid, Stretch, Linf, Angle, Area, Seams, UvError, Layout, Density };
+enum class View { Checker, Uvgrid, Stretch, Linf, Angle, Area, Seams, UvError, Layout, Density, Weights, BlendZone };
 
-// "checker", "uvgrid", "stretch", "linf", "angle", "area", "seams", "uverror", "layout", "density".
+// "checker", "uvgrid", "stretch", "linf", "angle", "area", "seams", "uverror", "layout", "density",
+// "weights", "blendzone".
 const char* toString(View view);
 std::optional<View> parseView(std::string_view name);
 // "stretch,seams" -> {Stretch, Seams}, in the given order. Throws UsageError naming the bad entry
 // and the valid names.
 std::vector<View> parseViewList(const std::string& commaList);
-// Whether the view compares against the mapping evaluated per pixel (ViewInput::exact): UvError.
+// Whether the view reads the mapping evaluated per pixel (ViewInput::exact): UvError, and Weights
+// and BlendZone, which read a triplanar mapping's blend weights (PixelMapping::blendAt).
 bool needsExactMapping(View view);
 
 struct ViewInput {
@@ -51,11 +53,15 @@ struct ViewOptions {
   View layoutFill = View::Stretch;  // measure that fills triangles in the layout view: Stretch, Linf, Angle, Area or Density
   int layoutSize = 512;             // layout image is layoutSize x layoutSize (+ legend)
   int checks = 16;                  // checker view: checks across the unit square, 1..1024 (UsageError outside)
+  // weights and blendzone: a covered pixel is in the triplanar blend zone when every weight is
+  // below this, i.e. no single projection dominates it; in (0, 1] (UsageError outside).
+  double blendZoneThreshold = 0.9;
 };
 
 // The view as a 3-channel RGB image in [0, 1], row 0 at the top. The camera views are
 // render.camera's width x height, with the legend in a strip below (docs/views.md).
-// Preconditions: mesh and uv set; the judgement for the heatmaps, seams and layout. Throws UsageError for uverror without `exact`, and for a layout fill
+// Preconditions: mesh and uv set; the judgement for the heatmaps, seams and layout. Throws UsageError for uverror without `exact`,
+// for weights and blendzone without a triplanar `exact` (one with blendAt), and for a layout fill
 // that is not a measure or a layoutSize outside 16..16384.
 Image drawView(View view, const ViewInput& in, const ViewOptions& options);
 
@@ -77,6 +83,19 @@ struct UvErrorMap {
   std::size_t pixels = 0, invalidPixels = 0;
 };
 UvErrorMap uvErrorMap(const ViewInput& in, const ViewOptions& options);
+
+// The triplanar blend zone: of the `coveredPixels` covered pixels with weights, the `pixels` where
+// max(w_x, w_y, w_z) < threshold (options.blendZoneThreshold); `invalidPixels` covered pixels have
+// no weights (non-finite). Counted on a rendering of in.exact at one sample per pixel with
+// options.render's camera and raster options, the weights as the image stores them (float).
+// Throws UsageError without a triplanar in.exact (PixelMapping::blendAt) or for a threshold
+// outside (0, 1].
+struct BlendZone {
+  std::size_t pixels = 0, coveredPixels = 0, invalidPixels = 0;
+  double threshold = 0.9;
+  double share() const { return coveredPixels > 0 ? double(pixels) / double(coveredPixels) : 0.0; }
+};
+BlendZone blendZone(const ViewInput& in, const ViewOptions& options);
 
 // Tiles in a grid, `columns` per row, each with its label drawn under it (views/type.h, 15 pixels
 // per em), on a dark grey background. Throws UsageError for no tiles or columns < 1.

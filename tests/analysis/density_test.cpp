@@ -95,7 +95,8 @@ TEST(TexelDensity, SpreadOfTwoHalvesIsTheirRatio) {
   // Two unit squares side by side (equal 3D areas): one on a UV square of side 1 (density 1024),
   // one of side 1/4 (density 256). Weighted percentiles: p10 = 256, p90 = 1024.
   const Layout l = join(rectangle(1, 1), rectangle(1, 1, 0.25, 2.0));
-  const Judgement j = judge(l.mesh, l.uv);
+  const JudgementOptions defaults;
+  const Judgement j = judge(l.mesh, l.uv, defaults);
   const TexelDensity& d = j.summary.density;
   EXPECT_DOUBLE_EQ(d.statistics.p10, 256.0);
   EXPECT_DOUBLE_EQ(d.statistics.p90, 1024.0);
@@ -124,7 +125,8 @@ TEST(TexelDensity, SpreadOfTwoHalvesIsTheirRatio) {
 TEST(TexelDensity, SpreadAtTheDefaultThresholdPasses) {
   // Halves at 1024 and 512: a spread of exactly 2 does not exceed the default warn threshold.
   const Layout l = join(rectangle(1, 1), rectangle(1, 1, 0.5, 2.0));
-  const Judgement j = judge(l.mesh, l.uv);
+  const JudgementOptions defaults;
+  const Judgement j = judge(l.mesh, l.uv, defaults);
   EXPECT_DOUBLE_EQ(j.summary.density.spread, 2.0);
   EXPECT_EQ(j.verdict, Verdict::Pass);
 }

@@ -181,10 +181,11 @@ TEST(MeshViewHtml, TheDataDecodesToTheMeshItsUvsAndItsJudgement) {
   const std::vector<float> densities = array<float>(data, "values_density");
   ASSERT_EQ(densities.size(), faces);
   for (std::size_t f = 0; f < faces; ++f)
-    if (judgement.faces[f].status == analysis::FaceStatus::Ok)
+    if (judgement.faces[f].status == analysis::FaceStatus::Ok) {
       EXPECT_EQ(densities[f], float(views::measureValue(views::View::Density, judgement.faces[f], totals,
                                                         &judgement.summary.density)))
           << "face " << f;
+    }
   // Every seam edge, as a segment with its class.
   EXPECT_EQ(array<std::uint8_t>(data, "seam_wrap").size(), judgement.summary.seams.wrapEdges + judgement.summary.seams.cutEdges);
   EXPECT_EQ(array<float>(data, "seam_points").size(), 6 * array<std::uint8_t>(data, "seam_wrap").size());

@@ -117,6 +117,24 @@ TEST(Map, APlaneInObjectCoordinatesGivesXAndY) {
   EXPECT_NE(m.summaryJson.find("\"verdict\":\"pass\""), std::string::npos);
 }
 
+TEST(Map, TriplanarAndTheCameraAreFieldsLikeEveryOtherOption) {
+  MapOptions o;
+  o.projector = "triplanar";
+  o.tile = 2;
+  o.blend = 4;
+  EXPECT_EQ(o.commandLine(), "--projector triplanar --tile 2 --blend 4");
+  const Mapping box = map(triangle(), o);  // facing +z: the z projection (x, y) T at every corner
+  EXPECT_EQ(box.uv, (std::vector<Vector2>{{0, 0}, {4, 0}, {0, 6}}));
+  EXPECT_NE(box.summaryJson.find("\"triplanar_faces\":{\"x\":0,\"y\":0,\"z\":1}"), std::string::npos);
+  MapOptions camera = MapOptions::parse("--projector camera --eye 0,0,5 --fovy 90 --up 0,1,0");
+  EXPECT_EQ(camera.fovy, 90.0);
+  ASSERT_TRUE(camera.up.has_value());
+  const Mapping view = map(triangle(), camera);  // u = 1/2 + x / (2 (5 - z)), v likewise
+  EXPECT_EQ(view.uv, (std::vector<Vector2>{{0.5, 0.5}, {0.7, 0.5}, {0.5, 0.8}}));
+  camera.aspect = 2;  // x_c halves
+  EXPECT_EQ(map(triangle(), camera).uv[1], (Vector2{0.6, 0.5}));
+}
+
 TEST(Map, TheSphereOnAnOctahedronGivesTheAzimuthsAndMarksThePoles) {
   MapOptions o;
   o.fit = "none";

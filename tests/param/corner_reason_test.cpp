@@ -78,7 +78,8 @@ Vec2 uvBound(const ProjectorOptions& o, const Eigen::AlignedBox3d& box) {
       return {1.5, 1.0};
     case SurfaceKind::Cube:
       return Vec2::Constant((1.0 + c.cwiseAbs().maxCoeff() + reach) / 2.0);
-    case SurfaceKind::Camera:  // no range rule (camera_projector_test.cpp); not among kSurfaces
+    case SurfaceKind::Camera:  // no range rule (camera_projector_test.cpp, triplanar_test.cpp); not among kSurfaces
+    case SurfaceKind::Triplanar:
       break;
   }
   return Vec2::Zero();

@@ -296,6 +296,18 @@ def test_a_corner_at_the_spheres_centre_is_invalid_with_its_reason():
     assert m.verdict["status"] == "fail" and m.verdict["reasons"][0]["rule"] == "invalid_corners"
 
 
+def test_triplanar_and_the_camera_are_keywords():
+    positions, triangles = unit_square()
+    mesh = uvtk.Mesh(positions * 3, triangles)  # in z = 0, facing +z: the z projection (x, y) T
+    m = uvtk.map(mesh, projector="triplanar", tile=0.5, triplanar_preset="godot")
+    np.testing.assert_array_equal(m.uv, (positions[:, :2] * [1.5, -1.5])[triangles])  # Godot's z: (x, -y) T
+    options = uvtk.MapOptions()
+    options.projector, options.eye, options.fovy = "camera", (0.0, 0.0, 5.0), 90.0
+    assert options.command_line() == "--projector camera --eye 0,0,5 --fovy 90"
+    m = uvtk.map(mesh, options)
+    np.testing.assert_allclose(m.uv, (0.5 + positions[:, :2] * 3 / 10)[triangles], rtol=0, atol=1e-15)
+
+
 def test_keywords_reach_every_option():
     mesh = uvtk.Mesh(*octahedron())
     m = uvtk.map(mesh, fit="none", fail_on=["pole_area=0.5"], warn_on=["stretch_p99=100"])

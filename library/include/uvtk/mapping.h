@@ -19,7 +19,7 @@ namespace uvtk::api {
 // The options of `uvtk map` (docs/conventions.md): each field is the option of that name, with
 // its default; a choice is spelled as on the command line.
 struct MapOptions {
-  std::string projector = "sphere";  // --projector: plane, two-plane, cylinder, sphere, cube
+  std::string projector = "sphere";  // --projector: plane, two-plane, cylinder, sphere, cube, camera, triplanar
   std::string omap = "isn";          // --omap: isn, centroid, normal, reflection
   std::string fit = "bbox";          // --fit: none, bbox, center, pca, obb
   std::string axis = "z";            // --axis: x, y, z, the object axis that becomes local z (bbox fit)
@@ -34,7 +34,13 @@ struct MapOptions {
   std::string spherePreset = "default";  // --sphere-preset: default, glu, seed004
   std::string cubeConvention = "gl";     // --cube-convention: gl, direct
   std::string cubeLayout = "faces";      // --cube-layout: faces, cross, strip, 3x2
-  std::optional<Vector3> eye;        // --eye: the reflection O-mapping's eye in object space
+  std::optional<Vector3> eye;        // --eye: the reflection O-mapping's eye in object space; camera: gluLookAt eye
+  std::optional<Vector3> up;         // --up: camera, gluLookAt up (0, 1, 0 when unset); --center is its centre
+  double fovy = 45.0;                // --fovy: camera, gluPerspective field of view in y, degrees
+  double aspect = 1.0;               // --aspect: camera, gluPerspective width / height
+  double tile = 1.0;                 // --tile: triplanar, UV units per unit of the projector's frame
+  double blend = 1.0;                // --blend: triplanar, the weights' exponent (materialx: its blend)
+  std::string triplanarPreset = "unity";  // --triplanar-preset: unity, materialx, godot
   bool atInfinity = false;           // --at-infinity: reflection, look up by direction only
   std::string seam = "shift";        // --seam: none, shift (u in [0, 1.5)), cut (u in [0, 1])
   std::string pole = "fan";          // --pole: none (u = 0), fan (mean u of the face's other corners)

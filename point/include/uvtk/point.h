@@ -45,6 +45,11 @@ struct Result {
   // One turn about a wrapping surface's axis, in (u, v): (1, 0) unless a UV transform scales or turns
   // it. Texture coordinates that differ by whole turns are the same point. Zero when nothing wraps.
   std::array<double, 2> period{};
+  // --projector triplanar: the projections along x, y and z, each (u, v), and their weights (sum 1);
+  // u, v above are those of the dominant axis (the largest weight, ties to x before y before z),
+  // what `uvtk map` writes for a face with this normal. Zero for the other mappings.
+  std::array<std::array<double, 2>, 3> triplanarUv{};
+  std::array<double, 3> triplanarWeights{};
   Vector3 position{};        // the point evaluated
   const char* mapping = "";  // the options of the Mapping that evaluated it (valid while it lives)
 };
