@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "core/math.h"
 #include "core/huge_pages.h"
 
 namespace uvtk::analysis {
@@ -92,6 +93,14 @@ std::vector<SeamEdge> seamEdgeList(const Mesh& mesh, const UvMap& uv, const std:
     isPole[static_cast<std::size_t>(v)] = 1;
   }
 
+  // Two corners of a vertex differ beyond kUvTolerance times the layout's extent: UVs in object
+  // units, 1e-3 or 1e3 wide, cut where a unit layout cuts (the wrap tests stay in units of the period).
+  Eigen::AlignedBox2d box;
+  for (std::size_t corner = 0; corner < uv.uv.size(); ++corner)
+    if (cornerValid(uv, corner) && uv.uv[corner].allFinite()) box.extend(uv.uv[corner]);
+  const double extent = box.isEmpty() ? 0.0 : box.sizes().maxCoeff();
+  const double cutTolerance = kUvTolerance * (extent > 0.0 && std::isfinite(extent) ? extent : 1.0);
+
   const std::vector<std::uint64_t> halfEdges = sortedHalfEdges(mesh);
   std::vector<SeamEdge> seams;
   for (std::size_t first = 0, end; first < halfEdges.size(); first = end) {
@@ -112,7 +121,7 @@ std::vector<SeamEdge> seamEdgeList(const Mesh& mesh, const UvMap& uv, const std:
     double shift = 0.0;  // the integer u offset of the first compared endpoint
     for (const auto& [vertex, d] : differences) {
       if (isPole[static_cast<std::size_t>(vertex)]) continue;
-      differs = differs || std::fabs(d.x()) > kUvTolerance || std::fabs(d.y()) > kUvTolerance;
+      differs = differs || std::fabs(d.x()) > cutTolerance || std::fabs(d.y()) > cutTolerance;
       const bool integerShift =
           std::fabs(d.x()) > 0.5 && offInteger(d.x()) <= kUvTolerance && std::fabs(d.y()) <= kUvTolerance;
       if (!compared) shift = std::round(d.x());

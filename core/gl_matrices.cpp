@@ -10,11 +10,11 @@ Mat4 lookAt(const Vec3& eye, const Vec3& center, const Vec3& up) {
   if (!eye.allFinite() || !center.allFinite() || !up.allFinite())
     throw UsageError("lookAt: eye, center and up must be finite");
   const Vec3 forward = center - eye;
-  if (!(forward.norm() > 0.0)) throw UsageError("lookAt: the eye and the center coincide");
-  if (!(up.norm() > 0.0)) throw UsageError("lookAt: the up vector is zero");
-  // An eye 1e200 from the center (a mesh at 1e200) overflows squaredNorm: normalise without
-  // squaring there (elsewhere Eigen's normalized, bit for bit as before).
-  const auto unit = [](const Vec3& v) { return std::isfinite(v.squaredNorm()) ? v.normalized() : v.stableNormalized(); };
+  if (forward == Vec3::Zero()) throw UsageError("lookAt: the eye and the center coincide");
+  if (up == Vec3::Zero()) throw UsageError("lookAt: the up vector is zero");
+  // An eye 1e200 (1e-200) from the center, a mesh at 1e200 (1e-200), overflows (underflows)
+  // squaredNorm: normalise without squaring there (elsewhere Eigen's normalized, bit for bit as before).
+  const auto unit = [](const Vec3& v) { return std::isnormal(v.squaredNorm()) ? v.normalized() : v.stableNormalized(); };
   const Vec3 f = unit(forward);
   const Vec3 side = f.cross(unit(up));
   const double sine = side.norm();
@@ -39,9 +39,10 @@ Mat4 perspective(double fovyDegrees, double aspect, double zNear, double zFar) {
   m(0, 0) = f / aspect;
   m(1, 1) = f;
   m(2, 2) = (zFar + zNear) / (zNear - zFar);
-  // Beyond about 1e154 the product overflows: divide first there (elsewhere GLU's order, bit for bit).
+  // Beyond about 1e154 the product overflows, below about 1e-154 it underflows: divide first there
+  // (elsewhere GLU's order, bit for bit).
   const double product = 2.0 * zFar * zNear;
-  m(2, 3) = std::isfinite(product) ? product / (zNear - zFar) : 2.0 * zFar * (zNear / (zNear - zFar));
+  m(2, 3) = std::isnormal(product) ? product / (zNear - zFar) : 2.0 * zFar * (zNear / (zNear - zFar));
   m(3, 2) = -1.0;
   return m;
 }

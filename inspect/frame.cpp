@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/stopwatch.h"
+#include "inspect/measures_json.h"
 #include "io/image_io.h"
 #include "render/procedural.h"
 
@@ -72,11 +73,7 @@ DrawnFrame drawViews(const FrameOptions& frame, const MappedMesh& mapped, const 
           {"max", error.max}, {"mean", error.mean}, {"pixels", error.pixels}, {"invalid_pixels", error.invalidPixels}};
     }
     if ((view == views::View::Weights || view == views::View::BlendZone) && !out.record.contains("blend_zone")) {
-      const views::BlendZone zone = views::blendZone(mapped.viewInput(measured), options);
-      out.record["blend_zone"] = {{"threshold", zone.threshold},
-                                  {"pixels", zone.pixels},
-                                  {"covered_pixels", zone.coveredPixels},
-                                  {"invalid_pixels", zone.invalidPixels}};
+      out.record["blend_zone"] = blendZoneJson(views::blendZone(mapped.viewInput(measured), options));
     }
   }
   out.picture =

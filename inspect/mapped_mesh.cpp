@@ -200,6 +200,14 @@ nlohmann::json mapSummaryJson(const MappedMesh& mapped, const analysis::Judgemen
   j["verdict"] = j["judgement"]["verdict"];
   j["reasons"] = j["judgement"]["reasons"];
   j["texcoords"] = mapped.source;
+  if (!mapped.cameraQ.empty()) {
+    // The camera projector's (s, t, q) = (u q, v q, q) per corner, 3 per face in face order: what
+    // interpolates perspective-correctly, where the file holds the divided (u, v).
+    const std::vector<Vec4> corners = mapped.corners(false);
+    nlohmann::json homogeneous = nlohmann::json::array();
+    for (const Vec4& c : corners) homogeneous.push_back({c[0], c[1], c[3]});
+    j["homogeneous_texcoords"] = std::move(homogeneous);
+  }
   j["input"] = input;
   j["output"] = output;
   addMappingOrigin(j, mapped);

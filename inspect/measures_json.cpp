@@ -120,4 +120,11 @@ nlohmann::json judgementJson(const MappedMesh& mapped, const analysis::Judgement
             {"overlapped_pixels", s.overlap.overlappedPixels}}}};
 }
 
+nlohmann::json blendZoneJson(const views::BlendZone& zone) {
+  return {{"threshold", zone.threshold},
+          {"pixels", zone.pixels},
+          {"covered_pixels", zone.coveredPixels},
+          {"invalid_pixels", zone.invalidPixels}};
+}
+
 }  // namespace uvtk::inspect

@@ -6,6 +6,7 @@
 
 #include "analysis/judgement.h"
 #include "inspect/mapped_mesh.h"
+#include "views/views.h"
 
 namespace uvtk::inspect {
 
@@ -24,5 +25,8 @@ nlohmann::json judgementJson(const MappedMesh& mapped, const analysis::Judgement
 
 // A judgement's reasons, each as {code, severity, value, threshold, faces, text}.
 nlohmann::json reasonsJson(const analysis::Judgement& judgement);
+
+// A triplanar blend zone (views::blendZone) as {threshold, pixels, covered_pixels, invalid_pixels}.
+nlohmann::json blendZoneJson(const views::BlendZone& zone);
 
 }  // namespace uvtk::inspect

@@ -77,8 +77,12 @@ nlohmann::json writeReport(io::OutputSet& outputs, const ReportOptions& o, const
     options.render.raster.threads = o.threads;
     options.render.raster.cull = render::Cull::None;
     options.render.texture = &texture;
-    for (const views::View view : pageViews(mapped, o))
+    for (const views::View view : pageViews(mapped, o)) {
       pictures.emplace_back(views::toString(view), views::drawView(view, in, options));
+      if ((view == views::View::Weights || view == views::View::BlendZone) && !report.contains("blend_zone")) {
+        report["blend_zone"] = blendZoneJson(views::blendZone(in, options));
+      }
+    }
   }
   if (!milliseconds.is_null()) report["milliseconds"] = milliseconds;
   if (!o.json.empty()) outputs.writeText(o.json, report.dump(2) + "\n");

@@ -41,7 +41,8 @@ CheckedMesh checked(const Mesh& mesh);
 
 // The public Mapping of `mapped`, judged under `thresholds`; `input` is the summary's "input" record.
 Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thresholds, int overlapResolution,
-                    nlohmann::json input, std::optional<texgen::TexgenOptions> texgen = std::nullopt);
+                    nlohmann::json input, std::optional<texgen::TexgenOptions> texgen = std::nullopt,
+                    analysis::TextureSize textureSize = {});
 
 // Parses `words` (a command line without the program's name) with `app`; throws UsageError with
 // CLI11's message.

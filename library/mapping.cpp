@@ -7,6 +7,7 @@
 #include "core/math.h"
 #include "detail.h"
 #include "option_fields.h"
+#include "inspect/map_job.h"
 #include "inspect/texgen_job.h"
 #include "io/mesh_format.h"
 #include "io/mesh_writer.h"
@@ -60,6 +61,8 @@ const std::vector<Field<MapOptions>>& mapFields() {
       listField("--fail-on", &O::failOn),
       listField("--warn-on", &O::warnOn),
       integerField("--overlap-resolution", &O::overlapResolution),
+      textField("--texture-size", &O::textureSize),
+      numberField("--density", &O::density),
   };
   return fields;
 }
@@ -89,13 +92,18 @@ struct MapCommand {
   cli::ProjectorArguments projector;
   cli::VerdictArguments verdict;
   int overlapResolution = 1024;
+  std::string textureSize = "1024,1024";
+  std::optional<double> density;
 
   explicit MapCommand(const std::vector<std::string>& words) {
     cli::addProjectorOptions(app, projector);
     cli::addVerdictOptions(app, verdict);
     app.add_option("--overlap-resolution", overlapResolution)->check(CLI::Range(16, 8192));
+    app.add_option("--texture-size", textureSize);
+    app.add_option("--density", density);
     parseWords(app, words);
     verdict.check();
+    if (density) cli::checkDensity(*density);
   }
 };
 
@@ -148,9 +156,9 @@ TexgenOptions TexgenOptions::parse(const std::string& commandLine) {
 std::string TexgenOptions::commandLine() const { return joinCommandLine(wordsOf(*this, texgenFields())); }
 
 Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thresholds, int overlapResolution,
-                    nlohmann::json input, std::optional<texgen::TexgenOptions> texgen) {
+                    nlohmann::json input, std::optional<texgen::TexgenOptions> texgen, analysis::TextureSize textureSize) {
   auto detail = std::make_shared<MappingDetail>();
-  detail->judgement = mapped.judge(thresholds, overlapResolution);
+  detail->judgement = mapped.judge(thresholds, overlapResolution, 0, textureSize);
   detail->overlapResolution = overlapResolution;
   detail->input = std::move(input);
   detail->texgen = std::move(texgen);
@@ -193,8 +201,13 @@ Mapping map(const Mesh& mesh, const MapOptions& options) {
   return translatingErrors([&] {
     const MapCommand command(wordsOf(options, mapFields()));
     const param::ProjectorOptions resolved = command.projector.resolve();
-    return makeMapping(inspect::mapByProjector(std::move(in.engine), resolved, command.projector.seamPlaceAuto()),
-                       command.verdict.thresholds(), command.overlapResolution, std::move(in.input));
+    const analysis::TextureSize textureSize = cli::parseTextureSize(command.textureSize, "--texture-size");
+    inspect::MappedMesh mapped = inspect::mapByProjector(std::move(in.engine), resolved, command.projector.seamPlaceAuto());
+    if (command.density)  // as `uvtk map --density`: scaled by the mean of the judgement before it
+      inspect::scaleToTexelDensity(mapped, mapped.judge(command.verdict.thresholds(), command.overlapResolution, 0, textureSize),
+                                   *command.density, "mesh");
+    return makeMapping(std::move(mapped), command.verdict.thresholds(), command.overlapResolution, std::move(in.input),
+                       std::nullopt, textureSize);
   });
 }
 

@@ -463,7 +463,9 @@ Raises uvtk.InputError "PATH:LINE: error: ...". with_warnings=True returns (mesh
       .def_readwrite("convention", &api::MapOptions::convention)
       .def_readwrite("fail_on", &api::MapOptions::failOn)
       .def_readwrite("warn_on", &api::MapOptions::warnOn)
-      .def_readwrite("overlap_resolution", &api::MapOptions::overlapResolution);
+      .def_readwrite("overlap_resolution", &api::MapOptions::overlapResolution)
+      .def_readwrite("texture_size", &api::MapOptions::textureSize)
+      .def_readwrite("density", &api::MapOptions::density);
 
   py::class_<api::TexgenOptions>(m, "TexgenOptions", "The options of `uvtk texgen` as fields; TexgenOptions.parse(command_line).")
       .def(py::init<>())

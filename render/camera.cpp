@@ -22,13 +22,13 @@ BoundingSphere boundingSphere(const std::vector<Vec3>& points) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  // Beyond about 1e154 a squared length overflows: halves and stableNorm there (elsewhere the same
-  // bits as before).
+  // Beyond about 1e154 a squared length overflows, below about 1e-154 it underflows: halves and
+  // stableNorm there (elsewhere the same bits as before).
   s.center = 0.5 * (lo + hi);
   if (!s.center.allFinite()) s.center = 0.5 * lo + 0.5 * hi;
   for (const Vec3& p : points) {
-    const double distance = (p - s.center).norm();
-    s.radius = std::max(s.radius, std::isfinite(distance) ? distance : (p - s.center).stableNorm());
+    const double squared = (p - s.center).squaredNorm();
+    s.radius = std::max(s.radius, std::isnormal(squared) ? std::sqrt(squared) : (p - s.center).stableNorm());
   }
   return s;
 }

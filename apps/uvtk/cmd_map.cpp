@@ -49,11 +49,7 @@ void runMap(const MapArguments& a) {
   job.thresholds = a.verdict.thresholds();
   job.overlapResolution = a.overlapResolution;
   job.textureSize = parseTextureSize(a.textureSize, "--texture-size");
-  if (a.density && !(*a.density > 0.0 && std::isfinite(*a.density))) {
-    char found[32];
-    std::snprintf(found, sizeof found, "%g", *a.density);
-    throw UsageError(std::string("--density: expected a positive number of texels per object unit, found ") + found);
-  }
+  if (a.density) checkDensity(*a.density);
   job.density = a.density;
   job.threads = a.threads;
   std::error_code ignored;

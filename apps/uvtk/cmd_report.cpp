@@ -55,7 +55,12 @@ void runReport(const ReportCommandArguments& a) {
   const double measureMs = clock.stop();
 
   clock.start("writing", a.report.html.empty() ? a.report.json : a.report.html);
-  writeReport(a.report.options(), mapped, judgement, inputSummary,
+  inspect::ReportOptions reportOptions = a.report.options();
+  // A triplanar page shows its blend too, unless --views says what to show.
+  if (projectorGiven && projectorOptions.surface == param::SurfaceKind::Triplanar && !reportOptions.html.empty() &&
+      !given(a.projector.app, "--views"))
+    reportOptions.views.insert(reportOptions.views.end(), {views::View::Weights, views::View::BlendZone});
+  writeReport(reportOptions, mapped, judgement, inputSummary,
               {{"read", readMs}, {"texcoords", mapMs}, {"measure", measureMs}});
   clock.stop();
   printMappingNotes(a.input, input.warnings, mapped);

@@ -64,6 +64,12 @@ TEST_F(CameraCli, MapWritesTheDividedUvAndCountsTheCornersBehind) {
   EXPECT_EQ(j["options"]["camera"]["eye"], nlohmann::json({0.0, 0.0, 5.0}));
   EXPECT_EQ(j["options"]["camera"]["fovy"], 90.0);
   EXPECT_EQ(j["options"]["camera"]["up"], nlohmann::json({0.0, 1.0, 0.0}));
+  // The homogeneous (s, t, q) = ((x_c + w_c)/2, (y_c + w_c)/2, w_c) per corner; (0, 0, 1) behind the eye.
+  const double stq[6][3] = {{3, 2.5, 5}, {2, 2.5, 4}, {2.5, 2.5, 6}, {3, 2.5, 5}, {2, 2.5, 4}, {0, 0, 1}};
+  const nlohmann::json& homogeneous = j.at("homogeneous_texcoords");
+  ASSERT_EQ(homogeneous.size(), 6u);
+  for (std::size_t c = 0; c < 6; ++c)
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(homogeneous[c][i].get<double>(), stq[c][i], 1e-14) << c << " " << i;
 }
 
 TEST_F(CameraCli, EvalGivesUVAndQ) {

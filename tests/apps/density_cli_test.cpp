@@ -121,7 +121,8 @@ TEST_F(DensityCli, BadTextureSizesAndDensitiesAreRefusedWithNothingWritten) {
 
 TEST_F(DensityCli, CompareRecordsAndTheDensityViewReadTheTextureSize) {
   ASSERT_EQ(uvtk("compare " + path("plane.obj") + " --no-baselines --texture-size 256,128 --json " + path("c.json")).status, 0);
-  for (const nlohmann::json& record : json("c.json")["ranking"])
+  const nlohmann::json compared = json("c.json");  // a range-for over a temporary's member would dangle
+  for (const nlohmann::json& record : compared["ranking"])
     EXPECT_EQ(record["texel_density"]["texture_size"], nlohmann::json::array({256, 128})) << record["name"];
 
   const CliRun r = uvtk("render " + path("plane.obj") + " --projector plane --view density --texture-size 512 -o " +

@@ -135,6 +135,23 @@ TEST(Map, TriplanarAndTheCameraAreFieldsLikeEveryOtherOption) {
   EXPECT_EQ(map(triangle(), camera).uv[1], (Vector2{0.6, 0.5}));
 }
 
+TEST(Map, DensityScalesTheUvsToTexelsPerUnitOfTheTextureSize) {
+  // The plane in object coordinates maps the triangle isometrically: sqrt(Auv W H / A3) = W = 1024.
+  MapOptions o;
+  o.projector = "plane";
+  o.fit = "none";
+  o.density = 256;
+  EXPECT_EQ(o.commandLine(), "--projector plane --fit none --density 256");
+  EXPECT_EQ(map(triangle(), o).uv, (std::vector<Vector2>{{0, 0}, {0.5, 0}, {0, 0.75}}));  // a quarter
+  o.textureSize = "256";  // already 256 texels per unit of a 256 x 256 texture
+  EXPECT_EQ(map(triangle(), o).uv, (std::vector<Vector2>{{0, 0}, {2, 0}, {0, 3}}));
+  o.density = -1;
+  EXPECT_NE(messageOf([&] { map(triangle(), o); }).find("--density"), std::string::npos);
+  o.density = 0;
+  o.textureSize = "0,5";
+  EXPECT_NE(messageOf([&] { map(triangle(), o); }).find("--texture-size"), std::string::npos);
+}
+
 TEST(Map, TheSphereOnAnOctahedronGivesTheAzimuthsAndMarksThePoles) {
   MapOptions o;
   o.fit = "none";

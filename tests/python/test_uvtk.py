@@ -296,7 +296,7 @@ def test_a_corner_at_the_spheres_centre_is_invalid_with_its_reason():
     assert m.verdict["status"] == "fail" and m.verdict["reasons"][0]["rule"] == "invalid_corners"
 
 
-def test_triplanar_and_the_camera_are_keywords():
+def test_triplanar_the_camera_and_density_are_keywords():
     positions, triangles = unit_square()
     mesh = uvtk.Mesh(positions * 3, triangles)  # in z = 0, facing +z: the z projection (x, y) T
     m = uvtk.map(mesh, projector="triplanar", tile=0.5, triplanar_preset="godot")
@@ -306,6 +306,9 @@ def test_triplanar_and_the_camera_are_keywords():
     assert options.command_line() == "--projector camera --eye 0,0,5 --fovy 90"
     m = uvtk.map(mesh, options)
     np.testing.assert_allclose(m.uv, (0.5 + positions[:, :2] * 3 / 10)[triangles], rtol=0, atol=1e-15)
+    # Texel density: the plane maps the square isometrically (1024 texels per unit); 512 halves the UVs.
+    m = uvtk.map(mesh, projector="plane", fit="none", density=512, texture_size="1024,1024")
+    np.testing.assert_array_equal(m.uv, (positions[:, :2] * 1.5)[triangles])
 
 
 def test_keywords_reach_every_option():

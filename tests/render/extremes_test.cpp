@@ -12,6 +12,8 @@
 
 #include "core/error.h"
 #include "core/gl_matrices.h"
+#include "meshes/generators.h"
+#include "render/camera.h"
 #include "render/procedural.h"
 #include "render/renderer.h"
 #include "render/texture.h"
@@ -356,6 +358,40 @@ TEST(RenderExtremes, TexturesAbove2GiBAreRefusedWithAUsageErrorBeforeAllocating)
        "accepted"},
   };
   for (const Row& row : rows) EXPECT_EQ(errorOf(row.make), row.message) << row.expected;
+}
+
+// A mesh at 2^700 or 2^-700 (1e210, 1e-211), framed by its bounding sphere, draws the picture of
+// the same mesh at unit scale bit for bit: a power of two scales every position exactly, and the
+// frame's bounding sphere, lookAt, perspective and clip coordinates keep every quotient of the
+// unit-scale frame (before, products of two coordinates overflowed or underflowed: nothing drawn).
+TEST(RenderExtremes, AMeshAt2To700Or2ToMinus700DrawsTheUnitScalePicture) {
+  const Mesh unit = meshes::icosphere(3);
+  TexcoordSource texcoords;
+  for (const Triangle& t : unit.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& p = unit.positions[t[k]];
+      texcoords.corners.emplace_back(p.x(), p.y(), 0.0, 1.0);  // a planar mapping, the same at every scale
+    }
+  const Texture texture = rampTexture(16, 16);
+  const auto draw = [&](double scale, const Projection& projection) {
+    Mesh mesh = unit;
+    for (Vec3& p : mesh.positions) p *= scale;
+    RenderOptions o;
+    o.camera = frameSphere(boundingSphere(mesh.positions), Vec3(1, 2, 3), Vec3::UnitY(), projection, 48, 32);
+    o.texture = &texture;
+    o.sampler.minFilter = o.sampler.magFilter = Filter::Linear;
+    o.raster.cull = Cull::None;
+    return render(mesh, texcoords, o);
+  };
+  for (const Projection projection : {Projection{false, 45.0}, Projection{true, 45.0}}) {
+    const Rendering reference = draw(1.0, projection);
+    EXPECT_GT(reference.coveredPixels, 400u);
+    for (const double scale : {0x1p700, 0x1p-700}) {
+      const Rendering r = draw(scale, projection);
+      EXPECT_EQ(r.coveredPixels, reference.coveredPixels) << scale << " orthographic " << projection.orthographic;
+      EXPECT_EQ(r.colour.pixels, reference.colour.pixels) << scale << " orthographic " << projection.orthographic;
+    }
+  }
 }
 
 }  // namespace

@@ -56,6 +56,8 @@ struct MapOptions {
   std::vector<std::string> failOn;   // --fail-on: RULE=VALUE thresholds of the verdict (docs/conventions.md §11)
   std::vector<std::string> warnOn;   // --warn-on: RULE=VALUE
   int overlapResolution = 1024;      // --overlap-resolution: pixels across the overlap raster
+  std::string textureSize = "1024,1024";  // --texture-size: texels W,H (or N) texel density counts in
+  double density = 0.0;              // --density: scale the UVs to this mean texel density (0: leave them)
 
   // The options from `uvtk map`'s syntax, e.g. "--projector cylinder --fit obb --caps". Throws
   // std::invalid_argument with the command line's message.
