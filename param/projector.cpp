@@ -204,6 +204,19 @@ void checkOptions(const ProjectorOptions& o) {
   if (o.surface == SurfaceKind::Triplanar) checkTriplanarOptions(o.triplanar);
 }
 
+// A formula's (u, v) as a corner: valid, or invalid with kCornerNotFinite.
+VertexUv finiteVertexUv(const Vec2& uv) {
+  VertexUv out;
+  if (!uv.allFinite()) {
+    out.reason = kCornerNotFinite;
+    return out;
+  }
+  out.uv = uv;
+  out.state = CornerState::Ok;
+  out.reason = kCornerValid;
+  return out;
+}
+
 // A corner from a per-point formula's value (the camera, triplanar): its UV, or invalid for the value's reason.
 void storeCorner(CornerField& c, std::size_t corner, const VertexUv& s) {
   if (s.state == CornerState::Invalid) {
@@ -410,16 +423,7 @@ void mapVertices(const ProjectorOptions& o, const Affine3& localFromObject, cons
 }
 
 VertexUv triplanarVertexUv(const TriplanarOptions& options, int axis, const Vec3& local) {
-  VertexUv out;
-  const Vec2 uv = triplanarUv(options, axis, local);
-  if (!uv.allFinite()) {
-    out.reason = kCornerNotFinite;
-    return out;
-  }
-  out.uv = uv;
-  out.state = CornerState::Ok;
-  out.reason = kCornerValid;
-  return out;
+  return finiteVertexUv(triplanarUv(options, axis, local));
 }
 
 VertexUv cameraVertexUv(const CameraTransform& camera, const Vec3& position) {
@@ -433,15 +437,7 @@ VertexUv cameraVertexUv(const CameraTransform& camera, const Vec3& position) {
     out.reason = kCornerBehind;
     return out;
   }
-  const Vec2 uv(h.x() / h.w(), h.y() / h.w());
-  if (!uv.allFinite()) {  // a q so small that the divide overflows
-    out.reason = kCornerNotFinite;
-    return out;
-  }
-  out.uv = uv;
-  out.state = CornerState::Ok;
-  out.reason = kCornerValid;
-  return out;
+  return finiteVertexUv(Vec2(h.x() / h.w(), h.y() / h.w()));  // not finite: a q so small that the divide overflows
 }
 
 PointMapping::PointMapping(const ProjectorOptions& o, const Affine3& localFromObject,
