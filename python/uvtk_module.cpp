@@ -36,6 +36,7 @@ struct EvalResult {
   py::object u, v, w, q, status;
   py::list reason;
   std::string mapping;
+  py::object triplanarUv, triplanarWeights;  // --projector triplanar: (..., 3, 2) and (..., 3); else None
 };
 
 using Shape = std::vector<py::ssize_t>;
@@ -304,6 +305,10 @@ EvalResult evaluate(const Doubles& points, const py::object& normals, const py::
 
   py::array_t<double> u(shape), v(shape), w(shape), q(shape);
   py::array_t<std::uint8_t> status(shape);
+  Shape uvShape = shape, weightShape = shape;
+  uvShape.insert(uvShape.end(), {3, 2});
+  weightShape.push_back(3);
+  py::array_t<double> triplanarUv(uvShape), triplanarWeights(weightShape);
   std::vector<const char*> reasons(n);
   std::string mappingText;
   {
@@ -315,6 +320,7 @@ EvalResult evaluate(const Doubles& points, const py::object& normals, const py::
     const std::size_t normalStep = normalArray && normalArray.size() != 3 ? 3 : 0;
     double *uOut = u.mutable_data(), *vOut = v.mutable_data(), *wOut = w.mutable_data(), *qOut = q.mutable_data();
     std::uint8_t* statusOut = status.mutable_data();
+    double *uvOut = triplanarUv.mutable_data(), *weightOut = triplanarWeights.mutable_data();
     for (std::size_t i = 0; i < n; ++i) {
       const uvtk::point::Vector3 at{p[3 * i], p[3 * i + 1], p[3 * i + 2]};
       const uvtk::point::Vector3 nAt = normal ? uvtk::point::Vector3{normal[normalStep * i], normal[normalStep * i + 1],
@@ -324,9 +330,16 @@ EvalResult evaluate(const Doubles& points, const py::object& normals, const py::
       uOut[i] = r.u, vOut[i] = r.v, wOut[i] = r.w, qOut[i] = r.q;
       statusOut[i] = std::uint8_t(r.status);
       reasons[i] = r.reason;
+      for (std::size_t axis = 0; axis < 3; ++axis) {
+        uvOut[6 * i + 2 * axis] = r.triplanarUv[axis][0];
+        uvOut[6 * i + 2 * axis + 1] = r.triplanarUv[axis][1];
+        weightOut[3 * i + axis] = r.triplanarWeights[axis];
+      }
     }
   }
-  EvalResult result{u, v, w, q, status, py::list(), mappingText};
+  const bool triplanar = kwargs.contains("projector") && py::str(kwargs["projector"]).cast<std::string>() == "triplanar";
+  EvalResult result{u, v, w, q, status, py::list(), mappingText, triplanar ? py::object(triplanarUv) : py::none(),
+                    triplanar ? py::object(triplanarWeights) : py::none()};
   for (const char* reason : reasons) result.reason.append(reason);
   return result;
 }
@@ -699,6 +712,10 @@ Returns {'json': the --json document as a dict, 'table': the Markdown table, 'be
       .def_readonly("q", &EvalResult::q, "texgen's q, else 1")
       .def_readonly("status", &EvalResult::status, "uint8: uvtk.POINT_OK, POINT_POLE, POINT_ON_SEAM, POINT_INVALID")
       .def_readonly("reason", &EvalResult::reason, "why a status is not ok, one sentence ('' when ok)")
+      .def_readonly("triplanar_uv", &EvalResult::triplanarUv,
+                    "--projector triplanar: the (u, v) of the x, y and z projections, shape (..., 3, 2); else None")
+      .def_readonly("triplanar_weights", &EvalResult::triplanarWeights,
+                    "--projector triplanar: their weights (sum 1), shape (..., 3); else None")
       .def_readonly("mapping", &EvalResult::mapping, "the options string of the mapping that evaluated them")
       .def("keys", [](const EvalResult&) { return py::make_tuple("u", "v", "w", "q", "status", "reason"); })
       .def("__getitem__", [](py::object self, const std::string& key) {

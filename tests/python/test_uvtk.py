@@ -575,6 +575,14 @@ def test_eval_sphere_follows_the_convention():
     assert uvtk.POINT_STATUS_NAMES[r.status[5]] == "pole"
 
 
+def test_eval_triplanar_gives_the_three_projections_and_their_weights():
+    r = uvtk.eval([[1, 2, 3], [1, 2, 3]], normals=[[1, 2, 3], [0, 0, -5]], projector="triplanar", tile=2)
+    np.testing.assert_array_equal(r.triplanar_uv, [[[6, 4], [2, 6], [2, 4]]] * 2)  # Unity: zy, xz, xy times 2
+    np.testing.assert_allclose(r.triplanar_weights, [[1 / 6, 2 / 6, 3 / 6], [0, 0, 1]], rtol=0, atol=1e-15)
+    assert r.u.tolist() == [2, 2] and r.v.tolist() == [4, 4]  # the dominant z projection
+    assert uvtk.eval([1, 2, 3], projector="sphere").triplanar_weights is None
+
+
 def test_eval_cylinder_with_caps_reads_the_normals():
     points = np.array([[0, 2, 0.5], [-1, 0, 0.25], [0.5, 0, 1]])
     side = uvtk.eval(points[:2], projector="cylinder")
