@@ -12,34 +12,23 @@
 #include "views/palette.h"
 #include "views/scene.h"
 #include "views/views.h"
+#include "views/mapped_layout.h"
 
 namespace uvtk::views {
 namespace {
 
-struct Mapped {
-  Mesh mesh;
-  UvMap uv;
-  analysis::Judgement judgement;
-
-  // The square [x0, x0 + 2] x [0, 2] in z = 0 (two triangles), mapped by ((x - x0) s + u0, y s).
-  void addSquare(double x0, double s, double u0) {
-    const int first = int(mesh.positions.size());
-    for (const Vec2& c : {Vec2(0, 0), Vec2(2, 0), Vec2(2, 2), Vec2(0, 2)}) mesh.positions.push_back({x0 + c.x(), c.y(), 0});
-    mesh.triangles.push_back({first, first + 1, first + 2});
-    mesh.triangles.push_back({first, first + 2, first + 3});
-    for (int k : {0, 1, 2, 0, 2, 3}) {
-      const Vec3& p = mesh.positions[std::size_t(first + k)];
-      uv.uv.push_back(Vec2((p.x() - x0) * s + u0, p.y() * s));
-    }
-    uv.faceFlags.insert(uv.faceFlags.end(), {kFaceOk, kFaceOk});
+// The square [x0, x0 + 2] x [0, 2] in z = 0 (two triangles), mapped by ((x - x0) s + u0, y s).
+void addSquare(Mapped& m, double x0, double s, double u0) {
+  const int first = int(m.mesh.positions.size());
+  for (const Vec2& c : {Vec2(0, 0), Vec2(2, 0), Vec2(2, 2), Vec2(0, 2)}) m.mesh.positions.push_back({x0 + c.x(), c.y(), 0});
+  m.mesh.triangles.push_back({first, first + 1, first + 2});
+  m.mesh.triangles.push_back({first, first + 2, first + 3});
+  for (int k : {0, 1, 2, 0, 2, 3}) {
+    const Vec3& p = m.mesh.positions[std::size_t(first + k)];
+    m.uv.uv.push_back(Vec2((p.x() - x0) * s + u0, p.y() * s));
   }
-  void analyse() { judgement = analysis::judge(mesh, uv); }
-  ViewInput input() const {
-    ViewInput in;
-    in.mesh = &mesh, in.uv = &uv, in.judgement = &judgement;
-    return in;
-  }
-};
+  m.uv.faceFlags.insert(m.uv.faceFlags.end(), {kFaceOk, kFaceOk});
+}
 
 ViewOptions faceOn(const Mesh& mesh, int size) {
   ViewOptions o;
@@ -51,7 +40,7 @@ ViewOptions faceOn(const Mesh& mesh, int size) {
 
 TEST(DensityView, AFlatDensityIsOneColourThePalettesMiddle) {
   Mapped m;
-  m.addSquare(0.0, 0.5, 0.0);  // side 2 on the unit UV square: sqrt(1 * 1024 * 1024 / 4) = 512
+  addSquare(m, 0.0, 0.5, 0.0);  // side 2 on the unit UV square: sqrt(1 * 1024 * 1024 / 4) = 512
   m.analyse();
   ASSERT_DOUBLE_EQ(m.judgement.summary.density.statistics.p50, 512.0);
   const ViewOptions o = faceOn(m.mesh, 64);
@@ -80,8 +69,8 @@ TEST(DensityView, AFlatDensityIsOneColourThePalettesMiddle) {
 
 TEST(DensityView, TwoDensitiesTakeTheirPlacesOnTheLogarithmicScale) {
   Mapped m;
-  m.addSquare(0.0, 0.5, 0.0);    // density 512
-  m.addSquare(2.5, 0.125, 2.0);  // density 128
+  addSquare(m, 0.0, 0.5, 0.0);    // density 512
+  addSquare(m, 2.5, 0.125, 2.0);  // density 128
   m.analyse();
   // Equal areas: p10 = p50 = 128 (the lower inverse), p90 = 512. Scale 64 .. 512: 128 lies at a third.
   const analysis::Statistics& s = m.judgement.summary.density.statistics;
@@ -113,7 +102,7 @@ TEST(DensityView, IsAViewByNameAndALayoutFill) {
   EXPECT_STREQ(toString(View::Density), "density");
   EXPECT_TRUE(isMeasure(View::Density));
   Mapped m;
-  m.addSquare(0.0, 0.5, 0.0);
+  addSquare(m, 0.0, 0.5, 0.0);
   m.analyse();
   ViewOptions o = faceOn(m.mesh, 32);
   o.layoutFill = View::Density;

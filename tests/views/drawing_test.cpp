@@ -21,33 +21,10 @@
 #include "views/measure.h"
 #include "views/palette.h"
 #include "views/scene.h"
+#include "views/mapped_layout.h"
 
 namespace uvtk::views {
 namespace {
-
-// A mesh with its UVs and what the views read from them.
-struct Mapped {
-  Mesh mesh;
-  UvMap uv;
-  analysis::Judgement judgement;
-  std::optional<render::PixelMapping> exact;
-  bool wrapsU = false;
-  std::vector<double> q;  // texgen's
-
-  // After the UVs change.
-  void analyse() {
-    analysis::JudgementOptions options;
-    options.overlapResolution = 256;
-    judgement = analysis::judge(mesh, uv, options);
-  }
-  ViewInput input() const {
-    ViewInput in;
-    in.mesh = &mesh, in.uv = &uv, in.judgement = &judgement;
-    in.wrapsU = wrapsU, in.exact = exact;
-    in.q = q.empty() ? nullptr : &q;
-    return in;
-  }
-};
 
 // The mesh through a projector, with the exact mapping as apps/uvtk/cmd_render.cpp builds it.
 Mapped mapWith(Mesh mesh, const param::ProjectorOptions& options) {
