@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -37,6 +38,13 @@ struct EvalResult {
   py::list reason;
   std::string mapping;
   py::object triplanarUv, triplanarWeights;  // --projector triplanar: (..., 3, 2) and (..., 3); else None
+
+  // dict(result)'s keys: the triplanar arrays only when there are some.
+  std::vector<std::string> keys() const {
+    std::vector<std::string> out{"u", "v", "w", "q", "status", "reason"};
+    if (!triplanarUv.is_none()) out.insert(out.end(), {"triplanar_uv", "triplanar_weights"});
+    return out;
+  }
 };
 
 using Shape = std::vector<py::ssize_t>;
@@ -717,10 +725,10 @@ Returns {'json': the --json document as a dict, 'table': the Markdown table, 'be
       .def_readonly("triplanar_weights", &EvalResult::triplanarWeights,
                     "--projector triplanar: their weights (sum 1), shape (..., 3); else None")
       .def_readonly("mapping", &EvalResult::mapping, "the options string of the mapping that evaluated them")
-      .def("keys", [](const EvalResult&) { return py::make_tuple("u", "v", "w", "q", "status", "reason"); })
+      .def("keys", &EvalResult::keys)
       .def("__getitem__", [](py::object self, const std::string& key) {
-        if (key != "u" && key != "v" && key != "w" && key != "q" && key != "status" && key != "reason")
-          throw py::key_error(key);
+        const std::vector<std::string> keys = self.cast<const EvalResult&>().keys();
+        if (std::find(keys.begin(), keys.end(), key) == keys.end()) throw py::key_error(key);
         return self.attr(key.c_str());
       })
       .def("__repr__", [](const EvalResult& r) {

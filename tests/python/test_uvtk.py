@@ -580,7 +580,11 @@ def test_eval_triplanar_gives_the_three_projections_and_their_weights():
     np.testing.assert_array_equal(r.triplanar_uv, [[[6, 4], [2, 6], [2, 4]]] * 2)  # Unity: zy, xz, xy times 2
     np.testing.assert_allclose(r.triplanar_weights, [[1 / 6, 2 / 6, 3 / 6], [0, 0, 1]], rtol=0, atol=1e-15)
     assert r.u.tolist() == [2, 2] and r.v.tolist() == [4, 4]  # the dominant z projection
-    assert uvtk.eval([1, 2, 3], projector="sphere").triplanar_weights is None
+    assert set(dict(r)) == {"u", "v", "w", "q", "status", "reason", "triplanar_uv", "triplanar_weights"}
+    np.testing.assert_array_equal(dict(r)["triplanar_weights"], r.triplanar_weights)
+    sphere = uvtk.eval([1, 2, 3], projector="sphere")
+    assert sphere.triplanar_weights is None
+    assert "triplanar_uv" not in dict(sphere)
 
 
 def test_eval_cylinder_with_caps_reads_the_normals():
