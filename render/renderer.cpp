@@ -8,6 +8,9 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <type_traits>
+#include <utility>
 
 #include "core/error.h"
 #include "core/parallel.h"
@@ -55,7 +58,9 @@ struct TextureLookup {
 class Shader {
  public:
   explicit Shader(const FrameData& frame)
-      : f_(frame), blends_(frame.source.pixelMapping && frame.source.pixelMapping->blendAt) {}
+      : f_(frame),
+        blends_(frame.source.pixelMapping && frame.source.pixelMapping->blendAt),
+        quad_(frame.options.derivatives != Derivatives::Analytic && frame.options.seamFix != SeamFix::Grad) {}
 
   // The pixel (x, row) of a drawn triangle; returns RGB and fills the AOV values.
   Vec3 shade(int x, int row, const DrawnFace& drawn, float* aov) const {
@@ -65,9 +70,11 @@ class Shader {
     const TriangleInterpolator::Barycentrics b = drawn.interpolator.at(wx, wy);
     TextureLookup lookup;
     if (blends_) {
-      lookup = lookUpBlend(face, b);
+      lookup = lookUpBlend(drawn, wx, wy, b);
     } else {
-      const FragmentTexcoords tc = f_.source.pixelMapping ? exactTexcoords(face, b) : interpolatedTexcoords(face, b);
+      const FragmentTexcoords tc = quad_                      ? quadTexcoords(drawn, wx, wy)
+                                   : f_.source.pixelMapping ? exactTexcoords(face, b)
+                                                            : interpolatedTexcoords(face, b);
       lookup = o.cubeTexture ? lookUpCube(tc) : lookUp2d(tc);
     }
     Vec4 fragment = Vec4::Ones();
@@ -90,7 +97,7 @@ class Shader {
     const RenderOptions& o = f_.options;
     TextureLookup out;
     out.st = tc.str.head<2>();
-    out.lambda = levelOfDetail(o.texture->width(), o.texture->height(), tc.dx.head<2>(), tc.dy.head<2>());
+    out.lambda = levelOfDetail(o.texture->width(), o.texture->height(), tc.dx.head<2>(), tc.dy.head<2>()) + o.lodBias;
     out.texel = sample(*o.texture, o.sampler, out.st.x(), out.st.y(), out.lambda);
     return out;
   }
@@ -121,7 +128,7 @@ class Shader {
       out.cubeFace = c.st.allFinite() ? int(face) : -1;
     }
     const int n = o.cubeTexture->size();
-    out.lambda = levelOfDetail(n, n, dstDx, dstDy);
+    out.lambda = levelOfDetail(n, n, dstDx, dstDy) + o.lodBias;
     out.texel = sampleCube(*o.cubeTexture, o.sampler, face, out.st.x(), out.st.y(), out.lambda, o.seamless);
     return out;
   }
@@ -129,9 +136,11 @@ class Shader {
   // The three lookups of a blend, each as lookUp2d reads an exact mapping, and their weighted
   // sum; u, v and lambda of the heaviest. Without a value, what lookUp2d shows for a non-finite
   // (s, t): its derivatives are 0, so lambda = -inf, and the texel is the bound texture's (0, 0).
-  TextureLookup lookUpBlend(std::int32_t face, const TriangleInterpolator::Barycentrics& b) const {
+  TextureLookup lookUpBlend(const DrawnFace& drawn, double wx, double wy,
+                            const TriangleInterpolator::Barycentrics& b) const {
     constexpr double h = 1e-3;  // as exactTexcoords
     const RenderOptions& o = f_.options;
+    const std::int32_t face = drawn.face;
     const TexcoordBlend at = blendAt(face, b.b);
     const Vec3& w = at.weights;
     bool valid = w.allFinite();
@@ -143,19 +152,79 @@ class Shader {
       out.texel = sample(*o.texture, o.sampler, out.st.x(), out.st.y(), out.lambda);
       return out;
     }
-    const TexcoordBlend xPlus = blendAt(face, b.b + h * b.dbdx), xMinus = blendAt(face, b.b - h * b.dbdx);
-    const TexcoordBlend yPlus = blendAt(face, b.b + h * b.dbdy), yMinus = blendAt(face, b.b - h * b.dbdy);
+    // Per lookup, d(st)/dx and d(st)/dy as the columns of two 2 x 3 matrices.
+    using Coordinates = Eigen::Matrix<double, 2, 3>;
+    const auto columns = [](const TexcoordBlend& blend) {
+      Coordinates c;
+      for (int i = 0; i < 3; ++i) c.col(i) = blend.st[std::size_t(i)];
+      return c;
+    };
+    Coordinates dx, dy;
+    if (quad_) {
+      std::tie(dx, dy) = quadDifferences(
+          [&](double px, double py) { return columns(blendAt(face, drawn.interpolator.at(px, py).b)); }, wx, wy);
+    } else {
+      const Coordinates xPlus = columns(blendAt(face, b.b + h * b.dbdx)), xMinus = columns(blendAt(face, b.b - h * b.dbdx));
+      const Coordinates yPlus = columns(blendAt(face, b.b + h * b.dbdy)), yMinus = columns(blendAt(face, b.b - h * b.dbdy));
+      for (int i = 0; i < 3; ++i) {
+        dx.col(i) = difference(Vec2(xPlus.col(i)), Vec2(xMinus.col(i))) / (2 * h);
+        dy.col(i) = difference(Vec2(yPlus.col(i)), Vec2(yMinus.col(i))) / (2 * h);
+      }
+    }
     int heaviest = 0;
     for (std::size_t i = 0; i < 3; ++i) {
       if (!(w[int(i)] > 0.0)) continue;
       const Texture& texture = o.axisTextures[i] ? *o.axisTextures[i] : *o.texture;
-      const Vec2 dx = difference(xPlus.st[i], xMinus.st[i]) / (2 * h);
-      const Vec2 dy = difference(yPlus.st[i], yMinus.st[i]) / (2 * h);
-      const double lambda = levelOfDetail(texture.width(), texture.height(), dx, dy);
+      const double lambda =
+          levelOfDetail(texture.width(), texture.height(), dx.col(int(i)), dy.col(int(i))) + o.lodBias;
       out.texel += w[int(i)] * sample(texture, o.sampler, at.st[i].x(), at.st[i].y(), lambda);
       if (w[int(i)] > w[heaviest]) heaviest = int(i);
       if (int(i) == heaviest) out.st = at.st[i], out.lambda = lambda;
     }
+    return out;
+  }
+
+  // The differences of f(window x, window y) across the fragment's 2 x 2 quad, as {dFdx, dFdy}:
+  // coarse from the quad's bottom-left pixel, fine along the fragment's own row and column.
+  template <typename F, typename Value = std::decay_t<std::invoke_result_t<const F&, double, double>>>
+  std::pair<Value, Value> quadDifferences(const F& f, double wx, double wy) const {
+    const double x0 = 2.0 * std::floor(wx / 2.0) + 0.5, y0 = 2.0 * std::floor(wy / 2.0) + 0.5;
+    const double x1 = x0 + 1.0, y1 = y0 + 1.0;
+    if (f_.options.derivatives == Derivatives::QuadCoarse) {
+      const Value v00 = f(x0, y0);
+      return {f(x1, y0) - v00, f(x0, y1) - v00};
+    }
+    return {f(x1, wy) - f(x0, wy), f(wx, y1) - f(wx, y0)};
+  }
+
+  // (s, t, r) / q at window (x, y) on the drawn triangle's plane, inside it or not.
+  Vec3 texcoordsAt(const DrawnFace& drawn, double wx, double wy) const {
+    const Vec3 b = drawn.interpolator.at(wx, wy).b;
+    if (f_.source.pixelMapping) return exactAt(drawn.face, b);
+    const Vec4* corners = &f_.source.corners[3 * std::size_t(drawn.face)];
+    const Vec4 tc = b[0] * corners[0] + b[1] * corners[1] + b[2] * corners[2];
+    return tc.head<3>() / tc.w();
+  }
+
+  // The fragment's coordinates, their derivatives taken across its quad (RenderOptions::derivatives),
+  // with Tarini's choice of s when asked for.
+  FragmentTexcoords quadTexcoords(const DrawnFace& drawn, double wx, double wy) const {
+    FragmentTexcoords out;
+    out.str = texcoordsAt(drawn, wx, wy);
+    if (f_.options.seamFix != SeamFix::Tarini) {
+      std::tie(out.dx, out.dy) = quadDifferences([&](double px, double py) { return texcoordsAt(drawn, px, py); }, wx, wy);
+      return out;
+    }
+    // (fract(s), fract(s + 1/2) - 1/2, t, r): the two candidates for s beside t and r.
+    const auto candidates = [&](double px, double py) {
+      const Vec3 str = texcoordsAt(drawn, px, py);
+      const double shifted = str.x() + 0.5;
+      return Vec4(str.x() - std::floor(str.x()), shifted - std::floor(shifted) - 0.5, str.y(), str.z());
+    };
+    const auto [dx, dy] = quadDifferences(candidates, wx, wy);
+    const int s = std::fabs(dx[0]) + std::fabs(dy[0]) <= std::fabs(dx[1]) + std::fabs(dy[1]) ? 0 : 1;
+    out.dx = Vec3(dx[s], dx[2], dx[3]);
+    out.dy = Vec3(dy[s], dy[2], dy[3]);
     return out;
   }
 
@@ -231,6 +300,7 @@ class Shader {
 
   const FrameData& f_;
   const bool blends_;  // the pixel mapping is a blend of three lookups
+  const bool quad_;    // derivatives across the pixel quad
 };
 
 // The clip-space positions. Homogeneous: one power of two times all of them draws the same frame,
@@ -430,9 +500,12 @@ Rendering render(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
     const PixelMapping& m = *source.pixelMapping;
     UVTK_CHECK(!m.texcoordAt != !m.blendAt);
     if (m.blendAt && o.cubeTexture) throw UsageError("render: a triplanar blend reads 2D textures");
+    if (o.seamFix == SeamFix::Tarini && m.blendAt) throw UsageError("render: Tarini's seam fix applies to one lookup, not a blend");
     if (m.blendAt)
       for (const Texture* t : o.axisTextures) UVTK_CHECK(!t || !needsMipmaps(o.sampler.minFilter) || t->hasMipmaps());
   }
+  if (o.seamFix == SeamFix::Tarini && (!source.pixelMapping || !source.pixelMapping->wrapsS))
+    throw UsageError("render: Tarini's seam fix needs a per-pixel mapping that wraps in u (sphere, cylinder)");
   const int n = sampleGridSize(o.samplesPerPixel);
   const int width = o.camera.width, height = o.camera.height;
   if (n > 1 && (std::int64_t(width) * n > kMaxViewport || std::int64_t(height) * n > kMaxViewport))

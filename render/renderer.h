@@ -53,8 +53,29 @@ struct TexcoordSource {
   bool cubeFaceIds = false;
 };
 
+// How the texture coordinates' screen-space derivatives (and so the level of detail) are taken.
+// Analytic: exact at the pixel (per-pixel mappings: central differences a thousandth of a pixel
+// apart, across a wrap the nearest difference). QuadCoarse, QuadFine: as a GPU's dFdxCoarse/dFdxFine
+// (GLSL 4.60 §8.14.2), differences of the coordinates at the centres of the 2 x 2 pixel quad, the
+// triangle's attributes extrapolated to those of its pixels it does not cover (helper invocations);
+// coarse takes the quad's bottom row and left column (window y up) for all four pixels, fine each
+// pixel's own row and column. Raw differences: across a wrap of a per-pixel mapping they jump by
+// about 1, the coarsest level is chosen there, and the "seam line" a GPU shows appears.
+enum class Derivatives { Analytic, QuadCoarse, QuadFine };
+
+// What a shader does about that line (with quad derivatives; ignored with analytic ones).
+// Grad: textureGrad with the analytic derivatives, i.e. the analytic level of detail.
+// Tarini: per pixel, s taken as fract(s) or fract(s + 1/2) - 1/2, whichever has the smaller quad
+// difference |ds/dx| + |ds/dy| (Tarini 2012, "Cylindrical and Toroidal Parameterizations Without
+// Vertex Seams"); the lookup itself reads s unchanged, equal to either modulo 1. Per-pixel
+// mappings that wrap in s only.
+enum class SeamFix { None, Grad, Tarini };
+
 struct RenderOptions {
   Camera camera;
+  Derivatives derivatives = Derivatives::Analytic;
+  SeamFix seamFix = SeamFix::None;
+  double lodBias = 0.0;  // GL's TEXTURE_LOD_BIAS: added to lambda before the level is chosen
   Mat4 worldFromObject = Mat4::Identity();
   RasterOptions raster;
   // The bound texture, 2D or cube map (exactly one), with its mipmaps when the filter needs them.
@@ -97,7 +118,8 @@ struct Rendering {
 };
 
 // Throws UsageError when the texture coordinates do not match the mesh (3 per triangle) and
-// there is no pixel mapping, when there is no texture or two, when a blend has a cube map, when samplesPerPixel is not one of the
+// there is no pixel mapping, when SeamFix::Tarini has no per-pixel mapping that wraps in s, when
+// there is no texture or two, when a blend has a cube map, when samplesPerPixel is not one of the
 // allowed squares, or when the supersampled frame exceeds kMaxViewport pixels a side.
 Rendering render(const Mesh& mesh, const TexcoordSource& texcoords, const RenderOptions& options);
 
