@@ -33,6 +33,7 @@ constexpr RuleEntry kRules[kRuleCount] = {
     {"pole_area", 0.02, kNever, false},             // pole fans over 2 % of the area warn
     {"backfacing_area", 0.0, kNever, false},        // a planar projection's back faces warn
     {"density_spread", 2.0, kNever, false},         // the best-resolved tenth with twice the texels per unit of the worst warns
+    {"mip_line", 0.0, kNever, false},               // any pixel of a GPU's seam mip line warns
 };
 
 const RuleEntry& entry(Rule rule) { return kRules[static_cast<std::size_t>(rule)]; }
@@ -192,6 +193,12 @@ void applyThresholds(Judgement& j, const Thresholds& thresholds) {
       j.reasons.push_back({rule, severity, value, threshold, j.ruleFaces[std::size_t(k)]});
       j.verdict = std::max(j.verdict, severity);
     }
+}
+
+void setMeasuredRule(Judgement& j, Rule rule, double value, std::size_t faces) {
+  j.values[std::size_t(rule)] = value;
+  j.ruleFaces[std::size_t(rule)] = faces;
+  applyThresholds(j, j.thresholds);
 }
 
 Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& options) {

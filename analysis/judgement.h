@@ -35,8 +35,9 @@ enum class Rule : std::uint8_t {
   PoleArea,             // pole faces' share of the 3D area
   BackfacingArea,       // backfacing faces' share of the 3D area (planar projections)
   DensitySpread,        // p90 / p10 of the ok faces' texel density
+  MipLine,              // the share of a view's covered pixels on a GPU's seam mip line (set where one is drawn)
 };
-constexpr int kRuleCount = 10;
+constexpr int kRuleCount = 11;
 const char* toString(Rule rule);  // "invalid_corners", "out_of_range_corners", ...
 std::optional<Rule> parseRule(std::string_view name);
 
@@ -109,5 +110,9 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
 // The verdict and reasons of `values` under `thresholds` (judge's last step, exposed so that a
 // changed threshold needs no new measuring).
 void applyThresholds(Judgement& judgement, const Thresholds& thresholds);
+
+// A rule measured after the judgement (Rule::MipLine, from a rendered view): its value and the
+// faces it concerns set, the verdict taken again under the judgement's thresholds.
+void setMeasuredRule(Judgement& judgement, Rule rule, double value, std::size_t faces);
 
 }  // namespace uvtk::analysis

@@ -57,6 +57,7 @@ DrawnFrame drawViews(const FrameOptions& frame, const MappedMesh& mapped, const 
   options.layoutFill = frame.layoutFill;
   options.layoutSize = frame.layoutSize;
   options.checks = frame.checks;
+  options.perPixel = frame.perPixel;
 
   DrawnFrame out;
   out.record = {{"texcoords", mapped.source}, {"views", nlohmann::json::array()}};
@@ -75,6 +76,7 @@ DrawnFrame drawViews(const FrameOptions& frame, const MappedMesh& mapped, const 
     if ((view == views::View::Weights || view == views::View::BlendZone) && !out.record.contains("blend_zone")) {
       out.record["blend_zone"] = blendZoneJson(views::blendZone(mapped.viewInput(measured), options));
     }
+    if (view == views::View::MipLine) out.record["mip_line"] = mipLineJson(views::mipLine(mapped.viewInput(measured), options));
   }
   out.picture =
       tiles.size() == 1 ? tiles.front().second : views::contactSheet(tiles, std::min<int>(3, int(tiles.size())));
@@ -161,6 +163,8 @@ render::RenderOptions renderOptions(const FrameOptions& frame, const TextureOpti
   render::RenderOptions options;
   options.camera = camera;
   options.worldFromObject = worldFromObject;
+  options.derivatives = frame.derivatives;
+  options.seamFix = frame.seamFix;
   options.raster = {frame.cull, frame.threads};
   options.samplesPerPixel = frame.samplesPerPixel;
   options.sampler = render::samplerFor(texture.filter, texture.wrap);
@@ -192,6 +196,8 @@ DrawnFrame drawFrame(const FrameOptions& frame, const MappedMesh& mapped, const 
   if (!frame.aovs.empty()) out.aovs = selectChannels(rendering.aovs, frame.aovs);
   out.record = {{"texcoords", mapped.source},
                 {"uv", frame.perPixel ? "per-pixel" : frame.baked ? "baked" : "per-vertex"},
+                {"derivatives", render::toString(options.derivatives)},
+                {"seam_fix", render::toString(options.seamFix)},
                 {"spp", options.samplesPerPixel},
                 {"width", options.camera.width},
                 {"height", options.camera.height},

@@ -54,6 +54,8 @@ struct FrameOptions {
   Vec3 background = Vec3::Zero();              // colour r,g,b in [0, 1]
   bool perPixel = false;                       // evaluate the mapping at every pixel (else per vertex)
   bool baked = false;                          // per vertex: the camera projector's divided (u, v), not (s, t, q)
+  render::Derivatives derivatives = render::Derivatives::Analytic;  // how the level of detail's derivatives are taken
+  render::SeamFix seamFix = render::SeamFix::None;                  // with quad derivatives
   std::vector<std::string> aovs;               // the float AOV channels (Rendering::aovs names); none: no AOVs
   std::vector<views::View> views;              // inspection views instead of the textured picture
   views::View layoutFill = views::View::Stretch;  // the measure that fills the layout view

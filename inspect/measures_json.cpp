@@ -127,4 +127,15 @@ nlohmann::json blendZoneJson(const views::BlendZone& zone) {
           {"invalid_pixels", zone.invalidPixels}};
 }
 
+nlohmann::json mipLineJson(const views::MipLine& line) {
+  return {{"derivatives", render::toString(line.derivatives)},
+          {"seam_fix", render::toString(line.seamFix)},
+          {"per_pixel", line.perPixel},
+          {"pixels", line.pixels},
+          {"covered_pixels", line.coveredPixels},
+          {"share", line.share()},
+          {"faces", line.faces},
+          {"where", {{"pole", line.pole}, {"seam", line.seam}, {"cube_edge", line.cubeEdge}, {"other", line.other}}}};
+}
+
 }  // namespace uvtk::inspect

@@ -29,4 +29,8 @@ nlohmann::json reasonsJson(const analysis::Judgement& judgement);
 // A triplanar blend zone (views::blendZone) as {threshold, pixels, covered_pixels, invalid_pixels}.
 nlohmann::json blendZoneJson(const views::BlendZone& zone);
 
+// The seam mip line (views::mipLine) as {derivatives, seam_fix, per_pixel, pixels, covered_pixels,
+// share, faces, where: {pole, seam, cube_edge, other}}.
+nlohmann::json mipLineJson(const views::MipLine& line);
+
 }  // namespace uvtk::inspect

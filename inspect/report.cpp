@@ -1,6 +1,7 @@
 #include "inspect/report.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "core/error.h"
 #include "inspect/html_report.h"
@@ -66,22 +67,30 @@ nlohmann::json reportJson(const MappedMesh& mapped, const analysis::Judgement& j
 
 nlohmann::json writeReport(io::OutputSet& outputs, const ReportOptions& o, const MappedMesh& mapped,
                            const analysis::Judgement& judgement, const nlohmann::json& input,
-                           const nlohmann::json& milliseconds) {
-  nlohmann::json report = reportJson(mapped, judgement, o, input);
+                           const nlohmann::json& milliseconds, analysis::Judgement* judged) {
+  const std::vector<views::View> shown = pageViews(mapped, o);
+  const render::Texture texture = uverrorTexture(o.textureSize);
+  views::ViewOptions options;
+  options.render.camera = o.camera.frame(mapped.mesh, o.width, o.height);
+  options.render.raster.threads = o.threads;
+  options.render.raster.cull = render::Cull::None;
+  options.render.texture = &texture;
+  options.perPixel = mapped.exact.has_value();  // the mip line of the mapping as a shader evaluates it
+  const views::ViewInput in = mapped.viewInput(&judgement);
+  // A page with the mipline view measures the line: the mip_line rule joins the verdict.
+  analysis::Judgement page = judgement;
+  std::optional<views::MipLine> line;
+  if (std::find(shown.begin(), shown.end(), views::View::MipLine) != shown.end()) {
+    line = views::mipLine(in, options);
+    if (line->perPixel) analysis::setMeasuredRule(page, analysis::Rule::MipLine, line->share(), line->faces);
+  }
+  nlohmann::json report = reportJson(mapped, page, o, input);
+  if (line) report["mip_line"] = mipLineJson(*line);
   std::vector<std::pair<std::string, Image>> pictures;
-  if (!o.html.empty()) {
-    const render::Texture texture = uverrorTexture(o.textureSize);
-    const views::ViewInput in = mapped.viewInput(&judgement);
-    views::ViewOptions options;
-    options.render.camera = o.camera.frame(mapped.mesh, o.width, o.height);
-    options.render.raster.threads = o.threads;
-    options.render.raster.cull = render::Cull::None;
-    options.render.texture = &texture;
-    for (const views::View view : pageViews(mapped, o)) {
-      pictures.emplace_back(views::toString(view), views::drawView(view, in, options));
-      if ((view == views::View::Weights || view == views::View::BlendZone) && !report.contains("blend_zone")) {
-        report["blend_zone"] = blendZoneJson(views::blendZone(in, options));
-      }
+  for (const views::View view : shown) {
+    pictures.emplace_back(views::toString(view), views::drawView(view, in, options));
+    if ((view == views::View::Weights || view == views::View::BlendZone) && !report.contains("blend_zone")) {
+      report["blend_zone"] = blendZoneJson(views::blendZone(in, options));
     }
   }
   if (!milliseconds.is_null()) report["milliseconds"] = milliseconds;
@@ -92,17 +101,18 @@ nlohmann::json writeReport(io::OutputSet& outputs, const ReportOptions& o, const
       MeshViewOptions viewOptions;
       viewOptions.faceBudget = o.view3dFaces;
       viewOptions.camera = o.camera;
-      view3d = meshViewHtml(mapped, judgement, viewOptions);
+      view3d = meshViewHtml(mapped, page, viewOptions);
     }
     outputs.writeText(o.html, htmlReport(report, pictures, view3d));
   }
+  if (judged) *judged = std::move(page);
   return report;
 }
 
 nlohmann::json writeReport(const ReportOptions& o, const MappedMesh& mapped, const analysis::Judgement& judgement,
-                           const nlohmann::json& input, const nlohmann::json& milliseconds) {
+                           const nlohmann::json& input, const nlohmann::json& milliseconds, analysis::Judgement* judged) {
   io::OutputSet outputs;
-  nlohmann::json report = writeReport(outputs, o, mapped, judgement, input, milliseconds);
+  nlohmann::json report = writeReport(outputs, o, mapped, judgement, input, milliseconds, judged);
   outputs.publish();
   return report;
 }

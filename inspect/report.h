@@ -35,13 +35,15 @@ nlohmann::json reportJson(const MappedMesh& mapped, const analysis::Judgement& j
                           const nlohmann::json& input);
 
 // Writes the report to options.json and the page to options.html, published together;
-// `milliseconds` are the times of the stages before (none when null). Returns the report.
+// `milliseconds` are the times of the stages before (none when null). Returns the report. A page
+// with the mipline view measures the mapping's mip line (per pixel when it has an exact form) and
+// adds the mip_line rule to the verdict: `judged`, when given, receives that judgement.
 nlohmann::json writeReport(const ReportOptions& options, const MappedMesh& mapped,
                            const analysis::Judgement& judgement, const nlohmann::json& input,
-                           const nlohmann::json& milliseconds = nullptr);
+                           const nlohmann::json& milliseconds = nullptr, analysis::Judgement* judged = nullptr);
 // The same, staged in `outputs` (a scene's).
 nlohmann::json writeReport(io::OutputSet& outputs, const ReportOptions& options, const MappedMesh& mapped,
                            const analysis::Judgement& judgement, const nlohmann::json& input,
-                           const nlohmann::json& milliseconds = nullptr);
+                           const nlohmann::json& milliseconds = nullptr, analysis::Judgement* judged = nullptr);
 
 }  // namespace uvtk::inspect

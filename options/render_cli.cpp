@@ -192,6 +192,18 @@ void addFrameSceneOptions(CLI::App& app, FrameArguments& a) {
       "projector's divided per-vertex (u, v), as an OBJ holds them, instead of its (s, t, q); --projector triplanar "
       "defaults to per-pixel, its blend")
       ->default_str("per-vertex");
+  addChoice<render::Derivatives>(app, "--derivatives", a.derivatives,
+                                 {{"analytic", render::Derivatives::Analytic},
+                                  {"quad-coarse", render::Derivatives::QuadCoarse},
+                                  {"quad-fine", render::Derivatives::QuadFine}},
+                                 "The texture derivatives for the mipmap level: exact, or differences across 2x2 pixel "
+                                 "quads as a GPU's dFdxCoarse / dFdxFine (the seam line of per-pixel mappings)")
+      ->default_str("analytic");
+  addChoice<render::SeamFix>(app, "--seam-fix", a.seamFix,
+                             {{"none", render::SeamFix::None}, {"grad", render::SeamFix::Grad}, {"tarini", render::SeamFix::Tarini}},
+                             "With quad derivatives: textureGrad with the analytic derivatives (grad), or Tarini's choice "
+                             "of fract(u) or fract(u + 1/2) - 1/2 per pixel (tarini; per-pixel sphere and cylinder)")
+      ->default_str("none");
 }
 
 void addFrameOptions(CLI::App& app, FrameArguments& a) {
@@ -206,7 +218,7 @@ void addFrameOptions(CLI::App& app, FrameArguments& a) {
   app.add_option("--aov-output", a.aovOutput, "The AOV file (.exr or .tif; default: the output with .exr)");
   app.add_option("--view", a.view,
                  "Draw inspection views instead: checker, uvgrid, stretch, linf, angle, area, seams, uverror, layout, "
-                 "density, weights, blendzone (several: a contact sheet)")
+                 "density, weights, blendzone, mipline (several: a contact sheet)")
       ->type_name("NAME[,NAME...]");
   addChoice<views::View>(app, "--layout-fill", a.layoutFill,
                          {{"stretch", views::View::Stretch},
@@ -269,6 +281,8 @@ inspect::FrameOptions FrameArguments::options() const {
   o.background = parseVec3(background, "--background");
   o.perPixel = uv == Uv::PerPixel;
   o.baked = uv == Uv::Baked;
+  o.derivatives = derivatives;
+  o.seamFix = seamFix;
   if (!aov.empty()) o.aovs = aovChannels(aov);
   o.views = views();
   o.layoutFill = layoutFill;

@@ -81,6 +81,8 @@ struct FrameArguments {
   int samplesPerPixel = 1;
   std::string background = "0,0,0";
   Uv uv = Uv::PerVertex;
+  render::Derivatives derivatives = render::Derivatives::Analytic;
+  render::SeamFix seamFix = render::SeamFix::None;
   std::string aov, aovOutput;
   std::string view;  // inspection views instead of the textured picture
   views::View layoutFill = views::View::Stretch;

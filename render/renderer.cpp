@@ -491,6 +491,24 @@ void checkFrameMemory(const Mesh& mesh, const TexcoordSource& source, const Rend
 
 }  // namespace
 
+const char* toString(Derivatives derivatives) {
+  switch (derivatives) {
+    case Derivatives::Analytic: return "analytic";
+    case Derivatives::QuadCoarse: return "quad-coarse";
+    case Derivatives::QuadFine: return "quad-fine";
+  }
+  return "?";
+}
+
+const char* toString(SeamFix fix) {
+  switch (fix) {
+    case SeamFix::None: return "none";
+    case SeamFix::Grad: return "grad";
+    case SeamFix::Tarini: return "tarini";
+  }
+  return "?";
+}
+
 Rendering render(const Mesh& mesh, const TexcoordSource& source, const RenderOptions& o) {
   if (!o.texture == !o.cubeTexture) throw UsageError("render: expected one texture, 2D or cube map, to be bound");
   if (!source.pixelMapping && source.corners.size() != 3 * mesh.triangles.size())

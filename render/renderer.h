@@ -71,6 +71,9 @@ enum class Derivatives { Analytic, QuadCoarse, QuadFine };
 // mappings that wrap in s only.
 enum class SeamFix { None, Grad, Tarini };
 
+const char* toString(Derivatives derivatives);  // "analytic", "quad-coarse", "quad-fine"
+const char* toString(SeamFix fix);              // "none", "grad", "tarini"
+
 struct RenderOptions {
   Camera camera;
   Derivatives derivatives = Derivatives::Analytic;

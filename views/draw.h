@@ -15,5 +15,6 @@ DrawnView drawUvError(const ViewInput& in, const ViewOptions& options);
 DrawnView drawLayout(const ViewInput& in, const ViewOptions& options);
 DrawnView drawWeights(const ViewInput& in, const ViewOptions& options);    // triplanar weights
 DrawnView drawBlendZone(const ViewInput& in, const ViewOptions& options);  // triplanar blend zone
+DrawnView drawMipLine(const ViewInput& in, const ViewOptions& options);    // the GPU's seam mip line
 
 }  // namespace uvtk::views

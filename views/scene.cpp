@@ -14,24 +14,25 @@ double faceShade(const Vec3& eye0, const Vec3& eye1, const Vec3& eye2) {
   return 0.35 + 0.65 * cosine;
 }
 
-Scene rasterizeScene(const Mesh& mesh, const render::RenderOptions& options) {
-  const render::Camera& camera = options.camera;
-  const Mat4 eyeFromObject = camera.viewFromWorld * options.worldFromObject;
-  Scene scene;
-  scene.clipFromObject = camera.clipFromView * eyeFromObject;
-  std::vector<Vec3> eye(mesh.positions.size());
-  scene.clip.resize(mesh.positions.size());
-  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-    const Vec4 p = mesh.positions[v].homogeneous();
-    eye[v] = (eyeFromObject * p).head<3>();
-    scene.clip[v] = scene.clipFromObject * p;
-  }
-  scene.visible = render::rasterize(scene.clip, mesh.triangles, camera.width, camera.height, options.raster);
-  scene.shade.resize(mesh.triangles.size());
+std::vector<double> faceShades(const Mesh& mesh, const render::RenderOptions& options) {
+  const Mat4 eyeFromObject = options.camera.viewFromWorld * options.worldFromObject;
+  auto eye = [&](int v) -> Vec3 { return (eyeFromObject * mesh.positions[std::size_t(v)].homogeneous()).head<3>(); };
+  std::vector<double> shade(mesh.triangles.size());
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const Triangle& t = mesh.triangles[f];
-    scene.shade[f] = faceShade(eye[t[0]], eye[t[1]], eye[t[2]]);
+    shade[f] = faceShade(eye(t[0]), eye(t[1]), eye(t[2]));
   }
+  return shade;
+}
+
+Scene rasterizeScene(const Mesh& mesh, const render::RenderOptions& options) {
+  const render::Camera& camera = options.camera;
+  Scene scene;
+  scene.clipFromObject = camera.clipFromView * Mat4(camera.viewFromWorld * options.worldFromObject);
+  scene.clip.resize(mesh.positions.size());
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) scene.clip[v] = scene.clipFromObject * mesh.positions[v].homogeneous();
+  scene.visible = render::rasterize(scene.clip, mesh.triangles, camera.width, camera.height, options.raster);
+  scene.shade = faceShades(mesh, options);
   return scene;
 }
 

@@ -25,6 +25,9 @@ struct Scene {
 // n the face's unit normal in eye space and l = (0, 0, 1); 0.35 for a face of zero area.
 double faceShade(const Vec3& eye0, const Vec3& eye1, const Vec3& eye2);
 
+// faceShade of every face's eye-space corners under options.camera and worldFromObject.
+std::vector<double> faceShades(const Mesh& mesh, const render::RenderOptions& options);
+
 // Rasterizes `mesh` with options.camera, worldFromObject and raster options.
 Scene rasterizeScene(const Mesh& mesh, const render::RenderOptions& options);
 

@@ -125,11 +125,8 @@ DrawnView drawWeights(const ViewInput& in, const ViewOptions& options) {
 DrawnView drawBlendZone(const ViewInput& in, const ViewOptions& options) {
   const ZoneRendering counted = zoneRendering(View::BlendZone, in, options);
   const render::Rendering& r = counted.rendering;
-  const Mesh& mesh = *in.mesh;
-  // The rest of the mesh dim grey under the views' head-light shade, each face's computed once.
-  const Mat4 eyeFromObject = options.render.camera.viewFromWorld * options.render.worldFromObject;
-  auto eye = [&](int v) -> Vec3 { return (eyeFromObject * mesh.positions[std::size_t(v)].homogeneous()).head<3>(); };
-  std::vector<double> shade(mesh.faceCount(), -1.0);
+  // The rest of the mesh dim grey under the views' head-light shade.
+  const std::vector<double> shade = faceShades(*in.mesh, options.render);
   Image image(r.colour.width, r.colour.height, 3);
   for (int row = 0; row < image.height; ++row)
     for (int x = 0; x < image.width; ++x) {
@@ -138,15 +135,7 @@ DrawnView drawBlendZone(const ViewInput& in, const ViewOptions& options) {
         case ZonePixel::Background: break;
         case ZonePixel::NoWeights: colour = kNoWeightsColour; break;
         case ZonePixel::InZone: colour = kBlendZoneColour; break;
-        case ZonePixel::Outside: {
-          const std::size_t f = std::size_t(r.aovs.at(x, row, kFace));
-          if (shade[f] < 0.0) {
-            const Triangle& t = mesh.triangles[f];
-            shade[f] = faceShade(eye(t[0]), eye(t[1]), eye(t[2]));
-          }
-          colour = Vec3::Constant(kDimGrey * shade[f]);
-          break;
-        }
+        case ZonePixel::Outside: colour = Vec3::Constant(kDimGrey * shade[std::size_t(r.aovs.at(x, row, kFace))]); break;
       }
       setPixel(image, x, row, colour);
     }

@@ -10,7 +10,7 @@ namespace uvtk::views {
 namespace {
 
 constexpr View kViews[] = {View::Checker, View::Uvgrid, View::Stretch, View::Linf,    View::Angle,    View::Area,
-                           View::Seams,   View::UvError, View::Layout, View::Density, View::Weights, View::BlendZone};
+                           View::Seams,   View::UvError, View::Layout, View::Density, View::Weights, View::BlendZone, View::MipLine};
 
 std::string validNames() {
   std::string names;
@@ -34,6 +34,7 @@ const char* toString(View view) {
     case View::Density: return "density";
     case View::Weights: return "weights";
     case View::BlendZone: return "blendzone";
+    case View::MipLine: return "mipline";
   }
   return "checker";
 }
@@ -79,6 +80,7 @@ DrawnView drawViewAndLegend(View view, const ViewInput& in, const ViewOptions& o
     case View::Layout: return drawLayout(in, options);
     case View::Weights: return drawWeights(in, options);
     case View::BlendZone: return drawBlendZone(in, options);
+    case View::MipLine: return drawMipLine(in, options);
   }
   checkFailed("a known view", __FILE__, __LINE__);
 }

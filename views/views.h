@@ -21,10 +21,10 @@
 
 namespace uvtk::views {
 
-enum class View { Checker, Uvgrid, Stretch, Linf, Angle, Area, Seams, UvError, Layout, Density, Weights, BlendZone };
+enum class View { Checker, Uvgrid, Stretch, Linf, Angle, Area, Seams, UvError, Layout, Density, Weights, BlendZone, MipLine };
 
 // "checker", "uvgrid", "stretch", "linf", "angle", "area", "seams", "uverror", "layout", "density",
-// "weights", "blendzone".
+// "weights", "blendzone", "mipline".
 const char* toString(View view);
 std::optional<View> parseView(std::string_view name);
 // "stretch,seams" -> {Stretch, Seams}, in the given order. Throws UsageError naming the bad entry
@@ -56,6 +56,9 @@ struct ViewOptions {
   // weights and blendzone: a covered pixel is in the triplanar blend zone when every weight is
   // below this, i.e. no single projection dominates it; in (0, 1] (UsageError outside).
   double blendZoneThreshold = 0.9;
+  // mipline: draw the mapping evaluated per pixel (ViewInput::exact), as a shader does; else, or
+  // without it, the corners as interpolated.
+  bool perPixel = false;
 };
 
 // The view as a 3-channel RGB image in [0, 1], row 0 at the top. The camera views are
@@ -96,6 +99,23 @@ struct BlendZone {
   double share() const { return coveredPixels > 0 ? double(pixels) / double(coveredPixels) : 0.0; }
 };
 BlendZone blendZone(const ViewInput& in, const ViewOptions& options);
+
+// The seam mip line a GPU draws: of the `coveredPixels` covered pixels, the `pixels` whose lambda
+// from differences across their 2 x 2 quad (options.render.derivatives when a quad mode, else
+// QuadCoarse, with options.render.seamFix) exceeds the analytic lambda by more than 1, with the
+// bound texture's size (1024 x 1024 without one). Where they are, each counted once in this order:
+// on a pole face (kFacePole), at a seam (a kFaceSeamStraddle face, or a quad whose u spans more than
+// 1/2), at a cube edge (kFaceCubeSeam, or a quad seeing two cube faces), elsewhere. `faces`: the
+// triangles with a line pixel. One sample per pixel, options.render's camera and raster options.
+struct MipLine {
+  std::size_t pixels = 0, coveredPixels = 0, faces = 0;
+  std::size_t pole = 0, seam = 0, cubeEdge = 0, other = 0;
+  render::Derivatives derivatives = render::Derivatives::QuadCoarse;
+  render::SeamFix seamFix = render::SeamFix::None;
+  bool perPixel = false;  // drawn per pixel (else per corner)
+  double share() const { return coveredPixels > 0 ? double(pixels) / double(coveredPixels) : 0.0; }
+};
+MipLine mipLine(const ViewInput& in, const ViewOptions& options);
 
 // Tiles in a grid, `columns` per row, each with its label drawn under it (views/type.h, 15 pixels
 // per em), on a dark grey background. Throws UsageError for no tiles or columns < 1.

@@ -60,8 +60,9 @@ void runReport(const ReportCommandArguments& a) {
   if (projectorGiven && projectorOptions.surface == param::SurfaceKind::Triplanar && !reportOptions.html.empty() &&
       !given(a.projector.app, "--views"))
     reportOptions.views.insert(reportOptions.views.end(), {views::View::Weights, views::View::BlendZone});
+  analysis::Judgement judged;  // with the mip line's rule when the page draws it
   writeReport(reportOptions, mapped, judgement, inputSummary,
-              {{"read", readMs}, {"texcoords", mapMs}, {"measure", measureMs}});
+              {{"read", readMs}, {"texcoords", mapMs}, {"measure", measureMs}}, &judged);
   clock.stop();
   printMappingNotes(a.input, input.warnings, mapped);
   const analysis::Summary& summary = judgement.summary;
@@ -70,8 +71,8 @@ void runReport(const ReportCommandArguments& a) {
                "uvtk report: %zu faces, L2 stretch %.6g, Linf stretch %.6g, %zu seam edges, overlap %.4g%%; %s\n",
                mapped.mesh.faceCount(), summary.l2Stretch, summary.linfStretch,
                summary.seams.wrapEdges + summary.seams.cutEdges, 100.0 * summary.overlap.fraction(),
-               verdictLine(judgement).c_str());
-  enforceVerdict(a.verdict, judgement.verdict, "uvtk report");
+               verdictLine(judged).c_str());
+  enforceVerdict(a.verdict, judged.verdict, "uvtk report");
 }
 
 }  // namespace

@@ -211,7 +211,8 @@ TEST(SceneBenchSchema, HasTheBenchOptionsButRenderingAndTheEndToEndMap) {
     EXPECT_TRUE(key == "camera" || key == "eye" || key == "center" || key == "up" || key == "view_dir" ||
                 key == "fovy" || key == "near" || key == "far" || key == "ortho" || key == "texture" ||
                 key == "filter" || key == "wrap" || key == "seamless" || key == "env" || key == "env_color" ||
-                key == "size" || key == "cull" || key == "background" || key == "uv")
+                key == "size" || key == "cull" || key == "background" || key == "uv" ||
+                key == "derivatives" || key == "seam_fix")
         << key << ": a bench option the scene neither takes nor leaves out on purpose";
   }
 }

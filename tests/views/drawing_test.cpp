@@ -26,32 +26,6 @@
 namespace uvtk::views {
 namespace {
 
-// The mesh through a projector, with the exact mapping as apps/uvtk/cmd_render.cpp builds it.
-Mapped mapWith(Mesh mesh, const param::ProjectorOptions& options) {
-  param::Projection projection = param::project(std::move(mesh), options);
-  Mapped m;
-  m.mesh = std::move(projection.mesh);
-  m.uv = std::move(projection.uv);
-  m.analyse();
-  auto mapping = std::make_shared<param::PointMapping>(options, projection.localFromObject);
-  m.wrapsU = mapping->wrapsU();
-  m.exact = render::PixelMapping{[mapping](const Vec3& p, const Vec3& n, std::int32_t) -> Vec4 {
-                                   const param::VertexUv uv = mapping->at(p, n);
-                                   const double nan = std::numeric_limits<double>::quiet_NaN();
-                                   return uv.state == param::CornerState::Invalid ? Vec4(nan, nan, 0, 1)
-                                                                                  : Vec4(uv.uv.x(), uv.uv.y(), 0, 1);
-                                 },
-                                 mapping->wrapsU(), mapping->needsNormal()};
-  return m;
-}
-
-param::ProjectorOptions projector(param::SurfaceKind surface) {
-  param::ProjectorOptions o;
-  o.surface = surface;
-  if (surface != param::SurfaceKind::Plane) o.placement.fit = param::Fit::None;  // the generators' own axes
-  return o;
-}
-
 // The plane grid of side 2 in z = 0 by the plane projector: an isometry up to a scale of 1/2.
 Mapped planarPlane(int n = 4) { return mapWith(meshes::planeGrid(n, n, 2.0, 2.0), projector(param::SurfaceKind::Plane)); }
 
