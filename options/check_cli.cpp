@@ -1,14 +1,18 @@
 #include "options/check_cli.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
 #include "io/image_io.h"
+#include "io/mesh_reader.h"
 #include "options/cli_values.h"
 
 namespace uvtk::cli {
 
 inspect::CheckOptions CheckArguments::resolve() const {
+  for (const std::string& name : imageOptions)
+    if (given(app, name.c_str())) throw UsageError(name + " goes with --image");
   if (textureSize < 1) throw UsageError("--texture-size: expected a positive number of texels");
   if (worst < 0) throw UsageError("--worst: expected a count of corners, 0 or more");
   if (tolerance && !(std::isfinite(*tolerance) && *tolerance >= 0.0))
@@ -42,6 +46,108 @@ inspect::CheckOptions CheckArguments::resolve() const {
   o.thresholds = verdict.thresholds();
   o.json = json, o.view = view;
   return o;
+}
+
+void addImageCheckOptions(CLI::App& app, CheckArguments& a) {
+  a.app = &app;
+  std::vector<std::string> before;
+  for (const CLI::Option* option : app.get_options()) before.push_back(option->get_name());
+  app.add_option("--image", a.image,
+                 "Check this picture of the mesh, made by another renderer (a GPU, a shader), against uvtk's "
+                 "rendering with the options of `uvtk render` (2D texture, replace)");
+  app.add_option("--error-mask", a.errorMask, "--image: write the invalid pixels in red over the shot at a third (PNG)");
+  app.add_option("--coord-bits", a.precision.coordBits,
+                 "--image: a texel coordinate c may be off by max(1, |c|) 2^-N")
+      ->capture_default_str();
+  app.add_option("--weight-bits", a.precision.weightBits, "--image: each filter weight may be off by 2^-N")
+      ->capture_default_str();
+  app.add_option("--lod-bits", a.precision.lodBits,
+                 "--image: lambda may be off by 2^-N beyond its neighbours' (default 8, 6 for projective coordinates)");
+  app.add_option("--color-bits", a.precision.colorBits,
+                 "--image: each colour channel may be off by 2^-N (default 7, 6 for the *_mipmap_linear filters)");
+  // `uvtk render`'s camera, texture and frame options that check has not under the same name
+  // (--eye, --center, --up, --fovy, --view-dir and --wrap are shared; see CheckArguments).
+  a.camera.app = &app;
+  addChoice<CameraArguments::Mode>(
+      app, "--camera", a.camera.mode,
+      {{"auto", CameraArguments::Mode::Auto}, {"explicit", CameraArguments::Mode::Explicit}},
+      "--image: auto frames the mesh's bounding sphere (along --view-dir); explicit uses --eye, --center, --up. "
+      "Default: explicit when --eye is given");
+  app.add_option("--near", a.camera.zNear, "--image: near plane distance (explicit camera; default 0.1)");
+  app.add_option("--far", a.camera.zFar, "--image: far plane distance (explicit camera; default 100)");
+  app.add_option("--ortho", a.camera.ortho, "--image: glOrtho left,right,bottom,top, or auto to frame the mesh")
+      ->type_name("L,R,B,T|auto");
+  app.add_option("--texture", a.texture.source,
+                 "--image: checker:N[:C], uvgrid[:N], spheremap[:N[:K]] or an image file (top row at v = 1)")
+      ->capture_default_str();
+  addChoice<render::Filter>(app, "--filter", a.texture.filter, kFilterNames,
+                            "--image: minification filter; magnification is nearest for nearest*, else linear")
+      ->default_str("nearest");
+  addFrameSceneOptions(app, a.frame);
+  for (const CLI::Option* option : app.get_options())
+    if (std::find(before.begin(), before.end(), option->get_name()) == before.end())
+      a.imageOptions.push_back(option->get_name());
+  a.imageOptions.erase(std::find(a.imageOptions.begin(), a.imageOptions.end(), "--image"));
+}
+
+inspect::ImageCheckRun checkImageFile(CheckArguments a) {
+  CLI::App* app = a.app;
+  for (const std::string& name : a.uvOptions)
+    if (given(app, name.c_str())) throw UsageError(name + " goes with the UV comparison, not --image");
+  for (const char* name : {"--derivatives", "--seam-fix"})  // `uvtk render`'s, when the frame's options have them
+    if (app->get_option_no_throw(name) && given(app, name))
+      throw UsageError(std::string(name) +
+                       " does not go with --image: the reference has the exact derivatives, a GPU's quad differences "
+                       "are allowed by the tolerances, and a seam line is what the check reports");
+  ProjectorArguments& projector = a.mapping.projector;
+  const bool projectorGiven = given(app, "--projector");
+  if (projectorGiven && a.mapping.isTexgen()) throw UsageError("--projector and texgen options exclude each other");
+  if (projectorGiven && projector.options.surface == param::SurfaceKind::Camera)
+    throw UsageError("--image: --eye, --center and --up are the camera's; --projector camera is not supported");
+  // A triplanar blend exists per pixel only: drawn so unless --uv asks for the box mapping, as `uvtk render` does.
+  if (projectorGiven && projector.options.surface == param::SurfaceKind::Triplanar && !given(app, "--uv"))
+    a.frame.uv = FrameArguments::Uv::PerPixel;
+  if (!projectorGiven && !a.mapping.isTexgen() && a.frame.uv == FrameArguments::Uv::PerPixel)
+    throw UsageError("--uv per-pixel evaluates a mapping: give --projector or --texgen");
+  // The shared options are the camera's, as in `uvtk render`: taken, and cleared, so that the
+  // projector reads no placement origin, reflection eye or camera projector's up and fovy from them.
+  a.camera.eye = projector.eye;
+  if (given(app, "--center")) a.camera.center = projector.center;
+  if (given(app, "--up")) a.camera.up = projector.up;
+  if (given(app, "--fovy")) a.camera.fovy = projector.options.camera.fovyDegrees;
+  a.camera.viewDir = a.viewDir;
+  for (const char* name : {"--eye", "--center", "--up", "--fovy"}) app->get_option(name)->clear();
+  projector.eye.clear(), projector.center.clear(), projector.up.clear();
+  a.texture.wrap = given(app, "--wrap") ? a.wrap : "";
+  a.camera.check();
+  a.texture.check();
+  a.texture.wrapMode();
+  checkTextureUse(a.frame, a.texture, projectorGiven ? &projector.options : nullptr);
+  const inspect::FrameOptions frame = a.frame.options();
+  if (!a.errorMask.empty()) io::checkImageType(a.errorMask, io::PixelType::UInt8);
+  verify::resolvePrecision(a.precision, render::samplerFor(a.texture.filter, a.texture.wrapMode()), false);
+  const Mat4 worldFromObject = a.mapping.model.empty() ? Mat4::Identity() : parseMatrix(a.mapping.model, "--model");
+
+  io::ReadMeshResult input = io::readMesh(a.input);
+  const render::Camera camera = a.camera.make(input.mesh, worldFromObject, frame.width, frame.height);
+  inspect::MappedMesh mapped;
+  if (projectorGiven) {  // the reflection O-mapping sees from the camera's eye, as in `uvtk render`
+    if (projector.options.ray == param::RayKind::Reflection)
+      projector.options.eye = (worldFromObject.inverse() * camera.eye().homogeneous()).head<3>();
+    mapped = inspect::mapByProjector(std::move(input.mesh), projector.resolve(), projector.seamPlaceAuto());
+  } else if (a.mapping.isTexgen()) {
+    a.mapping.texgen.arithmetic = projector.options.arithmetic;
+    mapped = inspect::mapByTexgen(std::move(input.mesh), a.mapping.texgen.resolve(camera.viewFromWorld, worldFromObject));
+  } else {
+    mapped = inspect::withFileUvs(std::move(input.mesh), a.input);
+  }
+  const inspect::BoundTexture texture = a.texture.load();
+  inspect::ImageCheckOptions o;
+  o.input = a.input, o.image = a.image, o.errorMask = a.errorMask, o.json = a.json, o.precision = a.precision;
+  const inspect::ImageCheckRun run = inspect::checkImageShot(
+      o, mapped, frame, inspect::renderOptions(frame, a.texture.options(), texture, camera, worldFromObject));
+  inspect::printMappingNotes(a.input, input.warnings, mapped);
+  return run;
 }
 
 }  // namespace uvtk::cli

@@ -16,7 +16,15 @@ namespace uvtk::cli {
 
 namespace {
 
+void runImageCheck(const CheckArguments& a) {
+  const inspect::ImageCheckRun run = checkImageFile(a);
+  std::fputs(run.text.c_str(), stdout);
+  std::fflush(stdout);
+  if (!run.pass) throw CheckFailure("the check failed");  // exit status 1
+}
+
 void runCheck(const CheckArguments& a) {
+  if (!a.image.empty()) return runImageCheck(a);
   const inspect::CheckRun run = inspect::checkStoredUvs(a.resolve());
   std::fputs(run.text.c_str(), stdout);
   std::fflush(stdout);
@@ -29,7 +37,9 @@ void runCheck(const CheckArguments& a) {
 void addCheckCommand(CLI::App& root) {
   auto a = std::make_shared<CheckArguments>();
   CLI::App* cmd = root.add_subcommand(
-      "check", "Compare the UVs stored in a mesh file with a mapping's (or another file's), corner by corner");
+      "check",
+      "Compare the UVs stored in a mesh file with a mapping's (or another file's), corner by corner; with --image, "
+      "a picture of the mesh made by another renderer with uvtk's rendering, pixel by pixel");
   cmd->add_option("input", a->input, "Mesh with texture coordinates (.obj with vt, .ply with s t or texcoord, .gltf/.glb with TEXCOORD_0)")->required();
   cmd->add_option("--against", a->against,
                   "Compare with this file's UVs instead of a mapping (same vertices and faces)");
@@ -59,7 +69,16 @@ void addCheckCommand(CLI::App& root) {
     if (std::find(before.begin(), before.end(), name) == before.end() && name != "--help")
       a->mappingOptions.push_back(name);
   }
+  std::vector<std::string> beforeVerdict;
+  for (const CLI::Option* option : cmd->get_options()) beforeVerdict.push_back(option->get_name());
   addVerdictOptions(*cmd, a->verdict);
+  for (const CLI::Option* option : cmd->get_options())
+    if (std::find(beforeVerdict.begin(), beforeVerdict.end(), option->get_name()) == beforeVerdict.end())
+      a->uvOptions.push_back(option->get_name());
+  for (const char* name : {"--against", "--tolerance", "--texture-size", "--worst", "--partial", "--view", "--view-size",
+                           "--view-up"})
+    a->uvOptions.push_back(name);
+  addImageCheckOptions(*cmd, *a);
   cmd->callback([a] { runCheck(*a); });
 }
 
