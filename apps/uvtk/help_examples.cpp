@@ -33,10 +33,7 @@ const std::vector<std::pair<std::string, std::string>>& examples() {
        "  uvtk render sphere_uv.obj --texture uvgrid -o sphere.png\n"
        "      the file's own UVs, textured with a UV grid\n"
        "  uvtk render meshes/torus.obj --projector cylinder --view checker,stretch,seams -o torus_views.png\n"
-       "      a contact sheet of inspection views of a projector's UVs\n"
-       "  uvtk render meshes/sphere_latlong.obj --projector sphere --uv per-pixel --view-dir 1,0.3,0.2 \\\n"
-       "      --texture checker:256:32 --filter linear_mipmap_linear --derivatives quad-coarse -o gpu.png\n"
-       "      the seam line a GPU draws (--view mipline marks it, --seam-fix tarini removes it)"},
+       "      a contact sheet of inspection views of a projector's UVs"},
       {"report",
        "  uvtk report sphere_uv.obj --html sphere.html\n"
        "      one HTML page with the views, measures and histograms of the file's UVs\n"
@@ -69,10 +66,7 @@ const std::vector<std::pair<std::string, std::string>>& examples() {
        "  uvtk check sphere_uv.obj --projector sphere --tolerance 1e-9\n"
        "      exit 1 when a stored UV is more than 1e-9 from the sphere projector's\n"
        "  uvtk check sphere_uv.obj --against mapped/sphere_latlong.obj --view errors.png\n"
-       "      compare with another file's UVs, with a heatmap of the errors\n"
-       "  uvtk check sphere.obj --projector sphere --uv per-pixel --filter linear_mipmap_linear --size 640x480 \\\n"
-       "      --image gpu.png --error-mask bad.png\n"
-       "      a GPU's screenshot of the same scene against uvtk's, pixel by pixel (dEQP-style tolerances)"},
+       "      compare with another file's UVs, with a heatmap of the errors"},
   };
   return table;
 }
