@@ -48,6 +48,8 @@ const std::vector<Field<RenderOptions>>& renderFields() {
       integerField("--spp", &O::spp),
       arrayField("--background", &O::background),
       textField("--uv", &O::uv),
+      textField("--derivatives", &O::derivatives),
+      textField("--seam-fix", &O::seamFix),
       integerField("--threads", &O::threads),
   };
   return fields;

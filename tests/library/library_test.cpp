@@ -343,6 +343,17 @@ TEST(Render, AViewIsTheSizeAskedForAndDrawsTheMesh) {
   const std::size_t corner = 0;
   EXPECT_NE(bytes[centre] + bytes[centre + 1] + bytes[centre + 2], bytes[corner] + bytes[corner + 1] + bytes[corner + 2]);
   EXPECT_THROW(RenderOptions::parse("--view sideways"), std::invalid_argument);
+
+  // A GPU's quad derivatives with textureGrad's fix draw the analytic picture; without it they differ.
+  const RenderOptions exact = RenderOptions::parse("--size 64x48 --filter linear_mipmap_linear --view-dir 1,0.3,0.2");
+  RenderOptions gpu = RenderOptions::parse("--size 64x48 --filter linear_mipmap_linear --view-dir 1,0.3,0.2 --derivatives quad-fine");
+  EXPECT_EQ(gpu.derivatives, "quad-fine");
+  EXPECT_EQ(gpu.commandLine(), exact.commandLine() + " --derivatives quad-fine");
+  const Image analytic = render(m, exact);
+  EXPECT_NE(render(m, gpu).pixels, analytic.pixels);
+  gpu.seamFix = "grad";
+  EXPECT_EQ(render(m, gpu).pixels, analytic.pixels);
+  EXPECT_THROW(RenderOptions::parse("--derivatives quad"), std::invalid_argument);
 }
 
 TEST(ImageBytes, RoundAsAPngStores) {

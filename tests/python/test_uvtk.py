@@ -711,6 +711,25 @@ def test_render_is_the_programs_png(view, tmp_path, cli):
     np.testing.assert_array_equal(img, read_png(tmp_path / "r.png"))
 
 
+def test_render_takes_a_gpus_quad_derivatives_and_the_seam_fixes(tmp_path, cli):
+    path = write_obj(tmp_path / "s.obj", *uv_sphere())
+    scene = dict(uv="per-pixel", view_dir=(1, 0.3, 0.2), texture="checker:64:8", filter="linear_mipmap_linear",
+                 size=(64, 48))
+    run = cli("render", path, "--projector", "sphere", "--uv", "per-pixel", "--view-dir", "1,0.3,0.2", "--texture",
+              "checker:64:8", "--filter", "linear_mipmap_linear", "--size", "64x48", "--derivatives", "quad-coarse",
+              "-o", tmp_path / "r.png")
+    assert run.returncode == 0, run.stderr
+    mesh = uvtk.read_mesh(path)
+    m = uvtk.map(mesh, projector="sphere")
+    gpu = uvtk.render(mesh, m, derivatives="quad-coarse", **scene)
+    np.testing.assert_array_equal(gpu, read_png(tmp_path / "r.png"))
+    exact = uvtk.render(mesh, m, **scene)
+    assert (gpu != exact).any()  # the quad's lambda is not the exact one
+    np.testing.assert_array_equal(uvtk.render(mesh, m, derivatives="quad-fine", seam_fix="grad", **scene), exact)
+    with pytest.raises(ValueError):
+        uvtk.render(mesh, m, derivatives="quad", **scene)
+
+
 def test_render_gives_height_width_channels():
     mesh = uvtk.Mesh(*uv_sphere())
     m = uvtk.map(mesh)

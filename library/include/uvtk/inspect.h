@@ -44,7 +44,7 @@ struct Image {
 
 // The options of `uvtk render` (its defaults: the camera frames the mesh from +z).
 struct RenderOptions {
-  std::string view;  // --view: checker, uvgrid, stretch, linf, angle, area, seams, uverror, layout;
+  std::string view;  // --view: checker, uvgrid, stretch, linf, angle, area, seams, uverror, layout, mipline, ...;
                      // several, comma-separated: a contact sheet; "" (the default): the textured picture
   std::string size = "512x512";   // --size: WxH
   Vector3 viewDir{0, 0, 1};       // --view-dir: the direction from the mesh to the camera, which frames the mesh
@@ -58,6 +58,8 @@ struct RenderOptions {
   int spp = 1;                    // --spp: samples per pixel (1, 4, 9, ...), box-filtered
   Vector3 background{0, 0, 0};    // --background: r, g, b in [0, 1]
   std::string uv = "per-vertex";  // --uv: per-vertex (interpolated), per-pixel (the mapping evaluated exactly)
+  std::string derivatives = "analytic";  // --derivatives: analytic, quad-coarse, quad-fine (a GPU's 2x2 quad differences)
+  std::string seamFix = "none";          // --seam-fix: none, grad, tarini (with quad derivatives)
   int threads = 0;                // --threads: 0, one per hardware thread; the image does not depend on it
 
   // From `uvtk render`'s syntax, e.g. "--view seams --size 640x480".
