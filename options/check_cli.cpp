@@ -67,16 +67,7 @@ void addImageCheckOptions(CLI::App& app, CheckArguments& a) {
                  "--image: each colour channel may be off by 2^-N (default 7, 6 for the *_mipmap_linear filters)");
   // `uvtk render`'s camera, texture and frame options that check has not under the same name
   // (--eye, --center, --up, --fovy, --view-dir and --wrap are shared; see CheckArguments).
-  a.camera.app = &app;
-  addChoice<CameraArguments::Mode>(
-      app, "--camera", a.camera.mode,
-      {{"auto", CameraArguments::Mode::Auto}, {"explicit", CameraArguments::Mode::Explicit}},
-      "--image: auto frames the mesh's bounding sphere (along --view-dir); explicit uses --eye, --center, --up. "
-      "Default: explicit when --eye is given");
-  app.add_option("--near", a.camera.zNear, "--image: near plane distance (explicit camera; default 0.1)");
-  app.add_option("--far", a.camera.zFar, "--image: far plane distance (explicit camera; default 100)");
-  app.add_option("--ortho", a.camera.ortho, "--image: glOrtho left,right,bottom,top, or auto to frame the mesh")
-      ->type_name("L,R,B,T|auto");
+  addCameraOptions(app, a.camera, false);
   app.add_option("--texture", a.texture.source,
                  "--image: checker:N[:C], uvgrid[:N], spheremap[:N[:K]] or an image file (top row at v = 1)")
       ->capture_default_str();

@@ -53,20 +53,22 @@ std::vector<std::string> aovChannels(const std::string& list) {
 
 }  // namespace
 
-void addCameraOptions(CLI::App& app, CameraArguments& a) {
+void addCameraOptions(CLI::App& app, CameraArguments& a, bool lookAt) {
   a.app = &app;
   addChoice<CameraArguments::Mode>(
       app, "--camera", a.mode, {{"auto", CameraArguments::Mode::Auto}, {"explicit", CameraArguments::Mode::Explicit}},
       "auto frames the mesh's bounding sphere (along --view-dir, or eye - center when --eye is given); explicit uses "
       "--eye, --center, --up as given. Default: explicit when --eye is given");
-  app.add_option("--eye", a.eye, "Camera: gluLookAt eye (x,y,z); without it the camera frames the mesh")
-      ->type_name("X,Y,Z");
-  app.add_option("--center", a.center, "Camera: gluLookAt center")->type_name("X,Y,Z")->capture_default_str();
-  app.add_option("--up", a.up, "Camera: gluLookAt up")->type_name("X,Y,Z")->capture_default_str();
-  app.add_option("--view-dir", a.viewDir, "Automatic camera: direction from the mesh to the eye")
-      ->type_name("X,Y,Z")
-      ->capture_default_str();
-  app.add_option("--fovy", a.fovy, "Camera: gluPerspective vertical field of view in degrees")->capture_default_str();
+  if (lookAt) {
+    app.add_option("--eye", a.eye, "Camera: gluLookAt eye (x,y,z); without it the camera frames the mesh")
+        ->type_name("X,Y,Z");
+    app.add_option("--center", a.center, "Camera: gluLookAt center")->type_name("X,Y,Z")->capture_default_str();
+    app.add_option("--up", a.up, "Camera: gluLookAt up")->type_name("X,Y,Z")->capture_default_str();
+    app.add_option("--view-dir", a.viewDir, "Automatic camera: direction from the mesh to the eye")
+        ->type_name("X,Y,Z")
+        ->capture_default_str();
+    app.add_option("--fovy", a.fovy, "Camera: gluPerspective vertical field of view in degrees")->capture_default_str();
+  }
   app.add_option("--near", a.zNear, "Camera: near plane distance (explicit camera; default 0.1)");
   app.add_option("--far", a.zFar, "Camera: far plane distance (explicit camera; default 100)");
   app.add_option("--ortho", a.ortho, "Orthographic camera: glOrtho left,right,bottom,top, or auto to frame the mesh")

@@ -43,7 +43,9 @@ struct CameraArguments {
   void check() const;  // what make() would refuse, before any work
   bool explicitCamera() const;
 };
-void addCameraOptions(CLI::App& app, CameraArguments& arguments);
+// --camera, --eye, --center, --up, --view-dir, --fovy, --near, --far, --ortho; without `lookAt`, not
+// --eye, --center, --up, --view-dir and --fovy (a command that has them under those names already).
+void addCameraOptions(CLI::App& app, CameraArguments& arguments, bool lookAt = true);
 
 struct TextureArguments {
   std::string source = "checker:64:8";
