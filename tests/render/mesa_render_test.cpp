@@ -85,7 +85,8 @@ struct Renderings {
 };
 
 Renderings renderBoth(Mesa& mesa, const Scene& s) {
-  return {render(s.mesh, texcoords(s), uvtkOptions(s)), mesa.draw(s, Mesa::Pass::Colour), mesa.draw(s, Mesa::Pass::FaceIds)};
+  return {render(s.mesh, texcoords(s), uvtkOptions(s)), mesa.draw(s, Mesa::Pass::Colour),
+          mesa.draw(s, Mesa::Pass::FaceIds)};
 }
 
 // Pixel statistics of one comparison. Differences are in 8-bit steps (1/255), per pixel the
@@ -199,7 +200,8 @@ void expectNearestMatch(const Comparison& c) {
 
 // LINEAR: llvmpipe's float filter (Mesa::Filtering::Float: its default 8-bit fixed-point weights
 // made these scenes only 47.9% (ramp texture, lit) to 96.6% (checker) identical, though never
-// more than 1 step apart) against uvtk's double one can round the last bit differently. Measured: 99.81% to 100% identical, never more than 1 step apart.
+// more than 1 step apart) against uvtk's double one can round the last bit differently.
+// Measured: 99.81% to 100% identical, never more than 1 step apart.
 void expectLinearMatch(const Comparison& c) {
   expectSubstantial(c);
   expectCoverageAgrees(c);
