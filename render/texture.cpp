@@ -179,10 +179,8 @@ Vec4 sampleLinear(const TexelLevel& level, Wrap wrapS, Wrap wrapT, double s, dou
   const LinearTap u = linearTap(s, level.width), v = linearTap(t, level.height);
   const int i0 = wrapTexel(u.lower, level.width, wrapS), i1 = wrapTexel(u.lower + 1, level.width, wrapS);
   const int j0 = wrapTexel(v.lower, level.height, wrapT), j1 = wrapTexel(v.lower + 1, level.height, wrapT);
-  const double a = u.alpha, b = v.alpha;
-  // GL 4.6 §8.14.2: tau = (1-a)(1-b) t_i0j0 + a(1-b) t_i1j0 + (1-a) b t_i0j1 + a b t_i1j1
-  return (1 - a) * (1 - b) * widen(level.at(i0, j0)) + a * (1 - b) * widen(level.at(i1, j0)) +
-         (1 - a) * b * widen(level.at(i0, j1)) + a * b * widen(level.at(i1, j1));
+  return bilinear(widen(level.at(i0, j0)), widen(level.at(i1, j0)), widen(level.at(i0, j1)), widen(level.at(i1, j1)),
+                  u.alpha, v.alpha);
 }
 
 double levelOfDetail(int width, int height, const Vec2& dstDx, const Vec2& dstDy) {

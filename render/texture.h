@@ -103,6 +103,15 @@ struct LinearTap {
 };
 LinearTap linearTap(double coordinate, int size);
 
+// GL 4.6 §8.14.2's bilinear blend of a 2 x 2 quad of texels (t_ij with i along s), alpha the
+// weight of the upper i, beta of the upper j, evaluated in this order.
+template <typename Texel>
+Texel bilinear(const Texel& t00, const Texel& t10, const Texel& t01, const Texel& t11, double alpha, double beta) {
+  const double a = alpha, b = beta;
+  // tau = (1-a)(1-b) t_i0j0 + a(1-b) t_i1j0 + (1-a) b t_i0j1 + a b t_i1j1
+  return (1 - a) * (1 - b) * t00 + a * (1 - b) * t10 + (1 - a) * b * t01 + a * b * t11;
+}
+
 // NEAREST within one level: texel (wrap(floor(s W)), wrap(floor(t H))), products in double.
 Rgba sampleNearest(const TexelLevel& level, Wrap wrapS, Wrap wrapT, double s, double t);
 

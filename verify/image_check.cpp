@@ -110,9 +110,9 @@ void linearBoxes(const TexelLevel& level, const SamplerState& sampler, double s,
       const auto betas = weightInterval(j, v0, v1, js.whole, tol.weightEps);
       Box box;
       for (double a : alphas)
-        for (double b : betas)  // GL 4.6 §8.14.2's blend, as render::sampleLinear weighs it
-          box.add((1 - a) * (1 - b) * rgb(level.at(i0, j0)) + a * (1 - b) * rgb(level.at(i1, j0)) +
-                  (1 - a) * b * rgb(level.at(i0, j1)) + a * b * rgb(level.at(i1, j1)));
+        for (double b : betas)
+          box.add(render::bilinear(rgb(level.at(i0, j0)), rgb(level.at(i1, j0)), rgb(level.at(i0, j1)),
+                                   rgb(level.at(i1, j1)), a, b));
       out.push_back(box);
     }
 }
