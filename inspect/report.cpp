@@ -67,23 +67,30 @@ nlohmann::json reportJson(const MappedMesh& mapped, const analysis::Judgement& j
 
 nlohmann::json writeReport(io::OutputSet& outputs, const ReportOptions& o, const MappedMesh& mapped,
                            const analysis::Judgement& judgement, const nlohmann::json& input,
-                           const nlohmann::json& milliseconds, analysis::Judgement* judged) {
+                           const nlohmann::json& milliseconds, std::optional<analysis::Judgement>* judged) {
   const std::vector<views::View> shown = pageViews(mapped, o);
-  const render::Texture texture = uverrorTexture(o.textureSize);
+  std::optional<render::Texture> texture;  // the views' (uverror counts its texels, mipline its levels)
   views::ViewOptions options;
-  options.render.camera = o.camera.frame(mapped.mesh, o.width, o.height);
-  options.render.raster.threads = o.threads;
-  options.render.raster.cull = render::Cull::None;
-  options.render.texture = &texture;
-  options.perPixel = mapped.exact.has_value();  // the mip line of the mapping as a shader evaluates it
+  if (!shown.empty()) {
+    texture = uverrorTexture(o.textureSize);
+    options.render.camera = o.camera.frame(mapped.mesh, o.width, o.height);
+    options.render.raster.threads = o.threads;
+    options.render.raster.cull = render::Cull::None;
+    options.render.texture = &*texture;
+    options.perPixel = mapped.exact.has_value();  // the mip line of the mapping as a shader evaluates it
+  }
   const views::ViewInput in = mapped.viewInput(&judgement);
   // A page with the mipline view measures the line: the mip_line rule joins the verdict.
-  analysis::Judgement page = judgement;
+  std::optional<analysis::Judgement> withLine;
   std::optional<views::MipLine> line;
   if (std::find(shown.begin(), shown.end(), views::View::MipLine) != shown.end()) {
     line = views::mipLine(in, options);
-    if (line->perPixel) analysis::setMeasuredRule(page, analysis::Rule::MipLine, line->share(), line->faces);
+    if (line->perPixel) {
+      withLine = judgement;
+      analysis::setMeasuredRule(*withLine, analysis::Rule::MipLine, line->share(), line->faces);
+    }
   }
+  const analysis::Judgement& page = withLine ? *withLine : judgement;
   nlohmann::json report = reportJson(mapped, page, o, input);
   if (line) report["mip_line"] = mipLineJson(*line);
   std::vector<std::pair<std::string, Image>> pictures;
@@ -105,12 +112,13 @@ nlohmann::json writeReport(io::OutputSet& outputs, const ReportOptions& o, const
     }
     outputs.writeText(o.html, htmlReport(report, pictures, view3d));
   }
-  if (judged) *judged = std::move(page);
+  if (judged) *judged = std::move(withLine);
   return report;
 }
 
 nlohmann::json writeReport(const ReportOptions& o, const MappedMesh& mapped, const analysis::Judgement& judgement,
-                           const nlohmann::json& input, const nlohmann::json& milliseconds, analysis::Judgement* judged) {
+                           const nlohmann::json& input, const nlohmann::json& milliseconds,
+                           std::optional<analysis::Judgement>* judged) {
   io::OutputSet outputs;
   nlohmann::json report = writeReport(outputs, o, mapped, judgement, input, milliseconds, judged);
   outputs.publish();

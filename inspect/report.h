@@ -3,6 +3,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,13 +38,14 @@ nlohmann::json reportJson(const MappedMesh& mapped, const analysis::Judgement& j
 // Writes the report to options.json and the page to options.html, published together;
 // `milliseconds` are the times of the stages before (none when null). Returns the report. A page
 // with the mipline view measures the mapping's mip line (per pixel when it has an exact form) and
-// adds the mip_line rule to the verdict: `judged`, when given, receives that judgement.
+// adds the mip_line rule to the verdict: `judged`, when given, receives that judgement (none when
+// the page measured no line, the verdict then `judgement`'s).
 nlohmann::json writeReport(const ReportOptions& options, const MappedMesh& mapped,
                            const analysis::Judgement& judgement, const nlohmann::json& input,
-                           const nlohmann::json& milliseconds = nullptr, analysis::Judgement* judged = nullptr);
+                           const nlohmann::json& milliseconds = nullptr, std::optional<analysis::Judgement>* judged = nullptr);
 // The same, staged in `outputs` (a scene's).
 nlohmann::json writeReport(io::OutputSet& outputs, const ReportOptions& options, const MappedMesh& mapped,
                            const analysis::Judgement& judgement, const nlohmann::json& input,
-                           const nlohmann::json& milliseconds = nullptr, analysis::Judgement* judged = nullptr);
+                           const nlohmann::json& milliseconds = nullptr, std::optional<analysis::Judgement>* judged = nullptr);
 
 }  // namespace uvtk::inspect

@@ -2,6 +2,7 @@
 // as one self-contained HTML page with the views and histograms.
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -60,9 +61,10 @@ void runReport(const ReportCommandArguments& a) {
   if (projectorGiven && projectorOptions.surface == param::SurfaceKind::Triplanar && !reportOptions.html.empty() &&
       !given(a.projector.app, "--views"))
     reportOptions.views.insert(reportOptions.views.end(), {views::View::Weights, views::View::BlendZone});
-  analysis::Judgement judged;  // with the mip line's rule when the page draws it
+  std::optional<analysis::Judgement> withLine;  // with the mip line's rule when the page draws it
   writeReport(reportOptions, mapped, judgement, inputSummary,
-              {{"read", readMs}, {"texcoords", mapMs}, {"measure", measureMs}}, &judged);
+              {{"read", readMs}, {"texcoords", mapMs}, {"measure", measureMs}}, &withLine);
+  const analysis::Judgement& judged = withLine ? *withLine : judgement;
   clock.stop();
   printMappingNotes(a.input, input.warnings, mapped);
   const analysis::Summary& summary = judgement.summary;
