@@ -5,7 +5,8 @@
 #include <cmath>
 #include <cstring>
 
-#include "param/batch_atan2_avx2.h"
+#include "param/exact_atan2.h"
+#include "param/sleef_atan2.h"
 
 namespace uvtk::param {
 
@@ -16,32 +17,14 @@ bool hasAvx2() {
   return avx2;
 }
 
+bool hasAvx512() {
+  static const bool avx512 = __builtin_cpu_supports("avx512f");
+  return avx512;
+}
+
 template <class T>
 void libmAtan2(const T* y, const T* x, T* out, std::size_t n) {
   for (std::size_t i = 0; i < n; ++i) out[i] = std::atan2(y[i], x[i]);
-}
-
-// SSE2: whole vectors, then the tail through a zero-padded vector.
-template <class T, class V, class F>
-void sleefAtan2(const T* y, const T* x, T* out, std::size_t n, F atan2) {
-  constexpr std::size_t kLanes = sizeof(V) / sizeof(T);
-  std::size_t i = 0;
-  V a, b;
-  for (; i + kLanes <= n; i += kLanes) {
-    std::memcpy(&a, y + i, sizeof a);
-    std::memcpy(&b, x + i, sizeof b);
-    const V r = atan2(a, b);
-    std::memcpy(out + i, &r, sizeof r);
-  }
-  if (i == n) return;
-  T ty[kLanes] = {}, tx[kLanes] = {}, tr[kLanes];
-  std::memcpy(ty, y + i, (n - i) * sizeof(T));
-  std::memcpy(tx, x + i, (n - i) * sizeof(T));
-  std::memcpy(&a, ty, sizeof a);
-  std::memcpy(&b, tx, sizeof b);
-  const V r = atan2(a, b);
-  std::memcpy(tr, &r, sizeof r);
-  std::memcpy(out + i, tr, (n - i) * sizeof(T));
 }
 
 }  // namespace
@@ -51,24 +34,27 @@ void atan2Block(MathMode math, const float* y, const float* x, float* out, std::
     case MathMode::Exact:
       return libmAtan2(y, x, out, n);
     case MathMode::Fast:
-      if (hasAvx2()) return atan2FloatAvx2(y, x, out, n, false);
-      return sleefAtan2<float, __m128>(y, x, out, n, Sleef_atan2f4_u35);
-    case MathMode::FastU10:
-      if (hasAvx2()) return atan2FloatAvx2(y, x, out, n, true);
-      return sleefAtan2<float, __m128>(y, x, out, n, Sleef_atan2f4_u10);
+    case MathMode::FastU10: {
+      const bool oneUlp = math == MathMode::FastU10;
+      if (hasAvx512()) return atan2FloatAvx512(y, x, out, n, oneUlp);
+      if (hasAvx2()) return atan2FloatAvx2(y, x, out, n, oneUlp);
+      return sleefAtan2Block<float, __m128>(y, x, out, n, oneUlp ? Sleef_atan2f4_u10 : Sleef_atan2f4_u35);
+    }
   }
 }
 
 void atan2Block(MathMode math, const double* y, const double* x, double* out, std::size_t n) {
   switch (math) {
     case MathMode::Exact:
-      return libmAtan2(y, x, out, n);
+      exactAtan2Block(y, x, out, n);  // glibc's bits, vectorised
+      return;
     case MathMode::Fast:
-      if (hasAvx2()) return atan2DoubleAvx2(y, x, out, n, false);
-      return sleefAtan2<double, __m128d>(y, x, out, n, Sleef_atan2d2_u35);
-    case MathMode::FastU10:
-      if (hasAvx2()) return atan2DoubleAvx2(y, x, out, n, true);
-      return sleefAtan2<double, __m128d>(y, x, out, n, Sleef_atan2d2_u10);
+    case MathMode::FastU10: {
+      const bool oneUlp = math == MathMode::FastU10;
+      if (hasAvx512()) return atan2DoubleAvx512(y, x, out, n, oneUlp);
+      if (hasAvx2()) return atan2DoubleAvx2(y, x, out, n, oneUlp);
+      return sleefAtan2Block<double, __m128d>(y, x, out, n, oneUlp ? Sleef_atan2d2_u10 : Sleef_atan2d2_u35);
+    }
   }
 }
 
@@ -76,6 +62,6 @@ void atan2Block(MathMode, const long double* y, const long double* x, long doubl
   libmAtan2(y, x, out, n);
 }
 
-const char* fastMathInstructionSet() { return hasAvx2() ? "avx2" : "sse2"; }
+const char* fastMathInstructionSet() { return hasAvx512() ? "avx512f" : hasAvx2() ? "avx2" : "sse2"; }
 
 }  // namespace uvtk::param

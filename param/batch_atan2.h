@@ -1,6 +1,7 @@
-// atan2 over arrays, in the math mode a user chose (--math): libm one value at a time, or SLEEF's
+// atan2 over arrays, in the math mode a user chose (--math): libm's values (in double vectorised
+// with its bits, param/exact_atan2.h; in float one at a time), or SLEEF's
 // vectorised functions with their documented error bounds (3.5 or 1.0 ULP), on the widest vectors
-// the processor has (AVX2 when present, SSE2 otherwise). The only transcendental function of the
+// the processor has (AVX-512F or AVX2 when present, SSE2 otherwise). The only transcendental function of the
 // S-mappings, so the only place where the math mode matters.
 #pragma once
 
@@ -16,7 +17,7 @@ void atan2Block(MathMode math, const double* y, const double* x, double* out, st
 // References are computed in long double with libm's atan2l whatever the mode.
 void atan2Block(MathMode math, const long double* y, const long double* x, long double* out, std::size_t n);
 
-// The instruction set SLEEF runs on here: "avx2" or "sse2".
+// The instruction set SLEEF runs on here: "avx512f", "avx2" or "sse2".
 const char* fastMathInstructionSet();
 
 }  // namespace uvtk::param
