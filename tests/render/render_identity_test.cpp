@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -204,6 +205,107 @@ TEST_F(RenderIdentity, EachPixelsSharedSetUpIsTheTriangleInterpolatorOfItsFace) 
       }
   }
   EXPECT_GT(checked, 30000u);
+}
+
+// A float texture of values that are no multiples of 1/255, of any size.
+Texture smoothTexture(int width, int height) {
+  TexelLevel base;
+  base.width = width, base.height = height;
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i)
+      base.texels.emplace_back(float(0.5 + 0.5 * std::sin(0.37 * i + 0.11 * j)), float(i) / float(width),
+                               float(j) / float(height), float(0.25 + 0.5 * ((i ^ j) & 1)));
+  Texture t(std::move(base), false);
+  t.buildMipmaps();
+  return t;
+}
+
+// The images of every filter, wrap and environment, texture kind, derivative mode, bias, sample
+// count and cull mode the renderer has, pinned before the shading was vectorised (issue 26): a
+// name per configuration and the checksum of what it drew.
+TEST_F(RenderIdentity, EveryConfigurationDrawsTheImageItDrewBeforeTheVectorisedShading) {
+  Texture npot = Texture::fromImage(uvGridImage(100), true);
+  npot.buildMipmaps();
+  const Texture smooth = smoothTexture(64, 64), smoothNpot = smoothTexture(48, 20);
+  TexcoordSource projective, perPixel, directions;
+  projective.corners = projectiveTexcoords(sphere);
+  perPixel.pixelMapping = sphericalPixelMapping(3, 2);
+  directions.corners = directionTexcoords(sphere);
+  const std::map<std::string, std::uint64_t> expected = {
+#include "render/render_matrix_checksums.inc"
+  };
+  std::map<std::string, std::uint64_t> drawn;
+  const auto draw = [&](const std::string& name, const TexcoordSource& tc, RenderOptions o) {
+    o.camera = sphereCamera(sphere, 96, 72);
+    drawn[name] = checksum(render(sphere, tc, o));
+  };
+  const char* filterNames[] = {"nearest", "linear", "nmn", "lmn", "nml", "lml"};
+  const char* wrapNames[] = {"repeat", "clamp", "mirror"};
+  const char* envNames[] = {"replace", "modulate", "decal", "blend"};
+  for (int f = 0; f < 6; ++f)
+    for (int w = 0; w < 3; ++w)
+      for (int e = 0; e < 4; ++e) {
+        RenderOptions o = base();
+        o.texture = &grid;
+        o.sampler = samplerFor(Filter(f), Wrap(w));
+        o.env = EnvMode(e);
+        o.envColour = Vec4(0.2, 0.4, 0.9, 0.5);
+        draw(std::string(filterNames[f]) + "/" + wrapNames[w] + "/" + envNames[e], projective, o);
+      }
+  for (int f = 0; f < 6; ++f) {
+    RenderOptions o = base();
+    o.sampler = samplerFor(Filter(f), Wrap::Repeat);
+    o.texture = &npot;
+    draw(std::string("npot/") + filterNames[f], projective, o);
+    o.texture = &smooth;
+    draw(std::string("float/") + filterNames[f], projective, o);
+    RenderOptions decal = o;  // the smooth texture's alpha varies
+    decal.env = EnvMode::Decal;
+    draw(std::string("float-decal/") + filterNames[f], projective, decal);
+    o.texture = &smoothNpot;
+    draw(std::string("float-npot/") + filterNames[f], projective, o);
+    o.texture = &grid;
+    draw(std::string("per-pixel/") + filterNames[f], perPixel, o);
+    o.texture = nullptr, o.cubeTexture = &cube;
+    o.sampler.wrapS = o.sampler.wrapT = Wrap::ClampToEdge;
+    draw(std::string("cube/") + filterNames[f], directions, o);
+    o.seamless = true;
+    draw(std::string("cube-seamless/") + filterNames[f], directions, o);
+  }
+  RenderOptions o = base();
+  o.texture = &grid;
+  o.sampler = samplerFor(Filter::LinearMipmapLinear, Wrap::Repeat);
+  for (double bias : {-1.0, 1.5}) {
+    RenderOptions biased = o;
+    biased.lodBias = bias;
+    draw("bias/" + std::to_string(bias), projective, biased);
+  }
+  for (Derivatives derivatives : {Derivatives::QuadCoarse, Derivatives::QuadFine}) {
+    RenderOptions quad = o;
+    quad.derivatives = derivatives;
+    draw(std::string("quad/") + toString(derivatives), projective, quad);
+    draw(std::string("quad-per-pixel/") + toString(derivatives), perPixel, quad);
+  }
+  for (int spp : {4, 9}) {
+    RenderOptions samples = o;
+    samples.samplesPerPixel = spp;
+    draw("spp/" + std::to_string(spp), projective, samples);
+  }
+  for (Cull cull : {Cull::Front, Cull::None}) {
+    RenderOptions culled = o;
+    culled.raster.cull = cull;
+    culled.background = Vec3(0.1, 0.2, 0.3);
+    draw(std::string("cull/") + (cull == Cull::Front ? "front" : "none"), projective, culled);
+  }
+  RenderOptions plain = o;
+  plain.aovs = false, plain.raster.threads = 1;
+  draw("no-aovs", projective, plain);
+  for (const auto& [name, sum] : drawn) {
+    const auto found = expected.find(name);
+    EXPECT_TRUE(found != expected.end() && found->second == sum)
+        << "{\"" << name << "\", 0x" << std::hex << sum << "u},";
+  }
+  EXPECT_EQ(drawn.size(), expected.size());
 }
 
 }  // namespace
