@@ -1,6 +1,7 @@
 // Rendering throughput: a 1 M-triangle textured sphere at 1920 x 1080, trilinear filtering
 // (LINEAR_MIPMAP_LINEAR, REPEAT), texture environment REPLACE, back faces culled.
-// - render/uvtk: render::render with RasterOptions::threads 1 and 2 (rasterisation and shading);
+// - render/uvtk: a render::Renderer's frames with RasterOptions::threads 1 and 2 (rasterisation and
+//   shading; its buffers kept from frame to frame, as the GL context keeps its framebuffer and bins);
 //   counters rasterMs and shadeMs are the Rendering's own split, coveredPixels the pixels shaded.
 // - render/llvmpipe: the same scene through Mesa's OSMesa (clear + draw from VBOs + glFinish; no
 //   read-back, OSMesa draws into our memory), LP_NUM_THREADS 0 (rasterised in the calling
@@ -74,9 +75,10 @@ void uvtkRender(benchmark::State& state) {
   options.raster.threads = int(state.range(0));
   double rasterMs = 0.0, shadeMs = 0.0, cpuMs = 0.0;
   std::size_t covered = 0;
+  render::Renderer renderer;  // its buffers kept between frames, as llvmpipe's context keeps its own
   for (auto _ : state) {
     const double cpuStart = processCpuMs();
-    const render::Rendering r = render::render(s.mesh, s.texcoords, options);
+    const render::Rendering& r = renderer.render(s.mesh, s.texcoords, options);
     cpuMs += processCpuMs() - cpuStart;
     rasterMs += r.rasterMs;
     shadeMs += r.shadeMs;

@@ -13,8 +13,8 @@ namespace {
 
 std::uint64_t textureBytes(const Texture& texture) {
   std::uint64_t bytes = 0;
-  for (int k = 0; k < texture.levelCount(); ++k)
-    bytes += std::uint64_t(texture.level(k).texels.size()) * sizeof(Rgba);
+  const std::uint64_t perTexel = sizeof(Rgba) + (texture.packed() ? sizeof(std::uint32_t) : 0);
+  for (int k = 0; k < texture.levelCount(); ++k) bytes += std::uint64_t(texture.level(k).texels.size()) * perTexel;
   return bytes;
 }
 

@@ -18,8 +18,8 @@ struct MemoryEstimate {
   // positions; per face the set-up triangles; a tile per thread; per corner the normals and lit
   // colours when something reads them.
   std::uint64_t frame = 0;
-  // The bound texture with every level it holds (already in memory when render() is called), and
-  // a blend's other axis textures.
+  // The bound texture with every level it holds, as floats and packed (already in memory when
+  // render() is called), and a blend's other axis textures.
   std::uint64_t texture = 0;
   std::uint64_t total() const { return frame + texture; }
 };

@@ -134,17 +134,19 @@ std::int64_t roundHalfAway(double v) {
   return i + (fraction >= 0.5) - (fraction <= -0.5);
 }
 
+}  // namespace
+
 // A vertex's snapped window position, computed once per vertex (about six triangles share each):
 // a triangle whose three corners lie inside every clip plane needs no clipping, and its corners
 // are these points.
-struct WindowVertex {
-  Point p{0, 0};
-  bool inside = false;  // finite, inside every clip plane, w > 0; p is set only then
+struct TiledRaster::WindowVertex {
+  std::int32_t x = 0, y = 0;  // as Point
+  bool inside = false;        // finite, inside every clip plane, w > 0; x and y are set only then
 };
 
-}  // namespace
-
-struct TiledRaster::Chunk {
+// Aligned to a cache line: the threads setting up neighbouring chunks would otherwise share one
+// (the counters change at every triangle), and two threads set up no faster than one.
+struct alignas(64) TiledRaster::Chunk {
   std::vector<SetupTriangle> triangles;
   std::vector<std::vector<std::uint32_t>> tiles;  // per tile, indices into triangles
   RasterStats stats;
@@ -159,21 +161,24 @@ class Setup {
     planes_.guard = double(1 << 20) / double(std::max(width, height));
   }
 
-  WindowVertex vertex(const Vec4& c) const {
-    WindowVertex v;
+  TiledRaster::WindowVertex vertex(const Vec4& c) const {
+    TiledRaster::WindowVertex v;
     v.inside = c.allFinite() && c.w() > 0.0;
     for (int plane = 0; plane < 6 && v.inside; ++plane) v.inside = planes_.distance(plane, c) >= 0.0;
-    if (v.inside) v.p = snap(c);
+    if (v.inside) {
+      const Point p = snap(c);
+      v.x = p.x, v.y = p.y;
+    }
     return v;
   }
 
-  void triangle(const std::vector<Vec4>& clip, const std::vector<WindowVertex>& window, const Triangle& corners,
+  void triangle(const std::vector<Vec4>& clip, const std::vector<TiledRaster::WindowVertex>& window, const Triangle& corners,
                 std::int32_t face, TiledRaster::Chunk& out) const {
     const auto i0 = std::size_t(corners[0]), i1 = std::size_t(corners[1]), i2 = std::size_t(corners[2]);
     std::array<Point, 9> p;
     int n = 3;
     if (window[i0].inside && window[i1].inside && window[i2].inside) {
-      p[0] = window[i0].p, p[1] = window[i1].p, p[2] = window[i2].p;
+      p[0] = {window[i0].x, window[i0].y}, p[1] = {window[i1].x, window[i1].y}, p[2] = {window[i2].x, window[i2].y};
     } else {
       n = clipAndSnap(clip[i0], clip[i1], clip[i2], p);
       if (n < 3) {
@@ -343,23 +348,33 @@ TriangleInterpolator::Barycentrics TriangleInterpolator::at(double x, double y) 
   return r;
 }
 
+TiledRaster::TiledRaster() = default;
+
 TiledRaster::TiledRaster(const std::vector<Vec4>& clip, const std::vector<Triangle>& triangles, int width,
-                         int height, const RasterOptions& options)
-    : width_(width), height_(height) {
+                         int height, const RasterOptions& options) {
+  setUp(clip, triangles, width, height, options);
+}
+
+void TiledRaster::setUp(const std::vector<Vec4>& clip, const std::vector<Triangle>& triangles, int width, int height,
+                        const RasterOptions& options) {
   if (width <= 0 || height <= 0 || width > kMaxViewport || height > kMaxViewport)
     throw UsageError("the image size must lie between 1 x 1 and 16384 x 16384 pixels");
+  width_ = width, height_ = height;
   tilesX_ = (width + kTileSize - 1) / kTileSize, tilesY_ = (height + kTileSize - 1) / kTileSize;
   const auto faceCount = std::int64_t(triangles.size());
   UVTK_CHECK(faceCount <= std::numeric_limits<std::int32_t>::max());
   const int threads = threadCount(options.threads);
   const Setup setup(width, height, tilesX_, options);
 
-  std::vector<WindowVertex> window;
-  resizeOnHugePages(window, clip.size());
+  if (window_.capacity() < clip.size()) {
+    std::vector<WindowVertex>().swap(window_);
+    resizeOnHugePages(window_, clip.size());
+  }
+  window_.resize(clip.size());
   constexpr std::size_t kVertexChunk = std::size_t(1) << 16;
   parallelFor(int((clip.size() + kVertexChunk - 1) / kVertexChunk), threads, [&](int c) {
     const std::size_t end = std::min(clip.size(), std::size_t(c + 1) * kVertexChunk);
-    for (std::size_t v = std::size_t(c) * kVertexChunk; v < end; ++v) window[v] = setup.vertex(clip[v]);
+    for (std::size_t v = std::size_t(c) * kVertexChunk; v < end; ++v) window_[v] = setup.vertex(clip[v]);
   });
 
   // Set-up in chunks of consecutive triangles; each chunk bins its own triangles, and tiles read
@@ -368,13 +383,21 @@ TiledRaster::TiledRaster(const std::vector<Vec4>& clip, const std::vector<Triang
   chunks_.resize(static_cast<std::size_t>(chunkCount));
   parallelFor(chunkCount, threads, [&](int c) {
     Chunk& chunk = chunks_[std::size_t(c)];
+    chunk.stats = {};
     chunk.tiles.resize(std::size_t(tileCount()));
+    for (std::vector<std::uint32_t>& bin : chunk.tiles) bin.clear();
+    chunk.triangles.clear();
     const std::int64_t begin = faceCount * c / chunkCount, end = faceCount * (c + 1) / chunkCount;
-    chunk.triangles.reserve(std::size_t(end - begin) / 2);  // a closed mesh shows about half its faces
-    adviseHugePages(chunk.triangles.data(), chunk.triangles.capacity() * sizeof(SetupTriangle));
+    const std::size_t expected = std::size_t(end - begin) / 2;  // a closed mesh shows about half its faces
+    if (chunk.triangles.capacity() < expected) {
+      std::vector<SetupTriangle>().swap(chunk.triangles);
+      chunk.triangles.reserve(expected);
+      adviseHugePages(chunk.triangles.data(), chunk.triangles.capacity() * sizeof(SetupTriangle));
+    }
     for (std::int64_t f = begin; f < end; ++f)
-      setup.triangle(clip, window, triangles[std::size_t(f)], std::int32_t(f), chunk);
+      setup.triangle(clip, window_, triangles[std::size_t(f)], std::int32_t(f), chunk);
   });
+  stats_ = {};
   for (const Chunk& chunk : chunks_) {
     stats_.culled += chunk.stats.culled;
     stats_.clipped += chunk.stats.clipped;

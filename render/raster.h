@@ -79,18 +79,25 @@ struct DrawnFace {
 
 // The frame's triangles set up and binned into square tiles once; each tile is then drawn on its
 // own, on any thread and in any order, so that a caller can shade a tile while it is in cache.
-// Within a tile the triangles are drawn in input order, whatever the thread count.
+// Within a tile the triangles are drawn in input order, whatever the thread count. setUp keeps
+// its buffers from one frame to the next (as a GL context keeps its bins): a renderer drawing
+// frames of a million triangles faults no new pages once the first frame has grown them.
 class TiledRaster {
  public:
   static constexpr int kTileSize = 64;
 
-  // `clip`: clip-space positions, indexed by `triangles`. Throws UsageError for an empty or too
-  // large viewport (more than kMaxViewport pixels a side).
+  TiledRaster();  // nothing set up: no tiles
+  // As setUp.
   TiledRaster(const std::vector<Vec4>& clip, const std::vector<Triangle>& triangles, int width, int height,
               const RasterOptions& options);
   TiledRaster(const TiledRaster&) = delete;  // tiles point into the set-up
   TiledRaster& operator=(const TiledRaster&) = delete;
   ~TiledRaster();
+
+  // `clip`: clip-space positions, indexed by `triangles`. Throws UsageError for an empty or too
+  // large viewport (more than kMaxViewport pixels a side). Replaces the previous frame's set-up.
+  void setUp(const std::vector<Vec4>& clip, const std::vector<Triangle>& triangles, int width, int height,
+             const RasterOptions& options);
 
   int tileCount() const { return tilesX_ * tilesY_; }
   const RasterStats& stats() const { return stats_; }
@@ -105,10 +112,12 @@ class TiledRaster {
   };
   void draw(int tile, Tile& out) const;
 
-  struct Chunk;  // the set-up and bins of a run of consecutive triangles (raster.cpp)
+  struct Chunk;         // the set-up and bins of a run of consecutive triangles (raster.cpp)
+  struct WindowVertex;  // a vertex's snapped window position (raster.cpp)
 
  private:
-  int width_, height_, tilesX_, tilesY_;
+  int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0;
+  std::vector<WindowVertex> window_;
   std::vector<Chunk> chunks_;
   RasterStats stats_;
 };

@@ -307,9 +307,12 @@ class Shader {
 // so a mesh whose every vertex has clip coordinates beyond 2^400, or every vertex below 2^-400 (a
 // mesh at 1e200 or 1e-200), is brought to about 1, where the set-up's products of two coordinates
 // neither overflow nor underflow; any other frame keeps its bits.
-std::vector<Vec4> clipPositions(const Mesh& mesh, const Mat4& clipFromObject, int threads) {
-  std::vector<Vec4> clip;
-  resizeOnHugePages(clip, mesh.positions.size());
+void clipPositions(const Mesh& mesh, const Mat4& clipFromObject, int threads, std::vector<Vec4>& clip) {
+  if (clip.capacity() < mesh.positions.size()) {
+    std::vector<Vec4>().swap(clip);
+    resizeOnHugePages(clip, mesh.positions.size());
+  }
+  clip.resize(mesh.positions.size());
   constexpr int kChunk = 1 << 16;
   const int chunks = int((clip.size() + kChunk - 1) / kChunk);
   // Per chunk, the least and the greatest of the vertices' largest finite non-zero |coordinate|.
@@ -334,23 +337,34 @@ std::vector<Vec4> clipPositions(const Mesh& mesh, const Mat4& clipFromObject, in
       for (std::size_t v = std::size_t(chunk) * kChunk; v < end; ++v) clip[v] *= scale;
     });
   }
-  return clip;
 }
 
-// One sample at the centre of each pixel of the camera's viewport. Each tile is shaded right
-// after its visibility is drawn, while both are in cache. `sampleCovered`, when given, receives
-// per pixel (row 0 at the top) whether a triangle covers it. The arguments are valid.
-Rendering renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOptions& o,
-                      std::vector<std::uint8_t>* sampleCovered) {
+// `image` as width x height x channels, its pixels kept when it has that size already (every pixel
+// is written by the frame), else allocated on huge pages.
+void shapeImage(Image& image, int width, int height, int channels) {
+  const std::size_t size = std::size_t(width) * std::size_t(height) * std::size_t(channels);
+  if (image.pixels.size() != size) {
+    std::vector<float>().swap(image.pixels);
+    resizeOnHugePages(image.pixels, size);
+  }
+  image.width = width, image.height = height, image.channels = channels;
+}
+
+// One sample at the centre of each pixel of the camera's viewport, into `out`, whose images are
+// reused. Each tile is shaded right after its visibility is drawn, while both are in cache.
+// `sampleCovered`, when given, receives per pixel (row 0 at the top) whether a triangle covers
+// it. The arguments are valid.
+void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOptions& o, std::vector<Vec4>& clip,
+                 TiledRaster& raster, Rendering& out, std::vector<std::uint8_t>* sampleCovered) {
   const int width = o.camera.width, height = o.camera.height;
-  Rendering out;
 
   const auto rasterStart = std::chrono::steady_clock::now();
   const Mat4 eyeFromObject = o.camera.viewFromWorld * o.worldFromObject;
-  const std::vector<Vec4> clip = clipPositions(mesh, o.camera.clipFromView * eyeFromObject, o.raster.threads);
-  const TiledRaster raster(clip, mesh.triangles, width, height, o.raster);
+  clipPositions(mesh, o.camera.clipFromView * eyeFromObject, o.raster.threads, clip);
+  raster.setUp(clip, mesh.triangles, width, height, o.raster);
   out.raster = raster.stats();
   out.rasterMs = millisecondsSince(rasterStart);
+  out.coveredPixels = 0;
 
   const auto shadeStart = std::chrono::steady_clock::now();
   FrameData frame{mesh, source, o, {}, {}};
@@ -367,13 +381,13 @@ Rendering renderFrame(const Mesh& mesh, const TexcoordSource& source, const Rend
     }
   }
 
-  out.colour.width = width, out.colour.height = height, out.colour.channels = 3;
-  resizeOnHugePages(out.colour.pixels, std::size_t(width) * std::size_t(height) * 3);
+  shapeImage(out.colour, width, height, 3);
   if (o.aovs) {
-    out.aovs.width = width, out.aovs.height = height, out.aovs.channels = o.cubeTexture ? 6 : 5;
-    resizeOnHugePages(out.aovs.pixels, std::size_t(width) * std::size_t(height) * std::size_t(out.aovs.channels));
+    shapeImage(out.aovs, width, height, o.cubeTexture ? 6 : 5);
     out.aovs.channelNames = {"u", "v", "depth", "face", "lod"};
     if (o.cubeTexture) out.aovs.channelNames.push_back("cubeface");
+  } else {
+    out.aovs = Image();
   }
   if (sampleCovered) sampleCovered->assign(std::size_t(width) * std::size_t(height), 0);
   std::vector<std::size_t> covered(std::size_t(raster.tileCount()), 0);
@@ -424,7 +438,6 @@ Rendering renderFrame(const Mesh& mesh, const TexcoordSource& source, const Rend
   });
   for (std::size_t n : covered) out.coveredPixels += n;
   out.shadeMs = millisecondsSince(shadeStart);
-  return out;
 }
 
 // n for n x n samples per pixel.
@@ -436,18 +449,20 @@ int sampleGridSize(int samplesPerPixel) {
   return n;
 }
 
-// The supersampled frame down to width x height: each n x n block's mean colour (in double, so
-// that a block of equal samples keeps their value exactly), its sample (n/2, n/2)'s AOVs, covered
-// when any of its samples is.
-Rendering resolve(const Rendering& samples, const std::vector<std::uint8_t>& sampleCovered, int n, int width,
-                  int height, int threads) {
-  Rendering out;
-  out.colour = Image(width, height, 3);
+// The supersampled frame down to width x height, into `out`: each n x n block's mean colour (in
+// double, so that a block of equal samples keeps their value exactly), its sample (n/2, n/2)'s
+// AOVs, covered when any of its samples is.
+void resolve(const Rendering& samples, const std::vector<std::uint8_t>& sampleCovered, int n, int width, int height,
+             int threads, Rendering& out) {
+  shapeImage(out.colour, width, height, 3);
   const bool aovs = !samples.aovs.pixels.empty();
   if (aovs) {
-    out.aovs = Image(width, height, samples.aovs.channels);
+    shapeImage(out.aovs, width, height, samples.aovs.channels);
     out.aovs.channelNames = samples.aovs.channelNames;
+  } else {
+    out.aovs = Image();
   }
+  out.coveredPixels = 0;
   const int bands = (height + kRowsPerBand - 1) / kRowsPerBand;
   std::vector<std::size_t> covered(std::size_t(bands), 0);
   parallelFor(bands, threads, [&](int band) {
@@ -471,7 +486,6 @@ Rendering resolve(const Rendering& samples, const std::vector<std::uint8_t>& sam
   out.raster = samples.raster;
   out.rasterMs = samples.rasterMs;
   out.shadeMs = samples.shadeMs;
-  return out;
 }
 
 // Memory before work: a frame the machine cannot hold is refused before any buffer is allocated,
@@ -509,7 +523,10 @@ const char* toString(SeamFix fix) {
   return "?";
 }
 
-Rendering render(const Mesh& mesh, const TexcoordSource& source, const RenderOptions& o) {
+Renderer::Renderer() = default;
+Renderer::~Renderer() = default;
+
+const Rendering& Renderer::render(const Mesh& mesh, const TexcoordSource& source, const RenderOptions& o) {
   if (!o.texture == !o.cubeTexture) throw UsageError("render: expected one texture, 2D or cube map, to be bound");
   if (!source.pixelMapping && source.corners.size() != 3 * mesh.triangles.size())
     throw UsageError("render: expected 3 texture coordinates per triangle");
@@ -531,18 +548,26 @@ Rendering render(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
                      std::to_string(std::int64_t(width) * n) + " x " + std::to_string(std::int64_t(height) * n) +
                      " frame, larger than the rasterizer's " + std::to_string(kMaxViewport) + " pixels a side");
   checkFrameMemory(mesh, source, o);
-  if (n == 1) return renderFrame(mesh, source, o, nullptr);
+  if (n == 1) {
+    renderFrame(mesh, source, o, clip_, raster_, frame_, nullptr);
+    return frame_;
+  }
 
   // The same projection onto an n times larger viewport puts each sample at a pixel centre.
   RenderOptions big = o;
   big.camera.width = width * n;
   big.camera.height = height * n;
-  std::vector<std::uint8_t> sampleCovered;
-  const Rendering samples = renderFrame(mesh, source, big, &sampleCovered);
+  renderFrame(mesh, source, big, clip_, raster_, samples_, &sampleCovered_);
   const auto resolveStart = std::chrono::steady_clock::now();
-  Rendering out = resolve(samples, sampleCovered, n, width, height, o.raster.threads);
-  out.shadeMs += millisecondsSince(resolveStart);
-  return out;
+  resolve(samples_, sampleCovered_, n, width, height, o.raster.threads, frame_);
+  frame_.shadeMs += millisecondsSince(resolveStart);
+  return frame_;
+}
+
+Rendering render(const Mesh& mesh, const TexcoordSource& source, const RenderOptions& o) {
+  Renderer renderer;
+  renderer.render(mesh, source, o);
+  return renderer.take();
 }
 
 }  // namespace uvtk::render

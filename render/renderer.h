@@ -126,4 +126,26 @@ struct Rendering {
 // allowed squares, or when the supersampled frame exceeds kMaxViewport pixels a side.
 Rendering render(const Mesh& mesh, const TexcoordSource& texcoords, const RenderOptions& options);
 
+// A renderer that keeps its buffers from one frame to the next (the clip positions, the raster's
+// set-up and bins, the images), as a GL context keeps its framebuffer and bins: frames of one
+// size allocate, and fault in, their memory once. render() above is one frame of a new renderer.
+class Renderer {
+ public:
+  Renderer();
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // The frame, as render() draws it, valid until the next call. Throws as render().
+  const Rendering& render(const Mesh& mesh, const TexcoordSource& texcoords, const RenderOptions& options);
+  // The last frame, moved out (its buffers are then drawn afresh by the next call).
+  Rendering take() { return std::move(frame_); }
+
+ private:
+  std::vector<Vec4> clip_;
+  TiledRaster raster_;
+  Rendering frame_, samples_;               // samples_: the supersampled frame before the box filter
+  std::vector<std::uint8_t> sampleCovered_;  // per sample of samples_
+};
+
 }  // namespace uvtk::render

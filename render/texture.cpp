@@ -114,6 +114,34 @@ Texture::Texture(TexelLevel base, bool eightBit) : eightBit_(eightBit) {
                      std::to_string(base.width) + " x " + std::to_string(base.height) + " with " +
                      std::to_string(base.texels.size()) + " texels");
   levels_.push_back(std::move(base));
+  pack();
+}
+
+void Texture::pack() {
+  packed_.clear(), byteValues_.clear();
+  if (!eightBit_) return;
+  std::vector<std::vector<std::uint32_t>> packed(levels_.size());
+  std::vector<std::array<double, 256>> values(levels_.size());
+  for (std::size_t k = 0; k < levels_.size(); ++k) {
+    const TexelLevel& level = levels_[k];
+    std::array<float, 256> value;
+    std::array<bool, 256> seen{};
+    packed[k].resize(level.texels.size());
+    for (std::size_t t = 0; t < level.texels.size(); ++t) {
+      std::uint32_t bytes = 0;
+      for (int c = 0; c < 4; ++c) {
+        const float v = level.texels[t][c];
+        if (!(v >= 0.0f && v <= 1.0f)) return;  // NaN included
+        const auto b = static_cast<std::uint32_t>(std::lround(double(v) * 255.0));
+        if (seen[b] && value[b] != v) return;  // two floats for one byte value: keep the floats
+        seen[b] = true, value[b] = v;
+        bytes |= b << (8 * c);
+      }
+      packed[k][t] = bytes;
+    }
+    for (std::size_t b = 0; b < 256; ++b) values[k][b] = seen[b] ? double(value[b]) : 0.0;
+  }
+  packed_ = std::move(packed), byteValues_ = std::move(values);
 }
 
 Texture Texture::fromImage(const Image& image, bool eightBit) {
@@ -144,6 +172,7 @@ void Texture::buildMipmaps() {
   // GL 4.6 §8.14.3: level k is max(1, floor(w / 2^k)) x max(1, floor(h / 2^k)), down to 1 x 1.
   while (levels_.back().width > 1 || levels_.back().height > 1)
     levels_.push_back(downsample(levels_.back(), eightBit_));
+  pack();
 }
 
 int wrapTexel(std::int64_t i, int size, Wrap wrap) {
@@ -252,6 +281,25 @@ Vec4 sampleLinearRepeatPow2(const TexelLevel& level, double s, double t) {
          a * b * widen(row1[i1]);
 }
 
+// sampleLinearRepeatPow2 on a packed level: the same taps and blend, each texel's channels read as
+// the doubles its bytes stand for.
+Vec4 sampleLinearRepeatPow2Packed(const Texture& texture, int k, double s, double t) {
+  const TexelLevel& level = texture.level(k);
+  const LinearTap u = linearTap(s, level.width), v = linearTap(t, level.height);
+  const auto maskS = std::uint64_t(level.width - 1), maskT = std::uint64_t(level.height - 1);
+  const auto i0 = std::size_t(std::uint64_t(u.lower) & maskS), i1 = std::size_t(std::uint64_t(u.lower + 1) & maskS);
+  const std::size_t w = std::size_t(level.width);
+  const std::uint32_t* row0 = texture.packedTexels(k) + std::size_t(std::uint64_t(v.lower) & maskT) * w;
+  const std::uint32_t* row1 = texture.packedTexels(k) + std::size_t(std::uint64_t(v.lower + 1) & maskT) * w;
+  const std::array<double, 256>& value = texture.byteValues(k);
+  const auto texel = [&value](std::uint32_t bytes) {
+    return Vec4(value[bytes & 255], value[bytes >> 8 & 255], value[bytes >> 16 & 255], value[bytes >> 24]);
+  };
+  const double a = u.alpha, b = v.alpha;
+  return (1 - a) * (1 - b) * texel(row0[i0]) + a * (1 - b) * texel(row0[i1]) + (1 - a) * b * texel(row1[i0]) +
+         a * b * texel(row1[i1]);
+}
+
 bool isPowerOfTwo(int n) { return (n & (n - 1)) == 0; }
 
 }  // namespace
@@ -267,7 +315,9 @@ Vec4 sample(const Texture& texture, const SamplerState& sampler, double s, doubl
   for (int k = 0; k < choice.count; ++k) {
     const TexelLevel& level = texture.level(choice.level[std::size_t(k)]);
     sum += choice.weight[std::size_t(k)] *
-           (repeatPow2 ? sampleLinearRepeatPow2(level, s, t) : sampleLevel(level, choice.linear, sampler, s, t));
+           (repeatPow2 ? (texture.packed() ? sampleLinearRepeatPow2Packed(texture, choice.level[std::size_t(k)], s, t)
+                                            : sampleLinearRepeatPow2(level, s, t))
+                       : sampleLevel(level, choice.linear, sampler, s, t));
   }
   return sum;
 }

@@ -81,9 +81,21 @@ class Texture {
   int height() const { return levels_[0].height; }
   bool eightBit() const { return eightBit_; }
 
+  // An 8-bit texture's levels also as four bytes a texel (RGBA, R in the low byte), a quarter of
+  // the memory the filters read, and per level the float each byte value stands for: the texel
+  // (double) value(level, packed(level)[j w + i] >> 8c & 255) is at(i, j)[c] exactly. Empty when
+  // some channel of some texel is not one of 256 floats in [0, 1] (a float texture).
+  bool packed() const { return !packed_.empty(); }
+  const std::uint32_t* packedTexels(int k) const { return packed_[std::size_t(k)].data(); }
+  const std::array<double, 256>& byteValues(int k) const { return byteValues_[std::size_t(k)]; }
+
  private:
+  void pack();  // packed_ and byteValues_ for every level, or neither
+
   std::vector<TexelLevel> levels_;
   bool eightBit_ = false;
+  std::vector<std::vector<std::uint32_t>> packed_;
+  std::vector<std::array<double, 256>> byteValues_;
 };
 
 // GL's wrap of an integer texel coordinate onto [0, size): REPEAT i mod size, CLAMP_TO_EDGE
