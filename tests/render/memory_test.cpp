@@ -81,7 +81,8 @@ TEST(MemoryEstimate, IsWhatRenderAllocatesAtItsPeak) {
     const std::uint64_t aovBytes = aovs ? 20 : 0;
     EXPECT_EQ(estimate.frame, samples * ((spp > 1 ? 1 : 0) + 12 + aovBytes) + (spp > 1 ? pixels * (12 + aovBytes) : 0) +
                                   4 * (sizeof(Vec4) + 12) + 2 * 240 + 2 * sizeof(TiledRaster::Tile));
-    EXPECT_EQ(estimate.texture, 16u * (64 * 64 + 32 * 32 + 16 * 16 + 8 * 8 + 4 * 4 + 2 * 2 + 1));
+    // Float RGBA and the 8-bit checker's packed bytes: 16 + 4 bytes a texel.
+    EXPECT_EQ(estimate.texture, 20u * (64 * 64 + 32 * 32 + 16 * 16 + 8 * 8 + 4 * 4 + 2 * 2 + 1));
 
     const std::int64_t before = gLive;
     gPeak = before;
