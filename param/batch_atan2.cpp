@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "param/exact_atan2.h"
+#include "core/libm_simd.h"
 #include "param/sleef_atan2.h"
 
 namespace uvtk::param {
@@ -46,7 +46,7 @@ void atan2Block(MathMode math, const float* y, const float* x, float* out, std::
 void atan2Block(MathMode math, const double* y, const double* x, double* out, std::size_t n) {
   switch (math) {
     case MathMode::Exact:
-      exactAtan2Block(y, x, out, n);  // glibc's bits, vectorised
+      libm::atan2(y, x, out, n);  // glibc's bits, vectorised
       return;
     case MathMode::Fast:
     case MathMode::FastU10: {

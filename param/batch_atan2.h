@@ -1,5 +1,5 @@
 // atan2 over arrays, in the math mode a user chose (--math): libm's values (in double vectorised
-// with its bits, param/exact_atan2.h; in float one at a time), or SLEEF's
+// with its bits, core/libm_simd.h; in float one at a time), or SLEEF's
 // vectorised functions with their documented error bounds (3.5 or 1.0 ULP), on the widest vectors
 // the processor has (AVX-512F or AVX2 when present, SSE2 otherwise). The only transcendental function of the
 // S-mappings, so the only place where the math mode matters.
