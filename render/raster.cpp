@@ -5,7 +5,9 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <new>
 #include <string>
+#include <type_traits>
 
 #include "core/error.h"
 #include "core/parallel.h"
@@ -29,8 +31,10 @@ struct Point {
 
 // One triangle ready for the edge tests: counter-clockwise, snapped, with its pixel bounds and
 // its face's set-up, which the shading of its pixels reads. A clipped face is a fan of several.
+static_assert(std::is_trivially_destructible_v<DrawnFace>, "the drawn faces are never destroyed, only overwritten");
+
 struct SetupTriangle {
-  DrawnFace drawn;
+  const DrawnFace* drawn;
   Point v[3];
   int x0, x1, y0, y1;  // inclusive pixel range (window coordinates, y up)
 };
@@ -149,6 +153,8 @@ struct TiledRaster::WindowVertex {
 struct alignas(64) TiledRaster::Chunk {
   std::vector<SetupTriangle> triangles;
   std::vector<std::vector<std::uint32_t>> tiles;  // per tile, indices into triangles
+  DrawnFace* drawn = nullptr;                     // its faces' set-ups, drawnCount of them
+  std::size_t drawnCount = 0;
   RasterStats stats;
 };
 
@@ -202,8 +208,9 @@ class Setup {
       return;
     }
     ++out.stats.drawn;
+    const DrawnFace* drawn = new (out.drawn + out.drawnCount++) DrawnFace{face, interpolator};
     for (int i = 1; i + 1 < n; ++i) {  // a fan over the convex polygon
-      SetupTriangle t{DrawnFace{face, interpolator}, {}, 0, 0, 0, 0};
+      SetupTriangle t{drawn, {}, 0, 0, 0, 0};
       t.v[0] = p[0];
       t.v[1] = front ? p[i] : p[i + 1];
       t.v[2] = front ? p[i + 1] : p[i];
@@ -281,7 +288,7 @@ void drawInTile(const SetupTriangle& t, TiledRaster::Tile& tile) {
     stepX[e] = -dy * kSubpixel;
     stepY[e] = dx * kSubpixel;
   }
-  const DrawnFace* face = &t.drawn;
+  const DrawnFace* face = t.drawn;
   const Vec3 depthPlane = 0.5 * face->interpolator.ndcDepthPlane() + Vec3(0, 0, 0.5);  // glDepthRange(0, 1)
   for (int y = y0; y <= y1; ++y) {
     std::int64_t e0 = rowStart[0], e1 = rowStart[1], e2 = rowStart[2];
@@ -338,9 +345,14 @@ TriangleInterpolator::TriangleInterpolator(const Vec4& c0, const Vec4& c1, const
 }
 
 TriangleInterpolator::Barycentrics TriangleInterpolator::at(double x, double y) const {
-  const Vec3 k = kFromWindow_ * Vec3(x, y, 1.0);
-  const Vec3 dkdx = kFromWindow_.col(0), dkdy = kFromWindow_.col(1);
-  const double s = k.sum(), dsdx = dkdx.sum(), dsdy = dkdy.sum();
+  // k = M (x, y, 1) and the sums in the order Eigen 3.4 (SSE2) evaluated them when the images were
+  // pinned (rows 0 and 1 of the product as one packet, row 2 by its unroller); the vectorised
+  // fragments (render/fragment_simd.cpp) repeat it.
+  const Eigen::Matrix3d& m = kFromWindow_;
+  const Vec3 k((m(0, 0) * x + m(0, 1) * y) + m(0, 2), (m(1, 0) * x + m(1, 1) * y) + m(1, 2),
+               m(2, 0) * x + (m(2, 1) * y + m(2, 2)));
+  const Vec3 dkdx = m.col(0), dkdy = m.col(1);
+  const double s = (k[0] + k[1]) + k[2], dsdx = (dkdx[0] + dkdx[1]) + dkdx[2], dsdy = (dkdy[0] + dkdy[1]) + dkdy[2];
   Barycentrics r;
   r.b = k / s;
   r.dbdx = (dkdx * s - k * dsdx) / (s * s);  // quotient rule on k / s
@@ -377,6 +389,14 @@ void TiledRaster::setUp(const std::vector<Vec4>& clip, const std::vector<Triangl
     for (std::size_t v = std::size_t(c) * kVertexChunk; v < end; ++v) window_[v] = setup.vertex(clip[v]);
   });
 
+  if (drawnCapacity_ < triangles.size()) {
+    drawnStorage_.reset(), drawnFaces_ = nullptr;
+    drawnStorage_.reset(new std::byte[triangles.size() * sizeof(DrawnFace)]);  // not touched until drawn
+    adviseHugePages(drawnStorage_.get(), triangles.size() * sizeof(DrawnFace));
+    drawnFaces_ = reinterpret_cast<DrawnFace*>(drawnStorage_.get());
+    drawnCapacity_ = triangles.size();
+  }
+
   // Set-up in chunks of consecutive triangles; each chunk bins its own triangles, and tiles read
   // the chunks in order, so the drawing order is the input order whatever the thread count.
   const int chunkCount = int(std::clamp<std::int64_t>(faceCount / 4096, 1, 4 * threads));
@@ -384,6 +404,7 @@ void TiledRaster::setUp(const std::vector<Vec4>& clip, const std::vector<Triangl
   parallelFor(chunkCount, threads, [&](int c) {
     Chunk& chunk = chunks_[std::size_t(c)];
     chunk.stats = {};
+    chunk.drawn = drawnFaces_ + faceCount * c / chunkCount, chunk.drawnCount = 0;
     chunk.tiles.resize(std::size_t(tileCount()));
     for (std::vector<std::uint32_t>& bin : chunk.tiles) bin.clear();
     chunk.triangles.clear();

@@ -7,7 +7,9 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/math.h"
@@ -60,6 +62,9 @@ class TriangleInterpolator {
 
   // Normalised device depth z/w = a x + b y + c at window (x, y): the coefficients (a, b, c).
   const Vec3& ndcDepthPlane() const { return depthPlane_; }
+  // The 3 x 3 matrix whose row i gives k_i = a x + b y + c at window (x, y), column-major: at()
+  // reads these nine numbers (and the vectorised shading, render/fragment_simd.h, too).
+  const Eigen::Matrix3d& kFromWindow() const { return kFromWindow_; }
 
  private:
   bool valid_ = false;
@@ -101,6 +106,9 @@ class TiledRaster {
 
   int tileCount() const { return tilesX_ * tilesY_; }
   const RasterStats& stats() const { return stats_; }
+  // Every drawn face's set-up lies in this one array (the faces a Tile points to), at most one per
+  // input triangle: whatever reads them by index from one base (SIMD gathers) can.
+  const DrawnFace* drawnFaces() const { return drawnFaces_; }
 
   // A tile's pixels in window coordinates (y up), inclusive, and what it sees: per pixel
   // (x, y), at index (y - y0) * kTileSize + (x - x0), the nearest triangle (null where nothing
@@ -118,6 +126,11 @@ class TiledRaster {
  private:
   int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0;
   std::vector<WindowVertex> window_;
+  // Room for one DrawnFace per triangle, constructed only where a face is drawn (chunk c's from
+  // its first triangle's index on), so that memory is touched only by drawn faces.
+  std::unique_ptr<std::byte[]> drawnStorage_;
+  std::size_t drawnCapacity_ = 0;
+  DrawnFace* drawnFaces_ = nullptr;
   std::vector<Chunk> chunks_;
   RasterStats stats_;
 };

@@ -17,6 +17,7 @@
 #include "core/progress.h"
 #include "core/stopwatch.h"
 #include "core/huge_pages.h"
+#include "render/fragment_simd.h"
 #include "render/memory.h"
 
 namespace uvtk::render {
@@ -77,10 +78,32 @@ class Shader {
                                                             : interpolatedTexcoords(face, b);
       lookup = o.cubeTexture ? lookUpCube(tc) : lookUp2d(tc);
     }
+    return colourOf(face, b.b, lookup, aov);
+  }
+
+  // Whether the vectorised fragments (render/fragment_simd.h) compute what shade() does up to the
+  // lookup: a 2D texture read at interpolated corner coordinates with analytic derivatives.
+  bool vectorisable() const { return !f_.source.pixelMapping && f_.options.texture && !quad_; }
+
+  // The rest of shade() for a fragment of `face` at barycentrics b whose 2D lookup is (s, t) at
+  // lambda (the bias added), as the vectors computed them.
+  Vec3 shade2d(std::int32_t face, const Vec3& b, double s, double t, double lambda, float* aov) const {
+    const RenderOptions& o = f_.options;
+    TextureLookup lookup;
+    lookup.st = Vec2(s, t);
+    lookup.lambda = lambda;
+    lookup.texel = sample(*o.texture, o.sampler, s, t, lambda);
+    return colourOf(face, b, lookup, aov);
+  }
+
+ private:
+  // The fragment's colour (lit at the corners, interpolated), the texture environment, the AOVs.
+  Vec3 colourOf(std::int32_t face, const Vec3& b, const TextureLookup& lookup, float* aov) const {
+    const RenderOptions& o = f_.options;
     Vec4 fragment = Vec4::Ones();
     if (!f_.cornerColour.empty()) {
       fragment = Vec4::Zero();
-      for (int k = 0; k < 3; ++k) fragment += b.b[k] * f_.cornerColour[3 * std::size_t(face) + std::size_t(k)];
+      for (int k = 0; k < 3; ++k) fragment += b[k] * f_.cornerColour[3 * std::size_t(face) + std::size_t(k)];
     }
     const Vec4 colour = textureEnvironment(o.env, fragment, lookup.texel, o.envColour);
     if (aov) {
@@ -92,7 +115,6 @@ class Shader {
     return colour.head<3>();
   }
 
- private:
   TextureLookup lookUp2d(const FragmentTexcoords& tc) const {
     const RenderOptions& o = f_.options;
     TextureLookup out;
@@ -394,43 +416,100 @@ void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
   Progress progress("rendering " + std::to_string(width) + "x" + std::to_string(height),
                     std::uint64_t(raster.tileCount()), "tiles");
   const Shader shader(frame);
+  const bool vectorised = shader.vectorisable() && fragmentsVectorised();
+  FragmentFrame fragmentFrame;
+  if (vectorised) {
+    fragmentFrame.drawnFaces = raster.drawnFaces();
+    fragmentFrame.corners = source.corners.data()->data();
+    fragmentFrame.textureWidth = o.texture->width(), fragmentFrame.textureHeight = o.texture->height();
+    fragmentFrame.lodBias = o.lodBias;
+  }
   parallelFor(raster.tileCount(), o.raster.threads, [&](int index) {
-    const std::unique_ptr<TiledRaster::Tile> tile(new TiledRaster::Tile);  // draw() fills it
+    // A tile and a batch of fragments per thread, kept (the allocator would return such blocks to
+    // the system between tiles, and fault them in again).
+    thread_local std::unique_ptr<TiledRaster::Tile> tile(new TiledRaster::Tile);  // draw() fills it
+    thread_local std::unique_ptr<FragmentBatch> batch(new FragmentBatch);
     raster.draw(index, *tile);
     std::size_t tileCovered = 0;  // stored once: neighbouring tiles' counts share a cache line
-    for (int y = tile->y0; y <= tile->y1; ++y) {
+    // A drawn pixel's colour, AOVs and coverage; an empty one's background.
+    const auto write = [&](int x, int y, const DrawnFace* drawn, const Vec3& rgb, float* aov) {
       const int row = height - 1 - y;
-      for (int x = tile->x0; x <= tile->x1; ++x) {
-        const std::size_t i = std::size_t(y - tile->y0) * TiledRaster::kTileSize + std::size_t(x - tile->x0);
-        const DrawnFace* drawn = tile->face[i];
-        // The set-up and texture coordinates of the face a few pixels ahead lie anywhere in memory:
-        // asked for now, they are in cache when that pixel is shaded. (Inline: GCC drops a call
-        // to a function that only prefetches, as it has no effect.)
-        const DrawnFace* ahead = x + kPrefetchAhead <= tile->x1 ? tile->face[i + kPrefetchAhead] : nullptr;
-        if (ahead) {
-          __builtin_prefetch(&ahead->interpolator);
-          if (!source.pixelMapping) {
-            const auto* corners = reinterpret_cast<const char*>(&source.corners[3 * std::size_t(ahead->face)]);
-            __builtin_prefetch(corners);
-            __builtin_prefetch(corners + 64);
-            __builtin_prefetch(corners + 3 * sizeof(Vec4) - 1);
+      if (drawn) {
+        ++tileCovered;
+        if (sampleCovered) (*sampleCovered)[std::size_t(row) * std::size_t(width) + std::size_t(x)] = 1;
+      } else if (aov) {
+        aov[0] = aov[1] = aov[4] = 0.0f;
+        if (o.cubeTexture) aov[5] = -1.0f;
+      }
+      if (aov) {
+        aov[2] = tile->depth[std::size_t(y - tile->y0) * TiledRaster::kTileSize + std::size_t(x - tile->x0)];
+        aov[3] = drawn ? float(drawn->face) : -1.0f;
+      }
+      for (int c = 0; c < 3; ++c) out.colour.at(x, row, c) = float(rgb[c]);
+    };
+    const auto aovAt = [&](int x, int y) { return o.aovs ? &out.aovs.pixels[out.aovs.index(x, height - 1 - y)] : nullptr; };
+    if (vectorised) {
+      // The tile's fragments in batches: up to the lookup on vectors, the rest one by one.
+      batch->count = 0;
+      std::array<std::uint16_t, FragmentBatch::kSize> pixel;  // (y - y0) * kTileSize + x - x0
+      const auto flush = [&] {
+        const std::size_t n = batch->count;
+        for (std::size_t j = n; j % 16 != 0; ++j)  // whole vectors read valid indices
+          batch->x[j] = batch->x[n - 1], batch->y[j] = batch->y[n - 1], batch->drawn[j] = batch->drawn[n - 1],
+          batch->corners[j] = batch->corners[n - 1];
+        shadeFragments(fragmentFrame, *batch);
+        for (std::size_t k = 0; k < batch->undecidedCount; ++k) {
+          const auto j = std::size_t(batch->undecided[k]);
+          batch->lambda[j] = levelOfDetail(o.texture->width(), o.texture->height(), Vec2(batch->dsdx[j], batch->dtdx[j]),
+                                           Vec2(batch->dsdy[j], batch->dtdy[j])) + o.lodBias;
+        }
+        for (std::size_t j = 0; j < n; ++j) {
+          const int x = tile->x0 + pixel[j] % TiledRaster::kTileSize, y = tile->y0 + pixel[j] / TiledRaster::kTileSize;
+          const DrawnFace* drawn = tile->face[pixel[j]];
+          float* aov = aovAt(x, y);
+          const Vec3 b(batch->b0[j], batch->b1[j], batch->b2[j]);
+          write(x, y, drawn, shader.shade2d(drawn->face, b, batch->s[j], batch->t[j], batch->lambda[j], aov), aov);
+        }
+        batch->count = 0;
+      };
+      for (int y = tile->y0; y <= tile->y1; ++y)
+        for (int x = tile->x0; x <= tile->x1; ++x) {
+          const auto i = std::uint16_t((y - tile->y0) * TiledRaster::kTileSize + (x - tile->x0));
+          const DrawnFace* drawn = tile->face[i];
+          if (!drawn) {
+            write(x, y, nullptr, o.background, aovAt(x, y));
+            continue;
           }
+          const std::size_t j = batch->count++;
+          pixel[j] = i;
+          batch->x[j] = x + 0.5, batch->y[j] = y + 0.5;
+          batch->drawn[j] = drawn - fragmentFrame.drawnFaces;
+          batch->corners[j] = 12 * std::int64_t(drawn->face);
+          if (batch->count == FragmentBatch::kSize) flush();
         }
-        float* aov = o.aovs ? &out.aovs.pixels[out.aovs.index(x, row)] : nullptr;
-        Vec3 rgb = o.background;
-        if (drawn) {
-          rgb = shader.shade(x, row, *drawn, aov);
-          ++tileCovered;
-          if (sampleCovered) (*sampleCovered)[std::size_t(row) * std::size_t(width) + std::size_t(x)] = 1;
-        } else if (aov) {
-          aov[0] = aov[1] = aov[4] = 0.0f;
-          if (o.cubeTexture) aov[5] = -1.0f;
+      if (batch->count > 0) flush();
+    } else {
+      for (int y = tile->y0; y <= tile->y1; ++y) {
+        const int row = height - 1 - y;
+        for (int x = tile->x0; x <= tile->x1; ++x) {
+          const std::size_t i = std::size_t(y - tile->y0) * TiledRaster::kTileSize + std::size_t(x - tile->x0);
+          const DrawnFace* drawn = tile->face[i];
+          // The set-up and texture coordinates of the face a few pixels ahead lie anywhere in memory:
+          // asked for now, they are in cache when that pixel is shaded. (Inline: GCC drops a call
+          // to a function that only prefetches, as it has no effect.)
+          const DrawnFace* ahead = x + kPrefetchAhead <= tile->x1 ? tile->face[i + kPrefetchAhead] : nullptr;
+          if (ahead) {
+            __builtin_prefetch(&ahead->interpolator);
+            if (!source.pixelMapping) {
+              const auto* corners = reinterpret_cast<const char*>(&source.corners[3 * std::size_t(ahead->face)]);
+              __builtin_prefetch(corners);
+              __builtin_prefetch(corners + 64);
+              __builtin_prefetch(corners + 3 * sizeof(Vec4) - 1);
+            }
+          }
+          float* aov = aovAt(x, y);
+          write(x, y, drawn, drawn ? shader.shade(x, row, *drawn, aov) : o.background, aov);
         }
-        if (aov) {
-          aov[2] = tile->depth[i];
-          aov[3] = drawn ? float(drawn->face) : -1.0f;
-        }
-        for (int c = 0; c < 3; ++c) out.colour.at(x, row, c) = float(rgb[c]);
       }
     }
     covered[std::size_t(index)] = tileCovered;

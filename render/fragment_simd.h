@@ -1,0 +1,53 @@
+// Inside render: the shading of 2D-textured fragments with per-corner texture coordinates and
+// analytic derivatives on SIMD vectors (Google Highway, dispatched at run time), from the pixel to
+// the level of detail: the triangle's perspective-correct barycentrics and their derivatives
+// (TriangleInterpolator::at), (s, t) = (s, t) / q and their screen-space derivatives
+// (interpolatedTexcoords in renderer.cpp) and lambda (levelOfDetail, with glibc's hypot and log2
+// from core/libm_simd-inl.h), each lane with the same operations in the same order as the scalar
+// path, so with its bits. A lane whose lambda the vectors leave undecided keeps its derivatives
+// for the scalar levelOfDetail.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "render/raster.h"
+
+namespace uvtk::render {
+
+// Up to kSize fragments in, structure of arrays.
+struct FragmentBatch {
+  static constexpr std::size_t kSize = 256;  // a multiple of every vector width
+  std::size_t count = 0;
+  // In: the pixel centre in window coordinates (y up), the index of its triangle's DrawnFace in
+  // TiledRaster::drawnFaces(), and 12 times its face (where its corners' (s, t, r, q) begin among
+  // the doubles of TexcoordSource::corners).
+  alignas(64) double x[kSize], y[kSize];
+  alignas(64) std::int64_t drawn[kSize], corners[kSize];
+  // Out: the barycentrics, (s, t), their derivatives, and lambda with the bias added.
+  alignas(64) double b0[kSize], b1[kSize], b2[kSize];
+  alignas(64) double s[kSize], t[kSize], dsdx[kSize], dtdx[kSize], dsdy[kSize], dtdy[kSize], lambda[kSize];
+  // Out: the fragments whose lambda is levelOfDetail(...) + bias still to be taken, in order
+  // (room for a whole vector past the last).
+  alignas(64) std::int64_t undecided[kSize + 16];
+  std::size_t undecidedCount = 0;
+};
+
+// What every fragment of a frame shares.
+struct FragmentFrame {
+  const DrawnFace* drawnFaces = nullptr;
+  const double* corners = nullptr;  // TexcoordSource::corners[0].data()
+  int textureWidth = 0, textureHeight = 0;
+  double lodBias = 0.0;
+};
+
+// Whether the processor runs the vectorised fragments (they need fused multiply-adds, for glibc's
+// log2); where not, the scalar path shades every fragment.
+bool fragmentsVectorised();
+
+// Fills the batch's outputs for its `count` fragments (the inputs of whole vectors, 16 lanes at
+// most, are read: lanes past count must hold valid indices, and are ignored). Precondition:
+// fragmentsVectorised().
+void shadeFragments(const FragmentFrame& frame, FragmentBatch& batch);
+
+}  // namespace uvtk::render
