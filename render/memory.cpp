@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "core/parallel.h"
+#include "render/fragment_simd.h"
 #include "render/raster.h"
 
 namespace uvtk::render {
@@ -32,7 +33,7 @@ MemoryEstimate estimateMemory(const Mesh& mesh, const TexcoordSource& source, co
   const std::uint64_t faces = mesh.triangles.size();
   e.frame += mesh.positions.size() * (sizeof(Vec4) + 12);  // clip positions, snapped window positions
   e.frame += faces * 240;  // a drawn triangle's set-up with its face's interpolator (152 bytes), its tile index, growth
-  e.frame += std::uint64_t(threadCount(o.raster.threads)) * sizeof(TiledRaster::Tile);  // a tile in work per thread
+  e.frame += std::uint64_t(threadCount(o.raster.threads)) * (sizeof(TiledRaster::Tile) + sizeof(FragmentBatch));  // per thread: a tile in work and its fragments
   const bool lit = readsFragmentColour(o.env);
   if (lit || (source.pixelMapping && source.pixelMapping->needsNormal)) e.frame += 3 * faces * sizeof(Vec3);
   if (lit) e.frame += 3 * faces * sizeof(Vec4);

@@ -15,8 +15,8 @@ namespace uvtk::render {
 struct MemoryEstimate {
   // What render() allocates: per sample of the (supersampled) frame the colour, the AOVs and, with
   // supersampling, a coverage byte; the resolved frame; per vertex the clip and snapped window
-  // positions; per face the set-up triangles; a tile per thread; per corner the normals and lit
-  // colours when something reads them.
+  // positions; per face the set-up triangles; a tile and a batch of fragments per thread; per
+  // corner the normals and lit colours when something reads them.
   std::uint64_t frame = 0;
   // The bound texture with every level it holds, as floats and packed (already in memory when
   // render() is called), and a blend's other axis textures.

@@ -22,6 +22,12 @@
 
 namespace uvtk::render {
 
+// What a worker thread shades a tile with: the tile's visibility and a batch of fragments.
+struct TileScratch {
+  TiledRaster::Tile tile;
+  FragmentBatch fragments;
+};
+
 namespace {
 
 constexpr int kRowsPerBand = 8;
@@ -373,11 +379,12 @@ void shapeImage(Image& image, int width, int height, int channels) {
 }
 
 // One sample at the centre of each pixel of the camera's viewport, into `out`, whose images are
-// reused. Each tile is shaded right after its visibility is drawn, while both are in cache.
+// reused, as are the raster's bins and each worker's scratch. Each tile is shaded right after its visibility is drawn, while both are in cache.
 // `sampleCovered`, when given, receives per pixel (row 0 at the top) whether a triangle covers
 // it. The arguments are valid.
 void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOptions& o, std::vector<Vec4>& clip,
-                 TiledRaster& raster, Rendering& out, std::vector<std::uint8_t>* sampleCovered) {
+                 TiledRaster& raster, std::vector<std::unique_ptr<TileScratch>>& scratch, Rendering& out,
+                 std::vector<std::uint8_t>* sampleCovered) {
   const int width = o.camera.width, height = o.camera.height;
 
   const auto rasterStart = std::chrono::steady_clock::now();
@@ -424,11 +431,11 @@ void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
     fragmentFrame.textureWidth = o.texture->width(), fragmentFrame.textureHeight = o.texture->height();
     fragmentFrame.lodBias = o.lodBias;
   }
-  parallelFor(raster.tileCount(), o.raster.threads, [&](int index) {
-    // A tile and a batch of fragments per thread, kept (the allocator would return such blocks to
-    // the system between tiles, and fault them in again).
-    thread_local std::unique_ptr<TiledRaster::Tile> tile(new TiledRaster::Tile);  // draw() fills it
-    thread_local std::unique_ptr<FragmentBatch> batch(new FragmentBatch);
+  const int workers = workerCount(raster.tileCount(), o.raster.threads);
+  while (int(scratch.size()) < workers) scratch.push_back(std::make_unique<TileScratch>());
+  parallelForWorkers(raster.tileCount(), o.raster.threads, [&](int index, int worker) {
+    TiledRaster::Tile* tile = &scratch[std::size_t(worker)]->tile;  // draw() fills it
+    FragmentBatch* batch = &scratch[std::size_t(worker)]->fragments;
     raster.draw(index, *tile);
     std::size_t tileCovered = 0;  // stored once: neighbouring tiles' counts share a cache line
     // A drawn pixel's colour, AOVs and coverage; an empty one's background.
@@ -628,7 +635,7 @@ const Rendering& Renderer::render(const Mesh& mesh, const TexcoordSource& source
                      " frame, larger than the rasterizer's " + std::to_string(kMaxViewport) + " pixels a side");
   checkFrameMemory(mesh, source, o);
   if (n == 1) {
-    renderFrame(mesh, source, o, clip_, raster_, frame_, nullptr);
+    renderFrame(mesh, source, o, clip_, raster_, scratch_, frame_, nullptr);
     return frame_;
   }
 
@@ -636,7 +643,7 @@ const Rendering& Renderer::render(const Mesh& mesh, const TexcoordSource& source
   RenderOptions big = o;
   big.camera.width = width * n;
   big.camera.height = height * n;
-  renderFrame(mesh, source, big, clip_, raster_, samples_, &sampleCovered_);
+  renderFrame(mesh, source, big, clip_, raster_, scratch_, samples_, &sampleCovered_);
   const auto resolveStart = std::chrono::steady_clock::now();
   resolve(samples_, sampleCovered_, n, width, height, o.raster.threads, frame_);
   frame_.shadeMs += millisecondsSince(resolveStart);

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -126,6 +127,8 @@ struct Rendering {
 // allowed squares, or when the supersampled frame exceeds kMaxViewport pixels a side.
 Rendering render(const Mesh& mesh, const TexcoordSource& texcoords, const RenderOptions& options);
 
+struct TileScratch;  // a worker's tile and fragments (renderer.cpp)
+
 // A renderer that keeps its buffers from one frame to the next (the clip positions, the raster's
 // set-up and bins, the images), as a GL context keeps its framebuffer and bins: frames of one
 // size allocate, and fault in, their memory once. render() above is one frame of a new renderer.
@@ -146,6 +149,7 @@ class Renderer {
   TiledRaster raster_;
   Rendering frame_, samples_;               // samples_: the supersampled frame before the box filter
   std::vector<std::uint8_t> sampleCovered_;  // per sample of samples_
+  std::vector<std::unique_ptr<TileScratch>> scratch_;  // per worker thread
 };
 
 }  // namespace uvtk::render
