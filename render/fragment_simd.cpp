@@ -5,6 +5,7 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include <cmath>
 #include <cstddef>
 
 #include "core/libm_simd-inl.h"
@@ -100,6 +101,119 @@ void ShadeFragments(const FragmentFrame& frame, FragmentBatch& b) {
 #endif
 }
 
+// Texture coordinate index i wrapped onto [0, n) (texture.cpp's wrapTexel): REPEAT and
+// MIRRORED_REPEAT by the low bits of n, a power of two; CLAMP_TO_EDGE for any n.
+template <class DI, class VI = hn::Vec<DI>>
+VI WrapTexel(DI di, VI i, VI n, Wrap wrap) {
+  const VI one = hn::Set(di, 1);
+  if (wrap == Wrap::ClampToEdge) return hn::Min(hn::Max(i, hn::Zero(di)), hn::Sub(n, one));
+  if (wrap == Wrap::Repeat) return hn::And(i, hn::Sub(n, one));
+  // (n - 1) - mirror((i mod 2n) - n), mirror(a) = a >= 0 ? a : -(1 + a)
+  const VI a = hn::Sub(hn::And(i, hn::Sub(hn::Add(n, n), one)), n);
+  const VI mirrored = hn::IfThenElse(a < hn::Zero(di), hn::Sub(hn::Zero(di), hn::Add(one, a)), a);
+  return hn::Sub(hn::Sub(n, one), mirrored);
+}
+
+void SampleTexels(const FragmentTexture& tex, FragmentBatch& b) {
+  b.unsampledCount = 0;
+#if !UVTK_LIBM_SIMD
+  static_cast<void>(tex), static_cast<void>(b);
+#else
+  const hn::ScalableTag<double> d;
+  const hn::RebindToSigned<decltype(d)> di;
+  const hn::RebindToUnsigned<decltype(d)> du;
+  const hn::Rebind<float, decltype(d)> df;
+  using V = hn::Vec<decltype(d)>;
+  using VI = hn::Vec<decltype(di)>;
+  const std::size_t lanes = hn::Lanes(d);
+  const SamplerState& sampler = tex.sampler;
+  const Filter min = sampler.minFilter;
+  // chooseLevels' constants (texture.cpp): GL 4.6 §8.14.3, §8.15.
+  const bool mipmapped = needsMipmaps(min);
+  const bool oneLevel = min == Filter::NearestMipmapNearest || min == Filter::LinearMipmapNearest;
+  const bool minLinear = min == Filter::Linear || min == Filter::LinearMipmapNearest || min == Filter::LinearMipmapLinear;
+  const bool magLinear = sampler.magFilter == Filter::Linear;
+  const double crossover = magLinear && (min == Filter::NearestMipmapNearest || min == Filter::NearestMipmapLinear) ? 0.5 : 0.0;
+  const V q = hn::Set(d, double(tex.levels - 1));
+  const V zero = hn::Zero(d), one = hn::Set(d, 1.0), half = hn::Set(d, 0.5), far = hn::Set(d, 4611686018427387904.0);
+  const VI width = hn::Set(di, tex.width), height = hn::Set(di, tex.height), oneI = hn::Set(di, 1);
+  const auto* texels = reinterpret_cast<const std::int64_t*>(tex.texels);  // eight bytes read at a texel
+  const int channels = tex.alpha ? 4 : 3;
+  for (std::size_t i = 0; i < b.count; i += lanes) {
+    const V s = hn::Load(d, b.s + i), t = hn::Load(d, b.t + i);
+    const auto finite = hn::And(hn::IsFinite(s), hn::IsFinite(t));
+    V lambda = hn::Load(d, b.lambda + i);
+    lambda = hn::IfThenElse(hn::IsNaN(lambda), hn::Set(d, HUGE_VAL), lambda);  // as +infinity
+    // chooseLevels: one level or two, their weights, and LINEAR or NEAREST within them.
+    const auto magnified = lambda <= hn::Set(d, crossover);
+    const auto linear = magLinear == minLinear ? (magLinear ? hn::FirstN(d, lanes) : hn::FirstN(d, 0))
+                                                : (magLinear ? magnified : hn::Not(magnified));
+    V level1 = zero, level2 = zero, weight1 = one, weight2 = zero;
+    if (mipmapped && oneLevel) {
+      level1 = hn::IfThenElse(lambda <= half, zero,
+                              hn::IfThenElse(lambda > q + half, q, hn::Ceil(lambda + half) - one));
+      level2 = level1;
+    } else if (mipmapped) {
+      const auto top = lambda >= q;
+      const V floor = hn::Floor(lambda);
+      const V f = lambda - floor;
+      level1 = hn::IfThenElse(top, q, floor);
+      level2 = hn::IfThenElse(top, q, floor + one);
+      weight1 = hn::IfThenElse(top, one, one - f);
+      weight2 = hn::IfThenElseZero(hn::Not(top), f);
+    }
+    level1 = hn::IfThenElseZero(hn::Not(magnified), level1), level2 = hn::IfThenElse(magnified, level1, level2);
+    weight1 = hn::IfThenElse(magnified, one, weight1), weight2 = hn::IfThenElseZero(hn::Not(magnified), weight2);
+    // Lanes read where sample() does not (s or t not finite) fetch texel 0 of level 0 instead.
+    const V sIn = hn::IfThenElseZero(finite, s), tIn = hn::IfThenElseZero(finite, t);
+    // One level: LINEAR's 2 x 2 texels and GL's blend of them (NEAREST as the texel of weight 1),
+    // each channel's byte b read as float(b / 255.0) widened.
+    V channel[4] = {zero, zero, zero, zero};
+    const auto sampleLevel = [&](V level, V weight) {
+      const VI k = hn::ConvertTo(di, level);
+      const VI w = hn::Max(width >> k, oneI), h = hn::Max(height >> k, oneI);  // GL: max(1, floor(w / 2^k))
+      const VI offset = hn::GatherIndex(di, tex.levelOffset, k);
+      const auto tap = [&](V coordinate, VI size, V& fraction) {  // linearTap, or nearestTexel
+        V u = coordinate * hn::ConvertTo(d, size);
+        u = hn::IfThenElse(linear, u - half, u);
+        u = hn::Min(hn::Max(u, hn::Neg(far)), far);
+        const V lower = hn::Floor(u);
+        fraction = hn::IfThenElseZero(linear, u - lower);
+        return hn::ConvertTo(di, lower);
+      };
+      V a, bb;
+      const VI i0 = tap(sIn, w, a), j0 = tap(tIn, h, bb);
+      const VI wi0 = WrapTexel(di, i0, w, sampler.wrapS), wi1 = WrapTexel(di, hn::Add(i0, oneI), w, sampler.wrapS);
+      const VI wj0 = WrapTexel(di, j0, h, sampler.wrapT), wj1 = WrapTexel(di, hn::Add(j0, oneI), h, sampler.wrapT);
+      const VI row0 = hn::Add(offset, hn::Mul(wj0, w)), row1 = hn::Add(offset, hn::Mul(wj1, w));
+      const VI index[4] = {hn::Add(row0, wi0), hn::Add(row0, wi1), hn::Add(row1, wi0), hn::Add(row1, wi1)};
+      // GL 4.6 §8.14.2: (1-a)(1-b) t00 + a(1-b) t10 + (1-a) b t01 + a b t11, in this order.
+      const V w00 = (one - a) * (one - bb), w10 = a * (one - bb), w01 = (one - a) * bb, w11 = a * bb;
+      const V weights[4] = {w00, w10, w01, w11};
+      V blended[4] = {zero, zero, zero, zero};
+      for (int tx = 0; tx < 4; ++tx) {
+        const auto bytes = hn::And(hn::BitCast(du, hn::GatherOffset(di, texels, hn::ShiftLeft<2>(index[tx]))),
+                                   hn::Set(du, 0xFFFFFFFFull));
+        for (int c = 0; c < channels; ++c) {
+          const V byte = hn::ConvertTo(d, hn::BitCast(di, hn::And(hn::ShiftRightSame(bytes, 8 * c), hn::Set(du, 255))));
+          const V value = hn::PromoteTo(d, hn::DemoteTo(df, byte * hn::Set(d, 1.0 / 255.0)));
+          const V term = weights[tx] * value;
+          blended[c] = tx == 0 ? term : blended[c] + term;
+        }
+      }
+      for (int c = 0; c < channels; ++c) channel[c] = channel[c] + weight * blended[c];  // sum += weight * level
+    };
+    sampleLevel(level1, weight1);
+    sampleLevel(level2, weight2);
+    hn::Store(channel[0], d, b.red + i), hn::Store(channel[1], d, b.green + i);
+    hn::Store(channel[2], d, b.blue + i), hn::Store(channel[3], d, b.alpha + i);
+    const auto inBatch = hn::FirstN(d, b.count - i);
+    b.unsampledCount += hn::CompressStore(hn::Iota(di, std::int64_t(i)), hn::RebindMask(di, hn::AndNot(finite, inBatch)),
+                                          di, b.unsampled + b.unsampledCount);
+  }
+#endif
+}
+
 }  // namespace uvtk::render::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -108,10 +222,30 @@ namespace uvtk::render {
 
 HWY_EXPORT(Vectorised);
 HWY_EXPORT(ShadeFragments);
+HWY_EXPORT(SampleTexels);
 
 bool fragmentsVectorised() { return HWY_DYNAMIC_DISPATCH(Vectorised)(); }
 
 void shadeFragments(const FragmentFrame& frame, FragmentBatch& batch) { HWY_DYNAMIC_DISPATCH(ShadeFragments)(frame, batch); }
+
+void sampleTexels(const FragmentTexture& texture, FragmentBatch& batch) {
+  HWY_DYNAMIC_DISPATCH(SampleTexels)(texture, batch);
+}
+
+std::optional<FragmentTexture> vectorisedTexture(const Texture& texture, const SamplerState& sampler, bool alpha) {
+  const auto powerOfTwo = [](int n) { return (n & (n - 1)) == 0; };
+  if (!texture.packed() || !texture.standardBytes() || texture.levelCount() > 32) return std::nullopt;
+  if ((sampler.wrapS != Wrap::ClampToEdge && !powerOfTwo(texture.width())) ||
+      (sampler.wrapT != Wrap::ClampToEdge && !powerOfTwo(texture.height())))
+    return std::nullopt;
+  FragmentTexture out;
+  out.texels = texture.packedTexels(0);
+  for (int k = 0; k < texture.levelCount(); ++k) out.levelOffset[k] = std::int64_t(texture.packedOffset(k));
+  out.levels = texture.levelCount(), out.width = texture.width(), out.height = texture.height();
+  out.sampler = sampler;
+  out.alpha = alpha;
+  return out;
+}
 
 }  // namespace uvtk::render
 #endif

@@ -10,8 +10,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 
 #include "render/raster.h"
+#include "render/texture.h"
 
 namespace uvtk::render {
 
@@ -31,6 +33,11 @@ struct FragmentBatch {
   // (room for a whole vector past the last).
   alignas(64) std::int64_t undecided[kSize + 16];
   std::size_t undecidedCount = 0;
+  // Out of sampleTexels: the filtered texel (RGBA), and the fragments it left to sample() (s or t
+  // not finite), in order.
+  alignas(64) double red[kSize], green[kSize], blue[kSize], alpha[kSize];
+  alignas(64) std::int64_t unsampled[kSize + 16];
+  std::size_t unsampledCount = 0;
 };
 
 // What every fragment of a frame shares.
@@ -40,6 +47,26 @@ struct FragmentFrame {
   int textureWidth = 0, textureHeight = 0;
   double lodBias = 0.0;
 };
+
+// A packed 8-bit texture as the vectorised sampler reads it (render/texture.h).
+struct FragmentTexture {
+  const std::uint32_t* texels = nullptr;  // Texture::packedTexels(0): every level, with its slack
+  std::int64_t levelOffset[32] = {};     // Texture::packedOffset(k)
+  int levels = 0, width = 0, height = 0;
+  SamplerState sampler;
+  bool alpha = true;  // whether alpha is sampled (else left 0: the environment reads RGB alone)
+};
+
+// The texture and sampler as the vectorised sampler reads them, or nothing where it does not:
+// unless the texture is packed with standard bytes (Texture::standardBytes) and each axis is
+// clamped or of a power-of-two size (REPEAT and MIRRORED_REPEAT then take the texel index's
+// low bits).
+std::optional<FragmentTexture> vectorisedTexture(const Texture& texture, const SamplerState& sampler, bool alpha);
+
+// sample(texture, sampler, s, t, lambda) of each of the batch's `count` fragments into red, green,
+// blue and alpha, with the same operations in the same order (texture.cpp); fragments whose s or
+// t is not finite are listed in unsampled for sample() itself. Precondition: fragmentsVectorised().
+void sampleTexels(const FragmentTexture& texture, FragmentBatch& batch);
 
 // Whether the processor runs the vectorised fragments (they need fused multiply-adds, for glibc's
 // log2); where not, the scalar path shades every fragment.

@@ -18,7 +18,6 @@ namespace uvtk::render {
 
 namespace {
 
-__extension__ typedef __int128 Int128;  // exact polygon areas of snapped coordinates
 
 constexpr int kSubpixelBits = 8;  // vertices snap to 1/256 pixel, as GL hardware commonly does
 constexpr std::int64_t kSubpixel = std::int64_t(1) << kSubpixelBits;
@@ -111,12 +110,14 @@ int clipAgainst(const ClipPlanes& planes, int plane, const Polygon& in, int n, P
   return m;
 }
 
-Int128 twiceArea(const Point* p, int n) {
-  Int128 sum = 0;
+// Twice the polygon's signed area, exact: coordinates below 2^28 make each cross term below 2^57,
+// and nine of them stay below 2^61.
+std::int64_t twiceArea(const Point* p, int n) {
+  std::int64_t sum = 0;
   for (int i = 0; i < n; ++i) {
     const Point& a = p[i];
     const Point& b = p[i + 1 < n ? i + 1 : 0];
-    sum += Int128(a.x) * b.y - Int128(b.x) * a.y;
+    sum += std::int64_t(a.x) * b.y - std::int64_t(b.x) * a.y;
   }
   return sum;
 }
@@ -192,7 +193,7 @@ class Setup {
         return;
       }
     }
-    const Int128 area = twiceArea(p.data(), n);
+    const std::int64_t area = twiceArea(p.data(), n);
     if (area == 0) {
       ++out.stats.culled;
       return;
@@ -214,7 +215,7 @@ class Setup {
       t.v[0] = p[0];
       t.v[1] = front ? p[i] : p[i + 1];
       t.v[2] = front ? p[i + 1] : p[i];
-      const Int128 subArea = twiceArea(t.v, 3);
+      const std::int64_t subArea = twiceArea(t.v, 3);
       if (subArea <= 0) continue;  // a sliver that snapping collapsed or turned over
       std::int64_t minX = t.v[0].x, maxX = minX, minY = t.v[0].y, maxY = minY;
       for (const Point& q : t.v) {

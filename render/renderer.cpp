@@ -91,14 +91,14 @@ class Shader {
   // lookup: a 2D texture read at interpolated corner coordinates with analytic derivatives.
   bool vectorisable() const { return !f_.source.pixelMapping && f_.options.texture && !quad_; }
 
-  // The rest of shade() for a fragment of `face` at barycentrics b whose 2D lookup is (s, t) at
-  // lambda (the bias added), as the vectors computed them.
-  Vec3 shade2d(std::int32_t face, const Vec3& b, double s, double t, double lambda, float* aov) const {
-    const RenderOptions& o = f_.options;
+  // The rest of shade() for a fragment of `face` at barycentrics b whose 2D lookup at (s, t) and
+  // lambda (the bias added) gave `texel`, as the vectors computed them.
+  Vec3 shade2d(std::int32_t face, const Vec3& b, double s, double t, double lambda, const Vec4& texel,
+               float* aov) const {
     TextureLookup lookup;
     lookup.st = Vec2(s, t);
     lookup.lambda = lambda;
-    lookup.texel = sample(*o.texture, o.sampler, s, t, lambda);
+    lookup.texel = texel;
     return colourOf(face, b, lookup, aov);
   }
 
@@ -425,7 +425,9 @@ void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
   const Shader shader(frame);
   const bool vectorised = shader.vectorisable() && fragmentsVectorised();
   FragmentFrame fragmentFrame;
+  std::optional<FragmentTexture> fragmentTexture;  // the texels sampled on vectors too
   if (vectorised) {
+    fragmentTexture = vectorisedTexture(*o.texture, o.sampler, o.env == EnvMode::Decal);  // DECAL alone reads alpha
     fragmentFrame.drawnFaces = raster.drawnFaces();
     fragmentFrame.corners = source.corners.data()->data();
     fragmentFrame.textureWidth = o.texture->width(), fragmentFrame.textureHeight = o.texture->height();
@@ -470,12 +472,23 @@ void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
           batch->lambda[j] = levelOfDetail(o.texture->width(), o.texture->height(), Vec2(batch->dsdx[j], batch->dtdx[j]),
                                            Vec2(batch->dsdy[j], batch->dtdy[j])) + o.lodBias;
         }
+        const auto texelOf = [&](std::size_t j) { return sample(*o.texture, o.sampler, batch->s[j], batch->t[j], batch->lambda[j]); };
+        if (fragmentTexture) {
+          sampleTexels(*fragmentTexture, *batch);
+          for (std::size_t k = 0; k < batch->unsampledCount; ++k) {
+            const auto j = std::size_t(batch->unsampled[k]);
+            const Vec4 texel = texelOf(j);
+            batch->red[j] = texel[0], batch->green[j] = texel[1], batch->blue[j] = texel[2], batch->alpha[j] = texel[3];
+          }
+        }
         for (std::size_t j = 0; j < n; ++j) {
           const int x = tile->x0 + pixel[j] % TiledRaster::kTileSize, y = tile->y0 + pixel[j] / TiledRaster::kTileSize;
           const DrawnFace* drawn = tile->face[pixel[j]];
           float* aov = aovAt(x, y);
           const Vec3 b(batch->b0[j], batch->b1[j], batch->b2[j]);
-          write(x, y, drawn, shader.shade2d(drawn->face, b, batch->s[j], batch->t[j], batch->lambda[j], aov), aov);
+          const Vec4 texel =
+              fragmentTexture ? Vec4(batch->red[j], batch->green[j], batch->blue[j], batch->alpha[j]) : texelOf(j);
+          write(x, y, drawn, shader.shade2d(drawn->face, b, batch->s[j], batch->t[j], batch->lambda[j], texel, aov), aov);
         }
         batch->count = 0;
       };

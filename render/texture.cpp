@@ -118,30 +118,37 @@ Texture::Texture(TexelLevel base, bool eightBit) : eightBit_(eightBit) {
 }
 
 void Texture::pack() {
-  packed_.clear(), byteValues_.clear();
+  packed_.clear(), packedOffsets_.clear(), byteValues_.clear(), standardBytes_ = false;
   if (!eightBit_) return;
-  std::vector<std::vector<std::uint32_t>> packed(levels_.size());
+  std::vector<std::uint32_t> packed;
+  std::vector<std::size_t> offsets;
   std::vector<std::array<double, 256>> values(levels_.size());
+  bool standard = true;
   for (std::size_t k = 0; k < levels_.size(); ++k) {
     const TexelLevel& level = levels_[k];
     std::array<float, 256> value;
     std::array<bool, 256> seen{};
-    packed[k].resize(level.texels.size());
-    for (std::size_t t = 0; t < level.texels.size(); ++t) {
+    offsets.push_back(packed.size());
+    for (const Rgba& texel : level.texels) {
       std::uint32_t bytes = 0;
       for (int c = 0; c < 4; ++c) {
-        const float v = level.texels[t][c];
+        const float v = texel[c];
         if (!(v >= 0.0f && v <= 1.0f)) return;  // NaN included
         const auto b = static_cast<std::uint32_t>(std::lround(double(v) * 255.0));
         if (seen[b] && value[b] != v) return;  // two floats for one byte value: keep the floats
         seen[b] = true, value[b] = v;
         bytes |= b << (8 * c);
       }
-      packed[k][t] = bytes;
+      packed.push_back(bytes);
     }
-    for (std::size_t b = 0; b < 256; ++b) values[k][b] = seen[b] ? double(value[b]) : 0.0;
+    for (std::size_t b = 0; b < 256; ++b) {
+      values[k][b] = seen[b] ? double(value[b]) : 0.0;
+      standard = standard && (!seen[b] || value[b] == float(double(b) / 255.0));
+    }
   }
-  packed_ = std::move(packed), byteValues_ = std::move(values);
+  packed.push_back(0);  // slack: an 8-byte read at the last texel stays inside
+  packed_ = std::move(packed), packedOffsets_ = std::move(offsets), byteValues_ = std::move(values);
+  standardBytes_ = standard;
 }
 
 Texture Texture::fromImage(const Image& image, bool eightBit) {

@@ -82,19 +82,25 @@ class Texture {
   bool eightBit() const { return eightBit_; }
 
   // An 8-bit texture's levels also as four bytes a texel (RGBA, R in the low byte), a quarter of
-  // the memory the filters read, and per level the float each byte value stands for: the texel
-  // (double) value(level, packed(level)[j w + i] >> 8c & 255) is at(i, j)[c] exactly. Empty when
-  // some channel of some texel is not one of 256 floats in [0, 1] (a float texture).
+  // the memory the filters read, all levels in one array (level k from packedOffset(k) on), and
+  // per level the float each byte value stands for (and one texel of slack past the last): the texel (double) byteValues(k)[b] for
+  // b = packedTexels(k)[j w + i] >> 8c & 255 is at(i, j)[c] exactly. Not packed when some channel
+  // of some texel is not one of 256 floats in [0, 1] (a float texture). standardBytes(): every
+  // level's byte b stands for float(b / 255.0), as an RGBA8 texture's do.
   bool packed() const { return !packed_.empty(); }
-  const std::uint32_t* packedTexels(int k) const { return packed_[std::size_t(k)].data(); }
+  const std::uint32_t* packedTexels(int k) const { return packed_.data() + packedOffset(k); }
+  std::size_t packedOffset(int k) const { return packedOffsets_[std::size_t(k)]; }
   const std::array<double, 256>& byteValues(int k) const { return byteValues_[std::size_t(k)]; }
+  bool standardBytes() const { return standardBytes_; }
 
  private:
-  void pack();  // packed_ and byteValues_ for every level, or neither
+  void pack();  // packed_, packedOffsets_, byteValues_ and standardBytes_ for every level, or none
 
   std::vector<TexelLevel> levels_;
   bool eightBit_ = false;
-  std::vector<std::vector<std::uint32_t>> packed_;
+  std::vector<std::uint32_t> packed_;
+  std::vector<std::size_t> packedOffsets_;
+  bool standardBytes_ = false;
   std::vector<std::array<double, 256>> byteValues_;
 };
 
