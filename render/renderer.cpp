@@ -492,6 +492,7 @@ void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
         }
         batch->count = 0;
       };
+      const DrawnFace* previous = nullptr;
       for (int y = tile->y0; y <= tile->y1; ++y)
         for (int x = tile->x0; x <= tile->x1; ++x) {
           const auto i = std::uint16_t((y - tile->y0) * TiledRaster::kTileSize + (x - tile->x0));
@@ -499,6 +500,16 @@ void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
           if (!drawn) {
             write(x, y, nullptr, o.background, aovAt(x, y));
             continue;
+          }
+          if (drawn != previous) {
+            // The set-up and corners the vectors gather lie anywhere in memory: asked for now, they
+            // are in cache when the batch is shaded. (Inline: GCC drops a call to a function that
+            // only prefetches, as it has no effect.)
+            const auto* record = reinterpret_cast<const char*>(drawn);
+            const auto* corners = reinterpret_cast<const char*>(&source.corners[3 * std::size_t(drawn->face)]);
+            __builtin_prefetch(record), __builtin_prefetch(record + sizeof(DrawnFace) - 1);
+            __builtin_prefetch(corners), __builtin_prefetch(corners + 64), __builtin_prefetch(corners + 3 * sizeof(Vec4) - 1);
+            previous = drawn;
           }
           const std::size_t j = batch->count++;
           pixel[j] = i;
