@@ -34,6 +34,7 @@ static_assert(std::is_trivially_destructible_v<DrawnFace>, "the drawn faces are 
 
 struct SetupTriangle {
   const DrawnFace* drawn;
+  Vec3 depthPlane;  // window depth a x + b y + c (glDepthRange(0, 1)): drawing reads no DrawnFace
   Point v[3];
   int x0, x1, y0, y1;  // inclusive pixel range (window coordinates, y up)
 };
@@ -210,8 +211,9 @@ class Setup {
     }
     ++out.stats.drawn;
     const DrawnFace* drawn = new (out.drawn + out.drawnCount++) DrawnFace{face, interpolator};
+    const Vec3 depthPlane = 0.5 * interpolator.ndcDepthPlane() + Vec3(0, 0, 0.5);  // glDepthRange(0, 1)
     for (int i = 1; i + 1 < n; ++i) {  // a fan over the convex polygon
-      SetupTriangle t{drawn, {}, 0, 0, 0, 0};
+      SetupTriangle t{drawn, depthPlane, {}, 0, 0, 0, 0};
       t.v[0] = p[0];
       t.v[1] = front ? p[i] : p[i + 1];
       t.v[2] = front ? p[i + 1] : p[i];
@@ -290,7 +292,7 @@ void drawInTile(const SetupTriangle& t, TiledRaster::Tile& tile) {
     stepY[e] = dx * kSubpixel;
   }
   const DrawnFace* face = t.drawn;
-  const Vec3 depthPlane = 0.5 * face->interpolator.ndcDepthPlane() + Vec3(0, 0, 0.5);  // glDepthRange(0, 1)
+  const Vec3& depthPlane = t.depthPlane;
   for (int y = y0; y <= y1; ++y) {
     std::int64_t e0 = rowStart[0], e1 = rowStart[1], e2 = rowStart[2];
     const std::size_t row = std::size_t(y - tile.y0) * kTileSize;
