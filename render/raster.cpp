@@ -34,6 +34,7 @@ static_assert(std::is_trivially_destructible_v<DrawnFace>, "the drawn faces are 
 
 struct SetupTriangle {
   const DrawnFace* drawn;
+  std::int32_t face;
   Vec3 depthPlane;  // window depth a x + b y + c (glDepthRange(0, 1)): drawing reads no DrawnFace
   Point v[3];
   int x0, x1, y0, y1;  // inclusive pixel range (window coordinates, y up)
@@ -213,7 +214,7 @@ class Setup {
     const DrawnFace* drawn = new (out.drawn + out.drawnCount++) DrawnFace{face, interpolator};
     const Vec3 depthPlane = 0.5 * interpolator.ndcDepthPlane() + Vec3(0, 0, 0.5);  // glDepthRange(0, 1)
     for (int i = 1; i + 1 < n; ++i) {  // a fan over the convex polygon
-      SetupTriangle t{drawn, depthPlane, {}, 0, 0, 0, 0};
+      SetupTriangle t{drawn, face, depthPlane, {}, 0, 0, 0, 0};
       t.v[0] = p[0];
       t.v[1] = front ? p[i] : p[i + 1];
       t.v[2] = front ? p[i + 1] : p[i];
@@ -292,6 +293,7 @@ void drawInTile(const SetupTriangle& t, TiledRaster::Tile& tile) {
     stepY[e] = dx * kSubpixel;
   }
   const DrawnFace* face = t.drawn;
+  const std::int32_t faceIndex = t.face;
   const Vec3& depthPlane = t.depthPlane;
   for (int y = y0; y <= y1; ++y) {
     std::int64_t e0 = rowStart[0], e1 = rowStart[1], e2 = rowStart[2];
@@ -304,6 +306,7 @@ void drawInTile(const SetupTriangle& t, TiledRaster::Tile& tile) {
         if (depth < tile.depth[i]) {
           tile.depth[i] = depth;
           tile.face[i] = face;
+          tile.faceIndex[i] = faceIndex;
         }
       }
       e0 += stepX[0], e1 += stepX[1], e2 += stepX[2];

@@ -116,6 +116,7 @@ class TiledRaster {
   struct Tile {
     int x0 = 0, x1 = -1, y0 = 0, y1 = -1;
     std::array<const DrawnFace*, kTileSize * kTileSize> face;
+    std::array<std::int32_t, kTileSize * kTileSize> faceIndex;  // face[i]->face where face[i] is set, read without it
     std::array<float, kTileSize * kTileSize> depth;
   };
   void draw(int tile, Tile& out) const;

@@ -440,10 +440,10 @@ void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
     FragmentBatch* batch = &scratch[std::size_t(worker)]->fragments;
     raster.draw(index, *tile);
     std::size_t tileCovered = 0;  // stored once: neighbouring tiles' counts share a cache line
-    // A drawn pixel's colour, AOVs and coverage; an empty one's background.
-    const auto write = [&](int x, int y, const DrawnFace* drawn, const Vec3& rgb, float* aov) {
+    // A drawn pixel's (face >= 0) colour, AOVs and coverage; an empty one's (face -1) background.
+    const auto write = [&](int x, int y, std::int32_t face, const Vec3& rgb, float* aov) {
       const int row = height - 1 - y;
-      if (drawn) {
+      if (face >= 0) {
         ++tileCovered;
         if (sampleCovered) (*sampleCovered)[std::size_t(row) * std::size_t(width) + std::size_t(x)] = 1;
       } else if (aov) {
@@ -452,7 +452,7 @@ void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
       }
       if (aov) {
         aov[2] = tile->depth[std::size_t(y - tile->y0) * TiledRaster::kTileSize + std::size_t(x - tile->x0)];
-        aov[3] = drawn ? float(drawn->face) : -1.0f;
+        aov[3] = float(face);
       }
       for (int c = 0; c < 3; ++c) out.colour.at(x, row, c) = float(rgb[c]);
     };
@@ -483,12 +483,12 @@ void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
         }
         for (std::size_t j = 0; j < n; ++j) {
           const int x = tile->x0 + pixel[j] % TiledRaster::kTileSize, y = tile->y0 + pixel[j] / TiledRaster::kTileSize;
-          const DrawnFace* drawn = tile->face[pixel[j]];
+          const std::int32_t face = tile->faceIndex[pixel[j]];
           float* aov = aovAt(x, y);
           const Vec3 b(batch->b0[j], batch->b1[j], batch->b2[j]);
           const Vec4 texel =
               fragmentTexture ? Vec4(batch->red[j], batch->green[j], batch->blue[j], batch->alpha[j]) : texelOf(j);
-          write(x, y, drawn, shader.shade2d(drawn->face, b, batch->s[j], batch->t[j], batch->lambda[j], texel, aov), aov);
+          write(x, y, face, shader.shade2d(face, b, batch->s[j], batch->t[j], batch->lambda[j], texel, aov), aov);
         }
         batch->count = 0;
       };
@@ -498,15 +498,16 @@ void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
           const auto i = std::uint16_t((y - tile->y0) * TiledRaster::kTileSize + (x - tile->x0));
           const DrawnFace* drawn = tile->face[i];
           if (!drawn) {
-            write(x, y, nullptr, o.background, aovAt(x, y));
+            write(x, y, -1, o.background, aovAt(x, y));
             continue;
           }
+          const std::int32_t face = tile->faceIndex[i];  // drawn->face, without reading the record
           if (drawn != previous) {
             // The set-up and corners the vectors gather lie anywhere in memory: asked for now, they
             // are in cache when the batch is shaded. (Inline: GCC drops a call to a function that
             // only prefetches, as it has no effect.)
             const auto* record = reinterpret_cast<const char*>(drawn);
-            const auto* corners = reinterpret_cast<const char*>(&source.corners[3 * std::size_t(drawn->face)]);
+            const auto* corners = reinterpret_cast<const char*>(&source.corners[3 * std::size_t(face)]);
             __builtin_prefetch(record), __builtin_prefetch(record + sizeof(DrawnFace) - 1);
             __builtin_prefetch(corners), __builtin_prefetch(corners + 64), __builtin_prefetch(corners + 3 * sizeof(Vec4) - 1);
             previous = drawn;
@@ -515,7 +516,7 @@ void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
           pixel[j] = i;
           batch->x[j] = x + 0.5, batch->y[j] = y + 0.5;
           batch->drawn[j] = drawn - fragmentFrame.drawnFaces;
-          batch->corners[j] = 12 * std::int64_t(drawn->face);
+          batch->corners[j] = 12 * std::int64_t(face);
           if (batch->count == FragmentBatch::kSize) flush();
         }
       if (batch->count > 0) flush();
@@ -539,7 +540,7 @@ void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
             }
           }
           float* aov = aovAt(x, y);
-          write(x, y, drawn, drawn ? shader.shade(x, row, *drawn, aov) : o.background, aov);
+          write(x, y, drawn ? tile->faceIndex[i] : -1, drawn ? shader.shade(x, row, *drawn, aov) : o.background, aov);
         }
       }
     }
