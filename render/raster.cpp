@@ -13,6 +13,7 @@
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "core/huge_pages.h"
+#include "render/raster_simd.h"
 
 namespace uvtk::render {
 
@@ -133,23 +134,7 @@ bool isTopLeft(const Point& a, const Point& b) {
   return dy < 0 || (dy == 0 && dx < 0);
 }
 
-// llround for |v| < 2^62, without the library call: truncation is exact there, and so is the
-// fraction it leaves, which decides the rounding of halves away from zero.
-std::int64_t roundHalfAway(double v) {
-  const auto i = static_cast<std::int64_t>(v);
-  const double fraction = v - static_cast<double>(i);
-  return i + (fraction >= 0.5) - (fraction <= -0.5);
-}
-
 }  // namespace
-
-// A vertex's snapped window position, computed once per vertex (about six triangles share each):
-// a triangle whose three corners lie inside every clip plane needs no clipping, and its corners
-// are these points.
-struct TiledRaster::WindowVertex {
-  std::int32_t x = 0, y = 0;  // as Point
-  bool inside = false;        // finite, inside every clip plane, w > 0; x and y are set only then
-};
 
 // Aligned to a cache line: the threads setting up neighbouring chunks would otherwise share one
 // (the counters change at every triangle), and two threads set up no faster than one.
@@ -170,25 +155,18 @@ class Setup {
     planes_.guard = double(1 << 20) / double(std::max(width, height));
   }
 
-  TiledRaster::WindowVertex vertex(const Vec4& c) const {
-    TiledRaster::WindowVertex v;
-    v.inside = c.allFinite() && c.w() > 0.0;
-    for (int plane = 0; plane < 6 && v.inside; ++plane) v.inside = planes_.distance(plane, c) >= 0.0;
-    if (v.inside) {
-      const Point p = snap(c);
-      v.x = p.x, v.y = p.y;
-    }
-    return v;
-  }
+  double guard() const { return planes_.guard; }
 
-  void triangle(const std::vector<Vec4>& clip, const std::vector<TiledRaster::WindowVertex>& window, const Triangle& corners,
+  // `window`: per vertex, its snapped window position (render/raster_simd.h): a triangle whose
+  // three corners lie inside every clip plane needs no clipping, and its corners are these points.
+  void triangle(const std::vector<Vec4>& clip, const std::vector<std::int64_t>& window, const Triangle& corners,
                 std::int32_t face, TiledRaster::Chunk& out) const {
     const auto i0 = std::size_t(corners[0]), i1 = std::size_t(corners[1]), i2 = std::size_t(corners[2]);
+    const auto point = [](std::int64_t w) { return Point{std::int32_t(w), std::int32_t(w >> 32)}; };
     std::array<Point, 9> p;
     int n = 3;
-    if (window[i0].inside && window[i1].inside && window[i2].inside) {
-      p[0] = {window[i0].x, window[i0].y}, p[1] = {window[i1].x, window[i1].y}, p[2] = {window[i2].x, window[i2].y};
-    } else {
+    p[0] = point(window[i0]), p[1] = point(window[i1]), p[2] = point(window[i2]);
+    if (p[0].x == kOutsideWindow || p[1].x == kOutsideWindow || p[2].x == kOutsideWindow) {
       n = clipAndSnap(clip[i0], clip[i1], clip[i2], p);
       if (n < 3) {
         ++out.stats.clipped;
@@ -242,8 +220,8 @@ class Setup {
  private:
   // 1/256 pixel steps in window coordinates (y up) of a corner with w > 0.
   Point snap(const Vec4& c) const {
-    const double x = (c.x() / c.w() + 1.0) * 0.5 * width_, y = (c.y() / c.w() + 1.0) * 0.5 * height_;
-    return Point{std::int32_t(roundHalfAway(x * kSubpixel)), std::int32_t(roundHalfAway(y * kSubpixel))};
+    const std::int64_t w = snapPoint(c, width_, height_);
+    return Point{std::int32_t(w), std::int32_t(w >> 32)};
   }
 
   // The triangle clipped to the planes and snapped: the polygon's corner count, 0 when nothing
@@ -385,14 +363,14 @@ void TiledRaster::setUp(const std::vector<Vec4>& clip, const std::vector<Triangl
   const Setup setup(width, height, tilesX_, options);
 
   if (window_.capacity() < clip.size()) {
-    std::vector<WindowVertex>().swap(window_);
+    std::vector<std::int64_t>().swap(window_);
     resizeOnHugePages(window_, clip.size());
   }
   window_.resize(clip.size());
   constexpr std::size_t kVertexChunk = std::size_t(1) << 16;
   parallelFor(int((clip.size() + kVertexChunk - 1) / kVertexChunk), threads, [&](int c) {
-    const std::size_t end = std::min(clip.size(), std::size_t(c + 1) * kVertexChunk);
-    for (std::size_t v = std::size_t(c) * kVertexChunk; v < end; ++v) window_[v] = setup.vertex(clip[v]);
+    const std::size_t begin = std::size_t(c) * kVertexChunk, end = std::min(clip.size(), begin + kVertexChunk);
+    snapToWindow(&clip[begin], end - begin, setup.guard(), width, height, &window_[begin]);
   });
 
   if (drawnCapacity_ < triangles.size()) {

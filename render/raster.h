@@ -121,12 +121,11 @@ class TiledRaster {
   };
   void draw(int tile, Tile& out) const;
 
-  struct Chunk;         // the set-up and bins of a run of consecutive triangles (raster.cpp)
-  struct WindowVertex;  // a vertex's snapped window position (raster.cpp)
+  struct Chunk;  // the set-up and bins of a run of consecutive triangles (raster.cpp)
 
  private:
   int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0;
-  std::vector<WindowVertex> window_;
+  std::vector<std::int64_t> window_;  // per vertex, snapToWindow's (render/raster_simd.h)
   // Room for one DrawnFace per triangle, constructed only where a face is drawn (chunk c's from
   // its first triangle's index on), so that memory is touched only by drawn faces.
   std::unique_ptr<std::byte[]> drawnStorage_;

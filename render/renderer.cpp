@@ -19,6 +19,7 @@
 #include "core/huge_pages.h"
 #include "render/fragment_simd.h"
 #include "render/memory.h"
+#include "render/raster_simd.h"
 
 namespace uvtk::render {
 
@@ -346,15 +347,8 @@ void clipPositions(const Mesh& mesh, const Mat4& clipFromObject, int threads, st
   // Per chunk, the least and the greatest of the vertices' largest finite non-zero |coordinate|.
   std::vector<std::pair<double, double>> range(std::size_t(chunks), {INFINITY, 0.0});
   parallelFor(chunks, threads, [&](int chunk) {
-    const std::size_t end = std::min(clip.size(), std::size_t(chunk + 1) * kChunk);
-    auto& [least, greatest] = range[std::size_t(chunk)];
-    for (std::size_t v = std::size_t(chunk) * kChunk; v < end; ++v) {
-      clip[v] = clipFromObject * mesh.positions[v].homogeneous();
-      double m = 0.0;
-      for (int i = 0; i < 4; ++i)
-        if (std::isfinite(clip[v][i])) m = std::max(m, std::fabs(clip[v][i]));
-      if (m > 0.0) least = std::min(least, m), greatest = std::max(greatest, m);
-    }
+    const std::size_t begin = std::size_t(chunk) * kChunk, end = std::min(clip.size(), begin + kChunk);
+    range[std::size_t(chunk)] = transformToClip(clipFromObject, &mesh.positions[begin], &clip[begin], end - begin);
   });
   double least = INFINITY, greatest = 0.0;
   for (const auto& [l, g] : range) least = std::min(least, l), greatest = std::max(greatest, g);
