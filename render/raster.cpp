@@ -312,19 +312,26 @@ Mat3 inverse3x3(const Mat3& m) {
 }
 
 TriangleInterpolator::TriangleInterpolator(const Vec4& c0, const Vec4& c1, const Vec4& c2, int width, int height) {
+  // Spelled out in the order Eigen 3.4 (SSE2) evaluated m.determinant(), the product with the
+  // window-to-NDC matrix (rows 0 and 1 as a packet, row 2 unrolled: zero terms kept, they may
+  // carry a sign) and z^T K when the images were pinned, without its temporaries.
   Mat3 m;
   m << c0.x(), c1.x(), c2.x(),  //
       c0.y(), c1.y(), c2.y(),   //
       c0.w(), c1.w(), c2.w();
-  const double det = m.determinant();
+  const double det = (m(0, 0) * (m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1)) - m(0, 1) * (m(1, 0) * m(2, 2) - m(1, 2) * m(2, 0))) +
+                     m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
   if (!(det != 0.0) || !std::isfinite(det)) return;
-  Mat3 ndcFromWindow;                   // X = 2 x / W - 1, Y = 2 y / H - 1
-  ndcFromWindow << 2.0 / width, 0, -1,  //
-      0, 2.0 / height, -1,              //
-      0, 0, 1;
-  kFromWindow_ = inverse3x3(m) * ndcFromWindow;
+  const double n[3][3] = {{2.0 / width, 0, -1}, {0, 2.0 / height, -1}, {0, 0, 1}};  // X = 2 x / W - 1, Y = 2 y / H - 1
+  const Mat3 inverse = inverse3x3(m);
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 2; ++i)
+      kFromWindow_(i, j) = (inverse(i, 0) * n[0][j] + inverse(i, 1) * n[1][j]) + inverse(i, 2) * n[2][j];
+    kFromWindow_(2, j) = inverse(2, 0) * n[0][j] + (inverse(2, 1) * n[1][j] + inverse(2, 2) * n[2][j]);
+  }
   if (!kFromWindow_.allFinite()) return;
-  depthPlane_ = (Vec3(c0.z(), c1.z(), c2.z()).transpose() * kFromWindow_).transpose();
+  for (int j = 0; j < 3; ++j)
+    depthPlane_[j] = (c0.z() * kFromWindow_(0, j) + c1.z() * kFromWindow_(1, j)) + c2.z() * kFromWindow_(2, j);
   valid_ = true;
 }
 

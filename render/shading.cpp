@@ -20,25 +20,6 @@ Vec4 headlightColour(const Lighting& l, const Vec3& eyeNormal) {
   return c.cwiseMax(0.0).cwiseMin(1.0);
 }
 
-Vec4 textureEnvironment(EnvMode mode, const Vec4& f, const Vec4& t, const Vec4& c) {
-  const Vec3 cf = f.head<3>(), ct = t.head<3>(), cc = c.head<3>();
-  switch (mode) {  // GL 4.6 compatibility table 16.1, RGBA base format
-    case EnvMode::Replace: return t;
-    case EnvMode::Modulate: return f.cwiseProduct(t);
-    case EnvMode::Decal: {
-      Vec4 out;
-      out << cf * (1.0 - t.w()) + ct * t.w(), f.w();
-      return out;
-    }
-    case EnvMode::Blend: {
-      Vec4 out;
-      out << cf.cwiseProduct(Vec3::Ones() - ct) + cc.cwiseProduct(ct), f.w() * t.w();
-      return out;
-    }
-  }
-  return t;
-}
-
 bool readsFragmentColour(EnvMode mode) { return mode != EnvMode::Replace; }
 
 }  // namespace uvtk::render

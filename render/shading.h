@@ -32,8 +32,26 @@ Vec4 headlightColour(const Lighting& lighting, const Vec3& eyeNormal);
 
 // The texture environment for an RGBA texel (GL 4.6 compatibility §16.1, table 16.1):
 // REPLACE Ct, At; MODULATE Cf Ct, Af At; DECAL Cf (1 - At) + Ct At, Af; BLEND Cf (1 - Ct) + Cc Ct,
-// Af At. An RGB or luminance texture has At = 1, which gives GL's RGB rows of the table.
-Vec4 textureEnvironment(EnvMode mode, const Vec4& fragment, const Vec4& texel, const Vec4& envColour);
+// Af At. An RGB or luminance texture has At = 1, which gives GL's RGB rows of the table. Inline:
+// every shaded fragment goes through it.
+inline Vec4 textureEnvironment(EnvMode mode, const Vec4& f, const Vec4& t, const Vec4& c) {
+  const Vec3 cf = f.head<3>(), ct = t.head<3>(), cc = c.head<3>();
+  switch (mode) {  // GL 4.6 compatibility table 16.1, RGBA base format
+    case EnvMode::Replace: return t;
+    case EnvMode::Modulate: return f.cwiseProduct(t);
+    case EnvMode::Decal: {
+      Vec4 out;
+      out << cf * (1.0 - t.w()) + ct * t.w(), f.w();
+      return out;
+    }
+    case EnvMode::Blend: {
+      Vec4 out;
+      out << cf.cwiseProduct(Vec3::Ones() - ct) + cc.cwiseProduct(ct), f.w() * t.w();
+      return out;
+    }
+  }
+  return t;
+}
 
 // Whether a mode reads the fragment's colour (so lighting must be computed).
 bool readsFragmentColour(EnvMode mode);
