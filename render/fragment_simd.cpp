@@ -137,8 +137,7 @@ void SampleTexels(const FragmentTexture& tex, FragmentBatch& b) {
   const V q = hn::Set(d, double(tex.levels - 1));
   const V zero = hn::Zero(d), one = hn::Set(d, 1.0), half = hn::Set(d, 0.5), far = hn::Set(d, 4611686018427387904.0);
   const VI width = hn::Set(di, tex.width), height = hn::Set(di, tex.height), oneI = hn::Set(di, 1);
-  const auto* texels = reinterpret_cast<const std::int64_t*>(tex.texels);  // eight bytes read at a texel
-  const int channels = tex.alpha ? 4 : 3;
+  // First, per fragment and level, where its texels lie and their weights.
   for (std::size_t i = 0; i < b.count; i += lanes) {
     const V s = hn::Load(d, b.s + i), t = hn::Load(d, b.t + i);
     const auto finite = hn::And(hn::IsFinite(s), hn::IsFinite(t));
@@ -148,29 +147,25 @@ void SampleTexels(const FragmentTexture& tex, FragmentBatch& b) {
     const auto magnified = lambda <= hn::Set(d, crossover);
     const auto linear = magLinear == minLinear ? (magLinear ? hn::FirstN(d, lanes) : hn::FirstN(d, 0))
                                                 : (magLinear ? magnified : hn::Not(magnified));
-    V level1 = zero, level2 = zero, weight1 = one, weight2 = zero;
+    V levels[2] = {zero, zero}, weights[2] = {one, zero};
     if (mipmapped && oneLevel) {
-      level1 = hn::IfThenElse(lambda <= half, zero,
-                              hn::IfThenElse(lambda > q + half, q, hn::Ceil(lambda + half) - one));
-      level2 = level1;
+      levels[0] = hn::IfThenElse(lambda <= half, zero, hn::IfThenElse(lambda > q + half, q, hn::Ceil(lambda + half) - one));
+      levels[1] = levels[0];
     } else if (mipmapped) {
       const auto top = lambda >= q;
       const V floor = hn::Floor(lambda);
       const V f = lambda - floor;
-      level1 = hn::IfThenElse(top, q, floor);
-      level2 = hn::IfThenElse(top, q, floor + one);
-      weight1 = hn::IfThenElse(top, one, one - f);
-      weight2 = hn::IfThenElseZero(hn::Not(top), f);
+      levels[0] = hn::IfThenElse(top, q, floor);
+      levels[1] = hn::IfThenElse(top, q, floor + one);
+      weights[0] = hn::IfThenElse(top, one, one - f);
+      weights[1] = hn::IfThenElseZero(hn::Not(top), f);
     }
-    level1 = hn::IfThenElseZero(hn::Not(magnified), level1), level2 = hn::IfThenElse(magnified, level1, level2);
-    weight1 = hn::IfThenElse(magnified, one, weight1), weight2 = hn::IfThenElseZero(hn::Not(magnified), weight2);
+    levels[0] = hn::IfThenElseZero(hn::Not(magnified), levels[0]), levels[1] = hn::IfThenElse(magnified, levels[0], levels[1]);
+    weights[0] = hn::IfThenElse(magnified, one, weights[0]), weights[1] = hn::IfThenElseZero(hn::Not(magnified), weights[1]);
     // Lanes read where sample() does not (s or t not finite) fetch texel 0 of level 0 instead.
     const V sIn = hn::IfThenElseZero(finite, s), tIn = hn::IfThenElseZero(finite, t);
-    // One level: LINEAR's 2 x 2 texels and GL's blend of them (NEAREST as the texel of weight 1),
-    // each channel's byte b read as float(b / 255.0) widened.
-    V channel[4] = {zero, zero, zero, zero};
-    const auto sampleLevel = [&](V level, V weight) {
-      const VI k = hn::ConvertTo(di, level);
+    for (int l = 0; l < 2; ++l) {
+      const VI k = hn::ConvertTo(di, levels[l]);
       const VI w = hn::Max(width >> k, oneI), h = hn::Max(height >> k, oneI);  // GL: max(1, floor(w / 2^k))
       const VI offset = hn::GatherIndex(di, tex.levelOffset, k);
       const auto tap = [&](V coordinate, VI size, V& fraction) {  // linearTap, or nearestTexel
@@ -181,35 +176,51 @@ void SampleTexels(const FragmentTexture& tex, FragmentBatch& b) {
         fraction = hn::IfThenElseZero(linear, u - lower);
         return hn::ConvertTo(di, lower);
       };
-      V a, bb;
-      const VI i0 = tap(sIn, w, a), j0 = tap(tIn, h, bb);
+      V a, c;
+      const VI i0 = tap(sIn, w, a), j0 = tap(tIn, h, c);
       const VI wi0 = WrapTexel(di, i0, w, sampler.wrapS), wi1 = WrapTexel(di, hn::Add(i0, oneI), w, sampler.wrapS);
       const VI wj0 = WrapTexel(di, j0, h, sampler.wrapT), wj1 = WrapTexel(di, hn::Add(j0, oneI), h, sampler.wrapT);
       const VI row0 = hn::Add(offset, hn::Mul(wj0, w)), row1 = hn::Add(offset, hn::Mul(wj1, w));
-      const VI index[4] = {hn::Add(row0, wi0), hn::Add(row0, wi1), hn::Add(row1, wi0), hn::Add(row1, wi1)};
-      // GL 4.6 §8.14.2: (1-a)(1-b) t00 + a(1-b) t10 + (1-a) b t01 + a b t11, in this order.
-      const V w00 = (one - a) * (one - bb), w10 = a * (one - bb), w01 = (one - a) * bb, w11 = a * bb;
-      const V weights[4] = {w00, w10, w01, w11};
-      V blended[4] = {zero, zero, zero, zero};
-      for (int tx = 0; tx < 4; ++tx) {
-        const auto bytes = hn::And(hn::BitCast(du, hn::GatherOffset(di, texels, hn::ShiftLeft<2>(index[tx]))),
-                                   hn::Set(du, 0xFFFFFFFFull));
-        for (int c = 0; c < channels; ++c) {
-          const V byte = hn::ConvertTo(d, hn::BitCast(di, hn::And(hn::ShiftRightSame(bytes, 8 * c), hn::Set(du, 255))));
-          const V value = hn::PromoteTo(d, hn::DemoteTo(df, byte * hn::Set(d, 1.0 / 255.0)));
-          const V term = weights[tx] * value;
-          blended[c] = tx == 0 ? term : blended[c] + term;
-        }
-      }
-      for (int c = 0; c < channels; ++c) channel[c] = channel[c] + weight * blended[c];  // sum += weight * level
-    };
-    sampleLevel(level1, weight1);
-    sampleLevel(level2, weight2);
-    hn::Store(channel[0], d, b.red + i), hn::Store(channel[1], d, b.green + i);
-    hn::Store(channel[2], d, b.blue + i), hn::Store(channel[3], d, b.alpha + i);
+      hn::Store(hn::Add(row0, wi0), di, b.texel[4 * l] + i), hn::Store(hn::Add(row0, wi1), di, b.texel[4 * l + 1] + i);
+      hn::Store(hn::Add(row1, wi0), di, b.texel[4 * l + 2] + i), hn::Store(hn::Add(row1, wi1), di, b.texel[4 * l + 3] + i);
+      hn::Store(a, d, b.alphaS[l] + i), hn::Store(c, d, b.betaT[l] + i), hn::Store(weights[l], d, b.levelWeight[l] + i);
+    }
     const auto inBatch = hn::FirstN(d, b.count - i);
     b.unsampledCount += hn::CompressStore(hn::Iota(di, std::int64_t(i)), hn::RebindMask(di, hn::AndNot(finite, inBatch)),
                                           di, b.unsampled + b.unsampledCount);
+  }
+  // Then every row of texels asked for, so that it is in cache when blended (the levels a
+  // frame minifies to are larger than the core's cache).
+  for (std::size_t j = 0; j < b.count; ++j)
+    for (int r = 0; r < 8; r += 2) __builtin_prefetch(tex.texels + b.texel[r][j]);
+  // Last, GL's blend of each level's texels and of the levels, each channel's byte b read as
+  // float(b / 255.0) widened.
+  const auto* texels = reinterpret_cast<const std::int64_t*>(tex.texels);  // eight bytes read at a texel
+  const int channels = tex.alpha ? 4 : 3;
+  for (std::size_t i = 0; i < b.count; i += lanes) {
+    V channel[4] = {zero, zero, zero, zero};
+    for (int l = 0; l < 2; ++l) {
+      const V a = hn::Load(d, b.alphaS[l] + i), c = hn::Load(d, b.betaT[l] + i);
+      // GL 4.6 §8.14.2: (1-a)(1-b) t00 + a(1-b) t10 + (1-a) b t01 + a b t11, in this order (NEAREST:
+      // the texel of weight 1).
+      const V weights[4] = {(one - a) * (one - c), a * (one - c), (one - a) * c, a * c};
+      V blended[4] = {zero, zero, zero, zero};
+      for (int tx = 0; tx < 4; ++tx) {
+        const VI index = hn::Load(di, b.texel[4 * l + tx] + i);
+        const auto bytes = hn::And(hn::BitCast(du, hn::GatherOffset(di, texels, hn::ShiftLeft<2>(index))),
+                                   hn::Set(du, 0xFFFFFFFFull));
+        for (int ch = 0; ch < channels; ++ch) {
+          const V byte = hn::ConvertTo(d, hn::BitCast(di, hn::And(hn::ShiftRightSame(bytes, 8 * ch), hn::Set(du, 255))));
+          const V value = hn::PromoteTo(d, hn::DemoteTo(df, byte * hn::Set(d, 1.0 / 255.0)));
+          const V term = weights[tx] * value;
+          blended[ch] = tx == 0 ? term : blended[ch] + term;
+        }
+      }
+      const V levelWeight = hn::Load(d, b.levelWeight[l] + i);
+      for (int ch = 0; ch < channels; ++ch) channel[ch] = channel[ch] + levelWeight * blended[ch];  // sum += weight * level
+    }
+    hn::Store(channel[0], d, b.red + i), hn::Store(channel[1], d, b.green + i);
+    hn::Store(channel[2], d, b.blue + i), hn::Store(channel[3], d, b.alpha + i);
   }
 #endif
 }

@@ -38,6 +38,10 @@ struct FragmentBatch {
   alignas(64) double red[kSize], green[kSize], blue[kSize], alpha[kSize];
   alignas(64) std::int64_t unsampled[kSize + 16];
   std::size_t unsampledCount = 0;
+  // sampleTexels' own: per level (two) the 2 x 2 texels' indices into the packed texels, the
+  // fractions between them, and the level's weight.
+  alignas(64) std::int64_t texel[8][kSize];
+  alignas(64) double alphaS[2][kSize], betaT[2][kSize], levelWeight[2][kSize];
 };
 
 // What every fragment of a frame shares.
