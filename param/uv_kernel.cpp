@@ -141,24 +141,33 @@ void UvKernel<T>::run(const KernelSpan<T>& span, std::size_t first, std::vector<
           constexpr std::size_t kSize = SimdBlock<T>::kSize;
           for (std::size_t start = 0; start < span.count; start += kSize) {
             const std::size_t n = std::min(kSize, span.count - start);
-            if (n < kSize) {  // whole vectors read zeros past the end
+            const bool whole = n == kSize;  // the vectors read and write the span itself
+            if (whole) {
+              b.in[0] = span.x + start, b.in[1] = span.y + start, b.in[2] = span.z + start;
+              b.out[0] = span.u + start, b.out[1] = span.v + start;
+              b.out[2] = span.axialX ? span.axialX + start : b.ax, b.out[3] = span.axialY ? span.axialY + start : b.ay;
+            } else {  // whole vectors read zeros past the end
               std::fill(b.x + n, b.x + kSize, T(0)), std::fill(b.y + n, b.y + kSize, T(0));
               std::fill(b.z + n, b.z + kSize, T(0));
+              std::memcpy(b.x, span.x + start, n * sizeof(T));
+              std::memcpy(b.y, span.y + start, n * sizeof(T));
+              std::memcpy(b.z, span.z + start, n * sizeof(T));
+              b.in[0] = b.x, b.in[1] = b.y, b.in[2] = b.z;
+              b.out[0] = b.u, b.out[1] = b.v, b.out[2] = b.ax, b.out[3] = b.ay;
             }
-            std::memcpy(b.x, span.x + start, n * sizeof(T));
-            std::memcpy(b.y, span.y + start, n * sizeof(T));
-            std::memcpy(b.z, span.z + start, n * sizeof(T));
             bool slow = simdPrepare(params, b, n);
             if (wraps) {
               atan2Block(math, b.y0, b.x0, b.angle0, n);
               if (S::kAngles > 1) atan2Block(math, b.y1, b.x1, b.angle1, n);
               slow |= simdFinish(params, b, n);
             }
-            std::memcpy(span.u + start, b.u, n * sizeof(T));
-            std::memcpy(span.v + start, b.v, n * sizeof(T));
-            if (span.axialX) {
-              std::memcpy(span.axialX + start, b.ax, n * sizeof(T));
-              std::memcpy(span.axialY + start, b.ay, n * sizeof(T));
+            if (!whole) {
+              std::memcpy(span.u + start, b.u, n * sizeof(T));
+              std::memcpy(span.v + start, b.v, n * sizeof(T));
+              if (span.axialX) {
+                std::memcpy(span.axialX + start, b.ax, n * sizeof(T));
+                std::memcpy(span.axialY + start, b.ay, n * sizeof(T));
+              }
             }
             if (slow)
               for (std::size_t i = 0; i < n; ++i)

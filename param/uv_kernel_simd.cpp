@@ -56,7 +56,7 @@ bool Prepare(const SimdParams<T>& p, SimdBlock<T>& b, std::size_t n) {
   const V zero = hn::Zero(d), one = hn::Set(d, T(1));
   auto anySlow = hn::Zero(d) != zero;  // all false
   for (std::size_t i = 0; i < n; i += lanes) {
-    const V x = hn::Load(d, b.x + i), y = hn::Load(d, b.y + i), z = hn::Load(d, b.z + i);
+    const V x = hn::LoadU(d, b.in[0] + i), y = hn::LoadU(d, b.in[1] + i), z = hn::LoadU(d, b.in[2] + i);
     auto fine = finite3<decltype(d)>(x, y, z);
     switch (p.variant) {
       case SimdVariant::SphereRadial:
@@ -69,8 +69,8 @@ bool Prepare(const SimdParams<T>& p, SimdBlock<T>& b, std::size_t n) {
         hn::Store(rho, d, b.y1 + i);
         hn::Store(hn::Abs(z), d, b.x1 + i);
         hn::Store(z, d, b.qz + i);
-        hn::Store(x, d, b.ax + i);
-        hn::Store(y, d, b.ay + i);
+        hn::StoreU(x, d, b.out[2] + i);
+        hn::StoreU(y, d, b.out[3] + i);
         break;
       }
       case SimdVariant::CylinderCentral: {
@@ -82,25 +82,25 @@ bool Prepare(const SimdParams<T>& p, SimdBlock<T>& b, std::size_t n) {
         hn::Store(qy, d, b.y0 + i);
         hn::Store(qx, d, b.x0 + i);
         hn::Store(qz, d, b.qz + i);
-        hn::Store(qx, d, b.ax + i);
-        hn::Store(qy, d, b.ay + i);
+        hn::StoreU(qx, d, b.out[2] + i);
+        hn::StoreU(qy, d, b.out[3] + i);
         break;
       }
       case SimdVariant::PlaneFoot:
         fine = hn::And(fine, inRange(d, p, x, y, zero));
-        hn::Store(x, d, b.u + i);
-        hn::Store(y, d, b.v + i);
-        hn::Store(x, d, b.ax + i);
-        hn::Store(y, d, b.ay + i);
+        hn::StoreU(x, d, b.out[0] + i);
+        hn::StoreU(y, d, b.out[1] + i);
+        hn::StoreU(x, d, b.out[2] + i);
+        hn::StoreU(y, d, b.out[3] + i);
         break;
       case SimdVariant::PlaneCentral: {
         fine = hn::And(fine, z > zero);
         const V qx = x / z, qy = y / z;
         fine = hn::And(fine, hn::And(finite3<decltype(d)>(qx, qy, one), inRange(d, p, qx, qy, one)));
-        hn::Store(qx, d, b.u + i);
-        hn::Store(qy, d, b.v + i);
-        hn::Store(qx, d, b.ax + i);
-        hn::Store(qy, d, b.ay + i);
+        hn::StoreU(qx, d, b.out[0] + i);
+        hn::StoreU(qy, d, b.out[1] + i);
+        hn::StoreU(qx, d, b.out[2] + i);
+        hn::StoreU(qy, d, b.out[3] + i);
         break;
       }
       case SimdVariant::TwoPlaneFoot:
@@ -116,10 +116,10 @@ bool Prepare(const SimdParams<T>& p, SimdBlock<T>& b, std::size_t n) {
         const V u = dot3(d, p.planeU, qx, qy, qz) + hn::Set(d, p.planeU[3]);
         const V v = dot3(d, p.planeV, qx, qy, qz) + hn::Set(d, p.planeV[3]);
         fine = hn::And(fine, hn::And(hn::IsFinite(u), hn::IsFinite(v)));
-        hn::Store(u, d, b.u + i);
-        hn::Store(v, d, b.v + i);
-        hn::Store(qx, d, b.ax + i);
-        hn::Store(qy, d, b.ay + i);
+        hn::StoreU(u, d, b.out[0] + i);
+        hn::StoreU(v, d, b.out[1] + i);
+        hn::StoreU(qx, d, b.out[2] + i);
+        hn::StoreU(qy, d, b.out[3] + i);
         break;
       }
     }
@@ -160,8 +160,8 @@ bool Finish(const SimdParams<T>& p, SimdBlock<T>& b, std::size_t n) {
       u = turn(d, p, a0);
       v = qz;
     }
-    hn::Store(u, d, b.u + i);
-    hn::Store(v, d, b.v + i);
+    hn::StoreU(u, d, b.out[0] + i);
+    hn::StoreU(v, d, b.out[1] + i);
     const auto slow = hn::Not(hn::And(hn::IsFinite(u), hn::IsFinite(v)));
     const V old = hn::Load(d, b.slow + i);
     hn::Store(hn::IfThenElse(slow, one, old), d, b.slow + i);

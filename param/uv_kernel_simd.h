@@ -29,10 +29,14 @@ struct SimdParams {
   T twoPi = 0, inverseTwoPi = 0, pi = 0;  // T(kTwoPi), T(1.0 / kTwoPi), T(kPi), as param/formulas.h rounds them
 };
 
-// One block's scratch, whole vectors of every target (kSize is a multiple of 16 floats).
+// One block's scratch, whole vectors of every target (kSize is a multiple of 16 floats). The
+// positions are read from `in` and (u, v) and the axial point written to `out`: the block's own
+// arrays (a block shorter than kSize, padded), or the caller's (a whole block, nothing copied).
 template <class T>
 struct SimdBlock {
   static constexpr std::size_t kSize = 256;
+  const T* in[3] = {x, y, z};
+  T* out[4] = {u, v, ax, ay};
   alignas(64) T x[kSize], y[kSize], z[kSize];                 // in: local positions
   alignas(64) T y0[kSize], x0[kSize], y1[kSize], x1[kSize];   // the arctangents' arguments
   alignas(64) T angle0[kSize], angle1[kSize];                 // and their values
