@@ -157,33 +157,64 @@ class Setup {
 
   double guard() const { return planes_.guard; }
 
-  // `window`: per vertex, its snapped window position (render/raster_simd.h): a triangle whose
-  // three corners lie inside every clip plane needs no clipping, and its corners are these points.
-  void triangle(const std::vector<Vec4>& clip, const std::vector<std::int64_t>& window, const Triangle& corners,
-                std::int32_t face, TiledRaster::Chunk& out) const {
-    const auto i0 = std::size_t(corners[0]), i1 = std::size_t(corners[1]), i2 = std::size_t(corners[2]);
+  // Triangles [begin, end) into `out`. `window`: per vertex, its snapped window position
+  // (render/raster_simd.h): a triangle whose three corners lie inside every clip plane needs no
+  // clipping, its corners are these points, and most are culled by the sign of their area alone,
+  // in this loop; the others are clipped or drawn by functions of their own.
+  void triangles(const std::vector<Vec4>& clip, const std::vector<std::int64_t>& window,
+                 const std::vector<Triangle>& triangles, std::int64_t begin, std::int64_t end,
+                 TiledRaster::Chunk& out) const {
     const auto point = [](std::int64_t w) { return Point{std::int32_t(w), std::int32_t(w >> 32)}; };
-    std::array<Point, 9> p;
-    int n = 3;
-    p[0] = point(window[i0]), p[1] = point(window[i1]), p[2] = point(window[i2]);
-    if (p[0].x == kOutsideWindow || p[1].x == kOutsideWindow || p[2].x == kOutsideWindow) {
-      n = clipAndSnap(clip[i0], clip[i1], clip[i2], p);
-      if (n < 3) {
-        ++out.stats.clipped;
-        return;
+    for (std::int64_t f = begin; f < end; ++f) {
+      const Triangle& corners = triangles[std::size_t(f)];
+      std::array<Point, 9> p;
+      p[0] = point(window[std::size_t(corners[0])]), p[1] = point(window[std::size_t(corners[1])]);
+      p[2] = point(window[std::size_t(corners[2])]);
+      if (p[0].x == kOutsideWindow || p[1].x == kOutsideWindow || p[2].x == kOutsideWindow) {
+        clipped(clip, corners, std::int32_t(f), out);
+        continue;
       }
+      const std::int64_t area = twiceArea(p.data(), 3);
+      if (!drawsArea(area)) {
+        ++out.stats.culled;
+        continue;
+      }
+      draw(clip, corners, std::int32_t(f), p, 3, area > 0, out);
+    }
+  }
+
+ private:
+  // Whether a polygon of twice this signed area is drawn (not empty, not culled).
+  bool drawsArea(std::int64_t area) const {
+    if (area == 0) return false;
+    const bool front = area > 0;
+    return !((options_.cull == Cull::Back && !front) || (options_.cull == Cull::Front && front));
+  }
+
+  // A triangle with a corner outside some clip plane: clipped, then drawn or culled.
+  __attribute__((noinline)) void clipped(const std::vector<Vec4>& clip, const Triangle& corners, std::int32_t face,
+                                         TiledRaster::Chunk& out) const {
+    std::array<Point, 9> p;
+    const Vec4 &c0 = clip[std::size_t(corners[0])], &c1 = clip[std::size_t(corners[1])], &c2 = clip[std::size_t(corners[2])];
+    const int n = clipAndSnap(c0, c1, c2, p);
+    if (n < 3) {
+      ++out.stats.clipped;
+      return;
     }
     const std::int64_t area = twiceArea(p.data(), n);
-    if (area == 0) {
+    if (!drawsArea(area)) {
       ++out.stats.culled;
       return;
     }
-    const bool front = area > 0;
-    if ((options_.cull == Cull::Back && !front) || (options_.cull == Cull::Front && front)) {
-      ++out.stats.culled;
-      return;
-    }
-    const TriangleInterpolator interpolator(clip[i0], clip[i1], clip[i2], width_, height_);
+    draw(clip, corners, face, p, n, area > 0, out);
+  }
+
+  // A visible polygon (n corners, counter-clockwise if front): its face's set-up, and each
+  // triangle of its fan with pixels binned into the tiles it overlaps.
+  __attribute__((noinline)) void draw(const std::vector<Vec4>& clip, const Triangle& corners, std::int32_t face,
+                                      const std::array<Point, 9>& p, int n, bool front, TiledRaster::Chunk& out) const {
+    const TriangleInterpolator interpolator(clip[std::size_t(corners[0])], clip[std::size_t(corners[1])],
+                                            clip[std::size_t(corners[2])], width_, height_);
     if (!interpolator.valid()) {  // seen edge-on: it covers no area
       ++out.stats.culled;
       return;
@@ -217,7 +248,6 @@ class Setup {
     }
   }
 
- private:
   // 1/256 pixel steps in window coordinates (y up) of a corner with w > 0.
   Point snap(const Vec4& c) const {
     const std::int64_t w = snapPoint(c, width_, height_);
@@ -406,8 +436,7 @@ void TiledRaster::setUp(const std::vector<Vec4>& clip, const std::vector<Triangl
       chunk.triangles.reserve(expected);
       adviseHugePages(chunk.triangles.data(), chunk.triangles.capacity() * sizeof(SetupTriangle));
     }
-    for (std::int64_t f = begin; f < end; ++f)
-      setup.triangle(clip, window_, triangles[std::size_t(f)], std::int32_t(f), chunk);
+    setup.triangles(clip, window_, triangles, begin, end, chunk);
   });
   stats_ = {};
   for (const Chunk& chunk : chunks_) {
