@@ -2,6 +2,8 @@
 // each face counting with its 3D area.
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace uvtk::analysis {
@@ -30,14 +32,17 @@ struct Statistics {
   Histogram histogram;  // `bins` bins over [min, max]; all the weight in bin 0 when min = max
 };
 
-struct WeightedValue {
-  double value, weight;
-};
+// Items (value, weight) handed over in blocks: `values[i]` with `weights[i]`, i < count.
+using WeightedBlock = std::function<void(const double* values, const double* weights, std::size_t count)>;
+// A source of items: it calls the visitor with every item, block by block, in the same order each
+// time it is called (the statistics read their items a few times rather than hold a copy).
+using WeightedItems = std::function<void(const WeightedBlock& visit)>;
 
-// Statistics of the items (value, weight >= 0), in any order. Entries of zero weight still count
-// for min and max. Empty input gives zeros and empty bins. Preconditions: bins >= 1, and values
-// > 0 for Log2 spacing.
-Statistics weightedStatistics(std::vector<WeightedValue> items, BinSpacing spacing, int bins = 32);
+// Statistics of the items (finite values, weights >= 0), in any order. Entries of zero weight
+// still count for min and max. Empty input gives zeros and empty bins. Preconditions: bins >= 1,
+// and values > 0 for Log2 spacing. The percentiles are exact: the running weights are summed
+// without rounding; the mean, the total and the histogram are summed in the items' order.
+Statistics weightedStatistics(const WeightedItems& items, BinSpacing spacing, int bins = 32);
 
 // Statistics of values[i] with weights[i] >= 0. Entries of zero weight still count for min and
 // max. Empty input gives zeros and empty bins. Preconditions: equal sizes, bins >= 1, and
