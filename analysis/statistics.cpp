@@ -145,7 +145,8 @@ constexpr std::size_t kGatherItems = std::size_t(1) << 12;
 // range, and keeps the bucket where the search's running weight reaches its target, until that
 // bucket is small enough to sort or the key is whole (one value). O(n) a pass; nothing is copied
 // but the last bucket's few items.
-void findPercentiles(const WeightedItems& items, const SumFormat& format, std::vector<Search>& searches) {
+void findPercentiles(const double* values, const double* weights, std::size_t count, const SumFormat& format,
+                     std::vector<Search>& searches) {
   const std::size_t limbs = format.limbs();
   std::vector<std::size_t> counts;
   std::vector<std::uint64_t> sums, running(limbs), after(limbs);
@@ -163,18 +164,16 @@ void findPercentiles(const WeightedItems& items, const SumFormat& format, std::v
     const std::uint64_t mask = (std::uint64_t(1) << digit) - 1;
     counts.assign(ranges.size() * kBuckets, 0);
     sums.assign(ranges.size() * kBuckets * limbs, 0);
-    items([&](const double* values, const double* weights, std::size_t count) {
-      for (std::size_t i = 0; i < count; ++i) {
-        const std::uint64_t key = orderKey(values[i]);
-        for (std::size_t r = 0; r < ranges.size(); ++r)
-          if (bits == 0 || (key ^ ranges[r]) >> (64 - bits) == 0) {
-            const std::size_t bucket = r * kBuckets + ((key >> shift) & mask);
-            ++counts[bucket];
-            format.add(sums.data() + bucket * limbs, weights[i]);
-            break;
-          }
-      }
-    });
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::uint64_t key = orderKey(values[i]);
+      for (std::size_t r = 0; r < ranges.size(); ++r)
+        if (bits == 0 || (key ^ ranges[r]) >> (64 - bits) == 0) {
+          const std::size_t bucket = r * kBuckets + ((key >> shift) & mask);
+          ++counts[bucket];
+          format.add(sums.data() + bucket * limbs, weights[i]);
+          break;
+        }
+    }
     for (Search* s : open) {
       const std::size_t r = std::size_t(std::find(ranges.begin(), ranges.end(), s->prefix) - ranges.begin());
       // The first non-empty bucket at which the running weight reaches the target; one always
@@ -212,14 +211,12 @@ void findPercentiles(const WeightedItems& items, const SumFormat& format, std::v
     double value, weight;
   };
   std::vector<std::vector<Item>> gathered(gather.size());
-  items([&](const double* values, const double* weights, std::size_t count) {
-    for (std::size_t i = 0; i < count; ++i) {
-      const std::uint64_t key = orderKey(values[i]);
-      for (std::size_t g = 0; g < gather.size(); ++g)
-        if (gather[g]->holds(key) && (gather[g]->bits < 64 || gathered[g].empty()))
-          gathered[g].push_back({key, values[i], weights[i]});
-    }
-  });
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::uint64_t key = orderKey(values[i]);
+    for (std::size_t g = 0; g < gather.size(); ++g)
+      if (gather[g]->holds(key) && (gather[g]->bits < 64 || gathered[g].empty()))
+        gathered[g].push_back({key, values[i], weights[i]});
+  }
   for (std::size_t g = 0; g < gather.size(); ++g) {
     Search& s = *gather[g];
     std::vector<Item>& list = gathered[g];
@@ -243,36 +240,33 @@ void findPercentiles(const WeightedItems& items, const SumFormat& format, std::v
   }
   // Searches still open go on from where they are.
   if (std::any_of(searches.begin(), searches.end(), [](const Search& s) { return !s.found; }))
-    findPercentiles(items, format, searches);
+    findPercentiles(values, weights, count, format, searches);
 }
 
 }  // namespace
 
-Statistics weightedStatistics(const WeightedItems& items, BinSpacing spacing, int bins) {
+Statistics weightedStatistics(const double* values, const double* weights, std::size_t count, BinSpacing spacing,
+                              int bins) {
   UVTK_CHECK(bins >= 1);
   Statistics s;
   s.histogram.spacing = spacing;
   s.histogram.weightFraction.assign(static_cast<std::size_t>(bins), 0.0);
+  if (count == 0) return s;
 
   // One pass for the extremes and the sums in the items' order, and the weights' exponents.
-  std::size_t count = 0;
+  s.min = s.max = values[0];
   double weightedSum = 0.0;
   int lowestExponent = 2047, highestExponent = 0;
-  items([&](const double* values, const double* weights, std::size_t n) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const double value = values[i], weight = weights[i];
-      if (count + i == 0) s.min = s.max = value;
-      if (value < s.min) s.min = value;   // the first of equal smallest values
-      if (!(value < s.max)) s.max = value;  // the last of equal largest ones (std::minmax_element's choice)
-      s.totalWeight += weight, weightedSum += weight * value;
-      if (weight > 0.0) {
-        const int exponent = SumFormat::exponentOf(weight);
-        lowestExponent = std::min(lowestExponent, exponent), highestExponent = std::max(highestExponent, exponent);
-      }
+  for (std::size_t i = 0; i < count; ++i) {
+    const double value = values[i], weight = weights[i];
+    if (value < s.min) s.min = value;   // the first of equal smallest values
+    if (!(value < s.max)) s.max = value;  // the last of equal largest ones (std::minmax_element's choice)
+    s.totalWeight += weight, weightedSum += weight * value;
+    if (weight > 0.0) {
+      const int exponent = SumFormat::exponentOf(weight);
+      lowestExponent = std::min(lowestExponent, exponent), highestExponent = std::max(highestExponent, exponent);
     }
-    count += n;
-  });
-  if (count == 0) return s;
+  }
   UVTK_CHECK(spacing == BinSpacing::Linear || s.min > 0.0);
   if (s.totalWeight <= 0.0) return s;
   s.mean = weightedSum / s.totalWeight;
@@ -285,14 +279,12 @@ Statistics weightedStatistics(const WeightedItems& items, BinSpacing spacing, in
   UVTK_CHECK(count < (std::size_t(1) << 32));
   const SumFormat format(lowestExponent, highestExponent);
   std::vector<std::uint64_t> whole(format.limbs(), 0);
-  items([&](const double* values, const double* weights, std::size_t n) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const double t = width > 0.0 ? (binScale(values[i], spacing) - a) / width : 0.0;
-      const int bin = std::clamp(static_cast<int>(t * bins), 0, bins - 1);
-      h.weightFraction[static_cast<std::size_t>(bin)] += weights[i] / s.totalWeight;
-      format.add(whole.data(), weights[i]);
-    }
-  });
+  for (std::size_t i = 0; i < count; ++i) {
+    const double t = width > 0.0 ? (binScale(values[i], spacing) - a) / width : 0.0;
+    const int bin = std::clamp(static_cast<int>(t * bins), 0, bins - 1);
+    h.weightFraction[static_cast<std::size_t>(bin)] += weights[i] / s.totalWeight;
+    format.add(whole.data(), weights[i]);
+  }
   format.normalise(whole.data());
 
   // The percentiles, their targets a fraction of the total as summed in order above.
@@ -310,7 +302,7 @@ Statistics weightedStatistics(const WeightedItems& items, BinSpacing spacing, in
     // Rounding may leave the whole weight short of the target: then the largest value.
     if (!format.atLeast(whole.data(), search.target.data())) search.found = true, search.answer = s.max;
   }
-  findPercentiles(items, format, searches);
+  findPercentiles(values, weights, count, format, searches);
   for (int k = 0; k < 4; ++k) *percentiles[k] = searches[std::size_t(k)].answer;
   return s;
 }
@@ -318,11 +310,7 @@ Statistics weightedStatistics(const WeightedItems& items, BinSpacing spacing, in
 Statistics weightedStatistics(const std::vector<double>& values, const std::vector<double>& weights,
                               BinSpacing spacing, int bins) {
   UVTK_CHECK(values.size() == weights.size());
-  return weightedStatistics(
-      [&](const WeightedBlock& visit) {
-        if (!values.empty()) visit(values.data(), weights.data(), values.size());
-      },
-      spacing, bins);
+  return weightedStatistics(values.data(), weights.data(), values.size(), spacing, bins);
 }
 
 }  // namespace uvtk::analysis

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cstddef>
-#include <functional>
 #include <vector>
 
 namespace uvtk::analysis {
@@ -32,21 +31,15 @@ struct Statistics {
   Histogram histogram;  // `bins` bins over [min, max]; all the weight in bin 0 when min = max
 };
 
-// Items (value, weight) handed over in blocks: `values[i]` with `weights[i]`, i < count.
-using WeightedBlock = std::function<void(const double* values, const double* weights, std::size_t count)>;
-// A source of items: it calls the visitor with every item, block by block, in the same order each
-// time it is called (the statistics read their items a few times rather than hold a copy).
-using WeightedItems = std::function<void(const WeightedBlock& visit)>;
+// Statistics of values[i] with weights[i] >= 0, i < count, in any order (read, not reordered):
+// finite values, entries of zero weight counting for min and max. No items give zeros and empty
+// bins. Preconditions: bins >= 1, and values > 0 for Log2 spacing. The mean, the total and the
+// histogram are summed in the items' order; the percentiles are exact (their running weights
+// summed without rounding).
+Statistics weightedStatistics(const double* values, const double* weights, std::size_t count, BinSpacing spacing,
+                              int bins = 32);
 
-// Statistics of the items (finite values, weights >= 0), in any order. Entries of zero weight
-// still count for min and max. Empty input gives zeros and empty bins. Preconditions: bins >= 1,
-// and values > 0 for Log2 spacing. The percentiles are exact: the running weights are summed
-// without rounding; the mean, the total and the histogram are summed in the items' order.
-Statistics weightedStatistics(const WeightedItems& items, BinSpacing spacing, int bins = 32);
-
-// Statistics of values[i] with weights[i] >= 0. Entries of zero weight still count for min and
-// max. Empty input gives zeros and empty bins. Preconditions: equal sizes, bins >= 1, and
-// values > 0 for Log2 spacing.
+// The same for values[i] with weights[i]. Precondition: equal sizes.
 Statistics weightedStatistics(const std::vector<double>& values, const std::vector<double>& weights,
                               BinSpacing spacing, int bins = 32);
 

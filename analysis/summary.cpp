@@ -62,22 +62,18 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
     s.l2Stretch = std::sqrt(l2Squares / totals.surface) * normalisation;
     s.linfStretch = linfMax;
   }
-  // Each statistic of the ok faces' values weighted by their 3D areas, read from the faces in
-  // blocks each time the statistic asks for them (no copy of 16 bytes a face per statistic).
+  // Each statistic of the ok faces' values weighted by their 3D areas: the areas gathered once, each
+  // measure's values where its statistic is computed, 8 bytes a face (the statistic reads them a few times).
+  std::vector<double> okAreas;
+  okAreas.reserve(s.statusCounts[FaceStatus::Ok]);
+  for (const FaceDistortion& face : faces)
+    if (face.status == FaceStatus::Ok) okAreas.push_back(face.area3d);
   const auto statistics = [&](auto valueOf, BinSpacing spacing) {
-    return weightedStatistics(
-        [&](const WeightedBlock& visit) {
-          constexpr std::size_t kBlock = 512;
-          double values[kBlock], weights[kBlock];
-          std::size_t n = 0;
-          for (const FaceDistortion& face : faces) {
-            if (face.status != FaceStatus::Ok) continue;
-            values[n] = valueOf(face), weights[n] = face.area3d;
-            if (++n == kBlock) visit(values, weights, n), n = 0;
-          }
-          if (n > 0) visit(values, weights, n);
-        },
-        spacing);
+    std::vector<double> values;
+    values.reserve(okAreas.size());
+    for (const FaceDistortion& face : faces)
+      if (face.status == FaceStatus::Ok) values.push_back(valueOf(face));
+    return weightedStatistics(values, okAreas, spacing);
   };
   const std::function<void()> measures[] = {
       [&] { s.angleDistortion = statistics([](const FaceDistortion& f) { return f.angleDistortion; }, BinSpacing::Log2); },

@@ -319,25 +319,6 @@ TEST(WeightedStatistics, PercentilesOfEqualValuesSignedZerosAndExtremeWeights) {
   expectPercentilesRecounted({-1e308, 5e-324, 1e308}, {1.0, 2.0, 1.0}, "extreme values");
 }
 
-// A statistic read from a source in blocks equals the same items given whole.
-TEST(WeightedStatistics, ItemsInBlocksGiveTheSameStatistics) {
-  std::mt19937 random(3);
-  std::vector<double> values(5000), weights(5000);
-  for (std::size_t i = 0; i < values.size(); ++i) values[i] = 1.0 + random() % 1000, weights[i] = 0.5 + random() % 7;
-  const Statistics whole = weightedStatistics(values, weights, BinSpacing::Log2, 8);
-  const Statistics blocks = weightedStatistics(
-      [&](const WeightedBlock& visit) {
-        for (std::size_t i = 0; i < values.size(); i += 333)
-          visit(values.data() + i, weights.data() + i, std::min<std::size_t>(333, values.size() - i));
-      },
-      BinSpacing::Log2, 8);
-  EXPECT_EQ(blocks.totalWeight, whole.totalWeight);
-  EXPECT_EQ(blocks.mean, whole.mean);
-  EXPECT_EQ(blocks.histogram.weightFraction, whole.histogram.weightFraction);
-  for (auto [a, b] : {std::pair(blocks.p10, whole.p10), {blocks.p50, whole.p50}, {blocks.p90, whole.p90}, {blocks.p99, whole.p99}})
-    EXPECT_EQ(a, b);
-}
-
 // ---- Seams and poles ----
 
 // latLongSphere(16, 8) has a vertex on the seam half-plane (y = 0, x > 0) in every ring, so the
