@@ -55,8 +55,8 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
   double l2Squares = 0.0, linfMax = 0.0;
   for (const FaceDistortion& face : faces) {
     if (face.status != FaceStatus::Ok) continue;
-    l2Squares += face.area3d * face.l2Stretch * face.l2Stretch;
-    linfMax = std::max(linfMax, face.linfStretch * normalisation);
+    l2Squares += face.area3d * face.l2Stretch() * face.l2Stretch();
+    linfMax = std::max(linfMax, face.linfStretch() * normalisation);
   }
   if (totals.surface > 0.0) {
     s.l2Stretch = std::sqrt(l2Squares / totals.surface) * normalisation;
@@ -76,10 +76,10 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
     return weightedStatistics(values, okAreas, spacing);
   };
   const std::function<void()> measures[] = {
-      [&] { s.angleDistortion = statistics([](const FaceDistortion& f) { return f.angleDistortion; }, BinSpacing::Log2); },
+      [&] { s.angleDistortion = statistics([](const FaceDistortion& f) { return f.angleDistortion(); }, BinSpacing::Log2); },
       [&] { s.areaDistortion = statistics([](const FaceDistortion& f) { return f.areaDistortion; }, BinSpacing::Linear); },
-      [&] { s.l2Stretches = statistics([&](const FaceDistortion& f) { return f.l2Stretch * normalisation; }, BinSpacing::Log2); },
-      [&] { s.linfStretches = statistics([&](const FaceDistortion& f) { return f.linfStretch * normalisation; }, BinSpacing::Log2); },
+      [&] { s.l2Stretches = statistics([&](const FaceDistortion& f) { return f.l2Stretch() * normalisation; }, BinSpacing::Log2); },
+      [&] { s.linfStretches = statistics([&](const FaceDistortion& f) { return f.linfStretch() * normalisation; }, BinSpacing::Log2); },
       [&] {
         s.density.textureSize = textureSize;
         s.density.exponent = std::ilogb(measureLengthScale(mesh)) - std::ilogb(measureUvScale(uv));
