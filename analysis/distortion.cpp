@@ -87,11 +87,6 @@ const char* toString(FaceStatus status) {
   return "invalid";
 }
 
-bool isMeasured(FaceStatus status) {
-  return status == FaceStatus::Ok || status == FaceStatus::PoleFace || status == FaceStatus::Backfacing ||
-         status == FaceStatus::Flipped;
-}
-
 namespace {
 
 // 1 for a box whose extent lies within 2^-500 .. 2^500, else the power of two that brings it to about 1.
@@ -196,15 +191,6 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
       const Eigen::Matrix2d j = jacobian(edges(f), t[0], t[1], t[2]);
       singularValues(j, face.sigmaMax, face.sigmaMin);
       face.sigmaMin *= majority;
-      // Sander et al. 2001, "Texture stretch metric": UV -> surface has singular values G = 1/|s2|, g = 1/s1.
-      const double bigG = 1.0 / std::fabs(face.sigmaMin), smallG = 1.0 / face.sigmaMax;
-      // Sander et al. 2001, "Texture stretch metric": L2 = sqrt((G^2 + g^2) / 2), the root-mean-square stretch.
-      face.l2Stretch = std::sqrt(0.5 * (bigG * bigG + smallG * smallG));
-      // Sander et al. 2001, "Texture stretch metric": Linf = G, the greatest stretch in any direction.
-      face.linfStretch = bigG;
-      // Conformal distortion: s1/|s2|, the dilatation of a quasi-conformal map, 1 where angles are preserved.
-      face.angleDistortion = face.sigmaMax / std::fabs(face.sigmaMin);
-      face.areaRatio = face.areaUv / face.area3d;
     }
   });
 
@@ -212,7 +198,7 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
   const double surfacePerUv = okAreaTotals(faces).surfacePerUv();
   forEachChunk([&](int, std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f)
-      if (isMeasured(faces[f].status)) faces[f].areaDistortion = std::log2(faces[f].areaRatio * surfacePerUv);
+      if (isMeasured(faces[f].status)) faces[f].areaDistortion = std::log2(faces[f].areaRatio() * surfacePerUv);
   });
   return faces;
 }

@@ -25,6 +25,7 @@
 // The sign with the larger total wins; a tie goes to counter-clockwise (positive).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -43,21 +44,36 @@ const char* toString(FaceStatus status);
 
 // Whether a face of this status has a non-degenerate Jacobian, so that its measures are defined:
 // ok, pole_face, backfacing and flipped faces.
-bool isMeasured(FaceStatus status);
+constexpr bool isMeasured(FaceStatus status) {
+  return status == FaceStatus::Ok || status == FaceStatus::PoleFace || status == FaceStatus::Backfacing ||
+         status == FaceStatus::Flipped;
+}
 
 // The measures of one face. area3d is always set, areaUv unless the face is invalid; the
 // Jacobian's measures only where isMeasured(status), else they are 0. Nothing is NaN or infinite.
+// The measures that follow from the singular values and the areas are computed when read: stored,
+// they took 80 bytes a face instead of 48 (320 MB for 4 M faces).
 struct FaceDistortion {
   FaceStatus status = FaceStatus::Invalid;
   double area3d = 0.0;  // A3, the triangle's area in object space (times measureLengthScale squared)
   double areaUv = 0.0;  // Auv, the absolute area of its UV triangle (times measureUvScale squared)
   double sigmaMax = 0.0;  // s1, the larger singular value of J
   double sigmaMin = 0.0;  // s2, |s2| <= s1; negative when the face is mirrored against the majority
-  double l2Stretch = 0.0;        // sqrt((G^2 + g^2) / 2), G = 1/|s2|, g = 1/s1; in UV units
-  double linfStretch = 0.0;      // G
-  double angleDistortion = 0.0;  // s1 / |s2|: 1 where the map is conformal
-  double areaRatio = 0.0;        // Auv / A3, not normalised
-  double areaDistortion = 0.0;   // log2(r), r = areaRatio sum(A3) / sum(Auv) over the ok faces: 0 where equiareal
+  double areaDistortion = 0.0;  // log2(r), r = areaRatio() sum(A3) / sum(Auv) over the ok faces: 0 where equiareal
+
+  // Sander et al. 2001, "Texture stretch metric": UV -> surface has singular values G = 1/|s2|, g = 1/s1.
+  // L2 = sqrt((G^2 + g^2) / 2), the root-mean-square stretch; in UV units.
+  double l2Stretch() const {
+    if (!isMeasured(status)) return 0.0;
+    const double bigG = 1.0 / std::fabs(sigmaMin), smallG = 1.0 / sigmaMax;
+    return std::sqrt(0.5 * (bigG * bigG + smallG * smallG));
+  }
+  // Linf = G, the greatest stretch in any direction.
+  double linfStretch() const { return isMeasured(status) ? 1.0 / std::fabs(sigmaMin) : 0.0; }
+  // Conformal distortion: s1/|s2|, the dilatation of a quasi-conformal map, 1 where angles are preserved.
+  double angleDistortion() const { return isMeasured(status) ? sigmaMax / std::fabs(sigmaMin) : 0.0; }
+  // Auv / A3, not normalised.
+  double areaRatio() const { return isMeasured(status) ? areaUv / area3d : 0.0; }
 };
 
 // The texels of the texture a texel density counts in: W x H (docs/conventions.md, "Texel density").

@@ -282,7 +282,7 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
   const double p99 = j.summary.l2Stretches.p99;
   const double normalisation = std::sqrt(1.0 / okAreaTotals(j.faces).surfacePerUv());
   for (const FaceDistortion& face : j.faces)
-    stretched += face.status == FaceStatus::Ok && face.l2Stretch * normalisation >= p99 ? 1 : 0;
+    stretched += face.status == FaceStatus::Ok && face.l2Stretch() * normalisation >= p99 ? 1 : 0;
   set(Rule::StretchP99, p99, stretched);
   set(Rule::PoleArea, share(poleArea), j.summary.poleFaces);
   set(Rule::BackfacingArea, share(statusArea[std::size_t(FaceStatus::Backfacing)]),

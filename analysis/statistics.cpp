@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
+#include <cstdint>
+#include <cstring>
+#include <vector>
 
 #include "core/error.h"
 
@@ -25,53 +27,247 @@ double Histogram::edge(int i) const {
 
 namespace {
 
-// Where a weighted percentile lies in the items: sorting would put `item` there, with the items
-// left of it no larger and carrying `weightBefore`, those right of it no smaller.
-struct Selected {
-  WeightedValue* item;
-  double weightBefore;
+// ---- Exact sums of weights
+//
+// A sum of finite weights >= 0 held as a whole number of units, the unit being the last mantissa
+// bit of the smallest positive weight, in 32-bit digits kept in 64-bit limbs: adding a weight adds
+// its 53-bit mantissa, shifted, into three limbs, and carries wait until a comparison (fewer than
+// 2^32 additions cannot overflow a limb). Exact, so a percentile does not depend on the order in
+// which its running weight is summed: a rounded running sum that ties the target could go either way.
+class SumFormat {
+ public:
+  // Sums of fewer than 2^32 weights whose biased exponents (1 for subnormals) lie in [lowest, highest].
+  SumFormat(int lowest, int highest) : lowest_(lowest), limbs_(std::size_t(highest - lowest + 53 + 32 + 64) / 32) {}
+
+  std::size_t limbs() const { return limbs_; }
+
+  // sum += weight, a weight >= 0 of the format's range.
+  void add(std::uint64_t* sum, double weight) const {
+    if (!(weight > 0.0)) return;
+    const Bits b = bitsOf(weight);
+    place(sum, b.mantissa, b.exponent - lowest_);
+  }
+
+  // sum = the least whole number of units at or above `value` >= 0: a sum of units reaches the
+  // value exactly when it reaches this.
+  void setCeiling(std::uint64_t* sum, double value) const {
+    std::fill(sum, sum + limbs_, 0);
+    if (!(value > 0.0)) return;
+    Bits b = bitsOf(value);
+    int position = b.exponent - lowest_;
+    if (position < 0) {  // below the unit: rounded up
+      const int drop = -position;
+      const bool fraction = drop >= 64 || (b.mantissa & ((std::uint64_t(1) << drop) - 1)) != 0;
+      b.mantissa = (drop >= 64 ? 0 : b.mantissa >> drop) + (fraction ? 1 : 0);
+      position = 0;
+    }
+    UVTK_CHECK(std::size_t(position) / 32 + 3 <= limbs_);
+    place(sum, b.mantissa, position);
+  }
+
+  // to += from, limb by limb (carries wait).
+  void addSum(std::uint64_t* to, const std::uint64_t* from) const {
+    for (std::size_t i = 0; i < limbs_; ++i) to[i] += from[i];
+  }
+
+  // Carries moved up: every limb but the last holds one digit, so that sums compare limb by limb.
+  void normalise(std::uint64_t* sum) const {
+    for (std::size_t i = 0; i + 1 < limbs_; ++i) sum[i + 1] += sum[i] >> 32, sum[i] &= 0xffffffffu;
+  }
+
+  // Whether a >= b, both normalised.
+  bool atLeast(const std::uint64_t* a, const std::uint64_t* b) const {
+    for (std::size_t i = limbs_; i-- > 0;)
+      if (a[i] != b[i]) return a[i] > b[i];
+    return true;
+  }
+
+  // The biased exponent (1 for subnormals) of a finite double > 0.
+  static int exponentOf(double value) { return bitsOf(value).exponent; }
+
+ private:
+  struct Bits {
+    std::uint64_t mantissa;  // value = mantissa 2^(exponent - 1075)
+    int exponent;
+  };
+  static Bits bitsOf(double value) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    const int biased = int((bits >> 52) & 0x7ff);
+    const std::uint64_t fraction = bits & ((std::uint64_t(1) << 52) - 1);
+    return biased == 0 ? Bits{fraction, 1} : Bits{fraction | std::uint64_t(1) << 52, biased};
+  }
+
+  void place(std::uint64_t* sum, std::uint64_t mantissa, int position) const {
+    const std::size_t limb = std::size_t(position) / 32;
+    const int shift = position % 32;
+    const std::uint64_t high = mantissa >> (32 - shift);  // the digits above the first: mantissa 2^shift / 2^32
+    sum[limb] += (mantissa << shift) & 0xffffffffu;
+    sum[limb + 1] += high & 0xffffffffu;
+    sum[limb + 2] += high >> 32;
+  }
+
+  int lowest_;
+  std::size_t limbs_;
 };
 
-// The item of the smallest value v in [first, last) such that `below` plus the weight of the
-// items <= v reaches `target` (the lower inverse of the weighted distribution), by selection: each
-// round places one item where sorting would put it and keeps the half that holds the answer, O(n)
-// on average where sorting is O(n log n). Nothing when even the whole weight stays short of the
-// target. `below` is the weight of the items before `first`, all no larger than those after it.
-std::optional<Selected> weightedSelect(WeightedValue* first, WeightedValue* last, double below, double target) {
-  const auto byValue = [](const WeightedValue& a, const WeightedValue& b) { return a.value < b.value; };
-  while (first != last) {
-    WeightedValue* middle = first + (last - first) / 2;
-    std::nth_element(first, middle, last, byValue);
-    double left = below;  // the weight before `middle`
-    for (const WeightedValue* w = first; w != middle; ++w) left += w->weight;
-    if (left >= target) {
-      last = middle;  // reached before the middle: the answer lies left of it
-    } else if (left + middle->weight >= target) {
-      return Selected{middle, left};
-    } else {
-      below = left + middle->weight;
-      first = middle + 1;
+// ---- Weighted percentiles by radix selection
+
+// A double's bits as an unsigned key in the order of the values (negative values' bits flipped,
+// the positive ones' sign bit set; -0 counts as +0), so that equal keys are equal values.
+std::uint64_t orderKey(double value) {
+  if (value == 0.0) value = 0.0;
+  std::uint64_t bits;
+  std::memcpy(&bits, &value, sizeof bits);
+  return bits >> 63 ? ~bits : bits | (std::uint64_t(1) << 63);
+}
+
+// One percentile sought: among the items whose keys share the top `bits` bits of `prefix`, after
+// the exact weight `below` of the items of smaller keys, the first (in key order) whose running
+// weight reaches `target`.
+struct Search {
+  std::uint64_t prefix = 0;
+  int bits = 0;
+  std::vector<std::uint64_t> below, target;
+  bool found = false;
+  double answer = 0.0;
+
+  bool holds(std::uint64_t key) const { return bits == 0 || (key ^ prefix) >> (64 - bits) == 0; }
+};
+
+// Keys are refined this many bits a pass: 2048 buckets, whose counts and sums stay in the caches.
+constexpr int kDigitBits = 11;
+constexpr std::size_t kBuckets = std::size_t(1) << kDigitBits;
+// A bucket of at most this many items is gathered and sorted rather than refined again.
+constexpr std::size_t kGatherItems = std::size_t(1) << 12;
+
+// Each pass over the items counts and sums the next digit of the keys in every open search's
+// range, and keeps the bucket where the search's running weight reaches its target, until that
+// bucket is small enough to sort or the key is whole (one value). O(n) a pass; nothing is copied
+// but the last bucket's few items.
+void findPercentiles(const double* values, const double* weights, std::size_t count, const SumFormat& format,
+                     std::vector<Search>& searches) {
+  const std::size_t limbs = format.limbs();
+  std::vector<std::size_t> counts;
+  std::vector<std::uint64_t> sums, running(limbs), after(limbs);
+  std::vector<Search*> gather;
+  for (;;) {
+    // The distinct ranges refined (every open search has as many bits fixed); a whole key is one value.
+    std::vector<Search*> open;
+    std::vector<std::uint64_t> ranges;  // their prefixes
+    for (Search& s : searches)
+      if (!s.found) (s.bits == 64 ? gather : open).push_back(&s);
+    for (Search* s : open)
+      if (std::find(ranges.begin(), ranges.end(), s->prefix) == ranges.end()) ranges.push_back(s->prefix);
+    if (ranges.empty()) break;
+    const int bits = open.front()->bits, digit = std::min(kDigitBits, 64 - bits), shift = 64 - bits - digit;
+    const std::uint64_t mask = (std::uint64_t(1) << digit) - 1;
+    counts.assign(ranges.size() * kBuckets, 0);
+    sums.assign(ranges.size() * kBuckets * limbs, 0);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::uint64_t key = orderKey(values[i]);
+      for (std::size_t r = 0; r < ranges.size(); ++r)
+        if (bits == 0 || (key ^ ranges[r]) >> (64 - bits) == 0) {
+          const std::size_t bucket = r * kBuckets + ((key >> shift) & mask);
+          ++counts[bucket];
+          format.add(sums.data() + bucket * limbs, weights[i]);
+          break;
+        }
+    }
+    for (Search* s : open) {
+      const std::size_t r = std::size_t(std::find(ranges.begin(), ranges.end(), s->prefix) - ranges.begin());
+      // The first non-empty bucket at which the running weight reaches the target; one always
+      // does, as the range's whole weight reached it when the range was chosen.
+      running = s->below;
+      std::size_t chosen = kBuckets;
+      for (std::size_t b = 0; b < kBuckets && chosen == kBuckets; ++b) {
+        const std::size_t bucket = r * kBuckets + b;
+        if (counts[bucket] == 0) continue;
+        after = running;
+        format.addSum(after.data(), sums.data() + bucket * limbs);
+        format.normalise(after.data());
+        if (format.atLeast(after.data(), s->target.data()))
+          chosen = b;
+        else
+          running.swap(after);
+      }
+      UVTK_CHECK(chosen < kBuckets);
+      s->below = running;
+      s->bits = bits + digit;
+      s->prefix = (s->prefix & ~((mask << shift) | ((std::uint64_t(1) << shift) - 1))) | (std::uint64_t(chosen) << shift);
+      if (counts[r * kBuckets + chosen] <= kGatherItems) s->bits = -s->bits;  // marked: gather it
+    }
+    // The searches marked are gathered now, the others refined in the next pass.
+    for (Search* s : open)
+      if (s->bits < 0) s->bits = -s->bits, gather.push_back(s);
+    if (!gather.empty()) break;
+  }
+  if (gather.empty()) return;
+
+  // The last items of each gathered search, sorted by key (equal keys in item order), and walked
+  // with the exact running weight.
+  struct Item {
+    std::uint64_t key;
+    double value, weight;
+  };
+  std::vector<std::vector<Item>> gathered(gather.size());
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::uint64_t key = orderKey(values[i]);
+    for (std::size_t g = 0; g < gather.size(); ++g)
+      if (gather[g]->holds(key) && (gather[g]->bits < 64 || gathered[g].empty()))
+        gathered[g].push_back({key, values[i], weights[i]});
+  }
+  for (std::size_t g = 0; g < gather.size(); ++g) {
+    Search& s = *gather[g];
+    std::vector<Item>& list = gathered[g];
+    UVTK_CHECK(!list.empty());
+    s.found = true;
+    if (s.bits == 64) {  // one value: the range's weight reaches the target
+      s.answer = list.front().value;
+      continue;
+    }
+    std::stable_sort(list.begin(), list.end(), [](const Item& a, const Item& b) { return a.key < b.key; });
+    running = s.below;
+    s.answer = list.back().value;
+    for (const Item& item : list) {
+      format.add(running.data(), item.weight);
+      format.normalise(running.data());
+      if (format.atLeast(running.data(), s.target.data())) {
+        s.answer = item.value;
+        break;
+      }
     }
   }
-  return std::nullopt;
+  // Searches still open go on from where they are.
+  if (std::any_of(searches.begin(), searches.end(), [](const Search& s) { return !s.found; }))
+    findPercentiles(values, weights, count, format, searches);
 }
 
 }  // namespace
 
-Statistics weightedStatistics(std::vector<WeightedValue> items, BinSpacing spacing, int bins) {
+Statistics weightedStatistics(const double* values, const double* weights, std::size_t count, BinSpacing spacing,
+                              int bins) {
   UVTK_CHECK(bins >= 1);
   Statistics s;
   s.histogram.spacing = spacing;
   s.histogram.weightFraction.assign(static_cast<std::size_t>(bins), 0.0);
-  if (items.empty()) return s;
+  if (count == 0) return s;
 
-  const auto byValue = [](const WeightedValue& a, const WeightedValue& b) { return a.value < b.value; };
-  const auto [lowest, highest] = std::minmax_element(items.begin(), items.end(), byValue);
-  s.min = lowest->value;
-  s.max = highest->value;
-  UVTK_CHECK(spacing == BinSpacing::Linear || s.min > 0.0);
+  // One pass for the extremes and the sums in the items' order, and the weights' exponents.
+  s.min = s.max = values[0];
   double weightedSum = 0.0;
-  for (const WeightedValue& item : items) s.totalWeight += item.weight, weightedSum += item.weight * item.value;
+  int lowestExponent = 2047, highestExponent = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const double value = values[i], weight = weights[i];
+    if (value < s.min) s.min = value;   // the first of equal smallest values
+    if (!(value < s.max)) s.max = value;  // the last of equal largest ones (std::minmax_element's choice)
+    s.totalWeight += weight, weightedSum += weight * value;
+    if (weight > 0.0) {
+      const int exponent = SumFormat::exponentOf(weight);
+      lowestExponent = std::min(lowestExponent, exponent), highestExponent = std::max(highestExponent, exponent);
+    }
+  }
+  UVTK_CHECK(spacing == BinSpacing::Linear || s.min > 0.0);
   if (s.totalWeight <= 0.0) return s;
   s.mean = weightedSum / s.totalWeight;
 
@@ -79,32 +275,42 @@ Statistics weightedStatistics(std::vector<WeightedValue> items, BinSpacing spaci
   h.lo = s.min;
   h.hi = s.max;
   const double a = binScale(h.lo, spacing), width = binScale(h.hi, spacing) - a;
-  for (const WeightedValue& item : items) {
-    const double t = width > 0.0 ? (binScale(item.value, spacing) - a) / width : 0.0;
+  // The same pass sums the weights exactly, for the percentiles.
+  UVTK_CHECK(count < (std::size_t(1) << 32));
+  const SumFormat format(lowestExponent, highestExponent);
+  std::vector<std::uint64_t> whole(format.limbs(), 0);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double t = width > 0.0 ? (binScale(values[i], spacing) - a) / width : 0.0;
     const int bin = std::clamp(static_cast<int>(t * bins), 0, bins - 1);
-    h.weightFraction[static_cast<std::size_t>(bin)] += item.weight / s.totalWeight;
+    h.weightFraction[static_cast<std::size_t>(bin)] += weights[i] / s.totalWeight;
+    format.add(whole.data(), weights[i]);
   }
+  format.normalise(whole.data());
 
-  // Weighted percentiles by selection (which reorders the items).
+  // The percentiles, their targets a fraction of the total as summed in order above.
   const double fractions[4] = {0.10, 0.50, 0.90, 0.99};
   double* const percentiles[4] = {&s.p10, &s.p50, &s.p90, &s.p99};
-  Selected from{items.data(), 0.0};  // each percentile lies at or right of the one before
+  const std::uint64_t lowest = orderKey(s.min), highest = orderKey(s.max);
+  std::vector<Search> searches(4);
   for (int k = 0; k < 4; ++k) {
-    const std::optional<Selected> p =
-        weightedSelect(from.item, items.data() + items.size(), from.weightBefore, fractions[k] * s.totalWeight);
-    // Rounding may leave the whole weight short of the total: then the largest value.
-    *percentiles[k] = p ? p->item->value : s.max;
-    if (p) from = *p;
+    Search& search = searches[std::size_t(k)];
+    search.target.assign(format.limbs(), 0);
+    format.setCeiling(search.target.data(), fractions[k] * s.totalWeight);
+    search.below.assign(format.limbs(), 0);
+    search.prefix = lowest;
+    search.bits = lowest == highest ? 64 : __builtin_clzll(lowest ^ highest);
+    // Rounding may leave the whole weight short of the target: then the largest value.
+    if (!format.atLeast(whole.data(), search.target.data())) search.found = true, search.answer = s.max;
   }
+  findPercentiles(values, weights, count, format, searches);
+  for (int k = 0; k < 4; ++k) *percentiles[k] = searches[std::size_t(k)].answer;
   return s;
 }
 
 Statistics weightedStatistics(const std::vector<double>& values, const std::vector<double>& weights,
                               BinSpacing spacing, int bins) {
   UVTK_CHECK(values.size() == weights.size());
-  std::vector<WeightedValue> items(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i) items[i] = {values[i], weights[i]};
-  return weightedStatistics(std::move(items), spacing, bins);
+  return weightedStatistics(values.data(), weights.data(), values.size(), spacing, bins);
 }
 
 }  // namespace uvtk::analysis

@@ -2,6 +2,7 @@
 // each face counting with its 3D area.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 namespace uvtk::analysis {
@@ -30,18 +31,15 @@ struct Statistics {
   Histogram histogram;  // `bins` bins over [min, max]; all the weight in bin 0 when min = max
 };
 
-struct WeightedValue {
-  double value, weight;
-};
+// Statistics of values[i] with weights[i] >= 0, i < count, in any order (read, not reordered):
+// finite values, entries of zero weight counting for min and max. No items give zeros and empty
+// bins. Preconditions: bins >= 1, and values > 0 for Log2 spacing. The mean, the total and the
+// histogram are summed in the items' order; the percentiles are exact (their running weights
+// summed without rounding).
+Statistics weightedStatistics(const double* values, const double* weights, std::size_t count, BinSpacing spacing,
+                              int bins = 32);
 
-// Statistics of the items (value, weight >= 0), in any order. Entries of zero weight still count
-// for min and max. Empty input gives zeros and empty bins. Preconditions: bins >= 1, and values
-// > 0 for Log2 spacing.
-Statistics weightedStatistics(std::vector<WeightedValue> items, BinSpacing spacing, int bins = 32);
-
-// Statistics of values[i] with weights[i] >= 0. Entries of zero weight still count for min and
-// max. Empty input gives zeros and empty bins. Preconditions: equal sizes, bins >= 1, and
-// values > 0 for Log2 spacing.
+// The same for values[i] with weights[i]. Precondition: equal sizes.
 Statistics weightedStatistics(const std::vector<double>& values, const std::vector<double>& weights,
                               BinSpacing spacing, int bins = 32);
 

@@ -7,7 +7,6 @@
 #include <limits>
 
 #include "core/error.h"
-#include "core/huge_pages.h"
 #include "core/parallel.h"
 
 namespace uvtk::analysis {
@@ -56,27 +55,31 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
   double l2Squares = 0.0, linfMax = 0.0;
   for (const FaceDistortion& face : faces) {
     if (face.status != FaceStatus::Ok) continue;
-    l2Squares += face.area3d * face.l2Stretch * face.l2Stretch;
-    linfMax = std::max(linfMax, face.linfStretch * normalisation);
+    l2Squares += face.area3d * face.l2Stretch() * face.l2Stretch();
+    linfMax = std::max(linfMax, face.linfStretch() * normalisation);
   }
   if (totals.surface > 0.0) {
     s.l2Stretch = std::sqrt(l2Squares / totals.surface) * normalisation;
     s.linfStretch = linfMax;
   }
-  // Each statistic of the ok faces' values weighted by their 3D areas, gathered where it is computed.
+  // Each statistic of the ok faces' values weighted by their 3D areas: the areas gathered once, each
+  // measure's values where its statistic is computed, 8 bytes a face (the statistic reads them a few times).
+  std::vector<double> okAreas;
+  okAreas.reserve(s.statusCounts[FaceStatus::Ok]);
+  for (const FaceDistortion& face : faces)
+    if (face.status == FaceStatus::Ok) okAreas.push_back(face.area3d);
   const auto statistics = [&](auto valueOf, BinSpacing spacing) {
-    std::vector<WeightedValue> items;
-    items.reserve(s.statusCounts[FaceStatus::Ok]);
-    adviseHugePages(items.data(), items.capacity() * sizeof(WeightedValue));
+    std::vector<double> values;
+    values.reserve(okAreas.size());
     for (const FaceDistortion& face : faces)
-      if (face.status == FaceStatus::Ok) items.push_back({valueOf(face), face.area3d});
-    return weightedStatistics(std::move(items), spacing);
+      if (face.status == FaceStatus::Ok) values.push_back(valueOf(face));
+    return weightedStatistics(values, okAreas, spacing);
   };
   const std::function<void()> measures[] = {
-      [&] { s.angleDistortion = statistics([](const FaceDistortion& f) { return f.angleDistortion; }, BinSpacing::Log2); },
+      [&] { s.angleDistortion = statistics([](const FaceDistortion& f) { return f.angleDistortion(); }, BinSpacing::Log2); },
       [&] { s.areaDistortion = statistics([](const FaceDistortion& f) { return f.areaDistortion; }, BinSpacing::Linear); },
-      [&] { s.l2Stretches = statistics([&](const FaceDistortion& f) { return f.l2Stretch * normalisation; }, BinSpacing::Log2); },
-      [&] { s.linfStretches = statistics([&](const FaceDistortion& f) { return f.linfStretch * normalisation; }, BinSpacing::Log2); },
+      [&] { s.l2Stretches = statistics([&](const FaceDistortion& f) { return f.l2Stretch() * normalisation; }, BinSpacing::Log2); },
+      [&] { s.linfStretches = statistics([&](const FaceDistortion& f) { return f.linfStretch() * normalisation; }, BinSpacing::Log2); },
       [&] {
         s.density.textureSize = textureSize;
         s.density.exponent = std::ilogb(measureLengthScale(mesh)) - std::ilogb(measureUvScale(uv));

@@ -98,16 +98,18 @@ render::PixelMapping projectorPixelMapping(const param::ProjectorOptions& option
   auto mapping = std::make_shared<param::PointMapping>(options, localFromObject,
                                                        param::sensibleBox(mesh.positions, options, localFromObject));
   // A cap face maps by the side its own normal faces, as project() decided (param/projector.h).
-  auto capNormals = std::make_shared<std::vector<Vec3>>(uv.faceCount(), Vec3::Zero());
+  // Empty when no face is a cap: a zero normal per face would be 24 bytes a face written for nothing.
+  auto capNormals = std::make_shared<std::vector<Vec3>>();
   for (std::size_t f = 0; f < uv.faceCount(); ++f)
     if (uv.faceHas(f, kFaceCap)) {
+      if (capNormals->empty()) capNormals->assign(uv.faceCount(), Vec3::Zero());
       const Triangle& t = mesh.triangles[f];
       (*capNormals)[f] = triangleAreaNormal(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
     }
   // The cube's faces layout keeps the face id as r: per pixel the face of the pixel's own probe.
   const bool faceIds = writesCubeFaceIds(options);
   return render::PixelMapping{[mapping, capNormals, faceIds](const Vec3& p, const Vec3& n, std::int32_t face) -> Vec4 {
-                                const Vec3& capNormal = (*capNormals)[std::size_t(face)];
+                                const Vec3 capNormal = capNormals->empty() ? Vec3::Zero() : (*capNormals)[std::size_t(face)];
                                 const bool cap = !capNormal.isZero();
                                 const param::VertexUv mapped = mapping->at(p, cap ? capNormal : n, cap);
                                 const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -60,9 +60,9 @@ double measureValue(View measure, const analysis::FaceDistortion& face, const an
   }
   // Sander et al. 2001, "Texture stretch metric": times sqrt(sum(Auv) / sum(A3)), as analysis/summary.h does.
   const double normalisation = std::sqrt(1.0 / totals.surfacePerUv());
-  if (measure == View::Stretch) return face.l2Stretch * normalisation;
-  if (measure == View::Linf) return face.linfStretch * normalisation;
-  if (measure == View::Angle) return face.angleDistortion;
+  if (measure == View::Stretch) return face.l2Stretch() * normalisation;
+  if (measure == View::Linf) return face.linfStretch() * normalisation;
+  if (measure == View::Angle) return face.angleDistortion();
   return face.areaDistortion;
 }
 

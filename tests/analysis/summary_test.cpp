@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -211,6 +213,110 @@ TEST(WeightedStatistics, OneValueAndNoValue) {
   const Statistics none = weightedStatistics({}, {}, BinSpacing::Linear, 4);
   EXPECT_EQ(none.mean, 0.0);
   EXPECT_EQ(none.histogram.weightFraction, (std::vector<double>(4, 0.0)));
+}
+
+// An exact running weight for the recount: Shewchuk's expansion (non-overlapping doubles, smallest
+// first; "Adaptive Precision Floating-Point Arithmetic", 1997), grown by one double at a time.
+struct Expansion {
+  std::vector<double> parts;
+  void add(double b) {
+    std::vector<double> grown;
+    for (double a : parts) {  // two-sum: a + b = sum + error exactly
+      const double sum = a + b, virtualB = sum - a, error = (a - (sum - virtualB)) + (b - virtualB);
+      if (error != 0.0) grown.push_back(error);
+      b = sum;
+    }
+    if (b != 0.0) grown.push_back(b);
+    parts = std::move(grown);
+  }
+  // Whether the sum is at least `target`: the sign of sum - target is that of its largest part.
+  bool atLeast(double target) const {
+    Expansion difference = *this;
+    difference.add(-target);
+    return difference.parts.empty() || difference.parts.back() > 0.0;
+  }
+};
+
+// The definition recounted: sorted by value, the first value whose exact running weight reaches
+// the fraction of the total summed in the items' order; the largest value if none does.
+double recountedPercentile(const std::vector<double>& values, const std::vector<double>& weights, double fraction) {
+  std::vector<std::size_t> order(values.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
+  double total = 0.0;
+  for (double w : weights) total += w;
+  Expansion running;
+  for (std::size_t i : order) {
+    running.add(weights[i]);
+    if (running.atLeast(fraction * total)) return values[i];
+  }
+  return *std::max_element(values.begin(), values.end());
+}
+
+void expectPercentilesRecounted(const std::vector<double>& values, const std::vector<double>& weights,
+                                const std::string& what) {
+  const Statistics s = weightedStatistics(values, weights, BinSpacing::Linear);
+  const std::pair<double, double> found[] = {{0.10, s.p10}, {0.50, s.p50}, {0.90, s.p90}, {0.99, s.p99}};
+  for (const auto& [fraction, value] : found)
+    EXPECT_EQ(value, recountedPercentile(values, weights, fraction)) << what << ", fraction " << fraction;
+}
+
+// Random sets against the exact recount: ties, zero weights, weights over 2^-40 .. 2^40 (whose
+// rounded running sums go astray), negative values, extremes of the double range, and sets larger
+// than one sorted bucket (several passes of the radix selection).
+TEST(WeightedStatistics, PercentilesEqualAnExactRecountOnRandomAndAdversarialSets) {
+  std::mt19937_64 random(2611);
+  const auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(random); };
+  for (int trial = 0; trial < 60; ++trial) {
+    const std::size_t n = trial % 6 == 5 ? 20000 + random() % 30000 : 1 + random() % 3000;
+    std::vector<double> values(n), weights(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      switch (trial % 6) {
+        case 0: values[i] = double(random() % 7); break;                                   // heavy ties
+        case 1: values[i] = uniform(-1e3, 1e3); break;                                     // both signs
+        case 2: values[i] = std::ldexp(uniform(1.0, 2.0), int(random() % 2000) - 1000); break;  // every scale
+        case 3: values[i] = 1.0 + double(random() % 64) * 0x1p-52; break;                  // ties a few ulps apart
+        case 4: values[i] = (random() % 3 == 0 ? -1.0 : 1.0) * std::ldexp(1.0, int(random() % 2090) - 1074); break;
+        default:  // half the items in the last bits of one bucket: refined pass after pass
+          values[i] = random() % 2 ? 1.0 + double(random() % 16) * 0x1p-52 : uniform(1.0, 1e6);
+      }
+      weights[i] = random() % 5 == 0 ? 0.0 : std::ldexp(uniform(0.5, 1.0), int(random() % 81) - 40);
+    }
+    expectPercentilesRecounted(values, weights, "trial " + std::to_string(trial));
+  }
+}
+
+// Weights whose rounded running sum reaches the target one value early: 0.5 - 2^-54 then 3 2^-56
+// round to 0.5, exactly half the total, while their exact sum 0.5 - 2^-56 stays short of it.
+TEST(WeightedStatistics, APercentileIsTheExactLowerInverseWhereRoundingWouldTieTheTarget) {
+  const std::vector<double> values = {1.0, 2.0, 3.0, 4.0};
+  const std::vector<double> weights = {0.5 - 0x1p-54, 3 * 0x1p-56, 0x1p-56, 0.5 - 0x1p-55};
+  double rounded = weights[0] + weights[1], total = 0.0;
+  for (double w : weights) total += w;
+  ASSERT_EQ(total, 1.0);
+  ASSERT_EQ(rounded, 0.5);  // a rounded running sum would answer 2
+  EXPECT_EQ(weightedStatistics(values, weights, BinSpacing::Linear).p50, 3.0);
+  expectPercentilesRecounted(values, weights, "tie");
+}
+
+// Many equal values (more than one sorted bucket holds), one value alone, -0 beside +0, and a
+// weight at the bottom of the subnormals beside one near the top of the range.
+TEST(WeightedStatistics, PercentilesOfEqualValuesSignedZerosAndExtremeWeights) {
+  const std::vector<double> same(10000, 2.5), ones(10000, 1.0);
+  const Statistics s = weightedStatistics(same, ones, BinSpacing::Log2);
+  EXPECT_EQ(s.p10, 2.5);
+  EXPECT_EQ(s.p99, 2.5);
+  std::vector<double> two(same.size(), 1.0), twoWeights(2 * same.size(), 1.0);
+  two.resize(2 * same.size(), 1.0 + 0x1p-52);  // two values a bit apart, each too many to sort
+  const Statistics t = weightedStatistics(two, twoWeights, BinSpacing::Linear);
+  EXPECT_EQ(t.p50, 1.0);  // reached exactly at the first value
+  EXPECT_EQ(t.p90, 1.0 + 0x1p-52);
+  EXPECT_EQ(weightedStatistics({7.0}, {0.25}, BinSpacing::Linear).p50, 7.0);
+  const Statistics zeros = weightedStatistics({-0.0, 0.0, 1.0}, {1.0, 1.0, 2.0}, BinSpacing::Linear);
+  EXPECT_EQ(zeros.p50, 0.0);
+  EXPECT_EQ(zeros.p90, 1.0);
+  expectPercentilesRecounted({1.0, 2.0, 3.0}, {std::numeric_limits<double>::denorm_min(), 1e300, 1e300}, "extreme weights");
+  expectPercentilesRecounted({-1e308, 5e-324, 1e308}, {1.0, 2.0, 1.0}, "extreme values");
 }
 
 // ---- Seams and poles ----

@@ -30,8 +30,8 @@ TEST(TriplanarStretch, AFaceIsStretchedByOneOverItsDominantNormalComponent) {
     const Vec3 n = (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).normalized();
     const int axis = projection.triplanarAxis[f];
     // An orthographic projection of the face's plane onto the axis plane: singular values 1 and |n_d|.
-    EXPECT_NEAR(faces[f].angleDistortion, 1.0 / std::fabs(n[axis]), 1e-9) << "face " << f;
-    EXPECT_LE(faces[f].angleDistortion, std::sqrt(3.0) + 1e-9);
+    EXPECT_NEAR(faces[f].angleDistortion(), 1.0 / std::fabs(n[axis]), 1e-9) << "face " << f;
+    EXPECT_LE(faces[f].angleDistortion(), std::sqrt(3.0) + 1e-9);
     EXPECT_NE(faces[f].status, FaceStatus::Flipped) << "face " << f;
     backfacing += faces[f].status == FaceStatus::Backfacing;
     mirroredByDesign += n.dot(param::triplanarFacing(o.triplanar, axis)) < 0.0;
