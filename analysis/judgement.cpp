@@ -278,23 +278,28 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
       j.statusCount(FaceStatus::ZeroAreaUv));
   set(Rule::Overlap, j.summary.overlap.fraction(), j.overlappedFaces);
   set(Rule::UnrepairedSeamFaces, double(j.unrepairedSeamFaces), j.unrepairedSeamFaces);
-  std::size_t stretched = 0;
+  // The ok faces at or above the stretch's p99, and at either end of the density's spread (at or
+  // below p10, at or above p90): counted in chunks on threads.
   const double p99 = j.summary.l2Stretches.p99;
   const double normalisation = std::sqrt(1.0 / okAreaTotals(j.faces).surfacePerUv());
-  for (const FaceDistortion& face : j.faces)
-    stretched += face.status == FaceStatus::Ok && face.l2Stretch() * normalisation >= p99 ? 1 : 0;
+  const TexelDensity& density = j.summary.density;
+  std::vector<std::array<std::size_t, 2>> ends(static_cast<std::size_t>(chunks), {0, 0});  // stretched, spread
+  parallelFor(chunks, options.threads, [&](int c) {
+    std::array<std::size_t, 2>& e = ends[std::size_t(c)];
+    for (std::size_t f = std::size_t(c) * kChunk; f < std::min(mesh.faceCount(), std::size_t(c + 1) * kChunk); ++f) {
+      const FaceDistortion& face = j.faces[f];
+      if (face.status != FaceStatus::Ok) continue;
+      e[0] += face.l2Stretch() * normalisation >= p99 ? 1 : 0;
+      const double d = scaledTexelDensity(face, density.textureSize);
+      e[1] += d <= density.scaled.p10 || d >= density.scaled.p90 ? 1 : 0;
+    }
+  });
+  std::size_t stretched = 0, spread = 0;
+  for (const auto& [s, d] : ends) stretched += s, spread += d;
   set(Rule::StretchP99, p99, stretched);
   set(Rule::PoleArea, share(poleArea), j.summary.poleFaces);
   set(Rule::BackfacingArea, share(statusArea[std::size_t(FaceStatus::Backfacing)]),
       j.statusCount(FaceStatus::Backfacing));
-  // The faces at either end of the spread: at or below p10, at or above p90.
-  const TexelDensity& density = j.summary.density;
-  std::size_t spread = 0;
-  for (const FaceDistortion& face : j.faces)
-    if (face.status == FaceStatus::Ok) {
-      const double d = scaledTexelDensity(face, density.textureSize);
-      spread += d <= density.scaled.p10 || d >= density.scaled.p90 ? 1 : 0;
-    }
   set(Rule::DensitySpread, density.spread, spread);
   applyThresholds(j, options.thresholds);
   return j;
