@@ -21,7 +21,9 @@ double Histogram::edge(int i) const {
   const int bins = static_cast<int>(weightFraction.size());
   if (i >= bins) return hi;
   const double a = binScale(lo, spacing), b = binScale(hi, spacing);
-  const double x = a + (b - a) * static_cast<double>(i) / static_cast<double>(bins);
+  const double f = static_cast<double>(i) / static_cast<double>(bins);
+  // Where the span overflows (values near both ends of the doubles), as a blend of the ends.
+  const double x = std::isinf(b - a) ? a * (1.0 - f) + b * f : a + (b - a) * static_cast<double>(i) / static_cast<double>(bins);
   return spacing == BinSpacing::Log2 ? std::exp2(x) : x;
 }
 
@@ -274,13 +276,16 @@ Statistics weightedStatistics(const double* values, const double* weights, std::
   Histogram& h = s.histogram;
   h.lo = s.min;
   h.hi = s.max;
-  const double a = binScale(h.lo, spacing), width = binScale(h.hi, spacing) - a;
+  // Where the span overflows (values near both ends of the doubles) the bins are placed by halves.
+  const double a = binScale(h.lo, spacing), b = binScale(h.hi, spacing);
+  const bool halve = std::isinf(b - a);
+  const double width = halve ? 0.5 * b - 0.5 * a : b - a, origin = halve ? 0.5 * a : a, scale = halve ? 0.5 : 1.0;
   // The same pass sums the weights exactly, for the percentiles.
   UVTK_CHECK(count < (std::size_t(1) << 32));
   const SumFormat format(lowestExponent, highestExponent);
   std::vector<std::uint64_t> whole(format.limbs(), 0);
   for (std::size_t i = 0; i < count; ++i) {
-    const double t = width > 0.0 ? (binScale(values[i], spacing) - a) / width : 0.0;
+    const double t = width > 0.0 ? (scale * binScale(values[i], spacing) - origin) / width : 0.0;
     const int bin = std::clamp(static_cast<int>(t * bins), 0, bins - 1);
     h.weightFraction[static_cast<std::size_t>(bin)] += weights[i] / s.totalWeight;
     format.add(whole.data(), weights[i]);

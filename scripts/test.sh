@@ -7,12 +7,17 @@
 # docs/robustness.md says what each part checks.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Each stage's start on stderr with the time so far, so that a slow run shows where its time went.
+stage() { echo "test: $1 at $((SECONDS / 60)) min $((SECONDS % 60)) s" >&2; }
+stage "release build"
 scripts/setup.sh build
 scripts/setup.sh --validator  # the glTF-Validator the tests of written glTF files run
+stage "release suite"
 ctest --test-dir build --output-on-failure -j "$(nproc)"
 
 # The installed API (docs/point-api.md): install the release build into build/install, then build and
 # run examples/ against that prefix alone, as a user would.
+stage "installed package"
 rm -rf build/install build/examples
 cmake --install build --prefix build/install >&2
 cmake -S examples -B build/examples -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$PWD/build/install" \
@@ -38,7 +43,11 @@ site=$(ls -d build/install/lib/python3*/site-packages)
 ls "$site"/uvtk*.so > /dev/null  # the module must have been built and installed
 PYTHONPATH="$PWD/$site" UVTK_BIN="$PWD/build/install/bin/uvtk" /usr/bin/python3 -m pytest -q -p no:cacheprovider tests/python
 
+stage "sanitizer build"
 scripts/setup.sh --fuzz
 # Leaks are errors (but those scripts/lsan.supp lists); any sanitizer report fails the test that made it.
+stage "sanitizer suite"
 ctest --test-dir build-fuzz --output-on-failure -j "$(nproc)"
+stage "fuzzing"
 scripts/fuzz.sh "${UVTK_FUZZ_SECONDS:-60}" build-fuzz
+stage "done"

@@ -40,3 +40,7 @@ void* operator new(std::size_t bytes) {
     handler();
   }
 }
+
+// The matching deletes, so that every tool watching malloc and free (valgrind, heaptrack) sees pairs.
+void operator delete(void* block) noexcept { std::free(block); }
+void operator delete(void* block, std::size_t) noexcept { std::free(block); }

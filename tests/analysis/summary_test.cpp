@@ -317,6 +317,17 @@ TEST(WeightedStatistics, PercentilesOfEqualValuesSignedZerosAndExtremeWeights) {
   EXPECT_EQ(zeros.p90, 1.0);
   expectPercentilesRecounted({1.0, 2.0, 3.0}, {std::numeric_limits<double>::denorm_min(), 1e300, 1e300}, "extreme weights");
   expectPercentilesRecounted({-1e308, 5e-324, 1e308}, {1.0, 2.0, 1.0}, "extreme values");
+  // Their histogram: the span overflows a double, yet each value falls in its bin (0, the middle,
+  // the last) and every edge is finite: -1e308, 0 in the middle, 1e308.
+  const Histogram h = weightedStatistics({-1e308, 5e-324, 1e308}, {1.0, 2.0, 1.0}, BinSpacing::Linear).histogram;
+  ASSERT_EQ(h.weightFraction.size(), 32u);
+  EXPECT_EQ(h.weightFraction[0], 0.25);
+  EXPECT_EQ(h.weightFraction[16], 0.5);
+  EXPECT_EQ(h.weightFraction[31], 0.25);
+  EXPECT_EQ(h.edge(0), -1e308);
+  EXPECT_EQ(h.edge(16), 0.0);
+  EXPECT_EQ(h.edge(32), 1e308);
+  for (int i = 0; i <= 32; ++i) EXPECT_TRUE(std::isfinite(h.edge(i))) << i;
 }
 
 // ---- Seams and poles ----
