@@ -49,7 +49,7 @@ std::size_t Blocks(double* out, std::size_t n, const Vector& vector, const Scala
 std::size_t HypotBlock(const double* x, const double* y, double* out, std::size_t n) {
   return Blocks(
       out, n,
-      [&](auto d, std::size_t i, auto& decided) {
+      [&]([[maybe_unused]] auto d, [[maybe_unused]] std::size_t i, [[maybe_unused]] auto& decided) {
 #if UVTK_LIBM_SIMD
         return Hypot(d, hn::LoadU(d, x + i), hn::LoadU(d, y + i), decided);
 #endif
@@ -60,7 +60,7 @@ std::size_t HypotBlock(const double* x, const double* y, double* out, std::size_
 std::size_t Log2Block(const double* x, double* out, std::size_t n) {
   return Blocks(
       out, n,
-      [&](auto d, std::size_t i, auto& decided) {
+      [&]([[maybe_unused]] auto d, [[maybe_unused]] std::size_t i, [[maybe_unused]] auto& decided) {
 #if UVTK_LIBM_SIMD
         return Log2(d, hn::LoadU(d, x + i), decided);
 #endif
@@ -71,7 +71,7 @@ std::size_t Log2Block(const double* x, double* out, std::size_t n) {
 std::size_t Atan2Block(const double* y, const double* x, double* out, std::size_t n) {
   return Blocks(
       out, n,
-      [&](auto d, std::size_t i, auto& decided) {
+      [&]([[maybe_unused]] auto d, [[maybe_unused]] std::size_t i, [[maybe_unused]] auto& decided) {
 #if UVTK_LIBM_SIMD
         return Atan2(d, hn::LoadU(d, y + i), hn::LoadU(d, x + i), decided);
 #endif

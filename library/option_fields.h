@@ -63,7 +63,7 @@ Field<Options> textField(const char* name, Value Options::*member) {
 
 template <class Options>
 Field<Options> numberField(const char* name, double Options::*member) {
-  return {name, [member, name](Options& o, const std::vector<std::string>& r) { o.*member = std::stod(r.back()); },
+  return {name, [member](Options& o, const std::vector<std::string>& r) { o.*member = std::stod(r.back()); },
           [name, member](const Options& o) {
             return o.*member == Options{}.*member ? std::vector<std::string>{}
                                                   : std::vector<std::string>{name, number(o.*member)};

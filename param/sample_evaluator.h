@@ -135,8 +135,10 @@ class SampleEvaluator {
 
 // The block's scratch is left uninitialised on purpose (it is written per valid sample and read
 // only for those); GCC cannot follow the states and warns.
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
   template <class PositionOf, class NormalOf>
   void block(std::size_t n, PositionOf position, NormalOf normal, Out* out) const {
     std::array<Vec3T<T>, kBlock> q;
@@ -172,7 +174,9 @@ class SampleEvaluator {
         out[i].uv = OutVec2::Zero(), out[i].state = CornerState::Invalid, out[i].reason = kCornerNotFinite;
     }
   }
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 
   S surface_;
   M mapping_;

@@ -57,8 +57,9 @@ class HostilePaths : public CliTest {
 TEST_F(HostilePaths, AFifoIsWrittenStraightAndStaysAFifo) {
   const std::string fifo = path("pipe.obj");
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
-  // The reader runs beside uvtk, as `uvtk map ... -o >(gzip > x.gz)` would.
-  const CliRun run = shell("cat " + fifo + " > " + path("got.obj") + " & " + std::string(UVTK_BINARY) + " map " +
+  // The reader runs beside uvtk, as `uvtk map ... -o >(gzip > x.gz)` would; it gives up after a
+  // minute, so that a uvtk that never opens the pipe fails the test instead of hanging it.
+  const CliRun run = shell("timeout 60 cat " + fifo + " > " + path("got.obj") + " & " + std::string(UVTK_BINARY) + " map " +
                            cube() + " --projector sphere -o " + fifo + " --quiet; status=$?; wait; exit $status");
   EXPECT_EQ(run.status, 0) << run.err;
   struct stat status {};

@@ -41,7 +41,9 @@ void expectConsistent(const Mapping& m, const std::string& what) {
   for (std::size_t c = 0; c < m.uv.size(); ++c) {
     EXPECT_TRUE(std::isfinite(m.uv[c][0]) && std::isfinite(m.uv[c][1])) << what << " corner " << c;
     EXPECT_EQ(m.state[c] == CornerState::Invalid, m.invalidReason[c] != InvalidReason::Valid) << what << " corner " << c;
-    if (m.state[c] == CornerState::Invalid) EXPECT_TRUE(m.faceFlags[c / 3] & kFaceInvalid) << what << " corner " << c;
+    if (m.state[c] == CornerState::Invalid) {
+      EXPECT_TRUE(m.faceFlags[c / 3] & kFaceInvalid) << what << " corner " << c;
+    }
   }
   EXPECT_TRUE(m.verdict.status == "pass" || m.verdict.status == "warn" || m.verdict.status == "fail") << what;
   EXPECT_EQ(m.verdict.status == "pass", m.verdict.reasons.empty()) << what;
