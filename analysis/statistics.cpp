@@ -21,10 +21,12 @@ double Histogram::edge(int i) const {
   const int bins = static_cast<int>(weightFraction.size());
   if (i >= bins) return hi;
   const double a = binScale(lo, spacing), b = binScale(hi, spacing);
-  double x = a + (b - a) * static_cast<double>(i) / static_cast<double>(bins);
+  double x;
   if (std::isinf(b - a)) {  // values near both ends of the doubles: a blend of the ends
     const double f = static_cast<double>(i) / static_cast<double>(bins);
     x = a * (1.0 - f) + b * f;
+  } else {
+    x = a + (b - a) * static_cast<double>(i) / static_cast<double>(bins);
   }
   return spacing == BinSpacing::Log2 ? std::exp2(x) : x;
 }
