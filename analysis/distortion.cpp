@@ -100,19 +100,32 @@ double scaleOfExtent(const Box& box) {
   return std::ldexp(1.0, -std::ilogb(extent));
 }
 
-}  // namespace
-
-double measureLengthScale(const Mesh& mesh) {
-  Eigen::AlignedBox3d box;
-  for (const Vec3& p : mesh.positions) box.extend(p);
-  return scaleOfExtent(box);
+// The bounding box of the points extended into it by extend(box, i) for i in [0, count), in chunks
+// on threads: a box is a minimum and a maximum, the same in any order.
+template <class Box, class Extend>
+Box boundsOnThreads(std::size_t count, int threads, Extend extend) {
+  constexpr std::size_t kChunk = std::size_t(1) << 16;
+  std::vector<Box> boxes((count + kChunk - 1) / kChunk);
+  parallelFor(int(boxes.size()), threads, [&](int c) {
+    for (std::size_t i = std::size_t(c) * kChunk; i < std::min(count, std::size_t(c + 1) * kChunk); ++i)
+      extend(boxes[std::size_t(c)], i);
+  });
+  Box box;
+  for (const Box& b : boxes) box.extend(b);
+  return box;
 }
 
-double measureUvScale(const UvMap& uv) {
-  Eigen::AlignedBox2d box;
-  for (std::size_t corner = 0; corner < uv.uv.size(); ++corner)
+}  // namespace
+
+double measureLengthScale(const Mesh& mesh, int threads) {
+  return scaleOfExtent(boundsOnThreads<Eigen::AlignedBox3d>(
+      mesh.positions.size(), threads, [&](Eigen::AlignedBox3d& box, std::size_t i) { box.extend(mesh.positions[i]); }));
+}
+
+double measureUvScale(const UvMap& uv, int threads) {
+  return scaleOfExtent(boundsOnThreads<Eigen::AlignedBox2d>(uv.uv.size(), threads, [&](Eigen::AlignedBox2d& box, std::size_t corner) {
     if (uv.cornerInvalid.empty() || uv.cornerInvalid[corner] == kCornerValid) box.extend(uv.uv[corner]);
-  return scaleOfExtent(box);
+  }));
 }
 
 std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const DistortionOptions& options,
@@ -120,7 +133,7 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
   const std::size_t faceCount = mesh.triangles.size();
   UVTK_CHECK(uv.uv.size() == 3 * faceCount && uv.faceFlags.size() == faceCount);
   UVTK_CHECK(uv.cornerInvalid.empty() || uv.cornerInvalid.size() == 3 * faceCount);
-  const double scale = measureLengthScale(mesh), uvScale = measureUvScale(uv);
+  const double scale = measureLengthScale(mesh, threads), uvScale = measureUvScale(uv, threads);
   auto edges = [&](std::size_t f) {
     const Triangle& t = mesh.triangles[f];
     return Edges(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], scale);
@@ -147,7 +160,7 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
 
   // First pass: areas, and the statuses that need no mesh-wide decision.
   std::vector<FaceDistortion> faces;
-  resizeOnHugePages(faces, faceCount);
+  resizeOnHugePages(faces, faceCount, threads);
   enum : std::uint8_t { kCounterClockwise = 1, kClockwise = 2, kTurnedAway = 4 };
   std::vector<std::uint8_t> orientation(faceCount, 0);  // of the ok faces, for the second pass
   std::vector<double> votes(std::size_t(chunks), 0.0);  // per chunk, 3D area voting for counter-clockwise UV winding minus area against it

@@ -97,12 +97,13 @@ struct DistortionOptions {
 // neither underflow to 0 (every face zero_area_3d) nor overflow (NaN stretches). The normalised measures (area
 // distortion, the summary's stretches, the verdict) do not depend on it; A3, the singular values
 // and the raw stretches are in object units times it.
-double measureLengthScale(const Mesh& mesh);
+// `threads` (0: one per core) share the positions; the result does not depend on them.
+double measureLengthScale(const Mesh& mesh, int threads = 1);
 
 // The same for the valid corners' UVs (a two-plane layout of a mesh at 1e200 spans about 1e200), so
 // that UV areas and the Jacobian's determinant neither overflow nor underflow. Auv, the singular
 // values and the raw stretches are in UV units times it; the normalised measures do not depend on it.
-double measureUvScale(const UvMap& uv);
+double measureUvScale(const UvMap& uv, int threads = 1);
 
 // One FaceDistortion per triangle of `mesh`. Precondition: `uv` has 3 corners per triangle.
 // `threads` (0: one per core) share the faces; the result does not depend on them.

@@ -281,7 +281,7 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
   // The ok faces at or above the stretch's p99, and at either end of the density's spread (at or
   // below p10, at or above p90): counted in chunks on threads.
   const double p99 = j.summary.l2Stretches.p99;
-  const double normalisation = std::sqrt(1.0 / okAreaTotals(j.faces).surfacePerUv());
+  const double normalisation = std::sqrt(1.0 / j.summary.okTotals.surfacePerUv());
   const TexelDensity& density = j.summary.density;
   std::vector<std::array<std::size_t, 2>> ends(static_cast<std::size_t>(chunks), {0, 0});  // stretched, spread
   parallelFor(chunks, options.threads, [&](int c) {

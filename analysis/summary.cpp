@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "core/huge_pages.h"
 #include "core/parallel.h"
 
 namespace uvtk::analysis {
@@ -43,31 +44,50 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
   UVTK_CHECK(faces.size() == mesh.triangles.size() && uv.uv.size() == 3 * faces.size() &&
              uv.faceFlags.size() == faces.size() && textureSize.width >= 1 && textureSize.height >= 1);
   Summary s;
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    ++s.statusCounts.faces[static_cast<std::size_t>(faces[f].status)];
-    s.poleFaces += uv.faceHas(f, kFacePole) ? 1 : 0;
+  // The counts in fixed chunks on threads, and where each chunk's ok faces begin among all of them.
+  constexpr std::size_t kChunk = std::size_t(1) << 16;
+  const std::size_t chunks = (faces.size() + kChunk - 1) / kChunk;
+  const auto chunkEnd = [&](std::size_t c) { return std::min(faces.size(), (c + 1) * kChunk); };
+  std::vector<StatusCounts> chunkCounts(chunks);
+  std::vector<std::size_t> chunkPoleFaces(chunks), okBefore(chunks + 1, 0);
+  parallelFor(int(chunks), threads, [&](int c) {
+    for (std::size_t f = std::size_t(c) * kChunk; f < chunkEnd(std::size_t(c)); ++f) {
+      ++chunkCounts[std::size_t(c)].faces[static_cast<std::size_t>(faces[f].status)];
+      chunkPoleFaces[std::size_t(c)] += uv.faceHas(f, kFacePole) ? 1 : 0;
+    }
+  });
+  for (std::size_t c = 0; c < chunks; ++c) {
+    for (std::size_t k = 0; k < kFaceStatusCount; ++k) s.statusCounts.faces[k] += chunkCounts[c].faces[k];
+    s.poleFaces += chunkPoleFaces[c];
+    okBefore[c + 1] = okBefore[c] + chunkCounts[c][FaceStatus::Ok];
   }
 
   // Sander et al. 2001, "Texture stretch metric": L2(M) = sqrt(sum(A3 L2^2) / sum(A3)), Linf(M) = max Linf, each
-  // times sqrt(sum(Auv) / sum(A3)) so that a uniformly scaled layout scores as the isometry.
-  const AreaTotals totals = okAreaTotals(faces);
-  const double normalisation = std::sqrt(1.0 / totals.surfacePerUv());
+  // times sqrt(sum(Auv) / sum(A3)) so that a uniformly scaled layout scores as the isometry. The sums in face
+  // order, one pass; max(Linf) times the positive normalisation is max(Linf times it), rounding being monotonic.
+  AreaTotals& totals = s.okTotals;
   double l2Squares = 0.0, linfMax = 0.0;
   for (const FaceDistortion& face : faces) {
     if (face.status != FaceStatus::Ok) continue;
+    totals.surface += face.area3d, totals.uv += face.areaUv;
     l2Squares += face.area3d * face.l2Stretch() * face.l2Stretch();
-    linfMax = std::max(linfMax, face.linfStretch() * normalisation);
+    linfMax = std::max(linfMax, face.linfStretch());
   }
+  const double normalisation = std::sqrt(1.0 / totals.surfacePerUv());
   if (totals.surface > 0.0) {
     s.l2Stretch = std::sqrt(l2Squares / totals.surface) * normalisation;
-    s.linfStretch = linfMax;
+    s.linfStretch = linfMax * normalisation;
   }
-  // Each statistic of the ok faces' values weighted by their 3D areas: the areas gathered once, each
-  // measure's values where its statistic is computed, 8 bytes a face (the statistic reads them a few times).
+  // Each statistic of the ok faces' values weighted by their 3D areas: the areas gathered once (on
+  // threads, each chunk's at its place), each measure's values where its statistic is computed, 8 bytes
+  // a face (the statistic reads them a few times).
   std::vector<double> okAreas;
-  okAreas.reserve(s.statusCounts[FaceStatus::Ok]);
-  for (const FaceDistortion& face : faces)
-    if (face.status == FaceStatus::Ok) okAreas.push_back(face.area3d);
+  resizeOnHugePages(okAreas, okBefore[chunks], threads);
+  parallelFor(int(chunks), threads, [&](int c) {
+    double* out = okAreas.data() + okBefore[std::size_t(c)];
+    for (std::size_t f = std::size_t(c) * kChunk; f < chunkEnd(std::size_t(c)); ++f)
+      if (faces[f].status == FaceStatus::Ok) *out++ = faces[f].area3d;
+  });
   const auto statistics = [&](auto valueOf, BinSpacing spacing) {
     std::vector<double> values;
     values.reserve(okAreas.size());
@@ -75,11 +95,15 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
       if (face.status == FaceStatus::Ok) values.push_back(valueOf(face));
     return weightedStatistics(values, okAreas, spacing);
   };
+  // The longest first (the seam edges sort every half-edge; the density measures the scales again), so
+  // that the last task to start is a short one.
   const std::function<void()> measures[] = {
-      [&] { s.angleDistortion = statistics([](const FaceDistortion& f) { return f.angleDistortion(); }, BinSpacing::Log2); },
-      [&] { s.areaDistortion = statistics([](const FaceDistortion& f) { return f.areaDistortion; }, BinSpacing::Linear); },
-      [&] { s.l2Stretches = statistics([&](const FaceDistortion& f) { return f.l2Stretch() * normalisation; }, BinSpacing::Log2); },
-      [&] { s.linfStretches = statistics([&](const FaceDistortion& f) { return f.linfStretch() * normalisation; }, BinSpacing::Log2); },
+      [&] { s.seams = classifySeamEdges(mesh, uv, s.poleVertices); },
+      [&] {
+        for (std::size_t corner = 0; corner < uv.uv.size(); ++corner)
+          if (uv.cornerInvalid.empty() || uv.cornerInvalid[corner] == 0) s.uvBounds.extend(uv.uv[corner]);
+        s.overlap = measureOverlap(uv, faces, overlapResolution);
+      },
       [&] {
         s.density.textureSize = textureSize;
         s.density.exponent = std::ilogb(measureLengthScale(mesh)) - std::ilogb(measureUvScale(uv));
@@ -87,15 +111,13 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
                                       BinSpacing::Log2);
         unscale(s.density);
       },
-      [&] { s.seams = classifySeamEdges(mesh, uv, s.poleVertices); },
-      [&] {
-        for (std::size_t corner = 0; corner < uv.uv.size(); ++corner)
-          if (uv.cornerInvalid.empty() || uv.cornerInvalid[corner] == 0) s.uvBounds.extend(uv.uv[corner]);
-        s.overlap = measureOverlap(uv, faces, overlapResolution);
-      }};
+      [&] { s.angleDistortion = statistics([](const FaceDistortion& f) { return f.angleDistortion(); }, BinSpacing::Log2); },
+      [&] { s.areaDistortion = statistics([](const FaceDistortion& f) { return f.areaDistortion; }, BinSpacing::Linear); },
+      [&] { s.l2Stretches = statistics([&](const FaceDistortion& f) { return f.l2Stretch() * normalisation; }, BinSpacing::Log2); },
+      [&] { s.linfStretches = statistics([&](const FaceDistortion& f) { return f.linfStretch() * normalisation; }, BinSpacing::Log2); }};
   s.poleVertices = poleVertices ? *poleVertices : fannedPoleVertices(mesh, uv);
   std::sort(s.poleVertices.begin(), s.poleVertices.end());
-  // Seven independent measures side by side: the statistics, the density, the seams, the overlap and bounds.
+  // Seven independent measures side by side: the seams, the overlap and bounds, the density, the statistics.
   parallelFor(int(std::size(measures)), threads, [&](int k) { measures[k](); });
   return s;
 }

@@ -50,6 +50,7 @@ double texelDensity(const FaceDistortion& face, const TexelDensity& density);
 
 struct Summary {
   StatusCounts statusCounts;
+  AreaTotals okTotals;  // okAreaTotals(faces): the normalisation of the stretches
   // sqrt(sum(A3 L2^2) / sum(A3)) sqrt(sum(Auv) / sum(A3)); 0 when there is no ok face.
   double l2Stretch = 0.0;
   // max(Linf) sqrt(sum(Auv) / sum(A3)); 0 when there is no ok face.

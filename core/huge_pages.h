@@ -6,8 +6,11 @@
 
 #include <sys/mman.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+
+#include "core/parallel.h"
 
 namespace uvtk {
 
@@ -20,11 +23,30 @@ inline void adviseHugePages(const void* data, std::size_t bytes) {
   if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
 }
 
-// A vector of n elements whose storage is advised before its elements are constructed.
+// The pages of [data, data + bytes) faulted in on `threads` threads (0: one per core), so that the
+// kernel's clearing of fresh pages, a fifth of `uvtk map`'s CPU time on a paravirtualised guest, is
+// shared by the cores instead of falling on the one thread that constructs the elements. Where the
+// kernel lacks MADV_POPULATE_WRITE (before Linux 5.14) the first touch faults them as before.
+inline void prefaultPages(const void* data, std::size_t bytes, int threads) {
+  constexpr std::uintptr_t kHugePage = std::uintptr_t(1) << 21, kPiece = std::uintptr_t(1) << 24;
+  const int workers = threadCount(threads);
+  if (workers <= 1 || bytes < 2 * kPiece) return;  // small blocks: one thread is as fast
+  const auto start = reinterpret_cast<std::uintptr_t>(data);
+  const std::uintptr_t begin = (start + kHugePage - 1) & ~(kHugePage - 1), end = (start + bytes) & ~(kHugePage - 1);
+  const int pieces = int((end - begin + kPiece - 1) / kPiece);
+  parallelFor(pieces, workers, [&](int i) {
+    const std::uintptr_t from = begin + std::uintptr_t(i) * kPiece, to = std::min(end, from + kPiece);
+    madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
+  });
+}
+
+// A vector of n elements whose storage is advised, and faulted in on `threads` threads (0: one per
+// core), before its elements are constructed.
 template <typename Vector>
-void resizeOnHugePages(Vector& v, std::size_t n) {
+void resizeOnHugePages(Vector& v, std::size_t n, int threads = 1) {
   v.reserve(n);
   adviseHugePages(v.data(), n * sizeof(*v.data()));
+  if (n > v.size()) prefaultPages(v.data() + v.size(), (n - v.size()) * sizeof(*v.data()), threads);
   v.resize(n);
 }
 

@@ -776,14 +776,14 @@ ReadMeshResult joinObjChunks(std::vector<ObjChunk>& chunks, const std::string& n
     mesh.cornerTexcoords = std::move(c.cornerTexcoords);
     mesh.cornerNormals = std::move(c.cornerNormals);
   } else {
-    resizeOnHugePages(mesh.positions, before[n][kPositionTable]);
-    resizeOnHugePages(mesh.texcoords, before[n][kTexcoordTable]);
-    resizeOnHugePages(mesh.normals, before[n][kNormalTable]);
-    resizeOnHugePages(mesh.triangles, trianglesBefore[n]);
+    resizeOnHugePages(mesh.positions, before[n][kPositionTable], threads);
+    resizeOnHugePages(mesh.texcoords, before[n][kTexcoordTable], threads);
+    resizeOnHugePages(mesh.normals, before[n][kNormalTable], threads);
+    resizeOnHugePages(mesh.triangles, trianglesBefore[n], threads);
     const bool texcoords = anyCornerTable(chunks, &ObjChunk::cornerTexcoords);
     const bool normals = anyCornerTable(chunks, &ObjChunk::cornerNormals);
-    if (texcoords) resizeOnHugePages(mesh.cornerTexcoords, trianglesBefore[n]);
-    if (normals) resizeOnHugePages(mesh.cornerNormals, trianglesBefore[n]);
+    if (texcoords) resizeOnHugePages(mesh.cornerTexcoords, trianglesBefore[n], threads);
+    if (normals) resizeOnHugePages(mesh.cornerNormals, trianglesBefore[n], threads);
     // Each chunk's memory is given back as soon as it is copied, so the mesh is never held twice whole.
     parallelFor(n, threads, [&](int i) {
       ObjChunk& c = chunks[i];

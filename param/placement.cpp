@@ -152,11 +152,17 @@ UnitBox toUnitBox(const std::vector<Vec3>& positions) {
   box.exponent = half > 0.0 ? std::ilogb(half) + 1 : 0;
   const bool overflows = !(hi - lo).allFinite();
   for (int a = 0; a < 3; ++a) box.flat[std::size_t(a)] = lo[a] == hi[a];
+  // Times 2^shift: a product where that power is a double (the same correctly rounded value as ldexp's).
+  const int shift = overflows ? 1 - box.exponent : -box.exponent;
+  const bool product = shift >= -1074 && shift <= 1023;
+  const double factor = product ? std::ldexp(1.0, shift) : 0.0;
   box.unit.reserve(positions.size());
   for (const Vec3& p : positions) {
     Vec3 u;
-    for (int a = 0; a < 3; ++a)
-      u[a] = overflows ? std::ldexp(0.5 * p[a] - 0.5 * lo[a], 1 - box.exponent) : std::ldexp(p[a] - lo[a], -box.exponent);
+    for (int a = 0; a < 3; ++a) {
+      const double offset = overflows ? 0.5 * p[a] - 0.5 * lo[a] : p[a] - lo[a];
+      u[a] = product ? offset * factor : std::ldexp(offset, shift);
+    }
     box.unit.push_back(u);
   }
   return box;

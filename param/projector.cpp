@@ -105,7 +105,7 @@ Evaluated evaluateCorners(const S& surface, const M& mapping, const Mesh& mesh, 
   const std::size_t faceCount = mesh.triangles.size();
   Evaluated result;
   CornerField& c = result.corners;
-  c.resize(faceCount);
+  c.resize(faceCount, threads);
 
   // Normals only when the O-mapping needs them; the file's normals are per corner.
   const bool perCorner = M::kNeedsNormal && mesh.hasNormals();
@@ -234,7 +234,7 @@ Evaluated evaluateCamera(const Mesh& mesh, const CameraProjector& camera, int th
   const std::size_t faceCount = mesh.triangles.size();
   Evaluated result;
   CornerField& c = result.corners;
-  c.resize(faceCount);
+  c.resize(faceCount, threads);
   result.evaluateAt = [transform](const Vec3& p, const Vec3&) { return cameraVertexUv(transform, p); };
   const int chunks = int((faceCount + kSamplesPerReport - 1) / kSamplesPerReport);
   parallelFor(chunks, threads, [&](int chunk) {
@@ -266,7 +266,7 @@ Evaluated evaluateTriplanar(const Mesh& mesh, const Affine3& localFromObject, co
   const std::size_t faceCount = mesh.triangles.size();
   Evaluated result;
   CornerField& c = result.corners;
-  c.resize(faceCount);
+  c.resize(faceCount, threads);
   result.triplanarAxis.resize(faceCount);
   result.evaluateAt = [frame, options](const Vec3& p, const Vec3& n) {
     return triplanarVertexUv(options, dominantAxis(frame.normal(n)), frame.point(p));
@@ -325,7 +325,7 @@ void mapVerticesThroughKernel(const ProjectorOptions& o, const Affine3& localFro
     throw UsageError("this O-mapping needs one normal per position");
   const LocalFrameT<T> frame(localFromObject);
   const std::size_t n = positions.size();
-  resizeOnHugePages(out, n);
+  resizeOnHugePages(out, n, threads);
   const int chunks = threadCount(threads);
   const std::size_t size = (n / std::size_t(chunks) + 255) / 256 * 256;
   parallelFor(chunks, chunks, [&](int chunk) {
@@ -407,7 +407,7 @@ void mapVertices(const ProjectorOptions& o, const Affine3& localFromObject, cons
   checkOptions(o);
   if (o.surface == SurfaceKind::Camera) {
     const CameraTransform camera(o.camera);
-    resizeOnHugePages(out, positions.size());
+    resizeOnHugePages(out, positions.size(), threads);
     parallelFor(threadCount(threads), threads, [&](int chunk) {
       const std::size_t n = positions.size(), chunks = std::size_t(threadCount(threads));
       for (std::size_t i = n * std::size_t(chunk) / chunks; i < n * (std::size_t(chunk) + 1) / chunks; ++i)

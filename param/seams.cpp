@@ -9,8 +9,8 @@
 
 namespace uvtk::param {
 
-void CornerField::resize(std::size_t faceCount) {
-  resizeOnHugePages(uv, 3 * faceCount);
+void CornerField::resize(std::size_t faceCount, int threads) {
+  resizeOnHugePages(uv, 3 * faceCount, threads);
   state.assign(3 * faceCount, CornerState::Invalid);
   reason.assign(3 * faceCount, kCornerMiss);
   faceFlags.assign(faceCount, kFaceOk);

@@ -19,7 +19,8 @@ struct CornerField {
   std::vector<CornerInvalid> reason;  // kCornerValid exactly where state is not Invalid
   std::vector<std::uint8_t> faceFlags;
 
-  void resize(std::size_t faceCount);  // UVs left uninitialised: every corner is written once
+  // UVs left uninitialised (every corner is written once), their pages faulted in on `threads` threads.
+  void resize(std::size_t faceCount, int threads = 1);
   // Corner i has no (u, v), for `why`: written (0, 0), its face flagged kFaceInvalid.
   void invalidate(std::size_t i, CornerInvalid why);
   UvMap toUvMap() &&;  // invalid corners become (0, 0) with their reason in cornerInvalid

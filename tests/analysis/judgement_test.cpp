@@ -228,5 +228,68 @@ TEST(Judgement, NothingThatPassesOnRealLookingMeshesHasAMirroredFaceOrAFarUv) {
   EXPECT_GT(passed, 0);
 }
 
+// Every part of a judgement is the same whatever the thread count: the faces, counted and summed in
+// fixed chunks; the bounds and the ok faces' areas, gathered in chunks on threads; the summary's
+// seven tasks, run side by side. The knot has 3 chunks of faces, flipped and stretched faces, seams.
+void expectSameStatistics(const Statistics& a, const Statistics& b) {
+  EXPECT_EQ(a.totalWeight, b.totalWeight);
+  EXPECT_EQ(a.mean, b.mean);
+  EXPECT_EQ(a.p10, b.p10);
+  EXPECT_EQ(a.p50, b.p50);
+  EXPECT_EQ(a.p90, b.p90);
+  EXPECT_EQ(a.p99, b.p99);
+  EXPECT_EQ(a.min, b.min);
+  EXPECT_EQ(a.max, b.max);
+  EXPECT_EQ(a.histogram.weightFraction, b.histogram.weightFraction);
+}
+
+TEST(Judgement, DoesNotDependOnTheThreadCount) {
+  const Mesh knot = meshes::torusKnot(2, 3, 1200, 60);
+  ASSERT_GT(knot.faceCount(), std::size_t(2) << 16);
+  param::ProjectorOptions o;
+  o.surface = param::SurfaceKind::Cylinder;
+  o.placement.fit = param::Fit::BBox;
+  const param::Projection p = param::project(knot, o);
+  JudgementOptions options;
+  options.wrapsU = true;
+  options.threads = 1;
+  const Judgement one = judge(knot, p.uv, options);
+  ASSERT_EQ(one.verdict, Verdict::Fail);
+  ASSERT_GT(one.statusCount(FaceStatus::Flipped), 0u);
+  ASSERT_GT(one.summary.seams.wrapEdges + one.summary.seams.cutEdges, 0u);
+  for (const int threads : {2, 3, 0}) {
+    SCOPED_TRACE("threads " + std::to_string(threads));
+    options.threads = threads;
+    const Judgement j = judge(knot, p.uv, options);
+    ASSERT_EQ(j.faces.size(), one.faces.size());
+    std::size_t differentFaces = 0;
+    for (std::size_t f = 0; f < j.faces.size(); ++f) {
+      const FaceDistortion &a = j.faces[f], &b = one.faces[f];
+      differentFaces += a.status != b.status || a.area3d != b.area3d || a.areaUv != b.areaUv ||
+                        a.sigmaMax != b.sigmaMax || a.sigmaMin != b.sigmaMin || a.areaDistortion != b.areaDistortion;
+    }
+    EXPECT_EQ(differentFaces, 0u);
+    EXPECT_EQ(j.summary.statusCounts.faces, one.summary.statusCounts.faces);
+    EXPECT_EQ(j.summary.okTotals.surface, one.summary.okTotals.surface);
+    EXPECT_EQ(j.summary.okTotals.uv, one.summary.okTotals.uv);
+    EXPECT_EQ(j.summary.l2Stretch, one.summary.l2Stretch);
+    EXPECT_EQ(j.summary.linfStretch, one.summary.linfStretch);
+    expectSameStatistics(j.summary.angleDistortion, one.summary.angleDistortion);
+    expectSameStatistics(j.summary.areaDistortion, one.summary.areaDistortion);
+    expectSameStatistics(j.summary.l2Stretches, one.summary.l2Stretches);
+    expectSameStatistics(j.summary.linfStretches, one.summary.linfStretches);
+    expectSameStatistics(j.summary.density.scaled, one.summary.density.scaled);
+    EXPECT_EQ(j.summary.seams.wrapEdges, one.summary.seams.wrapEdges);
+    EXPECT_EQ(j.summary.seams.cutEdges, one.summary.seams.cutEdges);
+    EXPECT_EQ(j.summary.seams.length(), one.summary.seams.length());
+    EXPECT_EQ(j.summary.overlap.overlappedPixels, one.summary.overlap.overlappedPixels);
+    EXPECT_EQ(j.summary.uvBounds.min(), one.summary.uvBounds.min());
+    EXPECT_EQ(j.summary.uvBounds.max(), one.summary.uvBounds.max());
+    EXPECT_EQ(j.values, one.values);
+    EXPECT_EQ(j.ruleFaces, one.ruleFaces);
+    EXPECT_EQ(j.reasonsText(), one.reasonsText());
+  }
+}
+
 }  // namespace
 }  // namespace uvtk::analysis

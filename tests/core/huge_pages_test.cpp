@@ -27,6 +27,22 @@ TEST(HugePages, ResizeGivesValueInitialisedElements) {
   EXPECT_EQ(small, std::vector<int>(3, 0));
 }
 
+// Faulted in on threads first (blocks of 32 MiB or more), the elements are the same: the old ones
+// kept, the new ones value-initialised.
+TEST(HugePages, ResizeOnThreadsKeepsAndValueInitialises) {
+  for (const int threads : {1, 2, 3}) {
+    std::vector<double> v{1.0, -2.0, 3.0};
+    resizeOnHugePages(v, std::size_t(5) << 20, threads);  // 40 MiB
+    ASSERT_EQ(v.size(), std::size_t(5) << 20);
+    EXPECT_EQ(v[0], 1.0);
+    EXPECT_EQ(v[1], -2.0);
+    EXPECT_EQ(v[2], 3.0);
+    std::size_t nonZero = 0;
+    for (std::size_t i = 3; i < v.size(); ++i) nonZero += v[i] != 0.0;
+    EXPECT_EQ(nonZero, 0u) << threads << " threads";
+  }
+}
+
 // The AnonHugePages of the mapping that holds `address`, in kB; -1 when not found.
 long anonHugePagesKb(const void* address) {
   std::ifstream smaps("/proc/self/smaps");
