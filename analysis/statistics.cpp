@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <vector>
 
 #include "core/error.h"
@@ -144,18 +145,46 @@ struct Search {
 // Keys are refined this many bits a pass: 2048 buckets, whose counts and sums stay in the caches.
 constexpr int kDigitBits = 11;
 constexpr std::size_t kBuckets = std::size_t(1) << kDigitBits;
-// A bucket of at most this many items is gathered and sorted rather than refined again.
-constexpr std::size_t kGatherItems = std::size_t(1) << 12;
+// A bucket of at most this many items is gathered and sorted rather than refined again: sorting
+// 2^17 items takes a few milliseconds, a pass over millions of items tens.
+constexpr std::size_t kGatherItems = std::size_t(1) << 17;
+
+// The count and exact weight of each value of the digit below the top `bits` bits of the keys, per
+// range of keys sharing those bits (a range numbered by the caller): one pass of the search.
+struct DigitTally {
+  std::uint64_t prefix = 0;  // a key of the first range
+  int bits = 0, digit = 0, shift = 0;
+  std::uint64_t mask = 0;
+  std::vector<std::size_t> counts;  // per range, kBuckets buckets
+  std::vector<std::uint64_t> sums;  // per range and bucket, format.limbs() limbs
+
+  DigitTally(const SumFormat& format, std::uint64_t prefix_, int bits_, std::size_t ranges)
+      : prefix(prefix_),
+        bits(bits_),
+        digit(std::min(kDigitBits, 64 - bits_)),
+        shift(64 - bits_ - digit),
+        mask((std::uint64_t(1) << digit) - 1),
+        counts(ranges * kBuckets, 0),
+        sums(ranges * kBuckets * format.limbs(), 0) {}
+
+  // One item of the range numbered `range`.
+  void add(const SumFormat& format, std::size_t range, std::uint64_t key, double weight) {
+    const std::size_t bucket = range * kBuckets + ((key >> shift) & mask);
+    ++counts[bucket];
+    format.add(sums.data() + bucket * format.limbs(), weight);
+  }
+};
 
 // Each pass over the items counts and sums the next digit of the keys in every open search's
 // range, and keeps the bucket where the search's running weight reaches its target, until that
 // bucket is small enough to sort or the key is whole (one value). O(n) a pass; nothing is copied
 // but the last bucket's few items.
+// `first`, when given, is the first pass already counted (with another pass over the items) for the
+// range every search starts in.
 void findPercentiles(const double* values, const double* weights, std::size_t count, const SumFormat& format,
-                     std::vector<Search>& searches) {
+                     std::vector<Search>& searches, DigitTally* first = nullptr) {
   const std::size_t limbs = format.limbs();
-  std::vector<std::size_t> counts;
-  std::vector<std::uint64_t> sums, running(limbs), after(limbs);
+  std::vector<std::uint64_t> running(limbs), after(limbs);
   std::vector<Search*> gather;
   for (;;) {
     // The distinct ranges refined (every open search has as many bits fixed); a whole key is one value.
@@ -166,20 +195,22 @@ void findPercentiles(const double* values, const double* weights, std::size_t co
     for (Search* s : open)
       if (std::find(ranges.begin(), ranges.end(), s->prefix) == ranges.end()) ranges.push_back(s->prefix);
     if (ranges.empty()) break;
-    const int bits = open.front()->bits, digit = std::min(kDigitBits, 64 - bits), shift = 64 - bits - digit;
-    const std::uint64_t mask = (std::uint64_t(1) << digit) - 1;
-    counts.assign(ranges.size() * kBuckets, 0);
-    sums.assign(ranges.size() * kBuckets * limbs, 0);
-    for (std::size_t i = 0; i < count; ++i) {
+    const int bits = open.front()->bits;
+    const bool counted = first != nullptr && ranges.size() == 1 && ranges[0] == first->prefix && bits == first->bits;
+    DigitTally tally = counted ? std::move(*first) : DigitTally(format, ranges[0], bits, ranges.size());
+    first = nullptr;
+    for (std::size_t i = 0; i < count && !counted; ++i) {
       const std::uint64_t key = orderKey(values[i]);
       for (std::size_t r = 0; r < ranges.size(); ++r)
         if (bits == 0 || (key ^ ranges[r]) >> (64 - bits) == 0) {
-          const std::size_t bucket = r * kBuckets + ((key >> shift) & mask);
-          ++counts[bucket];
-          format.add(sums.data() + bucket * limbs, weights[i]);
+          tally.add(format, r, key, weights[i]);
           break;
         }
     }
+    const int digit = tally.digit, shift = tally.shift;
+    const std::uint64_t mask = tally.mask;
+    const std::vector<std::size_t>& counts = tally.counts;
+    const std::vector<std::uint64_t>& sums = tally.sums;
     for (Search* s : open) {
       const std::size_t r = std::size_t(std::find(ranges.begin(), ranges.end(), s->prefix) - ranges.begin());
       // The first non-empty bucket at which the running weight reaches the target; one always
@@ -284,22 +315,33 @@ Statistics weightedStatistics(const double* values, const double* weights, std::
   const double a = binScale(h.lo, spacing), b = binScale(h.hi, spacing);
   const bool halve = std::isinf(b - a);
   const double width = halve ? 0.5 * b - 0.5 * a : b - a, origin = halve ? 0.5 * a : a, scale = halve ? 0.5 : 1.0;
-  // The same pass sums the weights exactly, for the percentiles.
+  // The same pass is the percentiles' first: every key shares its top `common` bits with the
+  // smallest value's, and the next digit's counts and exact weights are tallied (when the values
+  // differ; else the weights are summed exactly as they are).
   UVTK_CHECK(count < (std::size_t(1) << 32));
   const SumFormat format(lowestExponent, highestExponent);
+  const std::uint64_t lowest = orderKey(s.min), highest = orderKey(s.max);
+  const int common = lowest == highest ? 64 : __builtin_clzll(lowest ^ highest);
+  std::optional<DigitTally> first;
+  if (common < 64) first.emplace(format, lowest, common, 1);
   std::vector<std::uint64_t> whole(format.limbs(), 0);
   for (std::size_t i = 0; i < count; ++i) {
     const double t = width > 0.0 ? (scale * binScale(values[i], spacing) - origin) / width : 0.0;
     const int bin = std::clamp(static_cast<int>(t * bins), 0, bins - 1);
     h.weightFraction[static_cast<std::size_t>(bin)] += weights[i] / s.totalWeight;
-    format.add(whole.data(), weights[i]);
+    if (first)
+      first->add(format, 0, orderKey(values[i]), weights[i]);
+    else
+      format.add(whole.data(), weights[i]);
   }
+  // The whole weight, the buckets' added (fewer than 2^32 items: no limb overflows before the carries).
+  for (std::size_t bucket = 0; first && bucket < kBuckets; ++bucket)
+    format.addSum(whole.data(), first->sums.data() + bucket * format.limbs());
   format.normalise(whole.data());
 
   // The percentiles, their targets a fraction of the total as summed in order above.
   const double fractions[4] = {0.10, 0.50, 0.90, 0.99};
   double* const percentiles[4] = {&s.p10, &s.p50, &s.p90, &s.p99};
-  const std::uint64_t lowest = orderKey(s.min), highest = orderKey(s.max);
   std::vector<Search> searches(4);
   for (int k = 0; k < 4; ++k) {
     Search& search = searches[std::size_t(k)];
@@ -307,11 +349,11 @@ Statistics weightedStatistics(const double* values, const double* weights, std::
     format.setCeiling(search.target.data(), fractions[k] * s.totalWeight);
     search.below.assign(format.limbs(), 0);
     search.prefix = lowest;
-    search.bits = lowest == highest ? 64 : __builtin_clzll(lowest ^ highest);
+    search.bits = common;
     // Rounding may leave the whole weight short of the target: then the largest value.
     if (!format.atLeast(whole.data(), search.target.data())) search.found = true, search.answer = s.max;
   }
-  findPercentiles(values, weights, count, format, searches);
+  findPercentiles(values, weights, count, format, searches, first ? &*first : nullptr);
   for (int k = 0; k < 4; ++k) *percentiles[k] = searches[std::size_t(k)].answer;
   return s;
 }
