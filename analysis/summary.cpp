@@ -88,8 +88,9 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
     for (std::size_t f = std::size_t(c) * kChunk; f < chunkEnd(std::size_t(c)); ++f)
       if (faces[f].status == FaceStatus::Ok) *out++ = faces[f].area3d;
   });
-  const auto statistics = [&](auto valueOf, BinSpacing spacing) {
-    std::vector<double> values;
+  // `values`: the worker's, reused from one statistic to the next (fresh pages cost more than filling them).
+  const auto statistics = [&](std::vector<double>& values, auto valueOf, BinSpacing spacing) {
+    values.clear();
     values.reserve(okAreas.size());
     for (const FaceDistortion& face : faces)
       if (face.status == FaceStatus::Ok) values.push_back(valueOf(face));
@@ -97,28 +98,40 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
   };
   // The longest first (the seam edges sort every half-edge; the density measures the scales again), so
   // that the last task to start is a short one.
-  const std::function<void()> measures[] = {
-      [&] { s.seams = classifySeamEdges(mesh, uv, s.poleVertices); },
-      [&] {
+  const std::function<void(std::vector<double>&)> measures[] = {
+      [&](std::vector<double>&) { s.seams = classifySeamEdges(mesh, uv, s.poleVertices); },
+      [&](std::vector<double>&) {
         for (std::size_t corner = 0; corner < uv.uv.size(); ++corner)
           if (uv.cornerInvalid.empty() || uv.cornerInvalid[corner] == 0) s.uvBounds.extend(uv.uv[corner]);
         s.overlap = measureOverlap(uv, faces, overlapResolution);
       },
-      [&] {
+      [&](std::vector<double>& values) {
         s.density.textureSize = textureSize;
         s.density.exponent = std::ilogb(measureLengthScale(mesh)) - std::ilogb(measureUvScale(uv));
-        s.density.scaled = statistics([&](const FaceDistortion& f) { return scaledTexelDensity(f, textureSize); },
-                                      BinSpacing::Log2);
+        s.density.scaled = statistics(
+            values, [&](const FaceDistortion& f) { return scaledTexelDensity(f, textureSize); }, BinSpacing::Log2);
         unscale(s.density);
       },
-      [&] { s.angleDistortion = statistics([](const FaceDistortion& f) { return f.angleDistortion(); }, BinSpacing::Log2); },
-      [&] { s.areaDistortion = statistics([](const FaceDistortion& f) { return f.areaDistortion; }, BinSpacing::Linear); },
-      [&] { s.l2Stretches = statistics([&](const FaceDistortion& f) { return f.l2Stretch() * normalisation; }, BinSpacing::Log2); },
-      [&] { s.linfStretches = statistics([&](const FaceDistortion& f) { return f.linfStretch() * normalisation; }, BinSpacing::Log2); }};
+      [&](std::vector<double>& values) {
+        s.angleDistortion = statistics(values, [](const FaceDistortion& f) { return f.angleDistortion(); }, BinSpacing::Log2);
+      },
+      [&](std::vector<double>& values) {
+        s.areaDistortion = statistics(values, [](const FaceDistortion& f) { return f.areaDistortion; }, BinSpacing::Linear);
+      },
+      [&](std::vector<double>& values) {
+        s.l2Stretches =
+            statistics(values, [&](const FaceDistortion& f) { return f.l2Stretch() * normalisation; }, BinSpacing::Log2);
+      },
+      [&](std::vector<double>& values) {
+        s.linfStretches =
+            statistics(values, [&](const FaceDistortion& f) { return f.linfStretch() * normalisation; }, BinSpacing::Log2);
+      }};
   s.poleVertices = poleVertices ? *poleVertices : fannedPoleVertices(mesh, uv);
   std::sort(s.poleVertices.begin(), s.poleVertices.end());
   // Seven independent measures side by side: the seams, the overlap and bounds, the density, the statistics.
-  parallelFor(int(std::size(measures)), threads, [&](int k) { measures[k](); });
+  const int count = int(std::size(measures));
+  std::vector<std::vector<double>> values(std::size_t(workerCount(count, threads)));
+  parallelForWorkers(count, threads, [&](int k, int worker) { measures[k](values[std::size_t(worker)]); });
   return s;
 }
 
