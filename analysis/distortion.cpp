@@ -122,11 +122,15 @@ double measureLengthScale(const Mesh& mesh, int threads) {
       mesh.positions.size(), threads, [&](Eigen::AlignedBox3d& box, std::size_t i) { box.extend(mesh.positions[i]); }));
 }
 
-double measureUvScale(const UvMap& uv, int threads) {
-  return scaleOfExtent(boundsOnThreads<Eigen::AlignedBox2d>(uv.uv.size(), threads, [&](Eigen::AlignedBox2d& box, std::size_t corner) {
+Eigen::AlignedBox2d validUvBounds(const UvMap& uv, int threads) {
+  return boundsOnThreads<Eigen::AlignedBox2d>(uv.uv.size(), threads, [&](Eigen::AlignedBox2d& box, std::size_t corner) {
     if (uv.cornerInvalid.empty() || uv.cornerInvalid[corner] == kCornerValid) box.extend(uv.uv[corner]);
-  }));
+  });
 }
+
+double measureUvScale(const Eigen::AlignedBox2d& validBounds) { return scaleOfExtent(validBounds); }
+
+double measureUvScale(const UvMap& uv, int threads) { return measureUvScale(validUvBounds(uv, threads)); }
 
 std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const DistortionOptions& options,
                                          int threads) {

@@ -104,6 +104,12 @@ double measureLengthScale(const Mesh& mesh, int threads = 1);
 // that UV areas and the Jacobian's determinant neither overflow nor underflow. Auv, the singular
 // values and the raw stretches are in UV units times it; the normalised measures do not depend on it.
 double measureUvScale(const UvMap& uv, int threads = 1);
+// The same from the valid corners' bounding box, where the caller has it (validUvBounds).
+double measureUvScale(const Eigen::AlignedBox2d& validBounds);
+
+// The bounding box of the valid corners' UVs; empty when there is none. `threads` (0: one per core)
+// share the corners; the result does not depend on them.
+Eigen::AlignedBox2d validUvBounds(const UvMap& uv, int threads = 1);
 
 // One FaceDistortion per triangle of `mesh`. Precondition: `uv` has 3 corners per triangle.
 // `threads` (0: one per core) share the faces; the result does not depend on them.

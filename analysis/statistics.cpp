@@ -196,7 +196,8 @@ void findPercentiles(const double* values, const double* weights, std::size_t co
       if (std::find(ranges.begin(), ranges.end(), s->prefix) == ranges.end()) ranges.push_back(s->prefix);
     if (ranges.empty()) break;
     const int bits = open.front()->bits;
-    const bool counted = first != nullptr && ranges.size() == 1 && ranges[0] == first->prefix && bits == first->bits;
+    const bool counted = first != nullptr;  // every open search is still in the range it started in
+    UVTK_CHECK(!counted || (ranges.size() == 1 && ranges[0] == first->prefix && bits == first->bits));
     DigitTally tally = counted ? std::move(*first) : DigitTally(format, ranges[0], bits, ranges.size());
     first = nullptr;
     for (std::size_t i = 0; i < count && !counted; ++i) {

@@ -96,18 +96,15 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
       if (face.status == FaceStatus::Ok) values.push_back(valueOf(face));
     return weightedStatistics(values, okAreas, spacing);
   };
-  // The longest first (the seam edges sort every half-edge; the density measures the scales again), so
-  // that the last task to start is a short one.
+  // The bounds of the valid UVs, on threads: reported, and the UV scale of the densities.
+  s.uvBounds = validUvBounds(uv, threads);
+  s.density.textureSize = textureSize;
+  s.density.exponent = std::ilogb(measureLengthScale(mesh, threads)) - std::ilogb(measureUvScale(s.uvBounds));
+  // The longest first (the seam edges sort every half-edge), so that the last task to start is a short one.
   const std::function<void(std::vector<double>&)> measures[] = {
       [&](std::vector<double>&) { s.seams = classifySeamEdges(mesh, uv, s.poleVertices); },
-      [&](std::vector<double>&) {
-        for (std::size_t corner = 0; corner < uv.uv.size(); ++corner)
-          if (uv.cornerInvalid.empty() || uv.cornerInvalid[corner] == 0) s.uvBounds.extend(uv.uv[corner]);
-        s.overlap = measureOverlap(uv, faces, overlapResolution);
-      },
+      [&](std::vector<double>&) { s.overlap = measureOverlap(uv, faces, overlapResolution); },
       [&](std::vector<double>& values) {
-        s.density.textureSize = textureSize;
-        s.density.exponent = std::ilogb(measureLengthScale(mesh)) - std::ilogb(measureUvScale(uv));
         s.density.scaled = statistics(
             values, [&](const FaceDistortion& f) { return scaledTexelDensity(f, textureSize); }, BinSpacing::Log2);
         unscale(s.density);
@@ -128,7 +125,7 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
       }};
   s.poleVertices = poleVertices ? *poleVertices : fannedPoleVertices(mesh, uv);
   std::sort(s.poleVertices.begin(), s.poleVertices.end());
-  // Seven independent measures side by side: the seams, the overlap and bounds, the density, the statistics.
+  // Seven independent measures side by side: the seams, the overlap, the density, the statistics.
   const int count = int(std::size(measures));
   std::vector<std::vector<double>> values(std::size_t(workerCount(count, threads)));
   parallelForWorkers(count, threads, [&](int k, int worker) { measures[k](values[std::size_t(worker)]); });
