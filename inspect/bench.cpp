@@ -374,6 +374,7 @@ std::vector<nlohmann::json> benchRendering(const BenchOptions& a, const Mesh& me
                        {"wrap", cli::nameOf(cli::kWrapNames, a.textureOptions.wrap)},
                        {"env", cli::nameOf(cli::kEnvNames, a.textureOptions.env)},
                        {"seamless", a.textureOptions.seamless},
+                       {"two_sided", a.textureOptions.twoSided},
                        {"cull", cli::nameOf(cli::kCullNames, a.frame.cull)},
                        {"background", {a.frame.background.x(), a.frame.background.y(), a.frame.background.z()}},
                        {"filter", cli::nameOf(cli::kFilterNames, c.filter)},

@@ -174,6 +174,7 @@ render::RenderOptions renderOptions(const FrameOptions& frame, const TextureOpti
   options.texture = bound.flat ? &*bound.flat : nullptr;
   options.cubeTexture = bound.cube ? &*bound.cube : nullptr;
   options.seamless = texture.seamless;
+  options.lighting.twoSided = texture.twoSided;
   return options;
 }
 

@@ -43,6 +43,7 @@ struct TextureOptions {
   render::EnvMode env = render::EnvMode::Replace;   // texture environment
   Vec4 envColour = Vec4::Zero();                    // GL_TEXTURE_ENV_COLOR for blend
   bool seamless = false;                            // cube maps: filter across face edges
+  bool twoSided = false;                            // lighting: GL_LIGHT_MODEL_TWO_SIDE
 };
 
 // What a frame draws and how.

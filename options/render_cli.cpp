@@ -142,6 +142,9 @@ void addTextureOptions(CLI::App& app, TextureArguments& a, const std::string& so
                              "Texture environment; modulate, decal and blend use Blinn-Phong lighting by a head-light")
       ->default_str("replace");
   app.add_option("--env-color", a.envColour, "GL_TEXTURE_ENV_COLOR for blend (r,g,b,a)")->capture_default_str();
+  app.add_flag("--two-sided", a.twoSided,
+               "Lighting: back faces lit with their normal negated, as front faces are (GL_LIGHT_MODEL_TWO_SIDE; off, as "
+               "GL's default)");
 }
 
 bool TextureArguments::cubeMap() const { return inspect::isCubeMapSource(source); }
@@ -177,6 +180,7 @@ inspect::TextureOptions TextureArguments::options() const {
   o.env = env;
   o.envColour = parseVec4(envColour, "--env-color");
   o.seamless = seamless;
+  o.twoSided = twoSided;
   return o;
 }
 

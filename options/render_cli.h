@@ -54,6 +54,7 @@ struct TextureArguments {
   render::EnvMode env = render::EnvMode::Replace;
   std::string envColour = "0,0,0,0";
   bool seamless = false;
+  bool twoSided = false;
 
   // Whether the source names a cube map: cube[:N], cubeindex[:N], cubefaces:..., cubecross:...,
   // cubestrip:..., cube3x2:... (the word bare or before a colon).

@@ -220,7 +220,7 @@ class Setup {
       return;
     }
     ++out.stats.drawn;
-    const DrawnFace* drawn = new (out.drawn + out.drawnCount++) DrawnFace{face, interpolator};
+    const DrawnFace* drawn = new (out.drawn + out.drawnCount++) DrawnFace{face, front, interpolator};
     const Vec3 depthPlane = 0.5 * interpolator.ndcDepthPlane() + Vec3(0, 0, 0.5);  // glDepthRange(0, 1)
     for (int i = 1; i + 1 < n; ++i) {  // a fan over the convex polygon
       SetupTriangle t{drawn, face, depthPlane, {}, 0, 0, 0, 0};

@@ -79,6 +79,7 @@ Mat3 inverse3x3(const Mat3& m);
 // One drawn triangle's set-up, made once by the rasterizer and shared by the shading of its pixels.
 struct DrawnFace {
   std::int32_t face;
+  bool front;                         // counter-clockwise in window coordinates (GL's facing)
   TriangleInterpolator interpolator;  // valid: a triangle seen edge-on is not drawn
 };
 

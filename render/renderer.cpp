@@ -52,7 +52,8 @@ struct FrameData {
   const TexcoordSource& source;
   const RenderOptions& options;
   std::vector<Vec3> normals;       // object space, per corner: for lighting or the pixel mapping
-  std::vector<Vec4> cornerColour;  // lit colour per corner when the environment reads it
+  std::vector<Vec4> cornerColour;      // lit colour per corner when the environment reads it
+  std::vector<Vec4> cornerBackColour;  // the same lit with the normal negated, for back faces (two-sided)
 };
 
 // What the texture unit returns for a fragment, and where it looked.
@@ -85,32 +86,38 @@ class Shader {
                                                             : interpolatedTexcoords(face, b);
       lookup = o.cubeTexture ? lookUpCube(tc) : lookUp2d(tc);
     }
-    return colourOf(face, b.b, lookup, aov);
+    return colourOf(face, drawn.front, b.b, lookup, aov);
   }
 
   // Whether the vectorised fragments (render/fragment_simd.h) compute what shade() does up to the
   // lookup: a 2D texture read at interpolated corner coordinates with analytic derivatives.
   bool vectorisable() const { return !f_.source.pixelMapping && f_.options.texture && !quad_; }
 
-  // The rest of shade() for a fragment of `face` at barycentrics b whose 2D lookup at (s, t) and
-  // lambda (the bias added) gave `texel`, as the vectors computed them.
-  Vec3 shade2d(std::int32_t face, const Vec3& b, double s, double t, double lambda, const Vec4& texel,
+  // Whether a fragment's colour depends on its face's facing (two-sided lighting).
+  bool readsFacing() const { return !f_.cornerBackColour.empty(); }
+
+  // The rest of shade() for a fragment of `face` (`front`: as DrawnFace::front, read only when
+  // readsFacing()) at barycentrics b whose 2D lookup at (s, t) and lambda (the bias added) gave
+  // `texel`, as the vectors computed them.
+  Vec3 shade2d(std::int32_t face, bool front, const Vec3& b, double s, double t, double lambda, const Vec4& texel,
                float* aov) const {
     TextureLookup lookup;
     lookup.st = Vec2(s, t);
     lookup.lambda = lambda;
     lookup.texel = texel;
-    return colourOf(face, b, lookup, aov);
+    return colourOf(face, front, b, lookup, aov);
   }
 
  private:
-  // The fragment's colour (lit at the corners, interpolated), the texture environment, the AOVs.
-  Vec3 colourOf(std::int32_t face, const Vec3& b, const TextureLookup& lookup, float* aov) const {
+  // The fragment's colour (lit at the corners, interpolated; a back face's from the back colours
+  // where they are computed), the texture environment, the AOVs.
+  Vec3 colourOf(std::int32_t face, bool front, const Vec3& b, const TextureLookup& lookup, float* aov) const {
     const RenderOptions& o = f_.options;
     Vec4 fragment = Vec4::Ones();
     if (!f_.cornerColour.empty()) {
+      const std::vector<Vec4>& lit = front || f_.cornerBackColour.empty() ? f_.cornerColour : f_.cornerBackColour;
       fragment = Vec4::Zero();
-      for (int k = 0; k < 3; ++k) fragment += b[k] * f_.cornerColour[3 * std::size_t(face) + std::size_t(k)];
+      for (int k = 0; k < 3; ++k) fragment += b[k] * lit[3 * std::size_t(face) + std::size_t(k)];
     }
     const Vec4 colour = textureEnvironment(o.env, fragment, lookup.texel, o.envColour);
     if (aov) {
@@ -397,10 +404,13 @@ void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
   if (lit) {
     const Mat3 normalMatrix = eyeFromObject.topLeftCorner<3, 3>().inverse().transpose();
     frame.cornerColour.resize(frame.normals.size());
+    if (o.lighting.twoSided) frame.cornerBackColour.resize(frame.normals.size());
     for (std::size_t c = 0; c < frame.normals.size(); ++c) {
       const Vec3 n = normalMatrix * frame.normals[c];
       const double length = n.norm();
-      frame.cornerColour[c] = headlightColour(o.lighting, length > 0.0 ? Vec3(n / length) : Vec3::Zero());
+      const Vec3 unit = length > 0.0 ? Vec3(n / length) : Vec3::Zero();
+      frame.cornerColour[c] = headlightColour(o.lighting, unit);
+      if (o.lighting.twoSided) frame.cornerBackColour[c] = headlightColour(o.lighting, -unit);
     }
   }
 
@@ -482,7 +492,8 @@ void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
           const Vec3 b(batch->b0[j], batch->b1[j], batch->b2[j]);
           const Vec4 texel =
               fragmentTexture ? Vec4(batch->red[j], batch->green[j], batch->blue[j], batch->alpha[j]) : texelOf(j);
-          write(x, y, face, shader.shade2d(face, b, batch->s[j], batch->t[j], batch->lambda[j], texel, aov), aov);
+          const bool front = !shader.readsFacing() || fragmentFrame.drawnFaces[batch->drawn[j]].front;
+          write(x, y, face, shader.shade2d(face, front, b, batch->s[j], batch->t[j], batch->lambda[j], texel, aov), aov);
         }
         batch->count = 0;
       };

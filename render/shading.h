@@ -10,7 +10,10 @@ namespace uvtk::render {
 enum class EnvMode { Replace, Modulate, Decal, Blend };
 
 // GL_LIGHT0 as a head-light (position (0, 0, 1, 0) given under an identity modelview: a
-// directional light along the view direction), an infinite viewer, one-sided lighting. The light
+// directional light along the view direction), an infinite viewer, one-sided lighting unless
+// twoSided (GL_LIGHT_MODEL_TWO_SIDE: a back face, clockwise in the window, is lit with its normal
+// negated, the back material being the front's, so that an open or inward-wound mesh seen from
+// behind reads as its front does; GL 4.6 compatibility §12.2.1.1). The light
 // keeps GL's defaults; the material keeps GL's ambient and diffuse defaults and adds a white
 // specular highlight (GL's default specular is black, which would not be Blinn-Phong at all).
 struct Lighting {
@@ -22,6 +25,7 @@ struct Lighting {
   Vec4 materialDiffuse = Vec4(0.8, 0.8, 0.8, 1.0);  // GL_DIFFUSE
   Vec4 materialSpecular = Vec4(0.5, 0.5, 0.5, 1.0); // GL_SPECULAR
   double shininess = 32.0;                          // GL_SHININESS
+  bool twoSided = false;                            // GL_LIGHT_MODEL_TWO_SIDE
 };
 
 // GL 4.6 compatibility §12.2.1 for one light at infinity along +z of eye space and an infinite

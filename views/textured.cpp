@@ -47,6 +47,9 @@ DrawnView drawTextured(View view, const ViewInput& in, const ViewOptions& option
   // The checker: the texel times the renderer's lighting (options.render.lighting, the head-light
   // of render/shading.h, per vertex); uvgrid: the texel alone.
   o.env = checker ? render::EnvMode::Modulate : render::EnvMode::Replace;
+  // Two-sided, as the other views' shade |n . l|: an open scan or an inward-wound mesh seen from
+  // behind is lit as its front would be, not left in the ambient term.
+  o.lighting.twoSided = true;
   o.aovs = false;
   return {render::render(*in.mesh, cornerTexcoords(in), o).colour, Legend{}};
 }

@@ -210,7 +210,7 @@ TEST(SceneBenchSchema, HasTheBenchOptionsButRenderingAndTheEndToEndMap) {
     if (rendering.count(key)) continue;
     EXPECT_TRUE(key == "camera" || key == "eye" || key == "center" || key == "up" || key == "view_dir" ||
                 key == "fovy" || key == "near" || key == "far" || key == "ortho" || key == "texture" ||
-                key == "filter" || key == "wrap" || key == "seamless" || key == "env" || key == "env_color" ||
+                key == "filter" || key == "wrap" || key == "seamless" || key == "two_sided" || key == "env" || key == "env_color" ||
                 key == "size" || key == "cull" || key == "background" || key == "uv" ||
                 key == "derivatives" || key == "seam_fix")
         << key << ": a bench option the scene neither takes nor leaves out on purpose";

@@ -359,6 +359,50 @@ TEST(MesaRender, HeadlitModulatedSphereMatchesMesasLighting) {
   expectLinearMatch(compare(s, renderBoth(mesa, s)));
 }
 
+// The sphere opened towards the camera (the triangles whose centre lies within 60 degrees of the
+// eye's direction left out), drawn without culling, lit: around the hole the outside's front
+// faces, through it the inside's back faces, which GL lights with their normals negated when
+// two-sided and leaves in the ambient term when not.
+Scene openSphere(std::string name, const Texture& texture, bool twoSided) {
+  Scene s = sphere(std::move(name), texture, Filter::Linear);
+  const Vec3 eyeInWorld(0.2, 0.3, 2.0);  // nearer than sphere()'s: more pixels inside faces
+  s.camera = perspectiveCamera(eyeInWorld, Vec3::Zero(), 45.0, 0.5, 10.0);
+  const Vec3 eye = (s.worldFromObject.inverse() * eyeInWorld.homogeneous()).head<3>().normalized();
+  std::vector<Triangle> kept;
+  std::vector<Vec4> corners;
+  for (std::size_t f = 0; f < s.mesh.triangles.size(); ++f) {
+    const Triangle& t = s.mesh.triangles[f];
+    const Vec3 centre = (s.mesh.positions[std::size_t(t[0])] + s.mesh.positions[std::size_t(t[1])] +
+                         s.mesh.positions[std::size_t(t[2])]) / 3.0;
+    if (centre.normalized().dot(eye) > 0.5) continue;
+    kept.push_back(t);
+    for (std::size_t k = 0; k < 3; ++k) corners.push_back(s.corners[3 * f + k]);
+  }
+  s.mesh.triangles = std::move(kept);
+  s.corners = std::move(corners);
+  s.cull = Cull::None;
+  s.env = EnvMode::Modulate;
+  s.twoSided = twoSided;
+  return s;
+}
+
+TEST(MesaRender, BackFacesLitOneAndTwoSidedMatchMesasLighting) {
+  Mesa mesa(Mesa::Filtering::Float);
+  ASSERT_TRUE(mesa.ok());
+  const Texture ramp = rampTexture(32, 32);
+  const Scene one = openSphere("open sphere ramp32 linear modulate one-sided", ramp, false);
+  const Scene two = openSphere("open sphere ramp32 linear modulate two-sided", ramp, true);
+  const Renderings r1 = renderBoth(mesa, one), r2 = renderBoth(mesa, two);
+  expectLinearMatch(compare(one, r1));
+  expectLinearMatch(compare(two, r2));
+  // The inside shows through the hole: the two lightings differ there, by far more than rounding.
+  std::size_t brighter = 0;
+  for (int row = 0; row < kHeight; ++row)
+    for (int x = 0; x < kWidth; ++x)
+      brighter += r2.ours.colour.at(x, row, 0) > r1.ours.colour.at(x, row, 0) + 0.2f;
+  EXPECT_GE(brighter, 500u);
+}
+
 // log2 as llvmpipe computes it for a mipmap-linear filter (gallivm lp_build_fast_log2): the
 // exponent plus the mantissa less one, piecewise linear between powers of two.
 double piecewiseLinearLog2(double x) {

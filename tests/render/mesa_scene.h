@@ -40,6 +40,7 @@ struct Scene {
   Filter filter = Filter::Nearest;
   Wrap wrap = Wrap::Repeat;
   EnvMode env = EnvMode::Replace;
+  bool twoSided = false;                     // GL_LIGHT_MODEL_TWO_SIDE
   Cull cull = Cull::Back;
   Vec3 background = Vec3(40, 90, 160) / 255.0;  // 8-bit values, so both clear to the same bytes
 };
@@ -260,7 +261,9 @@ class Mesa {
     glLoadIdentity();
 
     const bool lit = colour && readsFragmentColour(s.env);
-    if (lit) setHeadlight(Lighting{});
+    Lighting lighting;  // as uvtkOptions(s) gives it
+    lighting.twoSided = s.twoSided;
+    if (lit) setHeadlight(lighting);
     enable(GL_LIGHTING, lit);
     GLuint name = 0;
     if (colour) name = bindTexture(s);
@@ -324,7 +327,7 @@ class Mesa {
     glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, GLfloat(l.shininess));
     glLightModelfv(GL_LIGHT_MODEL_AMBIENT, floats(l.modelAmbient).data());
     glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GL_FALSE);
-    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, l.twoSided ? GL_TRUE : GL_FALSE);
     glEnable(GL_LIGHT0);
   }
 
@@ -403,6 +406,7 @@ inline RenderOptions uvtkOptions(const Scene& s) {
   o.seamless = s.seamless;
   o.sampler = samplerFor(s.filter, s.wrap);
   o.env = s.env;
+  o.lighting.twoSided = s.twoSided;
   o.background = s.background;
   o.aovs = true;
   return o;

@@ -2,11 +2,13 @@
 // the renderer's head-light (MODULATE), the background left alone (docs/views.md).
 #include <gtest/gtest.h>
 
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
 #include "meshes/generators.h"
 #include "render/camera.h"
+#include "render/raster.h"
 #include "render/shading.h"
 #include "views/views.h"
 
@@ -140,6 +142,29 @@ TEST(CheckerView, LightAndDarkChecksStayApartAtEveryAngle) {
     EXPECT_NEAR(ratio, 230.0 / 89.0, 1e-5) << i;
     EXPECT_LT(runs[i].x(), kLight - 0.05);  // shaded: the plane is seen (and lit) at a slant
   }
+}
+
+TEST(CheckerView, AMeshWoundInwardsIsLitAsItsOutwardTwinTwoSided) {
+  // Drawn without culling, every face the camera sees of the inward cube is a back face, which
+  // two-sided lighting lights with its normals negated: the outward twin's. The same picture, but
+  // where a pixel centre lies on a check's edge (the reversed corners' barycentrics may round
+  // differently there).
+  const Flat outward(meshes::cube(4));
+  Mesh reversed = meshes::cube(4);
+  for (Triangle& t : reversed.triangles) std::swap(t[1], t[2]);
+  const Flat inward(std::move(reversed));
+  ViewOptions o = orthographicFrom(outward.mesh, Vec3(1.0, 0.6, 0.3).normalized(), Vec3::UnitZ(), 256);
+  o.render.raster.cull = render::Cull::None;
+  const Image a = drawView(View::Checker, outward.input(), o), b = drawView(View::Checker, inward.input(), o);
+  std::size_t covered = 0, same = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      if ((pixel(a, x, y) - o.render.background).norm() < 1e-6) continue;
+      ++covered;
+      same += (pixel(a, x, y) - pixel(b, x, y)).norm() < 1e-6;
+    }
+  EXPECT_GT(covered, 10000u);
+  EXPECT_GE(double(same), 0.999 * double(covered)) << same << " of " << covered;
 }
 
 }  // namespace
