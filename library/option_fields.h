@@ -4,6 +4,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -129,7 +130,8 @@ std::vector<std::string> wordsOf(const Options& options, const std::vector<Field
 // The options `words` give (already checked by the command line's parser), set on a default
 // struct through `fields`. Read from the words, not from the parser's results, which hold a
 // choice's value rather than its name. "--name value...", "--name=value"; a value never starts
-// with "--" (negative numbers start with one dash).
+// with "--" (negative numbers start with one dash). An option the command takes but the struct
+// does not carry (an output file of the command's own) is a UsageError, never dropped silently.
 template <class Options>
 Options fromWords(const std::vector<std::string>& words, const std::vector<Field<Options>>& fields) {
   std::map<std::string, std::vector<std::string>> given;
@@ -137,7 +139,10 @@ Options fromWords(const std::vector<std::string>& words, const std::vector<Field
   for (const std::string& word : words) {
     if (word.rfind("--", 0) == 0) {
       const std::size_t equals = word.find('=');
-      values = &given[word.substr(0, equals)];
+      const std::string name = word.substr(0, equals);
+      if (std::none_of(fields.begin(), fields.end(), [&](const Field<Options>& f) { return name == f.name; }))
+        throw UsageError(name + ": the command line takes it, the library's options struct does not carry it");
+      values = &given[name];
       if (equals != std::string::npos) values->push_back(word.substr(equals + 1));
     } else if (values) {
       values->push_back(word);

@@ -99,7 +99,7 @@ std::string numberText(const std::string& option, py::handle value) {
 
 // The keywords as a command line: cap_angle=30 -> "--cap-angle=30", True -> the flag, False and
 // None -> nothing, numbers -> "a,b,c" (size=(w, h) -> "WxH"), a list of strings -> the option
-// repeated. "--name=value" keeps a value such as "-1,0,0" from reading as an option.
+// repeated, "" -> "--name ''". "--name=value" keeps a value such as "-1,0,0" from reading as an option.
 std::string commandLine(const py::kwargs& kwargs) {
   std::string line;
   auto add = [&line](const std::string& word) { line += (line.empty() ? "" : " ") + quoted(word); };
@@ -113,7 +113,9 @@ std::string commandLine(const py::kwargs& kwargs) {
     if (py::isinstance<py::bool_>(value)) {
       if (value.cast<bool>()) add(name);
     } else if (py::isinstance<py::str>(value)) {
-      add(name + "=" + value.cast<std::string>());
+      const std::string text = value.cast<std::string>();
+      if (text.empty()) add(name), add(text);  // "--view=" would read the next word as its value
+      else add(name + "=" + text);
     } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
       const py::sequence items = value;
       if (items.size() > 0 && py::isinstance<py::str>(items[0])) {

@@ -397,7 +397,7 @@ void renderFrame(const Mesh& mesh, const TexcoordSource& source, const RenderOpt
   out.coveredPixels = 0;
 
   const auto shadeStart = std::chrono::steady_clock::now();
-  FrameData frame{mesh, source, o, {}, {}};
+  FrameData frame{mesh, source, o, {}, {}, {}};
   // Normals and lighting only when something reads them.
   const bool lit = readsFragmentColour(o.env);
   if (lit || (source.pixelMapping && source.pixelMapping->needsNormal)) frame.normals = cornerNormals(mesh);

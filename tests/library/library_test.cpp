@@ -356,6 +356,41 @@ TEST(Render, AViewIsTheSizeAskedForAndDrawsTheMesh) {
   EXPECT_THROW(RenderOptions::parse("--derivatives quad"), std::invalid_argument);
 }
 
+TEST(Render, CarriesTheCameraAndTextureOptionsAndRefusesWhatItCannot) {
+  const Mapping m = map(octahedron());
+  const std::string line =
+      "--size 64x48 --eye 0.5,2,3 --center 0,0.1,0 --fovy 30 --near 0.5 --far 20 --wrap mirrored_repeat "
+      "--env blend --env-color 1,0.5,0.25,1 --two-sided";
+  const RenderOptions o = RenderOptions::parse(line);
+  EXPECT_EQ(o.eye, (std::optional<Vector3>{Vector3{0.5, 2, 3}}));
+  EXPECT_EQ(o.center, (Vector3{0, 0.1, 0}));
+  EXPECT_EQ(o.fovy, 30.0);
+  EXPECT_EQ(o.zNear, 0.5);
+  EXPECT_EQ(o.zFar, 20.0);
+  EXPECT_EQ(o.wrap, "mirrored_repeat");
+  EXPECT_EQ(o.env, "blend");
+  EXPECT_EQ(o.envColor, (std::array<double, 4>{1, 0.5, 0.25, 1}));
+  EXPECT_TRUE(o.twoSided);
+  EXPECT_EQ(o.commandLine(), line);
+  // Each reaches the picture: another eye, another environment, another lighting of the back faces.
+  const Image picture = render(m, o);
+  RenderOptions other = o;
+  other.eye = Vector3{-2, 1, 1};
+  EXPECT_NE(render(m, other).pixels, picture.pixels);
+  other = o;
+  other.env = "replace";
+  EXPECT_NE(render(m, other).pixels, picture.pixels);
+  other = o;
+  other.cull = "front";  // only back faces are drawn: one-sided leaves them in the ambient term
+  RenderOptions oneSided = other;
+  oneSided.twoSided = false;
+  EXPECT_NE(render(m, other).pixels, render(m, oneSided).pixels);
+  // What `uvtk render` takes but the picture in memory has no place for is refused, not dropped.
+  EXPECT_THROW(RenderOptions::parse("--aov uv"), std::invalid_argument);
+  EXPECT_NE(messageOf([] { RenderOptions::parse("--size 64x48 --aov-output a.exr"); }).find("--aov-output"),
+            std::string::npos);
+}
+
 TEST(ImageBytes, RoundAsAPngStores) {
   Image image;
   image.width = 5, image.height = 1, image.channels = 1;

@@ -730,6 +730,23 @@ def test_render_takes_a_gpus_quad_derivatives_and_the_seam_fixes(tmp_path, cli):
         uvtk.render(mesh, m, derivatives="quad", **scene)
 
 
+def test_render_takes_the_programs_texture_and_lighting_options(tmp_path, cli):
+    # The picture's own options reach it: the texture's environment and two-sided lighting, as the
+    # program draws them; view="" is the textured picture; an option with no place in memory is refused.
+    path = write_obj(tmp_path / "s.obj", *uv_sphere())
+    options = ["--env", "modulate", "--two-sided", "--cull", "front", "--size", "64x48"]
+    run = cli("render", path, "--projector", "cylinder", *options, "-o", tmp_path / "r.png")
+    assert run.returncode == 0, run.stderr
+    mesh = uvtk.read_mesh(path)
+    m = uvtk.map(mesh, projector="cylinder")
+    lit = uvtk.render(mesh, m, view="", env="modulate", two_sided=True, cull="front", size=(64, 48))
+    np.testing.assert_array_equal(lit, read_png(tmp_path / "r.png"))
+    one_sided = uvtk.render(mesh, m, view="", env="modulate", cull="front", size=(64, 48))
+    assert (lit != one_sided).any()  # the back faces, lit one-sided, keep only the ambient term
+    with pytest.raises(ValueError, match="--aov"):
+        uvtk.render(mesh, m, aov="uv")
+
+
 def test_render_gives_height_width_channels():
     mesh = uvtk.Mesh(*uv_sphere())
     m = uvtk.map(mesh)

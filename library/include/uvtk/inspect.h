@@ -3,7 +3,9 @@
 // projector on one mesh. Part of <uvtk/uvtk.h> (docs/library.md, docs/views.md).
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,9 +51,21 @@ struct RenderOptions {
   std::string size = "512x512";   // --size: WxH
   Vector3 viewDir{0, 0, 1};       // --view-dir: the direction from the mesh to the camera, which frames the mesh
   Vector3 up{0, 1, 0};            // --up: the camera's up
+  std::string camera;             // --camera: auto (frames the mesh), explicit (eye, center, up); "": explicit when eye is set
+  std::optional<Vector3> eye;     // --eye: gluLookAt eye; unset: the camera frames the mesh along viewDir
+  Vector3 center{0, 0, 0};        // --center: gluLookAt centre
+  double fovy = 45.0;             // --fovy: gluPerspective field of view in y, degrees
+  double zNear = 0.1, zFar = 100.0;  // --near, --far: an explicit camera's clipping planes
+  std::string ortho;              // --ortho: glOrtho l,r,b,t, or auto to frame the mesh; "": perspective
   std::string cull = "back";      // --cull: back, front, none
-  std::string texture = "checker:64:8";  // --texture (view ""): checker:N[:C], uvgrid[:N], or an image file
+  std::string texture = "checker:64:8";  // --texture (view ""): checker:N[:C], uvgrid[:N], an image file, a cube map
   std::string filter = "nearest";        // --filter: GL's minification filter (view "")
+  std::string wrap;               // --wrap: repeat, clamp_to_edge, mirrored_repeat; "": repeat, a cube map's clamp_to_edge
+  bool seamless = false;          // --seamless: a cube map filtered across its face edges
+  std::string env = "replace";    // --env: replace, modulate, decal, blend (the last three lit by a head-light)
+  std::array<double, 4> envColor{0, 0, 0, 0};  // --env-color: GL_TEXTURE_ENV_COLOR, read by blend
+  bool twoSided = false;          // --two-sided: back faces lit too (GL_LIGHT_MODEL_TWO_SIDE)
+  std::string textureSize = "1024,1024";  // --texture-size: W,H (or N) texels the density view counts in
   int checks = 16;                // --checks: checks across the unit square in the checker view
   std::string layoutFill = "stretch";  // --layout-fill: stretch, linf, angle, area
   int layoutSize = 512;           // --layout-size: pixels across the layout view's UV square
