@@ -13,7 +13,7 @@ enum class EnvMode { Replace, Modulate, Decal, Blend };
 // directional light along the view direction), an infinite viewer, one-sided lighting unless
 // twoSided (GL_LIGHT_MODEL_TWO_SIDE: a back face, clockwise in the window, is lit with its normal
 // negated, the back material being the front's, so that an open or inward-wound mesh seen from
-// behind reads as its front does; GL 4.6 compatibility §12.2.1.1). The light
+// behind reads as its front does; GL 4.6 compatibility §12.2.1). The light
 // keeps GL's defaults; the material keeps GL's ambient and diffuse defaults and adds a white
 // specular highlight (GL's default specular is black, which would not be Blinn-Phong at all).
 struct Lighting {
