@@ -459,6 +459,31 @@ void TiledRaster::draw(int tile, Tile& out) const {
       drawInTile(chunk.triangles[index], out);
 }
 
+void clipPositions(const Mesh& mesh, const Mat4& clipFromObject, int threads, std::vector<Vec4>& clip) {
+  if (clip.capacity() < mesh.positions.size()) {
+    std::vector<Vec4>().swap(clip);
+    resizeOnHugePages(clip, mesh.positions.size());
+  }
+  clip.resize(mesh.positions.size());
+  constexpr int kChunk = 1 << 16;
+  const int chunks = int((clip.size() + kChunk - 1) / kChunk);
+  // Per chunk, the least and the greatest of the vertices' largest finite non-zero |coordinate|.
+  std::vector<std::pair<double, double>> range(std::size_t(chunks), {INFINITY, 0.0});
+  parallelFor(chunks, threads, [&](int chunk) {
+    const std::size_t begin = std::size_t(chunk) * kChunk, end = std::min(clip.size(), begin + kChunk);
+    range[std::size_t(chunk)] = transformToClip(clipFromObject, &mesh.positions[begin], &clip[begin], end - begin);
+  });
+  double least = INFINITY, greatest = 0.0;
+  for (const auto& [l, g] : range) least = std::min(least, l), greatest = std::max(greatest, g);
+  if (least > 0x1p400 || (greatest > 0.0 && greatest < 0x1p-400)) {
+    const double scale = std::ldexp(1.0, -std::ilogb(greatest));
+    parallelFor(chunks, threads, [&](int chunk) {
+      const std::size_t end = std::min(clip.size(), std::size_t(chunk + 1) * kChunk);
+      for (std::size_t v = std::size_t(chunk) * kChunk; v < end; ++v) clip[v] *= scale;
+    });
+  }
+}
+
 VisibilityBuffer rasterize(const std::vector<Vec4>& clip, const std::vector<Triangle>& triangles, int width, int height,
                            const RasterOptions& options, RasterStats* stats) {
   const TiledRaster raster(clip, triangles, width, height, options);

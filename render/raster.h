@@ -136,6 +136,13 @@ class TiledRaster {
   RasterStats stats_;
 };
 
+// `clip` = clipFromObject times each of mesh's positions, then, where every vertex's clip
+// coordinates lie beyond 2^400 or all below 2^-400 (a mesh at 1e200 or 1e-200 framed by its
+// camera), times one power of two that brings them to about 1: homogeneous, the same frame, but
+// the set-up's products of coordinates neither overflow nor underflow; any other frame keeps its
+// bits. `clip`'s storage is kept when large enough. `threads` (0: one per core) share the vertices.
+void clipPositions(const Mesh& mesh, const Mat4& clipFromObject, int threads, std::vector<Vec4>& clip);
+
 // The visibility of the whole frame: TiledRaster's tiles drawn into one buffer.
 VisibilityBuffer rasterize(const std::vector<Vec4>& clip, const std::vector<Triangle>& triangles, int width, int height,
                            const RasterOptions& options, RasterStats* stats = nullptr);

@@ -15,14 +15,15 @@ namespace uvtk::views {
 
 struct Scene {
   Mat4 clipFromObject = Mat4::Identity();
-  std::vector<Vec4> clip;             // per vertex
+  std::vector<Vec4> clip;             // per vertex, as render::clipPositions gives them
   render::VisibilityBuffer visible;   // camera.width x camera.height
   std::vector<double> shade;          // per face: faceShade of its eye-space corners
 };
 
 // Lambert's cosine under the renderer's head-light (a directional light along the view, as
 // render/shading.h), lifted so that faces seen edge-on stay readable: 0.35 + 0.65 |n . l| with
-// n the face's unit normal in eye space and l = (0, 0, 1); 0.35 for a face of zero area.
+// n the face's unit normal in eye space and l = (0, 0, 1); 0.35 for a face of zero area. The same
+// for the triangle at any scale (1e-200 or 1e200).
 double faceShade(const Vec3& eye0, const Vec3& eye1, const Vec3& eye2);
 
 // faceShade of every face's eye-space corners under options.camera and worldFromObject.

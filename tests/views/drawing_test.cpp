@@ -225,6 +225,32 @@ TEST(SeamsView, MarksPolesAndTheSeamOfASphere) {
   EXPECT_NEAR(c.y(), c.z(), 1e-6);
 }
 
+// A sphere at 2^500 or 2^-500 (about 1e150, 1e-150), framed by its bounding sphere, gives the views
+// of the same sphere at unit scale: positions, camera and eye coordinates all scale by one power of
+// two. (Before, the views that colour faces drew nothing there: the set-up's products of clip
+// coordinates overflowed or underflowed, and every face's shade fell to 0.35.)
+TEST(Heatmaps, ASphereAt2To500Or2ToMinus500GivesTheUnitScaleViews) {
+  const auto mapped = [](double scale) {
+    Mesh mesh = meshes::latLongSphere(16, 8);
+    for (Vec3& p : mesh.positions) p *= scale;
+    return mapWith(std::move(mesh), projector(param::SurfaceKind::Sphere));
+  };
+  const Mapped unit = mapped(1.0);
+  const ViewOptions o = viewFrom(unit.mesh, Vec3(1, 0.4, 0.7), Vec3::UnitZ(), 96);
+  for (View view : {View::Stretch, View::Angle, View::Seams, View::Checker}) {
+    const Image reference = drawView(view, unit.input(), o);
+    std::size_t covered = 0;
+    for (int row = 0; row < 96; ++row)
+      for (int x = 0; x < 96; ++x) covered += !near(pixelColour(reference, x, row), Vec3::Zero());
+    EXPECT_GT(covered, 3000u) << toString(view);
+    for (const double scale : {0x1p500, 0x1p-500}) {
+      const Mapped m = mapped(scale);
+      const ViewOptions scaled = viewFrom(m.mesh, Vec3(1, 0.4, 0.7), Vec3::UnitZ(), 96);
+      EXPECT_EQ(drawView(view, m.input(), scaled).pixels, reference.pixels) << toString(view) << " at " << scale;
+    }
+  }
+}
+
 // ---- uverror ----
 
 TEST(UvError, IsZeroForALinearMap) {
