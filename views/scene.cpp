@@ -1,20 +1,20 @@
 #include "views/scene.h"
 
-#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
+#include "core/math.h"
 #include "views/canvas.h"
 
 namespace uvtk::views {
 
 double faceShade(const Vec3& eye0, const Vec3& eye1, const Vec3& eye2) {
-  // The edges times the power of two that brings the longer to about 1: the same direction, and a
-  // cross product that neither overflows (a mesh at 1e200) nor underflows (at 1e-200).
-  const Vec3 e1 = eye1 - eye0, e2 = eye2 - eye0;
-  const double longest = std::max(e1.cwiseAbs().maxCoeff(), e2.cwiseAbs().maxCoeff());
-  const double scale = longest > 0.0 && std::isfinite(longest) ? std::ldexp(1.0, -std::ilogb(longest)) : 1.0;
-  const Vec3 n = triangleAreaNormal(Vec3::Zero().eval(), Vec3(e1 * scale), Vec3(e2 * scale));
+  // The edges at unit scale: the same direction, and a cross product that neither overflows (a mesh
+  // at 1e200) nor underflows (at 1e-200).
+  Mat3 edges;
+  edges << eye1 - eye0, eye2 - eye0, Vec3::Zero();
+  edges *= unitPowerOfTwo(edges);
+  const Vec3 n = edges.col(0).cross(edges.col(1));
   const double length = n.norm();
   const double cosine = length > 0.0 ? std::fabs(n.z()) / length : 0.0;  // n . l with l = (0, 0, 1)
   return 0.35 + 0.65 * cosine;
@@ -34,8 +34,8 @@ std::vector<double> faceShades(const Mesh& mesh, const render::RenderOptions& op
 Scene rasterizeScene(const Mesh& mesh, const render::RenderOptions& options) {
   const render::Camera& camera = options.camera;
   Scene scene;
-  scene.clipFromObject = camera.clipFromView * Mat4(camera.viewFromWorld * options.worldFromObject);
-  render::clipPositions(mesh, scene.clipFromObject, options.raster.threads, scene.clip);
+  const Mat4 clipFromObject = camera.clipFromView * Mat4(camera.viewFromWorld * options.worldFromObject);
+  render::clipPositions(mesh, clipFromObject, options.raster.threads, scene.clip);
   scene.visible = render::rasterize(scene.clip, mesh.triangles, camera.width, camera.height, options.raster);
   scene.shade = faceShades(mesh, options);
   return scene;

@@ -14,7 +14,6 @@
 namespace uvtk::views {
 
 struct Scene {
-  Mat4 clipFromObject = Mat4::Identity();
   std::vector<Vec4> clip;             // per vertex, as render::clipPositions gives them
   render::VisibilityBuffer visible;   // camera.width x camera.height
   std::vector<double> shade;          // per face: faceShade of its eye-space corners
