@@ -33,6 +33,19 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 #if UVTK_LIBM_SIMD
 
+// Appends first + k for each set lane k of the mask, in order, at out (which has room for a whole
+// vector); returns how many. Without a branch per lane: which lanes are set is unpredictable. (Highway's
+// CompressStore does the same, but GCC 12 copies its 512-byte table to the stack on every AVX2 call.)
+template <class D>
+std::size_t AppendSetLanes(D d, hn::Mask<D> mask, std::int64_t first, std::int64_t* out) {
+  static_assert(hn::MaxLanes(D()) <= 8);
+  std::uint8_t bits[8] = {};
+  hn::StoreMaskBits(d, mask, bits);
+  std::size_t count = 0;
+  for (std::size_t k = 0; k < hn::Lanes(d); ++k) out[count] = first + std::int64_t(k), count += (bits[0] >> k) & 1u;
+  return count;
+}
+
 // The rounded value of hi + lo (lo small beside hi, hi + lo within 2^-10 ulp of a function's true
 // value), with `decided` cleared where a result of glibc's, within `bound` ulp of the true value,
 // could be another double: where the true value lies 1 - bound ulp or more from the rounded one,

@@ -22,10 +22,9 @@ std::size_t Blocks(double* out, std::size_t n, const Vector& vector, const Scala
   std::size_t i = 0, byScalar = 0;
 #if UVTK_LIBM_SIMD
   const hn::ScalableTag<double> d;
-  const hn::RebindToSigned<decltype(d)> di;
   const std::size_t lanes = hn::Lanes(d);
   constexpr std::size_t kBatch = 512;
-  alignas(64) std::int64_t undecided[kBatch + HWY_MAX_BYTES / 8];
+  alignas(64) std::int64_t undecided[kBatch];
   std::size_t pending = 0;
   const auto flush = [&] {
     for (std::size_t k = 0; k < pending; ++k) out[undecided[k]] = scalar(std::size_t(undecided[k]));
@@ -35,8 +34,7 @@ std::size_t Blocks(double* out, std::size_t n, const Vector& vector, const Scala
     if (pending > kBatch - lanes) flush();
     auto decided = hn::FirstN(d, lanes);
     hn::StoreU(vector(d, i, decided), d, out + i);
-    pending += hn::CompressStore(hn::Iota(di, std::int64_t(i)), hn::RebindMask(di, hn::Not(decided)), di,
-                                 undecided + pending);
+    pending += AppendSetLanes(d, hn::Not(decided), std::int64_t(i), undecided + pending);
   }
   flush();
 #else

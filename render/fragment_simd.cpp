@@ -15,6 +15,7 @@ HWY_BEFORE_NAMESPACE();
 namespace uvtk::render::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 #if UVTK_LIBM_SIMD
+using uvtk::HWY_NAMESPACE::AppendSetLanes;
 using uvtk::HWY_NAMESPACE::Hypot;
 using uvtk::HWY_NAMESPACE::Log2;
 #endif
@@ -94,9 +95,8 @@ void ShadeFragments(const FragmentFrame& frame, FragmentBatch& b) {
     const V rho = hn::IfThenElse(xLonger, hx, hn::IfThenElse(yLonger, hy, hn::Max(hx, hy)));
     const V lambda = Log2(d, rho, decided) + hn::Set(d, frame.lodBias);
     hn::Store(lambda, d, b.lambda + i);
-    const auto inBatch = hn::FirstN(d, b.count - i);
-    b.undecidedCount += hn::CompressStore(hn::Iota(di, std::int64_t(i)), hn::RebindMask(di, hn::AndNot(decided, inBatch)),
-                                          di, b.undecided + b.undecidedCount);
+    b.undecidedCount += AppendSetLanes(d, hn::AndNot(decided, hn::FirstN(d, b.count - i)), std::int64_t(i),
+                                       b.undecided + b.undecidedCount);
   }
 #endif
 }
@@ -185,9 +185,8 @@ void SampleTexels(const FragmentTexture& tex, FragmentBatch& b) {
       hn::Store(hn::Add(row1, wi0), di, b.texel[4 * l + 2] + i), hn::Store(hn::Add(row1, wi1), di, b.texel[4 * l + 3] + i);
       hn::Store(a, d, b.alphaS[l] + i), hn::Store(c, d, b.betaT[l] + i), hn::Store(weights[l], d, b.levelWeight[l] + i);
     }
-    const auto inBatch = hn::FirstN(d, b.count - i);
-    b.unsampledCount += hn::CompressStore(hn::Iota(di, std::int64_t(i)), hn::RebindMask(di, hn::AndNot(finite, inBatch)),
-                                          di, b.unsampled + b.unsampledCount);
+    b.unsampledCount += AppendSetLanes(d, hn::AndNot(finite, hn::FirstN(d, b.count - i)), std::int64_t(i),
+                                       b.unsampled + b.unsampledCount);
   }
   // Then every row of texels asked for, so that it is in cache when blended (the levels a
   // frame minifies to are larger than the core's cache).
