@@ -33,12 +33,12 @@ std::string loadedObject(const char* name) {
   return search.found;
 }
 
-// Ends the process: 0 when the library named `name` is loaded exactly when `expected` says, else 1;
-// prints "NAME: PATH" or "NAME: not loaded".
-[[noreturn]] void exitOnLoaded(const char* name, bool expected) {
+// Whether the library named `name` is loaded exactly when `expected` says; prints "NAME: PATH" or
+// "NAME: not loaded".
+bool loadedAsExpected(const char* name, bool expected) {
   const std::string found = loadedObject(name);
   std::fprintf(stderr, "%s: %s\n", name, found.empty() ? "not loaded" : found.c_str());
-  std::exit(found.empty() == !expected ? 0 : 1);
+  return found.empty() == !expected;
 }
 
 class ImagePluginTest : public ScratchDirTest {
@@ -48,13 +48,19 @@ class ImagePluginTest : public ScratchDirTest {
     GTEST_FLAG_SET(death_test_style, "threadsafe");
   }
   std::string triangle() const { return writeText("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"); }
+  // Ends a death test's child process, which never reaches TearDown: its own scratch folder (its
+  // SetUp made one under its process id) removed first.
+  [[noreturn]] void exitChild(int status) {
+    ScratchDirTest::TearDown();
+    std::exit(status);
+  }
 };
 
 TEST_F(ImagePluginTest, ReadingAMeshDoesNotLoadOpenImageIo) {
   EXPECT_EXIT(
       {
         EXPECT_EQ(readMesh(triangle()).mesh.faceCount(), 1u);
-        exitOnLoaded("libOpenImageIO", false);
+        exitChild(loadedAsExpected("libOpenImageIO", false) ? 0 : 1);
       },
       ::testing::ExitedWithCode(0), "libOpenImageIO: not loaded");
 }
@@ -64,7 +70,7 @@ TEST_F(ImagePluginTest, ReadingAMeshDoesNotLoadLibcrypto) {
   EXPECT_EXIT(
       {
         readMesh(triangle());
-        exitOnLoaded("libcrypto", false);
+        exitChild(loadedAsExpected("libcrypto", false) ? 0 : 1);
       },
       ::testing::ExitedWithCode(0), "libcrypto: not loaded");
 }
@@ -75,22 +81,22 @@ TEST_F(ImagePluginTest, WritingAnImageLoadsOpenImageIo) {
       {
         readMesh(triangle());
         writeImage(path("a.png"), Image(2, 2, 3, 0.5f), PixelType::UInt8);
-        exitOnLoaded("libOpenImageIO", true);
+        exitChild(loadedAsExpected("libOpenImageIO", true) ? 0 : 1);
       },
       ::testing::ExitedWithCode(0), "libOpenImageIO: /.*libOpenImageIO");
 }
 
 // A missing plugin fails the image operation in its error class with one line naming the path tried.
 TEST_F(ImagePluginTest, AMissingPluginIsOneLineNamingThePath) {
-  const auto withoutPlugin = [](auto operation) {
+  const auto withoutPlugin = [this](auto operation) {
     ::setenv("UVTK_IMAGE_PLUGIN", "/nonexistent/libuvtk_image_oiio.so", 1);
     try {
       operation();
     } catch (const std::exception& e) {
       std::fprintf(stderr, "%s\n", e.what());
-      std::exit(exitStatus(e));
+      exitChild(exitStatus(e));
     }
-    std::exit(0);
+    exitChild(0);
   };
   const std::string missing =
       ": cannot load the image plugin: /nonexistent/libuvtk_image_oiio.so: cannot open shared object file: No "
