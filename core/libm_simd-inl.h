@@ -33,6 +33,21 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 #if UVTK_LIBM_SIMD
 
+// Whole numbers in [0, 2^52) between double and int64 lanes, exactly, through the bits of 2^52 + n:
+// an addition and a subtraction, where AVX2 has no instruction for either conversion (Highway's
+// emulation takes about 30 operations from double, 8 to double).
+template <class D, class V = hn::Vec<D>>
+hn::Vec<hn::RebindToSigned<D>> WholeToInt64(D d, V whole) {
+  const hn::RebindToSigned<D> di;
+  const V magic = hn::Set(d, 0x1p52);
+  return hn::Sub(hn::BitCast(di, whole + magic), hn::BitCast(di, magic));
+}
+template <class D, class VI>
+hn::Vec<D> WholeToDouble(D d, VI whole) {
+  const hn::Vec<D> magic = hn::Set(d, 0x1p52);
+  return hn::BitCast(d, hn::Or(whole, hn::BitCast(hn::RebindToSigned<D>(), magic))) - magic;
+}
+
 // Appends first + k for each set lane k of the mask, in order, at out (which has room for a whole
 // vector); returns how many. Without a branch per lane: which lanes are set is unpredictable. (Highway's
 // CompressStore does the same, but GCC 12 copies its 512-byte table to the stack on every AVX2 call.)
@@ -166,7 +181,7 @@ V Log2(D d, V x, hn::Mask<D>& decided) {
   const auto index = hn::BitCast(di, hn::And(hn::ShiftRight<47>(bits), hn::Set(du, 31)));
   const V inverseC = t::LookUp<32>(d, t::kLog2InverseC, index);
   const V tableHi = t::LookUp<32>(d, t::kLog2TableHi, index), tableLo = t::LookUp<32>(d, t::kLog2TableLo, index);
-  const V e = hn::ConvertTo(d, hn::BitCast(di, biased)) - hn::Set(d, 1023.0);
+  const V e = WholeToDouble(d, hn::BitCast(di, biased)) - hn::Set(d, 1023.0);
   const V k = e + hn::IfThenElseZero(hn::RebindMask(d, index > hn::Set(di, 12)), hn::Set(d, 1.0));
   // r = m / c - 1 as hi + lo: m (1/c) exactly by one fused operation, less 1 (exact: within 2).
   const V p = m * inverseC;
@@ -215,7 +230,7 @@ V Atan2(D d, V y, V x, hn::Mask<D>& decided) {
                                      u >= hn::Set(d, 0x1p-50)));
   // c = i/8 nearest u; u - c is exact (Sterbenz: u/2 <= c <= 2u for i >= 1).
   const V k = hn::Round(u * hn::Set(d, 8.0));
-  const auto index = hn::And(hn::ConvertTo(di, k), hn::Set(di, 7));
+  const auto index = hn::And(WholeToInt64(d, k), hn::Set(di, 7));
   const auto whole = k == hn::Set(d, 8.0);  // c = 1
   const V atanCHi = hn::IfThenElse(whole, hn::Set(d, t::kQuarterPiHi), t::LookUp<8>(d, t::kAtanOfEighthsHi, index));
   const V atanCLo = hn::IfThenElse(whole, hn::Set(d, t::kQuarterPiLo), t::LookUp<8>(d, t::kAtanOfEighthsLo, index));

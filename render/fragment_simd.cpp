@@ -18,6 +18,8 @@ namespace hn = hwy::HWY_NAMESPACE;
 using uvtk::HWY_NAMESPACE::AppendSetLanes;
 using uvtk::HWY_NAMESPACE::Hypot;
 using uvtk::HWY_NAMESPACE::Log2;
+using uvtk::HWY_NAMESPACE::WholeToDouble;
+using uvtk::HWY_NAMESPACE::WholeToInt64;
 #endif
 
 bool Vectorised() { return UVTK_LIBM_SIMD; }
@@ -165,11 +167,11 @@ void SampleTexels(const FragmentTexture& tex, FragmentBatch& b) {
     // Lanes read where sample() does not (s or t not finite) fetch texel 0 of level 0 instead.
     const V sIn = hn::IfThenElseZero(finite, s), tIn = hn::IfThenElseZero(finite, t);
     for (int l = 0; l < 2; ++l) {
-      const VI k = hn::ConvertTo(di, levels[l]);
+      const VI k = WholeToInt64(d, levels[l]);
       const VI w = hn::Max(width >> k, oneI), h = hn::Max(height >> k, oneI);  // GL: max(1, floor(w / 2^k))
       const VI offset = hn::GatherIndex(di, tex.levelOffset, k);
       const auto tap = [&](V coordinate, VI size, V& fraction) {  // linearTap, or nearestTexel
-        V u = coordinate * hn::ConvertTo(d, size);
+        V u = coordinate * WholeToDouble(d, size);
         u = hn::IfThenElse(linear, u - half, u);
         u = hn::Min(hn::Max(u, hn::Neg(far)), far);
         const V lower = hn::Floor(u);
@@ -209,7 +211,7 @@ void SampleTexels(const FragmentTexture& tex, FragmentBatch& b) {
         const auto bytes = hn::And(hn::BitCast(du, hn::GatherOffset(di, texels, hn::ShiftLeft<2>(index))),
                                    hn::Set(du, 0xFFFFFFFFull));
         for (int ch = 0; ch < channels; ++ch) {
-          const V byte = hn::ConvertTo(d, hn::BitCast(di, hn::And(hn::ShiftRightSame(bytes, 8 * ch), hn::Set(du, 255))));
+          const V byte = WholeToDouble(d, hn::BitCast(di, hn::And(hn::ShiftRightSame(bytes, 8 * ch), hn::Set(du, 255))));
           const V value = hn::PromoteTo(d, hn::DemoteTo(df, byte * hn::Set(d, 1.0 / 255.0)));
           const V term = weights[tx] * value;
           blended[ch] = tx == 0 ? term : blended[ch] + term;
