@@ -33,19 +33,19 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 #if UVTK_LIBM_SIMD
 
-// Whole numbers in [0, 2^52) between double and int64 lanes, exactly, through the bits of 2^52 + n:
-// an addition and a subtraction, where AVX2 has no instruction for either conversion (Highway's
-// emulation takes about 30 operations from double, 8 to double).
+// Whole numbers of magnitude below 2^51 between double and int64 lanes, exactly, through the bits of
+// 1.5 * 2^52 + n: an addition and a subtraction, where AVX2 has no instruction for either conversion
+// (Highway's emulation takes about 30 operations from double, 8 to double).
 template <class D, class V = hn::Vec<D>>
 hn::Vec<hn::RebindToSigned<D>> WholeToInt64(D d, V whole) {
   const hn::RebindToSigned<D> di;
-  const V magic = hn::Set(d, 0x1p52);
+  const V magic = hn::Set(d, 0x1.8p52);
   return hn::Sub(hn::BitCast(di, whole + magic), hn::BitCast(di, magic));
 }
 template <class D, class VI>
 hn::Vec<D> WholeToDouble(D d, VI whole) {
-  const hn::Vec<D> magic = hn::Set(d, 0x1p52);
-  return hn::BitCast(d, hn::Or(whole, hn::BitCast(hn::RebindToSigned<D>(), magic))) - magic;
+  const hn::Vec<D> magic = hn::Set(d, 0x1.8p52);
+  return hn::BitCast(d, hn::Add(whole, hn::BitCast(hn::RebindToSigned<D>(), magic))) - magic;
 }
 
 // Appends first + k for each set lane k of the mask, in order, at out (which has room for a whole

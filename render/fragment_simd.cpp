@@ -176,7 +176,7 @@ void SampleTexels(const FragmentTexture& tex, FragmentBatch& b) {
         u = hn::Min(hn::Max(u, hn::Neg(far)), far);
         const V lower = hn::Floor(u);
         fraction = hn::IfThenElseZero(linear, u - lower);
-        return hn::ConvertTo(di, lower);
+        return hn::AllTrue(d, hn::Abs(lower) < hn::Set(d, 0x1p51)) ? WholeToInt64(d, lower) : hn::ConvertTo(di, lower);
       };
       V a, c;
       const VI i0 = tap(sIn, w, a), j0 = tap(tIn, h, c);

@@ -62,7 +62,10 @@ TEST(SampleTexels, IsSampleBitForBitForEveryFilterAndWrap) {
         for (int round = 0; round < 20; ++round) {
           batch->count = FragmentBatch::kSize;
           for (std::size_t j = 0; j < batch->count; ++j) {
-            const double scale = j % 5 == 0 ? 1e6 : j % 5 == 1 ? 0.01 : 3.0;
+            // Every fourth round, coordinates whose texel index lies beyond 2^51 (the integer
+            // conversion's fast range) and beyond the clamp at 2^62.
+            const double huge = round % 4 == 3 && j % 5 == 2 ? 1e17 : 3.0;
+            const double scale = j % 5 == 0 ? 1e6 : j % 5 == 1 ? 0.01 : huge;
             batch->s[j] = scale * unit(random), batch->t[j] = scale * unit(random);
             batch->lambda[j] = 8.0 * unit(random) + 2.0;
             if (j % 37 == 3) batch->lambda[j] = nan;
