@@ -96,8 +96,7 @@ double scaleOfExtent(const Box& box) {
   // Halves: the extent of a box spanning -1e308 .. 1e308 does not overflow.
   const double extent = (0.5 * box.max() - 0.5 * box.min()).maxCoeff();
   constexpr double kLow = 0x1p-500, kHigh = 0x1p500;  // about 1e-150 .. 1e150
-  if (!(extent > 0.0) || !std::isfinite(extent) || (extent >= kLow && extent <= kHigh)) return 1.0;
-  return std::ldexp(1.0, -std::ilogb(extent));
+  return extent >= kLow && extent <= kHigh ? 1.0 : unitPowerOfTwo(extent);
 }
 
 // The bounding box of the points extended into it by extend(box, i) for i in [0, count), in chunks

@@ -78,7 +78,7 @@ bool spansSeam(const UvMap& uv, std::size_t f, double period) {
 std::size_t countOverlappedFaces(const UvMap& uv, const std::vector<FaceDistortion>& faces, const Overlap& overlap,
                                  const Eigen::AlignedBox2d& bounds) {
   if (overlap.overlappedPixels == 0) return 0;
-  const UvGrid grid{bounds, overlap.resolution};
+  const UvGrid grid = uvGridOver(bounds, overlap.resolution);
   const std::vector<std::uint8_t> counts = coverageCounts(uv, faces, grid);
   std::vector<std::uint8_t> overlapped(faces.size(), 0);
   forEachCoveredPixel(uv, faces, grid, [&](std::size_t face, int x, int y) {

@@ -32,6 +32,12 @@ std::int64_t floorDiv(std::int64_t a, std::int64_t b) { return a / b - ((a % b !
 
 }  // namespace
 
+UvGrid uvGridOver(const Eigen::AlignedBox2d& uvBounds, int resolution) {
+  UVTK_CHECK(!uvBounds.isEmpty() && uvBounds.min().allFinite() && uvBounds.max().allFinite());
+  const double scale = measureUvScale(uvBounds);
+  return {Eigen::AlignedBox2d(uvBounds.min() * scale, uvBounds.max() * scale), resolution, scale};
+}
+
 void forEachCoveredPixel(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid,
                          const std::function<void(std::size_t face, int x, int y)>& visit) {
   UVTK_CHECK(uv.uv.size() == 3 * faces.size());
@@ -39,8 +45,8 @@ void forEachCoveredPixel(const UvMap& uv, const std::vector<FaceDistortion>& fac
   UVTK_CHECK(resolution >= 1 && resolution <= 65536);
   const Vec2 origin = grid.bounds.min(), size = grid.bounds.sizes();
   UVTK_CHECK(origin.allFinite() && size.allFinite() && size.x() > 0.0 && size.y() > 0.0);
-  auto snap = [&](const Vec2& t) {
-    const Vec2 relative = (t - origin).cwiseQuotient(size);  // in [0, 1] over the grid
+  auto snap = [&](const Vec2& uvPoint) {
+    const Vec2 relative = (uvPoint * grid.scale - origin).cwiseQuotient(size);  // in [0, 1] over the grid
     UVTK_CHECK(relative.x() >= -1.0 && relative.x() <= 2.0 && relative.y() >= -1.0 && relative.y() <= 2.0);
     const double scale = static_cast<double>(resolution * kSubpixel);
     return Point{std::llround(relative.x() * scale), std::llround(relative.y() * scale)};
@@ -90,12 +96,12 @@ Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces
   UVTK_CHECK(resolution >= 1 && resolution <= 65536);
   Overlap overlap;
   overlap.resolution = resolution;
-  UvGrid grid{{}, resolution};
+  Eigen::AlignedBox2d bounds;
   for (std::size_t f = 0; f < faces.size(); ++f)
     if (isMeasured(faces[f].status))
-      for (int k = 0; k < 3; ++k) grid.bounds.extend(uv.uv[3 * f + std::size_t(k)]);
-  if (grid.bounds.isEmpty()) return overlap;
-  for (std::uint8_t count : coverageCounts(uv, faces, grid)) {
+      for (int k = 0; k < 3; ++k) bounds.extend(uv.uv[3 * f + std::size_t(k)]);
+  if (bounds.isEmpty()) return overlap;
+  for (std::uint8_t count : coverageCounts(uv, faces, uvGridOver(bounds, resolution))) {
     overlap.coveredPixels += count >= 1;
     overlap.overlappedPixels += count >= 2;
   }

@@ -36,9 +36,15 @@ struct Overlap {
 // is bounds.min() + (x, y) bounds.sizes() / resolution, y counted upward from v = bounds.min().y()
 // (pixel index y * resolution + x); its centre is half a cell further.
 struct UvGrid {
-  Eigen::AlignedBox2d bounds;
+  Eigen::AlignedBox2d bounds;  // in UV units times scale
   int resolution = 0;
+  // A power of two every UV is multiplied by before it is placed: 1, except for layouts beyond about
+  // 1e150 or below 1e-150 (measureUvScale), whose box would overflow or underflow (-1e308 .. 1e308).
+  double scale = 1.0;
 };
+
+// The grid of `resolution` pixels a side over `uvBounds` (non-empty, finite), with its scale.
+UvGrid uvGridOver(const Eigen::AlignedBox2d& uvBounds, int resolution);
 
 // Calls visit(face, x, y) for every pixel centre of `grid` that a face covers, face by face in
 // index order, for the faces with a non-degenerate Jacobian (isMeasured(faces[f].status): ok,

@@ -305,7 +305,9 @@ Statistics weightedStatistics(const double* values, const double* weights, std::
       lowestExponent = std::min(lowestExponent, exponent), highestExponent = std::max(highestExponent, exponent);
     }
   }
-  UVTK_CHECK(spacing == BinSpacing::Linear || s.min > 0.0);
+  // A log2 histogram needs positive values; where one underflowed to 0 (the measures of a mesh at the
+  // edge of the doubles' range) its bins are linear, as its spacing says.
+  if (spacing == BinSpacing::Log2 && !(s.min > 0.0)) spacing = s.histogram.spacing = BinSpacing::Linear;
   if (s.totalWeight <= 0.0) return s;
   s.mean = weightedSum / s.totalWeight;
 

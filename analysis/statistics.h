@@ -33,7 +33,8 @@ struct Statistics {
 
 // Statistics of values[i] with weights[i] >= 0, i < count, in any order (read, not reordered):
 // finite values, entries of zero weight counting for min and max. No items give zeros and empty
-// bins. Preconditions: bins >= 1, and values > 0 for Log2 spacing. The mean, the total and the
+// bins. Precondition: bins >= 1. Log2 spacing where every value is > 0, else linear (the histogram's
+// spacing says which). The mean, the total and the
 // histogram are summed in the items' order; the percentiles are exact (their running weights
 // summed without rounding).
 Statistics weightedStatistics(const double* values, const double* weights, std::size_t count, BinSpacing spacing,

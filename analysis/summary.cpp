@@ -64,18 +64,26 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
 
   // Sander et al. 2001, "Texture stretch metric": L2(M) = sqrt(sum(A3 L2^2) / sum(A3)), Linf(M) = max Linf, each
   // times sqrt(sum(Auv) / sum(A3)) so that a uniformly scaled layout scores as the isometry. The sums in face
-  // order, one pass; max(Linf) times the positive normalisation is max(Linf times it), rounding being monotonic.
+  // order; max(Linf) times the positive normalisation is max(Linf times it), rounding being monotonic.
   AreaTotals& totals = s.okTotals;
-  double l2Squares = 0.0, linfMax = 0.0;
+  double linfMax = 0.0;
   for (const FaceDistortion& face : faces) {
     if (face.status != FaceStatus::Ok) continue;
     totals.surface += face.area3d, totals.uv += face.areaUv;
-    l2Squares += face.area3d * face.l2Stretch() * face.l2Stretch();
     linfMax = std::max(linfMax, face.linfStretch());
   }
   const double normalisation = std::sqrt(1.0 / totals.surfacePerUv());
   if (totals.surface > 0.0) {
-    s.l2Stretch = std::sqrt(l2Squares / totals.surface) * normalisation;
+    // A3 L2^2 grows as the fourth power of the mesh's size (at 1e77 it overflows): each L2 is taken
+    // times the power of two that brings 1 / normalisation (a typical L2) to about 1; exact, undone below.
+    const double unit = unitPowerOfTwo(1.0 / normalisation);
+    double l2Squares = 0.0;
+    for (const FaceDistortion& face : faces)
+      if (face.status == FaceStatus::Ok) {
+        const double l2 = face.l2Stretch() * unit;
+        l2Squares += face.area3d * l2 * l2;
+      }
+    s.l2Stretch = std::sqrt(l2Squares / totals.surface) / unit * normalisation;
     s.linfStretch = linfMax * normalisation;
   }
   // Each statistic of the ok faces' values weighted by their 3D areas: the areas gathered once (on

@@ -2,6 +2,7 @@
 // unless a precision is chosen (Vec2T, Vec3T).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Core>
@@ -27,12 +28,15 @@ using Vec4T = Eigen::Matrix<T, 4, 1>;
 
 constexpr double kPi = 3.14159265358979323846264338327950288;
 
-// The power of two that brings the largest |entry| of `m` into [1, 2); 1 when no entry is finite
-// and non-zero. Scaling by it is exact, so directions and ratios computed afterwards are unchanged.
-inline double unitPowerOfTwo(const Mat3& m) {
-  const double largest = m.cwiseAbs().maxCoeff();
-  return largest > 0.0 && std::isfinite(largest) ? std::ldexp(1.0, -std::ilogb(largest)) : 1.0;
+// The power of two that brings `largest` (> 0) into [1, 2), or as near as a double's exponent
+// reaches (2^1023 for a subnormal: its ilogb is below -1023); 1 when it is not finite and positive.
+// Scaling by it is exact, so directions and ratios computed afterwards are unchanged.
+inline double unitPowerOfTwo(double largest) {
+  if (!(largest > 0.0) || !std::isfinite(largest)) return 1.0;
+  return std::ldexp(1.0, std::clamp(-std::ilogb(largest), -1022, 1023));
 }
+// The same for the largest |entry| of `m`.
+inline double unitPowerOfTwo(const Mat3& m) { return unitPowerOfTwo(m.cwiseAbs().maxCoeff()); }
 
 // The inverse of a 3x3 matrix with entries anywhere in a double's range (1e-300 .. 1e300): inverted
 // at unit scale, so the determinant (the cube of the scale) neither overflows nor underflows. Equal

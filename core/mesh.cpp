@@ -13,7 +13,7 @@ namespace {
 double unitScale(const Mesh& mesh) {
   double largest = 0.0;
   for (const Vec3& p : mesh.positions) largest = std::max(largest, p.cwiseAbs().maxCoeff());
-  return largest > 0.0 && std::isfinite(largest) ? std::ldexp(1.0, -std::ilogb(largest)) : 1.0;
+  return unitPowerOfTwo(largest);
 }
 
 Vec3 scaledAreaNormal(const Mesh& mesh, const Triangle& t, double scale) {

@@ -476,7 +476,7 @@ void clipPositions(const Mesh& mesh, const Mat4& clipFromObject, int threads, st
   double least = INFINITY, greatest = 0.0;
   for (const auto& [l, g] : range) least = std::min(least, l), greatest = std::max(greatest, g);
   if (least > 0x1p400 || (greatest > 0.0 && greatest < 0x1p-400)) {
-    const double scale = std::ldexp(1.0, -std::ilogb(greatest));
+    const double scale = unitPowerOfTwo(greatest);
     parallelFor(chunks, threads, [&](int chunk) {
       const std::size_t end = std::min(clip.size(), std::size_t(chunk + 1) * kChunk);
       for (std::size_t v = std::size_t(chunk) * kChunk; v < end; ++v) clip[v] *= scale;

@@ -1,5 +1,7 @@
 // layout: the UV triangles filled by a measure's colour, overlaps hatched, seam edges drawn on
 // both sides, the unit square framed.
+#include <algorithm>
+#include <cfloat>
 #include <cstdint>
 #include <string>
 
@@ -25,16 +27,19 @@ std::string range(double lo, double hi) { return formatNumber(lo) + ".." + forma
 }  // namespace
 
 analysis::UvGrid layoutGrid(const Eigen::AlignedBox2d& uvBounds, int size) {
-  Eigen::AlignedBox2d shown(Vec2::Zero(), Vec2::Ones());
-  shown.extend(uvBounds);  // an empty box (no valid corner) leaves the unit square
-  UVTK_CHECK(shown.min().allFinite() && shown.max().allFinite());
+  Eigen::AlignedBox2d content(Vec2::Zero(), Vec2::Ones());
+  content.extend(uvBounds);  // an empty box (no valid corner) leaves the unit square
+  // The square with margins in the grid's scaled units (a layout spanning -1e308 .. 1e308 has no size in UV units).
+  analysis::UvGrid grid = analysis::uvGridOver(content, size);
+  const Eigen::AlignedBox2d& shown = grid.bounds;
   const double half = 0.5 * shown.sizes().maxCoeff() * (1.0 + 2.0 * kLayoutMargin);
   const Vec2 centre = shown.center();
-  return {Eigen::AlignedBox2d(centre - Vec2::Constant(half), centre + Vec2::Constant(half)), size};
+  grid.bounds = Eigen::AlignedBox2d(centre - Vec2::Constant(half), centre + Vec2::Constant(half));
+  return grid;
 }
 
 Vec2 layoutImagePoint(const analysis::UvGrid& grid, const Vec2& uv) {
-  const Vec2 relative = (uv - grid.bounds.min()).cwiseQuotient(grid.bounds.sizes());
+  const Vec2 relative = (uv * grid.scale - grid.bounds.min()).cwiseQuotient(grid.bounds.sizes());
   return Vec2(relative.x(), 1.0 - relative.y()) * grid.resolution;
 }
 
@@ -76,9 +81,11 @@ DrawnView drawLayout(const ViewInput& in, const ViewOptions& options) {
                   kSeamWidth, SeamMarks::colour(edge));
 
   Legend legend = colouring.legend;
+  // The shown square in UV units, as far as a double reaches.
+  const auto uvUnits = [&](double x) { return std::clamp(x / grid.scale, -DBL_MAX, DBL_MAX); };
   const Eigen::AlignedBox2d& shown = grid.bounds;
-  legend.title.insert(legend.title.begin(), "UV layout, u " + range(shown.min().x(), shown.max().x()) + "   v " +
-                                                range(shown.min().y(), shown.max().y()));
+  legend.title.insert(legend.title.begin(), "UV layout, u " + range(uvUnits(shown.min().x()), uvUnits(shown.max().x())) +
+                                                "   v " + range(uvUnits(shown.min().y()), uvUnits(shown.max().y())));
   // The hatching is drawn at this picture's resolution; the numbers are the judgement's.
   const analysis::Overlap& overlap = judgement.summary.overlap;
   legend.entries.push_back({kLayoutBackground, "overlap: " + overlapText(overlap), 2});

@@ -181,11 +181,13 @@ TEST(AnalysisExtremes, AJudgementDoesNotDependOnTheMeshScale) {
   const Judgement reference = judge(knot, atOne.uv);
   ASSERT_GT(reference.reasons.size(), 1u);  // a mapping with flipped faces, overlap and stretch to compare
   EXPECT_EQ(measureLengthScale(knot), 1.0);
-  for (const int exponent : {-997, -664, -510, 510, 664, 997}) {
+  // At 2^+-300 the lengths are measured as they are, but A3 L2^2 would overflow (2^1200) or
+  // underflow: the mesh's L2 stretch was null or 0.
+  for (const int exponent : {-997, -664, -510, -300, 300, 510, 664, 997}) {
     SCOPED_TRACE("the knot times 2^" + std::to_string(exponent));
     Mesh scaled = knot;
     for (Vec3& p : scaled.positions) p = p.unaryExpr([&](double x) { return std::ldexp(x, exponent); });
-    EXPECT_NE(measureLengthScale(scaled), 1.0);
+    EXPECT_EQ(measureLengthScale(scaled) == 1.0, std::abs(exponent) < 500);
     const Judgement j = judge(scaled, atOne.uv);  // the same UVs: only the 3D lengths scale
     expectSameJudgement(j, reference);
     for (std::size_t f = 0; f < j.faces.size(); ++f)
@@ -204,7 +206,7 @@ TEST(AnalysisExtremes, AJudgementDoesNotDependOnTheUvScale) {
   const param::Projection atOne = param::project(knot, o);
   const Judgement reference = judge(knot, atOne.uv);
   EXPECT_EQ(measureUvScale(atOne.uv), 1.0);
-  for (const int exponent : {-997, -664, -510, 510, 664, 997}) {
+  for (const int exponent : {-997, -664, -510, -300, 300, 510, 664, 997}) {
     for (const bool meshToo : {false, true}) {
       SCOPED_TRACE("UVs times 2^" + std::to_string(exponent) + (meshToo ? ", mesh too" : ""));
       UvMap uv = atOne.uv;
@@ -212,13 +214,69 @@ TEST(AnalysisExtremes, AJudgementDoesNotDependOnTheUvScale) {
       Mesh mesh = knot;
       if (meshToo)
         for (Vec3& p : mesh.positions) p = p.unaryExpr([&](double x) { return std::ldexp(x, exponent); });
-      EXPECT_NE(measureUvScale(uv), 1.0);
+      EXPECT_EQ(measureUvScale(uv) == 1.0, std::abs(exponent) < 500);
       const Judgement j = judge(mesh, uv);
       expectSameJudgement(j, reference);
       for (std::size_t f = 0; f < j.faces.size(); ++f)
         EXPECT_EQ(j.faces[f].angleDistortion(), reference.faces[f].angleDistortion()) << "face " << f;
     }
   }
+}
+
+// Subnormal positions and UVs (1e-320: `uvtk report` of a triangle with such UVs stopped with an
+// internal error): their scale, 2^1064 or more, is beyond a double, so they are measured at 2^1023
+// times their size. A grid of small whole numbers stays exact at 2^-1064, so the judgement agrees
+// exactly with the same grid at unit scale.
+TEST(AnalysisExtremes, SubnormalPositionsAndUvsAreJudgedAsAtUnitScale) {
+  Mesh grid;
+  UvMap unit;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) grid.positions.push_back(Vec3(i, j, (i * j) % 3));
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) {
+      const int a = 4 * j + i;
+      for (const Triangle& t : {Triangle{a, a + 1, a + 5}, Triangle{a, a + 5, a + 4}}) {
+        grid.triangles.push_back(t);
+        for (const int v : t) unit.uv.push_back(Vec2(v % 4 + (v / 4) % 2, v / 4));  // a sheared layout
+      }
+    }
+  unit.faceFlags.assign(grid.triangles.size(), 0);
+  const Judgement reference = judge(grid, unit);
+  for (const bool positionsToo : {false, true}) {
+    SCOPED_TRACE(positionsToo ? "UVs and positions times 2^-1064" : "UVs times 2^-1064");
+    UvMap tiny = unit;
+    for (Vec2& t : tiny.uv) t = t.unaryExpr([](double x) { return std::ldexp(x, -1064); });
+    Mesh mesh = grid;
+    if (positionsToo)
+      for (Vec3& p : mesh.positions) p = p.unaryExpr([](double x) { return std::ldexp(x, -1064); });
+    EXPECT_EQ(measureUvScale(tiny), 0x1p1023);
+    const Judgement j = judge(mesh, tiny);
+    expectSameJudgement(j, reference);
+    EXPECT_EQ(j.summary.l2Stretches.p50, reference.summary.l2Stretches.p50);
+  }
+}
+
+// A layout spanning -2^1023 .. 2^1023, whose size overflows a double: the overlap raster stopped
+// with an internal error. Its grid is placed at a power of two (uvGridOver), so the overlap and the
+// faces overlapping are the same as at unit scale.
+TEST(AnalysisExtremes, ALayoutWhoseSizeOverflowsIsRasterisedAsAtUnitScale) {
+  const Mesh knot = meshes::torusKnot(2, 3, 64, 8);
+  param::ProjectorOptions o;
+  o.surface = param::SurfaceKind::Cylinder;
+  o.placement.fit = param::Fit::BBox;
+  UvMap centred = param::project(knot, o).uv;
+  for (Vec2& t : centred.uv) t -= Vec2(0.5, 0.5);
+  const Judgement reference = judge(knot, centred);
+  ASSERT_GT(reference.summary.overlap.overlappedPixels, 0u);
+  UvMap huge = centred;
+  for (Vec2& t : huge.uv) t = t.unaryExpr([](double x) { return std::ldexp(x, 1024); });
+  const Eigen::AlignedBox2d bounds = validUvBounds(huge);
+  ASSERT_TRUE(bounds.min().allFinite() && bounds.max().allFinite() && !bounds.sizes().allFinite());
+  const Judgement j = judge(knot, huge);
+  expectSameJudgement(j, reference);
+  EXPECT_EQ(j.summary.overlap.coveredPixels, reference.summary.overlap.coveredPixels);
+  EXPECT_EQ(j.summary.overlap.overlappedPixels, reference.summary.overlap.overlappedPixels);
+  EXPECT_EQ(j.overlappedFaces, reference.overlappedFaces);
 }
 
 }  // namespace
