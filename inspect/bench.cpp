@@ -287,7 +287,7 @@ std::vector<nlohmann::json> benchRendering(const BenchOptions& a, const Mesh& me
   // The scene as `uvtk render` sets it up (cli::renderMeshFile): the camera made on the mesh read,
   // the mesh mapped, the renderer's options of the frame and the texture. Each row then sets its
   // filter, samples and threads.
-  const render::Camera camera = a.camera.make(mesh, Mat4::Identity(), a.frame.width, a.frame.height);
+  const render::Camera camera = a.camera.make(mesh, a.mesh, Mat4::Identity(), a.frame.width, a.frame.height);
   const MappedMesh mapped = mapByProjector(mesh, a.renderProjector.options, false);
   const render::TexcoordSource perVertex = mapped.texcoordSource(false), perPixel = mapped.texcoordSource(true);
   const render::RenderOptions base = renderOptions(a.frame, a.textureOptions, a.texture, camera, Mat4::Identity());

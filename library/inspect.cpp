@@ -205,7 +205,7 @@ Image render(const Mapping& mapping, const RenderOptions& options) {
                                         "have none");
     cli::checkTextureUse(command.frame, command.texture,
                          mapped.projector ? &*mapped.projector : nullptr);
-    const render::Camera camera = command.camera.make(mapped.mesh, Mat4::Identity(), frame.width, frame.height);
+    const render::Camera camera = command.camera.make(mapped.mesh, "the mapping's mesh", Mat4::Identity(), frame.width, frame.height);
     const inspect::BoundTexture texture = command.texture.load();
     const render::RenderOptions renderOptions =
         inspect::renderOptions(frame, command.texture.options(), texture, camera, Mat4::Identity());

@@ -120,7 +120,7 @@ inspect::ImageCheckRun checkImageFile(CheckArguments a) {
   const Mat4 worldFromObject = a.mapping.model.empty() ? Mat4::Identity() : parseMatrix(a.mapping.model, "--model");
 
   io::ReadMeshResult input = io::readMesh(a.input);
-  const render::Camera camera = a.camera.make(input.mesh, worldFromObject, frame.width, frame.height);
+  const render::Camera camera = a.camera.make(input.mesh, a.input, worldFromObject, frame.width, frame.height);
   inspect::MappedMesh mapped;
   if (projectorGiven) {  // the reflection O-mapping sees from the camera's eye, as in `uvtk render`
     if (projector.options.ray == param::RayKind::Reflection)

@@ -92,7 +92,8 @@ void CameraArguments::check() const {
   if (!ortho.empty() && ortho != "auto") parseVec4(ortho, "--ortho");
 }
 
-render::Camera CameraArguments::make(const Mesh& mesh, const Mat4& worldFromObject, int width, int height) const {
+render::Camera CameraArguments::make(const Mesh& mesh, const std::string& meshFile, const Mat4& worldFromObject, int width,
+                                     int height) const {
   check();
   const Vec3 upDir = parseVec3(up, "--up");
   const bool manual = explicitCamera();
@@ -103,7 +104,11 @@ render::Camera CameraArguments::make(const Mesh& mesh, const Mat4& worldFromObje
       world[v] = (worldFromObject * mesh.positions[v].homogeneous()).head<3>();
     const Vec3 direction =
         eye.empty() ? parseVec3(viewDir, "--view-dir") : Vec3(parseVec3(eye, "--eye") - parseVec3(center, "--center"));
-    return render::frameSphere(render::boundingSphere(world), direction, upDir, {ortho == "auto", fovy}, width, height);
+    try {
+      return render::frameSphere(render::boundingSphere(world), direction, upDir, {ortho == "auto", fovy}, width, height);
+    } catch (const InputError& e) {
+      throw InputError(meshFile + ": error: " + e.what());
+    }
   }
   camera.width = width;
   camera.height = height;
@@ -330,7 +335,7 @@ RenderResult renderMeshFile(RenderJob a) {
   const nlohmann::json inputSummary = inputJson(a.input, input);
 
   const auto [width, height] = a.frame.imageSize();
-  const render::Camera camera = a.camera.make(input.mesh, worldFromObject, width, height);
+  const render::Camera camera = a.camera.make(input.mesh, a.input, worldFromObject, width, height);
   clock.start("texture coordinates", std::to_string(input.mesh.faceCount()) + " faces");
   MappedMesh mapped;
   if (projectorGiven) {

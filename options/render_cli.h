@@ -38,8 +38,10 @@ struct CameraArguments {
   CLI::App* app = nullptr;  // where the options were parsed; none: the defaults
 
   // gluLookAt + gluPerspective or glOrtho as given, or framing the mesh (`worldFromObject`
-  // applied) when automatic; throws UsageError for malformed or conflicting values.
-  render::Camera make(const Mesh& mesh, const Mat4& worldFromObject, int width, int height) const;
+  // applied) when automatic; throws UsageError for malformed or conflicting values, and InputError
+  // naming `meshFile` for a mesh too large to frame.
+  render::Camera make(const Mesh& mesh, const std::string& meshFile, const Mat4& worldFromObject, int width,
+                      int height) const;
   void check() const;  // what make() would refuse, before any work
   bool explicitCamera() const;
 };

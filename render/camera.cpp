@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "core/error.h"
@@ -44,9 +45,20 @@ Camera frameSphere(const BoundingSphere& sphere, const Vec3& eyeDirection, const
   Camera camera;
   camera.width = width;
   camera.height = height;
+  // Beyond about 1e307 the eye and the far plane lie past the largest double: said, not a lookAt failure.
+  const auto checkRoom = [&](double distance) {
+    if (std::isfinite(distance + 2.0 * radius) && (sphere.center + distance * direction).allFinite()) return;
+    char message[200];
+    std::snprintf(message, sizeof message,
+                  "the mesh (bounding sphere of radius %.3g) is too large for a camera to frame: the eye would lie "
+                  "beyond the largest double; scale it below about 1e307",
+                  radius);
+    throw InputError(message);
+  };
   if (projection.orthographic) {
     const double half = 1.05 * radius;
     const double distance = 3.0 * radius;
+    checkRoom(distance);
     camera.viewFromWorld = lookAt(sphere.center + distance * direction, sphere.center, up);
     const double hx = aspect >= 1.0 ? half * aspect : half, hy = aspect >= 1.0 ? half : half / aspect;
     camera.clipFromView = orthographic(-hx, hx, -hy, hy, distance - 2.0 * radius, distance + 2.0 * radius);
@@ -56,6 +68,7 @@ Camera frameSphere(const BoundingSphere& sphere, const Vec3& eyeDirection, const
   const double halfFovx = std::atan(std::tan(halfFovy) * aspect);
   // The sphere, shrunk to 90% of the field, touches the narrower half-angle's cone.
   const double distance = radius / (0.9 * std::sin(std::min(halfFovy, halfFovx)));
+  checkRoom(distance);
   camera.viewFromWorld = lookAt(sphere.center + distance * direction, sphere.center, up);
   const double zNear = std::max(0.5 * (distance - radius), 1e-6 * distance);
   camera.clipFromView = perspective(projection.fovyDegrees, aspect, zNear, distance + 2.0 * radius);

@@ -34,7 +34,8 @@ struct Projection {
 // centre with `up`, far enough that the sphere fills 90% of the smaller field of view; near and
 // far enclose the sphere with a margin. Orthographic: the view volume is the sphere's box with a
 // 5% margin in the smaller image dimension. Throws UsageError for a zero direction, an up parallel
-// to it, or an empty viewport.
+// to it, or an empty viewport; InputError for a sphere so large (beyond about 1e307) that the eye
+// or the far plane would lie beyond the largest double.
 Camera frameSphere(const BoundingSphere& sphere, const Vec3& eyeDirection, const Vec3& up, const Projection& projection,
                    int width, int height);
 

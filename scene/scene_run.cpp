@@ -339,7 +339,7 @@ class SceneRunner {
       case SceneMapping::Kind::Texgen: {
         const Mat4& model = scene_.meshes[m.mesh].model;
         // A camera's view as framed for a 512 x 512 picture (framing depends on the aspect only through the distance).
-        const Mat4 view = m.camera ? Mat4(scene_.cameras[*m.camera].arguments.make(mesh, model, 512, 512).viewFromWorld)
+        const Mat4 view = m.camera ? Mat4(scene_.cameras[*m.camera].arguments.make(mesh, scene_.meshes[m.mesh].path, model, 512, 512).viewFromWorld)
                                    : m.viewFromWorld;
         return mapByTexgen(std::move(mesh), m.texgen.resolve(view, model));
       }
@@ -363,10 +363,11 @@ class SceneRunner {
 
   void renderOutput(io::OutputSet& outputs, const SceneOutput& o, std::size_t index, MeshWork& work) {
     const MappedMesh& mapped = work.mapped.at(*o.mapping);
-    const Mat4& model = scene_.meshes[scene_.mappings[*o.mapping].mesh].model;
+    const SceneMesh& sceneMesh = scene_.meshes[scene_.mappings[*o.mapping].mesh];
+    const Mat4& model = sceneMesh.model;
     const auto [width, height] = o.frame.imageSize();
-    const render::Camera camera = o.camera ? scene_.cameras[*o.camera].arguments.make(mapped.mesh, model, width, height)
-                                           : CameraArguments{}.make(mapped.mesh, model, width, height);
+    const CameraArguments& arguments = o.camera ? scene_.cameras[*o.camera].arguments : CameraArguments{};
+    const render::Camera camera = arguments.make(mapped.mesh, sceneMesh.path, model, width, height);
     const std::size_t texture = o.texture.value_or(scene_.textures.size());
     const analysis::Judgement* judged = nullptr;  // on the first call only
     const auto judgement = [&]() -> const analysis::Judgement& {
