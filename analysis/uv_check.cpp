@@ -15,6 +15,11 @@ ErrorStatistics errorStatistics(std::vector<double> values) {
   double sum = 0.0;
   for (double x : values) sum += x;
   s.mean = sum / double(values.size());
+  // Errors near the largest double overflow their sum, not their mean: each divided first there.
+  if (std::isinf(s.mean) && std::all_of(values.begin(), values.end(), [](double x) { return std::isfinite(x); })) {
+    s.mean = 0.0;
+    for (double x : values) s.mean += x / double(values.size());
+  }
   // Nearest rank: the ceil(0.99 n)-th smallest, in integers so that no rounding moves the rank.
   const std::size_t rank = (99 * values.size() + 99) / 100;  // 1-based, in [1, n]
   std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(rank - 1), values.end());

@@ -41,7 +41,8 @@ const char* missReason(const param::ProjectorOptions& o, CornerInvalid reason) {
     return o.surface == SurfaceKind::Cylinder ? "the central ray runs along the cylinder's axis"
            : o.surface == SurfaceKind::Sphere ? "the point is the sphere's centre"
                                               : "the central ray points away from the surface";
-  if (o.ray == RayKind::SurfaceNormal) return "the point is the sphere's centre";  // isn misses nothing else
+  if (o.ray == RayKind::SurfaceNormal)  // isn misses nothing else (the cylinder's axis is a pole)
+    return o.surface == SurfaceKind::Cube ? "the point is the cube's centre" : "the point is the sphere's centre";
   switch (o.surface) {
     case SurfaceKind::Plane:
     case SurfaceKind::TwoPlane:

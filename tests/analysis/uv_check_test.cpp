@@ -72,6 +72,11 @@ TEST(ErrorStatistics, MaxP99ByNearestRankAndMean) {
   EXPECT_EQ(s.max, 0.4);
   EXPECT_EQ(s.p99, 0.4);  // rank ceil(3.96) = 4
   EXPECT_DOUBLE_EQ(s.mean, 0.25);
+  // Errors near the largest double: their sum overflows, their mean does not (it was inf).
+  const double big = 0x1.8p1023;  // 1.35e308
+  EXPECT_EQ(errorStatistics({big, big, big}).mean, big);
+  EXPECT_EQ(errorStatistics({big, 0.0}).mean, 0.5 * big);
+  EXPECT_EQ(errorStatistics({big, HUGE_VAL}).mean, HUGE_VAL);  // an infinite error stays infinite
 }
 
 TEST(ErrorStatistics, P99IsTheValueOfRankCeil99PercentOfN) {

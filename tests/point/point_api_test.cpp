@@ -64,6 +64,10 @@ TEST(PointApi, SphereSeamPoleAndInvalidSayWhy) {
   const Result centre = sphere.at({0, 0, 0});
   EXPECT_UV_STATUS(centre, Status::Invalid);
   EXPECT_STREQ(centre.reason, "the point is the sphere's centre");
+  // The cube's isn ray is undefined there too, and says so of the cube (it named the sphere).
+  const Result cubeCentre = Mapping("--projector cube").at({0, 0, 0});
+  EXPECT_UV_STATUS(cubeCentre, Status::Invalid);
+  EXPECT_STREQ(cubeCentre.reason, "the point is the cube's centre");
   EXPECT_EQ(centre.u, 0.0);
   EXPECT_EQ(centre.v, 0.0);
 
