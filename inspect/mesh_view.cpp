@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/math.h"
 #include "core/markup.h"
 #include "inspect/html_page.h"
 #include "io/image_io.h"
@@ -244,12 +245,17 @@ std::string meshViewHtml(const MappedMesh& mapped, const analysis::Judgement& ju
   key.uvs = &lookup;
   const io::SplitVertices split = io::splitVertices(shown.mesh, key);
 
-  // Positions about the box centre, in units of half its longest side (halves against overflow).
+  // Positions about the box centre, in units of half its longest side: first times the power of two
+  // that brings the largest coordinate to about 1 (exact; a mesh at 1e-310 keeps its shape), then
+  // by halves (a box spanning -1e308 .. 1e308 does not overflow).
   Eigen::AlignedBox3d box;
   for (const Vec3& p : shown.mesh.positions) box.extend(p);
-  const Vec3 centre = box.isEmpty() ? Vec3::Zero() : Vec3(0.5 * box.min() + 0.5 * box.max());
-  const double half = box.isEmpty() ? 1.0 : std::max((0.5 * box.max() - 0.5 * box.min()).maxCoeff(), 1e-300);
-  auto normalised = [&](const Vec3& p) { return Vec3(2.0 * ((0.5 * p - 0.5 * centre) / half)); };
+  const double unit = box.isEmpty() ? 1.0 : unitPowerOfTwo(std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff()));
+  const Vec3 lo = box.isEmpty() ? Vec3::Zero() : Vec3(box.min() * unit), hi = box.isEmpty() ? Vec3::Zero() : Vec3(box.max() * unit);
+  const Vec3 centre = 0.5 * lo + 0.5 * hi;
+  const double extent = (0.5 * hi - 0.5 * lo).maxCoeff();
+  const double half = extent > 0.0 ? extent : 1.0;  // a point: its one position at the centre
+  auto normalised = [&](const Vec3& p) { return Vec3(2.0 * ((0.5 * (p * unit) - 0.5 * centre) / half)); };
   std::vector<std::uint16_t> positions;
   std::vector<float> uvs;
   for (std::size_t s = 0; s < split.size(); ++s) {

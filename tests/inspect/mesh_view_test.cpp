@@ -191,6 +191,25 @@ TEST(MeshViewHtml, TheDataDecodesToTheMeshItsUvsAndItsJudgement) {
   EXPECT_EQ(array<float>(data, "seam_points").size(), 6 * array<std::uint8_t>(data, "seam_wrap").size());
 }
 
+// A mesh at 2^-1030 (subnormal coordinates) or 2^1000 is shown with the shape it has at 1: its
+// positions were divided by at least 1e-300, so a mesh below that became a point at the centre.
+TEST(MeshViewHtml, PositionsDoNotDependOnTheMeshScale) {
+  const MappedMesh atOne = sphereMapped(24, 12, param::SurfaceKind::Plane);
+  const std::vector<std::uint16_t> reference =
+      array<std::uint16_t>(viewData(meshViewHtml(atOne, atOne.judge(), {})), "positions");
+  for (const int exponent : {-1030, 1000}) {
+    SCOPED_TRACE("the sphere times 2^" + std::to_string(exponent));
+    MappedMesh scaled = atOne;
+    for (Vec3& p : scaled.mesh.positions) p = p.unaryExpr([&](double x) { return std::ldexp(x, exponent); });
+    const std::vector<std::uint16_t> positions =
+        array<std::uint16_t>(viewData(meshViewHtml(scaled, scaled.judge(), {})), "positions");
+    ASSERT_EQ(positions.size(), reference.size());
+    // Exact at 2^1000; at 2^-1030 the coordinates keep 44 bits, so a code may move by one.
+    for (std::size_t k = 0; k < positions.size(); ++k)
+      EXPECT_LE(std::abs(int(positions[k]) - int(reference[k])), exponent > 0 ? 0 : 1) << "coordinate " << k;
+  }
+}
+
 TEST(MeshViewHtml, ExactValuesSurviveAsHalves) {
   // A plane mapped by the plane projector: stretch exactly 1 and area distortion exactly 0 on every face.
   param::ProjectorOptions options;
