@@ -87,15 +87,6 @@ std::size_t countOverlappedFaces(const UvMap& uv, const std::vector<FaceDistorti
   return std::size_t(std::count(overlapped.begin(), overlapped.end(), std::uint8_t(1)));
 }
 
-// The UV bounding box of the faces the overlap raster draws (measureOverlap's box).
-Eigen::AlignedBox2d measuredFaceBounds(const UvMap& uv, const std::vector<FaceDistortion>& faces) {
-  Eigen::AlignedBox2d box;
-  for (std::size_t f = 0; f < faces.size(); ++f)
-    if (isMeasured(faces[f].status))
-      for (std::size_t corner = 3 * f; corner < 3 * f + 3; ++corner) box.extend(uv.uv[corner]);
-  return box;
-}
-
 }  // namespace
 
 const char* toString(Verdict verdict) {
@@ -261,7 +252,7 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
     j.unrepairedSeamFaces += t.unrepairedSeamFaces;
   }
   if (j.summary.overlap.overlappedPixels > 0)
-    j.overlappedFaces = countOverlappedFaces(uv, j.faces, j.summary.overlap, measuredFaceBounds(uv, j.faces));
+    j.overlappedFaces = countOverlappedFaces(uv, j.faces, j.summary.overlap, measuredUvBounds(uv, j.faces));
 
   const auto share = [&](double area) { return j.surfaceArea > 0.0 ? area / j.surfaceArea : 0.0; };
   const auto set = [&](Rule rule, double value, std::size_t faces) {

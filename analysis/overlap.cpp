@@ -32,6 +32,14 @@ std::int64_t floorDiv(std::int64_t a, std::int64_t b) { return a / b - ((a % b !
 
 }  // namespace
 
+Eigen::AlignedBox2d measuredUvBounds(const UvMap& uv, const std::vector<FaceDistortion>& faces) {
+  Eigen::AlignedBox2d box;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    if (isMeasured(faces[f].status))
+      for (std::size_t corner = 3 * f; corner < 3 * f + 3; ++corner) box.extend(uv.uv[corner]);
+  return box;
+}
+
 UvGrid uvGridOver(const Eigen::AlignedBox2d& uvBounds, int resolution) {
   UVTK_CHECK(!uvBounds.isEmpty() && uvBounds.min().allFinite() && uvBounds.max().allFinite());
   const double scale = measureUvScale(uvBounds);
@@ -96,10 +104,7 @@ Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces
   UVTK_CHECK(resolution >= 1 && resolution <= 65536);
   Overlap overlap;
   overlap.resolution = resolution;
-  Eigen::AlignedBox2d bounds;
-  for (std::size_t f = 0; f < faces.size(); ++f)
-    if (isMeasured(faces[f].status))
-      for (int k = 0; k < 3; ++k) bounds.extend(uv.uv[3 * f + std::size_t(k)]);
+  const Eigen::AlignedBox2d bounds = measuredUvBounds(uv, faces);
   if (bounds.isEmpty()) return overlap;
   for (std::uint8_t count : coverageCounts(uv, faces, uvGridOver(bounds, resolution))) {
     overlap.coveredPixels += count >= 1;

@@ -43,6 +43,9 @@ struct UvGrid {
   double scale = 1.0;
 };
 
+// The UV bounding box of the faces the overlap raster draws (isMeasured), the box measureOverlap's grid spans.
+Eigen::AlignedBox2d measuredUvBounds(const UvMap& uv, const std::vector<FaceDistortion>& faces);
+
 // The grid of `resolution` pixels a side over `uvBounds` (non-empty, finite), with its scale.
 UvGrid uvGridOver(const Eigen::AlignedBox2d& uvBounds, int resolution);
 
