@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <tuple>
 #include <utility>
 
 #include "core/error.h"
@@ -23,16 +24,20 @@ bool cornerValid(const UvMap& uv, std::size_t corner) {
 // The distance of x from the nearest integer.
 double offInteger(double x) { return std::fabs(x - std::round(x)); }
 
-// One side of an edge: the face, and its corners at the edge's lower and higher vertex index.
+// One side of an edge: the face, and its corners at the edge's lower and higher vertex.
 struct HalfEdge {
-  int lower, higher;  // vertex indices, lower < higher
+  int lower, higher;  // vertices (through the stand-ins, when there are any), lower <= higher
   std::size_t cornerLower, cornerHigher;  // indices into uv.uv
 };
 
+// The vertex that stands for v: itself when `standIn` is empty.
+int standInOf(const std::vector<int>& standIn, int v) { return standIn.empty() ? v : standIn[std::size_t(v)]; }
+
 // The half-edge leaving corner c = 3 f + k of face f (towards corner k + 1).
-HalfEdge halfEdge(const Mesh& mesh, std::size_t c) {
+HalfEdge halfEdge(const Mesh& mesh, const std::vector<int>& standIn, std::size_t c) {
   const std::size_t f = c / 3, k = c % 3, next = (k + 1) % 3;
-  HalfEdge e{mesh.triangles[f][int(k)], mesh.triangles[f][int(next)], c, 3 * f + next};
+  HalfEdge e{standInOf(standIn, mesh.triangles[f][int(k)]), standInOf(standIn, mesh.triangles[f][int(next)]), c,
+             3 * f + next};
   if (e.lower > e.higher) std::swap(e.lower, e.higher), std::swap(e.cornerLower, e.cornerHigher);
   return e;
 }
@@ -41,17 +46,17 @@ HalfEdge halfEdge(const Mesh& mesh, std::size_t c) {
 // are adjacent: a counting sort by the lower vertex, then each vertex's few half-edges sorted by
 // the key higher << 32 | corner. Linear where a comparison sort of 3 F half-edges is not. Each
 // entry is that key; its low half names the half-edge by its corner.
-std::vector<std::uint64_t> sortedHalfEdges(const Mesh& mesh) {
+std::vector<std::uint64_t> sortedHalfEdges(const Mesh& mesh, const std::vector<int>& standIn) {
   const std::size_t corners = 3 * mesh.triangles.size();
   UVTK_CHECK(corners <= std::numeric_limits<std::uint32_t>::max());
   std::vector<std::uint32_t> start(mesh.positions.size() + 1, 0);
-  for (std::size_t c = 0; c < corners; ++c) ++start[std::size_t(halfEdge(mesh, c).lower) + 1];
+  for (std::size_t c = 0; c < corners; ++c) ++start[std::size_t(halfEdge(mesh, standIn, c).lower) + 1];
   for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
   std::vector<std::uint64_t> order;
   resizeOnHugePages(order, corners);
   std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
   for (std::size_t c = 0; c < corners; ++c) {
-    const HalfEdge e = halfEdge(mesh, c);
+    const HalfEdge e = halfEdge(mesh, standIn, c);
     order[next[std::size_t(e.lower)]++] = std::uint64_t(std::uint32_t(e.higher)) << 32 | c;
   }
   for (std::size_t v = 0; v + 1 < start.size(); ++v) std::sort(order.begin() + start[v], order.begin() + start[v + 1]);
@@ -60,37 +65,39 @@ std::vector<std::uint64_t> sortedHalfEdges(const Mesh& mesh) {
 
 std::size_t cornerOf(std::uint64_t key) { return std::size_t(key & 0xffffffffu); }
 
-}  // namespace
-
-std::vector<int> fannedPoleVertices(const Mesh& mesh, const UvMap& uv) {
-  UVTK_CHECK(uv.uv.size() == 3 * mesh.triangles.size() && uv.faceFlags.size() == mesh.triangles.size());
-  enum : std::uint8_t { kUnseen, kSeen, kPole };
-  std::vector<std::uint8_t> state(mesh.positions.size(), kUnseen);
-  std::vector<double> firstU(mesh.positions.size(), 0.0);
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    if (!uv.faceHas(f, kFacePole)) continue;
-    for (int k = 0; k < 3; ++k) {
-      const std::size_t corner = 3 * f + static_cast<std::size_t>(k);
-      const auto v = static_cast<std::size_t>(mesh.triangles[f][k]);
-      if (!cornerValid(uv, corner)) continue;
-      const double u = uv.uv[corner].x();
-      if (state[v] == kUnseen) state[v] = kSeen, firstU[v] = u;
-      // Any two of the vertex's u values differ by a non-integer exactly when one differs so from the first.
-      else if (offInteger(u - firstU[v]) > kUvTolerance) state[v] = kPole;
+// Stand-ins for `vertices` (any order, repeats allowed): each one at the position of a
+// lower-numbered one of them (equal coordinates) stands in for by the lowest such; every other
+// vertex of the mesh for itself. Empty when no two of them share a position.
+std::vector<int> standInsByPosition(const Mesh& mesh, std::vector<int> vertices) {
+  std::sort(vertices.begin(), vertices.end(), [&](int a, int b) {
+    const Vec3 &p = mesh.positions[std::size_t(a)], &q = mesh.positions[std::size_t(b)];
+    return std::tie(p.x(), p.y(), p.z(), a) < std::tie(q.x(), q.y(), q.z(), b);
+  });
+  std::vector<int> standIn;
+  for (std::size_t i = 1, first = 0; i < vertices.size(); ++i) {
+    const int v = vertices[i], lowest = vertices[first];
+    if (v == vertices[i - 1]) continue;
+    if (mesh.positions[std::size_t(v)] != mesh.positions[std::size_t(lowest)]) {
+      first = i;
+      continue;
     }
+    if (standIn.empty()) {
+      standIn.resize(mesh.positions.size());
+      for (std::size_t u = 0; u < standIn.size(); ++u) standIn[u] = int(u);
+    }
+    standIn[std::size_t(v)] = lowest;
   }
-  std::vector<int> poles;
-  for (std::size_t v = 0; v < state.size(); ++v)
-    if (state[v] == kPole) poles.push_back(static_cast<int>(v));
-  return poles;
+  return standIn;
 }
 
-std::vector<SeamEdge> seamEdgeList(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices) {
-  UVTK_CHECK(uv.uv.size() == 3 * mesh.triangles.size());
+// seamEdgeList with the vertices taken through `standIn`; the vertices of the edges that only
+// one face has are added to `boundary` when it is given.
+std::vector<SeamEdge> seamEdgesThrough(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices,
+                                       const std::vector<int>& standIn, std::vector<int>* boundary) {
   std::vector<char> isPole(mesh.positions.size(), 0);
   for (int v : poleVertices) {
     UVTK_CHECK(v >= 0 && static_cast<std::size_t>(v) < isPole.size());
-    isPole[static_cast<std::size_t>(v)] = 1;
+    isPole[static_cast<std::size_t>(standInOf(standIn, v))] = 1;
   }
 
   // Two corners of a vertex differ beyond kUvTolerance times the layout's extent: UVs in object
@@ -101,17 +108,19 @@ std::vector<SeamEdge> seamEdgeList(const Mesh& mesh, const UvMap& uv, const std:
   const double extent = box.isEmpty() ? 0.0 : box.sizes().maxCoeff();
   const double cutTolerance = kUvTolerance * (extent > 0.0 && std::isfinite(extent) ? extent : 1.0);
 
-  const std::vector<std::uint64_t> halfEdges = sortedHalfEdges(mesh);
+  const std::vector<std::uint64_t> halfEdges = sortedHalfEdges(mesh, standIn);
   std::vector<SeamEdge> seams;
   for (std::size_t first = 0, end; first < halfEdges.size(); first = end) {
     // The sides of one edge: the same higher vertex (the key's high half) among the lower vertex's entries.
-    const HalfEdge a = halfEdge(mesh, cornerOf(halfEdges[first]));
+    const HalfEdge a = halfEdge(mesh, standIn, cornerOf(halfEdges[first]));
     end = first + 1;
     while (end < halfEdges.size() && halfEdges[end] >> 32 == halfEdges[first] >> 32 &&
-           halfEdge(mesh, cornerOf(halfEdges[end])).lower == a.lower)
+           halfEdge(mesh, standIn, cornerOf(halfEdges[end])).lower == a.lower)
       ++end;
+    if (a.lower == a.higher) continue;  // two corners of one face at one vertex: no edge
+    if (end - first == 1 && boundary) boundary->insert(boundary->end(), {a.lower, a.higher});
     if (end - first != 2) continue;  // a boundary or non-manifold edge
-    const HalfEdge b = halfEdge(mesh, cornerOf(halfEdges[first + 1]));
+    const HalfEdge b = halfEdge(mesh, standIn, cornerOf(halfEdges[first + 1]));
     if (!cornerValid(uv, a.cornerLower) || !cornerValid(uv, a.cornerHigher) || !cornerValid(uv, b.cornerLower) ||
         !cornerValid(uv, b.cornerHigher))
       continue;
@@ -132,6 +141,48 @@ std::vector<SeamEdge> seamEdgeList(const Mesh& mesh, const UvMap& uv, const std:
     seams.push_back({a.lower, a.higher, {a.cornerLower, b.cornerLower}, {a.cornerHigher, b.cornerHigher}, wraps});
   }
   return seams;
+}
+
+}  // namespace
+
+std::vector<int> fannedPoleVertices(const Mesh& mesh, const UvMap& uv) {
+  UVTK_CHECK(uv.uv.size() == 3 * mesh.triangles.size() && uv.faceFlags.size() == mesh.triangles.size());
+  // A pole split into a vertex per face (a PLY or glTF) is one pole: its copies meet at one position.
+  std::vector<int> poleFaceVertices;
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    if (uv.faceHas(f, kFacePole)) poleFaceVertices.insert(poleFaceVertices.end(), mesh.triangles[f].begin(), mesh.triangles[f].end());
+  if (poleFaceVertices.empty()) return {};
+  const std::vector<int> standIn = standInsByPosition(mesh, std::move(poleFaceVertices));
+  enum : std::uint8_t { kUnseen, kSeen, kPole };
+  std::vector<std::uint8_t> state(mesh.positions.size(), kUnseen);
+  std::vector<double> firstU(mesh.positions.size(), 0.0);
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    if (!uv.faceHas(f, kFacePole)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t corner = 3 * f + static_cast<std::size_t>(k);
+      const auto v = static_cast<std::size_t>(standInOf(standIn, mesh.triangles[f][k]));
+      if (!cornerValid(uv, corner)) continue;
+      const double u = uv.uv[corner].x();
+      if (state[v] == kUnseen) state[v] = kSeen, firstU[v] = u;
+      // Any two of the vertex's u values differ by a non-integer exactly when one differs so from the first.
+      else if (offInteger(u - firstU[v]) > kUvTolerance) state[v] = kPole;
+    }
+  }
+  std::vector<int> poles;
+  for (std::size_t v = 0; v < state.size(); ++v)
+    if (state[v] == kPole) poles.push_back(static_cast<int>(v));
+  return poles;
+}
+
+std::vector<SeamEdge> seamEdgeList(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices) {
+  UVTK_CHECK(uv.uv.size() == 3 * mesh.triangles.size());
+  std::vector<int> boundary;
+  std::vector<SeamEdge> seams = seamEdgesThrough(mesh, uv, poleVertices, {}, &boundary);
+  // A file split at its seams (PLY, glTF: io/split_vertices.h) has them as boundary edges whose
+  // vertices repeat positions; welded there, they are edges of two faces again.
+  const std::vector<int> standIn = standInsByPosition(mesh, std::move(boundary));
+  if (standIn.empty()) return seams;
+  return seamEdgesThrough(mesh, uv, poleVertices, standIn, nullptr);
 }
 
 SeamEdges classifySeamEdges(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices) {

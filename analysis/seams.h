@@ -1,8 +1,10 @@
 // Seams and fanned poles of a UV layout, read from the per-corner UVs alone.
 //
-// An edge is a pair of vertex indices; it is examined when exactly two triangles have it (a
-// boundary or non-manifold edge is never a seam) and none of the four corners at its endpoints
-// is invalid. It is a seam edge when the two faces give one of its endpoints UVs that differ by
+// An edge is a pair of vertices; it is examined when exactly two triangles have it (a boundary
+// or non-manifold edge is never a seam) and none of the four corners at its endpoints is invalid.
+// Vertices that meet at one position on edges of one face are one vertex here (the lowest-numbered
+// stands for them): a PLY or glTF is split into a vertex per UV at its seams (io/split_vertices.h),
+// and its seams are found as in the OBJ it was written from. It is a seam edge when the two faces give one of its endpoints UVs that differ by
 // more than 1e-6 in u or in v. Endpoints that are pole vertices are left out of the comparison:
 // a fanned pole has a different u in every face by construction (docs/conventions.md §5).
 //   wrap seam: at every compared endpoint the UVs differ by the same non-zero integer in u
@@ -29,14 +31,15 @@ struct SeamEdges {
 // One seam edge, with the corners of both faces at its endpoints, so that each face's side of
 // the edge can be found in the UV layout.
 struct SeamEdge {
-  int a = 0, b = 0;                      // vertex indices, a < b
+  int a = 0, b = 0;                      // vertex indices, a < b (the vertices standing for a split vertex)
   std::array<std::size_t, 2> cornerA{};  // per face sharing the edge: its corner (index into UvMap::uv) at a
   std::array<std::size_t, 2> cornerB{};  // and at b
   bool wrap = false;                     // a wrap seam; else a cut
 };
 
 // Pole vertices of a fanned pole: vertices of kFacePole faces whose valid corners in those
-// faces have u values that differ by more than 1e-6 from any integer. A ring vertex on the seam
+// faces have u values that differ by more than 1e-6 from any integer; the vertices of those faces
+// at one position are one vertex (the lowest-numbered is listed). A ring vertex on the seam
 // differs by exactly 1 between its pole faces and is not a pole; a pole mapped with
 // PoleMode::None (u = 0 everywhere) is not detected, and needs no exclusion. Ascending order.
 std::vector<int> fannedPoleVertices(const Mesh& mesh, const UvMap& uv);

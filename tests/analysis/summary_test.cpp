@@ -413,6 +413,68 @@ TEST(SeamEdges, HandMadeWrapAndCut) {
   EXPECT_EQ(classifySeamEdges(polar.mesh, polar.uv, {2}).wrapEdges, 1u);
 }
 
+// The mesh with a vertex per distinct (vertex, u, v) of its corners, as a PLY or glTF file holds
+// it (io/split_vertices.h): each copy appended in corner order, the first use keeping the index.
+Mesh splitAtUvs(const Mesh& mesh, const UvMap& uv) {
+  Mesh split = mesh;
+  std::vector<std::vector<std::pair<Vec2, int>>> copies(mesh.positions.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.triangles[f][k];
+      const Vec2 t = uv.uv[3 * f + std::size_t(k)];
+      auto& seen = copies[std::size_t(v)];
+      const auto found = std::find_if(seen.begin(), seen.end(), [&](const auto& c) { return c.first == t; });
+      int index = v;
+      if (found != seen.end()) index = found->second;
+      else if (!seen.empty()) index = int(split.positions.size()), split.positions.push_back(mesh.positions[std::size_t(v)]);
+      if (found == seen.end()) seen.emplace_back(t, index);
+      split.triangles[f][k] = index;
+    }
+  return split;
+}
+
+// Split at its UVs, the shifted sphere's seam edges are edges of one face each in index terms, and
+// each pole a vertex per fan face: welded by position, the seams and poles are those of the
+// sphere (the same edges, classes and lengths; the poles' stand-ins are the same vertices).
+TEST(SeamEdges, AMeshSplitAtItsSeamsHasTheSameSeamsAndPoles) {
+  const param::Projection p = projectSphere(16, 8, param::SeamMode::Shift);
+  const Mesh split = splitAtUvs(p.mesh, p.uv);
+  ASSERT_EQ(split.positions.size(), p.mesh.positions.size() + 7 + 2 * 15);  // the 7 rings' seam vertices; 16 - 1 pole copies each
+  const std::vector<int> poles = fannedPoleVertices(split, p.uv);
+  EXPECT_EQ(poles, (std::vector<int>{0, 113}));
+  const std::vector<SeamEdge> whole = seamEdgeList(p.mesh, p.uv, poles), parts = seamEdgeList(split, p.uv, poles);
+  ASSERT_EQ(parts.size(), 8u);
+  ASSERT_EQ(parts.size(), whole.size());
+  for (std::size_t i = 0; i < whole.size(); ++i) {
+    EXPECT_EQ(parts[i].a, whole[i].a);
+    EXPECT_EQ(parts[i].b, whole[i].b);
+    EXPECT_EQ(parts[i].wrap, whole[i].wrap);
+  }
+  const SeamEdges s = classifySeamEdges(split, p.uv, poles);
+  EXPECT_EQ(s.wrapEdges, 8u);
+  EXPECT_EQ(s.cutEdges, 0u);
+  EXPECT_EQ(s.wrapLength, classifySeamEdges(p.mesh, p.uv, poles).wrapLength);
+
+  // Two triangles that share no vertex but meet along an edge at the same positions: one edge, a wrap seam.
+  Layout apart = twoTriangles({1, 0});
+  apart.mesh.positions.push_back(apart.mesh.positions[2]);
+  apart.mesh.positions.push_back(apart.mesh.positions[1]);
+  apart.mesh.triangles[1] = {4, 5, 3};
+  EXPECT_EQ(classifySeamEdges(apart.mesh, apart.uv, {}).wrapEdges, 1u);
+  // Vertices in closed fans are never copies: the sphere twice over at the same positions (two
+  // closed shells, as a doubled scan might be) has each shell's seams, where welding every
+  // coincident vertex would give every edge four faces and no seam.
+  Mesh twice = p.mesh;
+  UvMap twiceUv = p.uv;
+  const int n = int(p.mesh.positions.size());
+  twice.positions.insert(twice.positions.end(), p.mesh.positions.begin(), p.mesh.positions.end());
+  for (const Triangle& t : p.mesh.triangles) twice.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
+  twiceUv.uv.insert(twiceUv.uv.end(), p.uv.uv.begin(), p.uv.uv.end());
+  twiceUv.faceFlags.insert(twiceUv.faceFlags.end(), p.uv.faceFlags.begin(), p.uv.faceFlags.end());
+  twiceUv.cornerInvalid.insert(twiceUv.cornerInvalid.end(), p.uv.cornerInvalid.begin(), p.uv.cornerInvalid.end());
+  EXPECT_EQ(classifySeamEdges(twice, twiceUv, {0, 113, n, n + 113}).wrapEdges, 16u);
+}
+
 // ---- Overlap ----
 
 // Two unit right triangles, the second moved by (1/4, 1/4): they share a right triangle with

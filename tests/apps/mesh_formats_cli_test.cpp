@@ -230,5 +230,34 @@ TEST_F(MeshFormatsCli, EveryCommandThatReadsAMeshReadsPlyStlAndGlb) {
   }
 }
 
+// PLY and glTF split vertices where their corners' UVs differ, so a seam's two sides share no
+// vertex in the file: `report` of each written file finds the seams `report` finds in the OBJ
+// (edge counts exactly; lengths to the float positions of glTF), on a sphere (a wrap seam, and its
+// fanned poles, cuts in a file) and a knot mapped by the cube (cuts between the cube's faces).
+TEST_F(MeshFormatsCli, SeamsSurviveARoundTripThroughEachFormat) {
+  generated("sphere.obj", meshes::latLongSphere(32, 16));
+  generated("knot.obj", meshes::torusKnot(2, 3, 120, 12));
+  for (const auto& [input, projector] : std::vector<std::pair<std::string, std::string>>{
+           {"sphere.obj", "sphere"}, {"knot.obj", "cube"}}) {
+    json expected;
+    for (const std::string format : {"obj", "ply", "gltf", "glb"}) {
+      const std::string mapped = path(input + ".mapped." + format), report = path(input + "." + format + ".json");
+      ASSERT_EQ(uvtk("map " + path(input) + " --projector " + projector + " -q -o " + mapped).status, 0) << format;
+      ASSERT_EQ(uvtk("report " + mapped + " -q --json " + report).status, 0) << format;
+      const json seams = json::parse(readText(report))["seams"];
+      if (format == "obj") {
+        expected = seams;
+        EXPECT_GT(seams["wrap_edges"].get<int>(), input == "sphere.obj" ? 0 : -1) << input;
+        EXPECT_GT(seams["cut_edges"].get<int>(), 0) << input;
+        continue;
+      }
+      EXPECT_EQ(seams["wrap_edges"], expected["wrap_edges"]) << input << " " << format;
+      EXPECT_EQ(seams["cut_edges"], expected["cut_edges"]) << input << " " << format;
+      const double tolerance = format == "ply" ? 0.0 : 1e-6 * expected["length"].get<double>();
+      EXPECT_NEAR(seams["length"].get<double>(), expected["length"].get<double>(), tolerance) << input << " " << format;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace uvtk
