@@ -27,6 +27,7 @@ constexpr RuleEntry kRules[kRuleCount] = {
     {"out_of_range_corners", kNever, 0.0, true},   // any corner beyond the sensible range fails
     {"flipped_area", 0.0, 1e-3, false},             // any flip warns, more than 0.1 % of the area fails
     {"zero_area_uv_area", 0.0, 1e-3, false},        // likewise for faces collapsed in UV
+    {"zero_area_3d_faces", 0.01, 0.5, false},        // 1 % of the faces unmeasurable warns, half of them fails
     {"overlap", 1e-3, 1e-2, false},                 // 0.1 % of the covered texels warns, 1 % fails
     {"unrepaired_seam_faces", kNever, 0.0, true},   // a face still across the seam fails
     {"stretch_p99", 3.0, kNever, false},            // 1 % of the area stretched 3 times the mean warns
@@ -267,6 +268,8 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
   set(Rule::FlippedArea, share(statusArea[std::size_t(FaceStatus::Flipped)]), j.statusCount(FaceStatus::Flipped));
   set(Rule::ZeroAreaUvArea, share(statusArea[std::size_t(FaceStatus::ZeroAreaUv)]),
       j.statusCount(FaceStatus::ZeroAreaUv));
+  const std::size_t zeroArea3d = j.statusCount(FaceStatus::ZeroArea3d);
+  set(Rule::ZeroArea3dFaces, mesh.faceCount() > 0 ? double(zeroArea3d) / double(mesh.faceCount()) : 0.0, zeroArea3d);
   set(Rule::Overlap, j.summary.overlap.fraction(), j.overlappedFaces);
   set(Rule::UnrepairedSeamFaces, double(j.unrepairedSeamFaces), j.unrepairedSeamFaces);
   // The ok faces at or above the stretch's p99, and at either end of the density's spread (at or

@@ -29,6 +29,7 @@ enum class Rule : std::uint8_t {
   OutOfRangeCorners,    // corners beyond the projector's sensible range (count)
   FlippedArea,          // flipped faces' share of the 3D area
   ZeroAreaUvArea,       // zero-UV-area faces' share of the 3D area
+  ZeroArea3dFaces,      // zero-3D-area faces' share of the faces: what the other rules cannot measure
   Overlap,              // overlapped share of the covered UV raster
   UnrepairedSeamFaces,  // faces still spanning more than half a turn of a wrapping u (count)
   StretchP99,           // the 99th percentile of the normalised per-face L2 stretch
@@ -37,7 +38,7 @@ enum class Rule : std::uint8_t {
   DensitySpread,        // p90 / p10 of the ok faces' texel density
   MipLine,              // the share of a view's covered pixels on a GPU's seam mip line (set where one is drawn)
 };
-constexpr int kRuleCount = 11;
+constexpr int kRuleCount = 12;
 const char* toString(Rule rule);  // "invalid_corners", "out_of_range_corners", ...
 std::optional<Rule> parseRule(std::string_view name);
 

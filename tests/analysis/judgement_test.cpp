@@ -95,6 +95,39 @@ TEST(Judgement, AThresholdTurnsTheSameFlipIntoAWarning) {
   EXPECT_EQ(strict.verdict, Verdict::Fail);
 }
 
+// Faces of zero 3D area measure nothing: a mesh of them alone passed every other rule. One of 32
+// (3.1 %) warns, 17 of 49 fail only above half, and all of them fail.
+TEST(Judgement, FacesOfZeroAreaIn3dWarnAndFailByTheirShareOfTheFaces) {
+  const auto withDegenerate = [](int n, int count) {
+    Layout l = grid(n);
+    for (int k = 0; k < count; ++k)  // three corners on one line, mapped to a proper triangle
+      l.add({0, 0, 1}, {1, 0, 1}, {2, 0, 1}, {0, 0}, {0.1, 0}, {0, 0.1});
+    return l;
+  };
+  const Layout one = withDegenerate(4, 1);
+  const Judgement j = judge(one.mesh, one.uv);
+  ASSERT_EQ(j.statusCount(FaceStatus::ZeroArea3d), 1u);
+  EXPECT_DOUBLE_EQ(j.values[std::size_t(Rule::ZeroArea3dFaces)], 1.0 / 33.0);
+  EXPECT_EQ(j.verdict, Verdict::Warn);
+  EXPECT_EQ(j.reasonsText(), "zero_area_3d_faces 0.0303 > 0.01 (1 face)");
+
+  const Layout third = withDegenerate(4, 16);  // 16 of 48: a third, a warning still
+  EXPECT_EQ(judge(third.mesh, third.uv).verdict, Verdict::Warn);
+  const Layout most = withDegenerate(4, 33);   // 33 of 65: more than half fails
+  const Judgement m = judge(most.mesh, most.uv);
+  EXPECT_EQ(m.verdict, Verdict::Fail);
+  EXPECT_EQ(m.reasons.at(0).rule, Rule::ZeroArea3dFaces);
+
+  Layout none;  // nothing but degenerate faces: no face is measured, and the verdict says so
+  none.add({0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {0, 0}, {1, 0}, {0, 1});
+  none.add({0, 0, 0}, {0, 0, 0}, {1, 0, 0}, {0, 0}, {1, 0}, {0, 1});
+  const Judgement n = judge(none.mesh, none.uv);
+  EXPECT_EQ(n.statusCount(FaceStatus::Ok), 0u);
+  EXPECT_EQ(n.values[std::size_t(Rule::ZeroArea3dFaces)], 1.0);
+  EXPECT_EQ(n.verdict, Verdict::Fail);
+  EXPECT_EQ(n.reasonsText(), "zero_area_3d_faces 1 > 0.5 (2 faces)");
+}
+
 TEST(Judgement, InvalidAndOutOfRangeCornersFailApartByReason) {
   Layout l = grid(2);
   l.uv.cornerInvalid[0] = kCornerBehind;
