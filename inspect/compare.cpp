@@ -251,7 +251,8 @@ Image comparisonSheet(const Comparison& comparison, const CompareOptions& a) {
     const RankedMapping& c = ranked[i];
     const views::ViewInput in = c.mapped.viewInput(&c.judgement);
     views::ViewOptions options;
-    options.render.camera = a.camera.frame(c.mapped.mesh, a.tileSize, a.tileSize);
+    options.render.camera = a.camera.frame(c.mapped.mesh, inputPath(comparison.record.value("input", nlohmann::json())),
+                                           a.tileSize, a.tileSize);
     options.render.raster = {render::Cull::None, a.threads};
     for (const views::View view : {views::View::Checker, views::View::Stretch})
       tiles.emplace_back("#" + std::to_string(i + 1) + " " + analysis::toString(c.judgement.verdict) + " " + c.name +

@@ -221,8 +221,13 @@ void printMappingNotes(const std::string& inputPath, const MeshWarnings& warning
   if (mapped.seamPlacement) cli::printSeamPlacement(*mapped.seamPlacement);
 }
 
-render::Camera ViewCamera::frame(const Mesh& mesh, int width, int height) const {
-  return render::frameSphere(render::boundingSphere(mesh.positions), viewDir, up, render::Projection{}, width, height);
+render::Camera ViewCamera::frame(const Mesh& mesh, const std::string& meshFile, int width, int height) const {
+  try {
+    return render::frameSphere(render::boundingSphere(mesh.positions), viewDir, up, render::Projection{}, width, height);
+  } catch (const InputError& e) {
+    if (meshFile.empty()) throw;
+    throw InputError(meshFile + ": error: " + e.what());
+  }
 }
 
 }  // namespace uvtk::inspect

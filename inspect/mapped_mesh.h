@@ -72,7 +72,8 @@ nlohmann::json mapSummaryJson(const MappedMesh& mapped, const analysis::Judgemen
 struct ViewCamera {
   Vec3 viewDir{1.0, -1.5, 0.8};  // from the mesh to the camera
   Vec3 up{0.0, 0.0, 1.0};        // the picture's up
-  render::Camera frame(const Mesh& mesh, int width, int height) const;
+  // Throws InputError naming `meshFile` (when not empty) for a mesh too large to frame.
+  render::Camera frame(const Mesh& mesh, const std::string& meshFile, int width, int height) const;
 };
 
 // The file's vt as per-corner UVs (w in uv.w): a corner without vt is invalid (kFaceInvalid on its

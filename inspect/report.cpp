@@ -7,6 +7,7 @@
 #include "inspect/html_report.h"
 #include "inspect/mesh_view.h"
 #include "inspect/measures_json.h"
+#include "inspect/run_report.h"
 #include "inspect/summary_json.h"
 #include "io/atomic_file.h"
 #include "render/procedural.h"
@@ -73,7 +74,7 @@ nlohmann::json writeReport(io::OutputSet& outputs, const ReportOptions& o, const
   views::ViewOptions options;
   if (!shown.empty()) {
     texture = uverrorTexture(o.textureSize);
-    options.render.camera = o.camera.frame(mapped.mesh, o.width, o.height);
+    options.render.camera = o.camera.frame(mapped.mesh, inputPath(input), o.width, o.height);
     options.render.raster.threads = o.threads;
     options.render.raster.cull = render::Cull::None;
     options.render.texture = &*texture;

@@ -49,6 +49,12 @@ inline nlohmann::json inputJson(const std::string& path, const io::ReadMeshResul
           {"skipped_primitives", input.warnings.skippedPrimitives}};
 }
 
+// The "path" of an "input" object; empty when there is none (a mesh made in memory).
+inline std::string inputPath(const nlohmann::json& input) {
+  return input.is_object() && input.contains("path") && input["path"].is_string() ? input["path"].get<std::string>()
+                                                                                 : std::string();
+}
+
 // One warning line on stderr for each kind of thing the reader counted.
 inline void printInputWarnings(const std::string& path, const MeshWarnings& w) {
   if (w.degenerateFaces || w.unreferencedVertices)

@@ -3,6 +3,7 @@
 // errors with nothing written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -148,6 +149,26 @@ TEST_F(ReportCli, BadArgumentsAreClearErrorsAndWriteNothing) {
   EXPECT_EQ(r.status, 3);
   EXPECT_FALSE(fs::exists(path("r.json")));
   EXPECT_FALSE(fs::exists(path("r.html")));
+}
+
+// A mesh of radius 1.5e308 has no camera (its eye would lie beyond the largest double): every
+// command that draws it says so on one line naming the file, as an input error, and writes nothing.
+TEST_F(ReportCli, AMeshTooLargeToFrameIsAnInputErrorNamingItsFile) {
+  Mesh huge = meshes::latLongSphere(8, 4);
+  for (Vec3& p : huge.positions) p *= 1.5e308;
+  const std::string mesh = path("huge.obj");
+  io::writeObj(mesh, huge, nullptr);
+  for (const std::string& command :
+       {"report " + mesh + " --projector sphere --html " + path("r.html") + " --json " + path("r.json"),
+        "compare " + mesh + " --sheet " + path("c.png") + " --json " + path("c.json") + " --no-baselines",
+        "render " + mesh + " --projector sphere -o " + path("v.png")}) {
+    const CliRun r = uvtk(command + " -q");
+    EXPECT_EQ(r.status, 3) << command << "\n" << r.err;
+    EXPECT_EQ(r.err.rfind(mesh + ": error: the mesh (bounding sphere of radius ", 0), 0u) << command << "\n" << r.err;
+    EXPECT_NE(r.err.find("too large for a camera to frame"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  for (const char* name : {"r.html", "r.json", "c.png", "c.json", "v.png"}) EXPECT_FALSE(fs::exists(path(name))) << name;
 }
 
 TEST_F(ReportCli, SeamPlaceAutoMovesTheSeamOffAnOpenHalfCylinder) {
