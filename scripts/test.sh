@@ -50,7 +50,7 @@ stage "sanitizer suite"
 # LeakSanitizer's stop-the-world tracer (clang 14) now and then crashes at a process's exit ("Tracer caught
 # signal 11", google/sanitizers#1353): the runtime's failure, not a leak or a report. When every failure
 # of the run printed that, the failed tests run once more and must pass (docs/robustness.md).
-log=build-fuzz/Testing/sanitizer-suite.log
+log=build-fuzz/sanitizer-suite.log
 if ! ctest --test-dir build-fuzz --output-on-failure -j "$(nproc)" 2>&1 | tee "$log"; then
   failed=$(grep -c '\*\*\*Failed\|\*\*\*Exception\|\*\*\*Timeout' "$log" || true)
   tracer=$(grep -c '^Tracer caught signal' "$log" || true)
