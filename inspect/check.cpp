@@ -342,7 +342,7 @@ CheckRun checkStoredUvs(const CheckOptions& a) {
                     views::formatNumber(check.main.mean * texels)};
     render::RenderOptions render;
     render.camera = render::frameSphere(render::boundingSphere(mesh.positions), a.viewDir, a.viewUp,
-                                        render::Projection{}, a.viewWidth, a.viewHeight);
+                                        render::Projection{}, a.viewWidth, a.viewHeight, a.input);
     io::writeImage(outputs, a.view, views::drawCornerError(in, render), io::PixelType::UInt8);
   }
   outputs.publish();

@@ -222,12 +222,8 @@ void printMappingNotes(const std::string& inputPath, const MeshWarnings& warning
 }
 
 render::Camera ViewCamera::frame(const Mesh& mesh, const std::string& meshFile, int width, int height) const {
-  try {
-    return render::frameSphere(render::boundingSphere(mesh.positions), viewDir, up, render::Projection{}, width, height);
-  } catch (const InputError& e) {
-    if (meshFile.empty()) throw;
-    throw InputError(meshFile + ": error: " + e.what());
-  }
+  return render::frameSphere(render::boundingSphere(mesh.positions), viewDir, up, render::Projection{}, width, height,
+                             meshFile);
 }
 
 }  // namespace uvtk::inspect

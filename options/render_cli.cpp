@@ -104,11 +104,8 @@ render::Camera CameraArguments::make(const Mesh& mesh, const std::string& meshFi
       world[v] = (worldFromObject * mesh.positions[v].homogeneous()).head<3>();
     const Vec3 direction =
         eye.empty() ? parseVec3(viewDir, "--view-dir") : Vec3(parseVec3(eye, "--eye") - parseVec3(center, "--center"));
-    try {
-      return render::frameSphere(render::boundingSphere(world), direction, upDir, {ortho == "auto", fovy}, width, height);
-    } catch (const InputError& e) {
-      throw InputError(meshFile + ": error: " + e.what());
-    }
+    return render::frameSphere(render::boundingSphere(world), direction, upDir, {ortho == "auto", fovy}, width, height,
+                               meshFile);
   }
   camera.width = width;
   camera.height = height;

@@ -35,7 +35,7 @@ BoundingSphere boundingSphere(const std::vector<Vec3>& points) {
 }
 
 Camera frameSphere(const BoundingSphere& sphere, const Vec3& eyeDirection, const Vec3& up, const Projection& projection,
-                   int width, int height) {
+                   int width, int height, const std::string& meshFile) {
   if (width <= 0 || height <= 0) throw UsageError("the image size must be positive");
   if (!(eyeDirection.norm() > 0.0)) throw UsageError("camera auto: the viewing direction is zero");
   const double aspect = double(width) / double(height);
@@ -53,7 +53,7 @@ Camera frameSphere(const BoundingSphere& sphere, const Vec3& eyeDirection, const
                   "the mesh (bounding sphere of radius %.3g) is too large for a camera to frame: the eye would lie "
                   "beyond the largest double; scale it below about 1e307",
                   radius);
-    throw InputError(message);
+    throw InputError(meshFile.empty() ? std::string(message) : meshFile + ": error: " + message);
   };
   if (projection.orthographic) {
     const double half = 1.05 * radius;

@@ -2,6 +2,7 @@
 // onto a width x height viewport, and the camera that frames a mesh's bounding sphere.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "core/math.h"
@@ -35,8 +36,9 @@ struct Projection {
 // far enclose the sphere with a margin. Orthographic: the view volume is the sphere's box with a
 // 5% margin in the smaller image dimension. Throws UsageError for a zero direction, an up parallel
 // to it, or an empty viewport; InputError for a sphere so large (beyond about 1e307) that the eye
-// or the far plane would lie beyond the largest double.
+// or the far plane would lie beyond the largest double, its message starting "MESHFILE: error: "
+// when `meshFile` is given.
 Camera frameSphere(const BoundingSphere& sphere, const Vec3& eyeDirection, const Vec3& up, const Projection& projection,
-                   int width, int height);
+                   int width, int height, const std::string& meshFile = {});
 
 }  // namespace uvtk::render
