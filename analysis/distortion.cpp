@@ -123,7 +123,7 @@ double measureLengthScale(const Mesh& mesh, int threads) {
 
 Eigen::AlignedBox2d validUvBounds(const UvMap& uv, int threads) {
   return boundsOnThreads<Eigen::AlignedBox2d>(uv.uv.size(), threads, [&](Eigen::AlignedBox2d& box, std::size_t corner) {
-    if (uv.cornerInvalid.empty() || uv.cornerInvalid[corner] == kCornerValid) box.extend(uv.uv[corner]);
+    if (uv.cornerValid(corner)) box.extend(uv.uv[corner]);
   });
 }
 

@@ -40,6 +40,9 @@ struct MeshWarnings {
   std::size_t parameterVertices = 0;          // OBJ `vp` lines (free-form geometry), ignored
   std::size_t weldedCorners = 0;      // STL: corners that became an earlier corner's vertex (same position, bit for bit)
   std::size_t skippedPrimitives = 0;  // glTF: primitives of points or lines, not triangles, left out
+  // Faces a uvtk writer listed as having corners without a valid UV (io/invalid_uv_faces.h): their
+  // (0, 0) corners are read as without a UV.
+  std::size_t listedInvalidUvFaces = 0;
 };
 
 // Twice the area-weighted normal of a triangle: the cross product of two edges.

@@ -49,6 +49,10 @@ struct UvMap {
 
   std::size_t faceCount() const { return faceFlags.size(); }
   bool faceHas(std::size_t f, FaceFlag flag) const { return (faceFlags[f] & flag) != 0; }
+  bool cornerValid(std::size_t c) const { return cornerInvalid.empty() || cornerInvalid[c] == kCornerValid; }
+  // The UV a file holds at corner c: (0, 0) where the corner has no valid UV, whatever is stored
+  // there (every writer lists such faces, io/invalid_uv_faces.h).
+  Vec2 writtenUv(std::size_t c) const { return cornerValid(c) ? uv[c] : Vec2::Zero(); }
 };
 
 // The distance in UV units between `found` and `expected` with whole periods removed: with d =

@@ -25,8 +25,12 @@ namespace uvtk::inspect {
 namespace {
 
 // The file's (u, v) per corner; a corner without vt is marked in cornerInvalid. Throws InputError
-// for a face without vt unless `partial`, and for a file without any vt.
-UvMap storedUvs(const Mesh& mesh, const std::string& path, bool partial) {
+// for a face without vt unless `partial` or the file's writer listed it as having corners without
+// a valid UV (io/invalid_uv_faces.h), and for a file without any vt.
+UvMap storedUvs(const io::ReadMeshResult& read, const std::string& path, bool partial) {
+  const Mesh& mesh = read.mesh;
+  std::vector<char> listed(mesh.faceCount(), 0);
+  for (const std::size_t f : read.listedInvalidUvFaces) listed[f] = 1;
   UvMap uv;
   const std::size_t faces = mesh.faceCount();
   uv.uv.assign(3 * faces, Vec2::Zero());
@@ -44,7 +48,7 @@ UvMap storedUvs(const Mesh& mesh, const std::string& path, bool partial) {
       } else {
         uv.cornerInvalid[corner] = 1;
         uv.faceFlags[f] |= kFaceInvalid;
-        if (!firstWithout) firstWithout = f;
+        if (!firstWithout && !listed[f]) firstWithout = f;
       }
     }
   if (firstWithout && (!partial || !any))
@@ -122,7 +126,7 @@ Reference byFile(const Mesh& mesh, const std::string& inputPath, const std::stri
     if (d > farthest) farthest = d, at = v;
   }
   Reference r;
-  r.uv = storedUvs(b, path, partial);
+  r.uv = storedUvs(other, path, partial);
   r.uv.faceFlags.assign(b.faceCount(), kFaceOk);  // the corners without vt are marked in cornerInvalid
   if (wrapU) r.period = Vec2(1, 0);
   r.noValue = "no vt in " + path;
@@ -264,7 +268,7 @@ CheckRun checkStoredUvs(const CheckOptions& a) {
   const io::ReadMeshResult input = io::readMesh(a.input);
   printInputWarnings(a.input, input.warnings);
   const Mesh& mesh = input.mesh;
-  const UvMap found = storedUvs(mesh, a.input, a.partial);
+  const UvMap found = storedUvs(input, a.input, a.partial);
   const Reference reference =
       a.against.empty() ? byMapping(mesh, a, a.input) : byFile(mesh, a.input, a.against, a.wrapU, a.partial);
   UVTK_CHECK(reference.uv.faceCount() == mesh.faceCount());

@@ -175,7 +175,7 @@ std::uint16_t toUnit16(double x) { return std::uint16_t(std::lround((std::clamp(
 Vec2 shownUv(const MappedMesh& mapped, const UvMap& uv, std::size_t corner, std::size_t originalCorner) {
   Vec2 t = uv.uv[corner];
   if (!mapped.q.empty()) t /= mapped.q[originalCorner];
-  const bool valid = uv.cornerInvalid.empty() || uv.cornerInvalid[corner] == kCornerValid;
+  const bool valid = uv.cornerValid(corner);
   return valid && t.allFinite() && t.cwiseAbs().maxCoeff() < 1e30 ? t : Vec2::Zero();
 }
 

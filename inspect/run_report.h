@@ -46,7 +46,8 @@ inline nlohmann::json inputJson(const std::string& path, const io::ReadMeshResul
           {"degenerate_faces", input.warnings.degenerateFaces},
           {"unreferenced_vertices", input.warnings.unreferencedVertices},
           {"welded_corners", input.warnings.weldedCorners},
-          {"skipped_primitives", input.warnings.skippedPrimitives}};
+          {"skipped_primitives", input.warnings.skippedPrimitives},
+          {"listed_invalid_uv_faces", input.warnings.listedInvalidUvFaces}};
 }
 
 // The "path" of an "input" object; empty when there is none (a mesh made in memory).
@@ -69,6 +70,9 @@ inline void printInputWarnings(const std::string& path, const MeshWarnings& w) {
   if (w.weldedCorners && !quiet())  // what the format asks for, not a warning
     printProgressMessage(path + ": " + std::to_string(w.weldedCorners) +
                          " corners welded into the vertices of earlier corners at the same position (STL)");
+  if (w.listedInvalidUvFaces && !quiet())  // what the writer noted, not a warning
+    printProgressMessage(path + ": " + std::to_string(w.listedInvalidUvFaces) +
+                         " faces listed by uvtk as having corners without a valid UV: their (0, 0) corners read as without a UV");
   if (w.skippedPrimitives)
     printProgressMessage(path + ": warning: primitives of points or lines left out: " +
                          std::to_string(w.skippedPrimitives));

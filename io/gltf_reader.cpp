@@ -46,6 +46,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/invalid_uv_faces.h"
 
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "glTF buffers are little-endian; read with memcpy");
 
@@ -615,6 +616,25 @@ std::vector<PrimitiveViews> meshViews(const ModelReader& reader, const tinygltf:
   return views;
 }
 
+// A mesh's extras.uvtk.invalid_faces (io/invalid_uv_faces.h): its faces, 0-based, in the order of
+// its triangle primitives; empty when absent or not an array of whole numbers.
+std::vector<std::size_t> listedInvalidFaces(const tinygltf::Value& extras) {
+  if (!extras.IsObject() || !extras.Has("uvtk")) return {};
+  const tinygltf::Value& uvtk = extras.Get("uvtk");
+  if (!uvtk.IsObject() || !uvtk.Has("invalid_faces")) return {};
+  const tinygltf::Value& list = uvtk.Get("invalid_faces");
+  if (!list.IsArray()) return {};
+  std::vector<std::size_t> faces;
+  faces.reserve(list.ArrayLen());
+  for (std::size_t i = 0; i < list.ArrayLen(); ++i) {
+    const tinygltf::Value& face = list.Get(int(i));
+    const double number = face.IsNumber() ? face.GetNumberAsDouble() : -1.0;
+    if (!(number >= 0.0 && number < 0x1p53 && number == std::floor(number))) return {};
+    faces.push_back(static_cast<std::size_t>(number));
+  }
+  return faces;
+}
+
 ReadMeshResult readModel(const tinygltf::Model& model, const std::string& name, std::size_t inputBytes) {
   if (model.asset.version.rfind("2.", 0) != 0)
     throw pointerError(name, "/asset/version", "expected a glTF version 2.x, found " + quote(model.asset.version));
@@ -647,12 +667,14 @@ ReadMeshResult readModel(const tinygltf::Model& model, const std::string& name, 
 
   Mesh mesh;
   MeshWarnings warnings;
+  std::vector<std::size_t> marked;  // faces of uvtk's lists (io/invalid_uv_faces.h)
   std::vector<std::uint32_t> indices;
   for (const Instance& instance : instances) {
     const Eigen::Matrix3d linear = instance.world.topLeftCorner<3, 3>();
     const bool flip = linear.determinant() < 0.0;
     const Eigen::Matrix3d normalMatrix = linear.inverse().transpose();
     const std::vector<PrimitiveViews>& primitives = views[static_cast<std::size_t>(instance.mesh)];
+    const std::size_t firstFace = mesh.triangles.size();
     for (std::size_t p = 0; p < primitives.size(); ++p) {
       const PrimitiveViews& primitive = primitives[p];
       if (!primitive.triangles) {
@@ -720,6 +742,8 @@ ReadMeshResult readModel(const tinygltf::Model& model, const std::string& name, 
         for (std::size_t i = 0; i + 2 < n; ++i) addTriangle(indices[i + 1], indices[i + 2], indices[0]);
       }
     }
+    markListedInvalidFaces(mesh, firstFace, mesh.triangles.size() - firstFace,
+                           listedInvalidFaces(model.meshes[static_cast<std::size_t>(instance.mesh)].extras), marked);
   }
   if (mesh.triangles.empty())
     throw fileError(name, "expected at least one triangle primitive in the scene, found none" +
@@ -737,7 +761,9 @@ ReadMeshResult readModel(const tinygltf::Model& model, const std::string& name, 
   result.warnings = warnings;
   result.warnings.degenerateFaces = checked.degenerateFaces;
   result.warnings.unreferencedVertices = checked.unreferencedVertices;
+  result.warnings.listedInvalidUvFaces = marked.size();
   result.mesh = std::move(mesh);
+  result.listedInvalidUvFaces = std::move(marked);
   return result;
 }
 

@@ -115,7 +115,7 @@ GltfParts buildGltf(const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& 
     }
     if (uvs) {
       const std::size_t c = split.corner[s];
-      const Vec2& uv = uvs->uv[c];
+      const Vec2 uv = uvs->writtenUv(c);
       const float u = static_cast<float>(uv.x()), v = static_cast<float>(1.0 - uv.y());
       if (!std::isfinite(u) || !std::isfinite(v))
         throw OutputError(cannot + "the UV (" + numberText(uv.x()) + ", " + numberText(uv.y()) + ") of face " + std::to_string(c / 3) +

@@ -59,6 +59,7 @@
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "io/gltf_reader.h"
+#include "io/invalid_uv_faces.h"
 #include "io/mesh_format.h"
 #include "io/number_text.h"
 #include "io/ply_reader.h"
@@ -154,8 +155,12 @@ class LineReader {
     }
     position_ = begin;
     end_ = comment;
+    comment_ = {comment, static_cast<std::size_t>(end - comment)};
     return true;
   }
+
+  // The current line's comment, from its '#' to the end of the line; empty when it has none.
+  std::string_view comment() const { return comment_; }
 
   // Advances to the next line that has a token, skipping blank and comment lines. False at end of file.
   bool nextContentLine() {
@@ -322,6 +327,7 @@ class LineReader {
   std::string_view text_;
   const char* position_ = nullptr;
   const char* end_ = nullptr;
+  std::string_view comment_;
 };
 
 // What a reader keeps across lines: the triangulator and its scratch space, and what the reader
@@ -452,6 +458,7 @@ struct ObjChunk {
   std::size_t lines = 0;
   std::size_t lineOffset = 0;  // from the chunk's line numbers to the file's
   std::size_t vertexColours = 0, parameterVertices = 0;
+  std::vector<std::size_t> listedInvalidFaces;  // 0-based, from uvtk's comment (io/invalid_uv_faces.h)
   // Left by a read that did not know the counts before the chunk (provisional):
   std::exception_ptr error;                 // the read stopped here (syntax errors do not depend on the counts)
   bool relative = false;                    // a negative index: it depends on the counts before the chunk
@@ -503,7 +510,12 @@ class ObjChunkReader {
       if (!reader_.nextLine()) break;
       if (reader_.endsWithBackslash()) reader_.fail("end of line", "a '\\' line continuation");
       const std::string_view keyword = reader_.token();
-      if (keyword.empty()) continue;
+      if (keyword.empty()) {  // a blank line, or a comment: perhaps uvtk's list of invalid faces
+        if (!reader_.comment().empty())
+          readInvalidFaceLine(reader_.comment(), "# ", kObjInvalidFacesFirst, kObjInvalidFacesMore, 1,
+                              chunk_.listedInvalidFaces);
+        continue;
+      }
       if (keyword == "v") {
         const Vec3 p = readVector(reader_, kPositionNames);
         int more = 0;  // w, or r g b
@@ -828,7 +840,17 @@ ReadMeshResult joinObjChunks(std::vector<ObjChunk>& chunks, const std::string& n
     if (warnings.nonSimplePolygons == 0) warnings.firstNonSimplePolygonLine = w.firstNonSimplePolygonLine;
     warnings.nonSimplePolygons += w.nonSimplePolygons;
   }
-  return withWarnings(std::move(mesh), warnings);
+  std::vector<std::size_t> listed;
+  for (ObjChunk& c : chunks) {
+    listed.insert(listed.end(), c.listedInvalidFaces.begin(), c.listedInvalidFaces.end());
+    release(c.listedInvalidFaces);
+  }
+  std::vector<std::size_t> marked;
+  markListedInvalidFaces(mesh, 0, mesh.triangles.size(), listed, marked);
+  warnings.listedInvalidUvFaces = marked.size();
+  ReadMeshResult result = withWarnings(std::move(mesh), warnings);
+  result.listedInvalidUvFaces = std::move(marked);
+  return result;
 }
 
 // An OBJ read sequentially, every index resolved as its line is read.

@@ -3,6 +3,7 @@
 // about a megabyte per write. iostream formatting of millions of numbers is several times slower.
 #include "io/obj_writer.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <ostream>
@@ -12,6 +13,7 @@
 #include "core/error.h"
 #include "core/progress.h"
 #include "io/atomic_file.h"
+#include "io/invalid_uv_faces.h"
 #include "io/ordered_text.h"
 #include "io/split_vertices.h"
 
@@ -90,15 +92,16 @@ void writeObj(std::ostream& stream, const Mesh& mesh, const UvMap* uvs, const Ob
     const bool hasW = options.writeW && !uvs->w.empty();
     SplitVertices split = splitVertices(mesh, {uvs, hasW, false}, options.threads);
     const std::size_t* corners = split.corner.data();
-    const Vec2* uv = uvs->uv.data();
+    const UvMap* map = uvs;
     const double* w = hasW ? uvs->w.data() : nullptr;
     const bool asFloat = options.floatPrecision, writeW = options.writeW;
     lines(split.size(), [=](std::size_t i, char* p) {
       const std::size_t c = corners[i];
+      const Vec2 uv = map->writtenUv(c);
       *p++ = 'v', *p++ = 't', *p++ = ' ';
-      p = number(p, uv[c].x(), asFloat);
+      p = number(p, uv.x(), asFloat);
       *p++ = ' ';
-      p = number(p, uv[c].y(), asFloat);
+      p = number(p, uv.y(), asFloat);
       if (writeW) {
         *p++ = ' ';
         p = number(p, w ? w[c] : 0.0, asFloat);
@@ -115,15 +118,25 @@ void writeObj(std::ostream& stream, const Mesh& mesh, const UvMap* uvs, const Ob
   if (normals) lines(mesh.normals.size(), [normalValues](std::size_t n, char* p) { return vectorLine(p, "vn ", normalValues[n]); });
 
   if (uvs) {
-    std::size_t invalid = 0;
-    for (std::size_t f = 0; f < faceCount; ++f) invalid += uvs->faceHas(f, kFaceInvalid) ? 1 : 0;
+    // The list of invalid faces (io/invalid_uv_faces.h): the first block's numbers on the line that
+    // counts them, every later block's on a line of its own, so that no line is long.
+    std::size_t invalid = 0, firstInvalid = faceCount;
+    for (std::size_t f = 0; f < faceCount; ++f)
+      if (uvs->faceHas(f, kFaceInvalid) && invalid++ == 0) firstInvalid = f;
+    static_assert(kLinesPerBlock <= kInvalidFacesPerLine);
     if (invalid > 0) {
-      out.text("# " + std::to_string(invalid) +
-               " faces have corners without a valid UV (written as vt 0 0); 1-based face numbers:");
+      out.text("# " + std::to_string(invalid) + std::string(kObjInvalidFacesFirst));
+      const std::size_t firstBlock = firstInvalid / kLinesPerBlock;
       out.blocks((faceCount + kLinesPerBlock - 1) / kLinesPerBlock, [&](std::size_t block, TextBlock& text) {
+        bool started = block == firstBlock;
         for (std::size_t f = block * kLinesPerBlock, end = std::min(faceCount, f + kLinesPerBlock); f < end; ++f)
           if (uvs->faceHas(f, kFaceInvalid)) {
             char* p = text.room(kMaxLineBytes);
+            if (!started) {
+              *p++ = '\n';
+              p = std::copy(kObjInvalidFacesMore.begin(), kObjInvalidFacesMore.end(), p);
+              started = true;
+            }
             *p++ = ' ';
             text.commit(integer(p, f + 1));
           }

@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/invalid_uv_faces.h"
 #include "io/number_text.h"
 #include "io/polygon_triangulation.h"
 
@@ -133,6 +134,7 @@ struct Header {
   std::vector<Element> elements;
   int vertexElement = -1, faceElement = -1;
   bool normals = false, vertexTexcoords = false, faceTexcoords = false, colours = false;
+  std::vector<std::size_t> listedInvalidFaces;  // 0-based, from uvtk's comments (io/invalid_uv_faces.h)
 };
 
 // "1 vertex", "6 faces", "2 'edge' elements".
@@ -463,6 +465,9 @@ Header parseHeader(HeaderReader& reader, const std::string& name) {
     if (!reader.next()) failAtLine(name, reader.line() + 1, "'end_header'", "end of file");
     Tokens tokens(reader.text());
     const std::string_view keyword = tokens.next();
+    if (keyword == "comment")
+      readInvalidFaceLine(reader.text(), "comment uvtk: ", kPlyInvalidFacesFirst, kPlyInvalidFacesMore, 0,
+                          header.listedInvalidFaces);
     if (keyword.empty() || keyword == "comment" || keyword == "obj_info") continue;
     if (keyword == "format") {
       if (haveFormat) reader.fail("one format line", "a second");
@@ -906,6 +911,8 @@ ReadMeshResult readPly(std::istream& in, const std::string& name) {
   }
   ReadMeshResult result;
   result.warnings = b.warnings;
+  markListedInvalidFaces(mesh, 0, mesh.triangles.size(), header.listedInvalidFaces, result.listedInvalidUvFaces);
+  result.warnings.listedInvalidUvFaces = result.listedInvalidUvFaces.size();
   if (header.colours) result.warnings.vertexColours = mesh.positions.size();
   const MeshWarnings checked = checkMesh(mesh);
   result.warnings.degenerateFaces = checked.degenerateFaces;

@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "core/progress.h"
+#include "io/invalid_uv_faces.h"
 #include "io/split_vertices.h"
 
 namespace uvtk::io {
@@ -24,14 +25,11 @@ constexpr bool kHostLittleEndian = true;
 #endif
 
 constexpr std::size_t kFlushBytes = std::size_t{1} << 20;
-// Face numbers on one comment line of the header: about 100 KB.
-constexpr std::size_t kFaceNumbersPerLine = 10000;
 
 // The file assembled in one buffer and written a megabyte at a time.
 class Buffer {
  public:
-  void text(const char* s) { buffer_.append(s); }
-  void text(const std::string& s) { buffer_.append(s); }
+  void text(std::string_view s) { buffer_.append(s); }
   void character(char c) { buffer_.push_back(c); }
   // The shortest decimal text that reads back as exactly the same double.
   void number(double value) {
@@ -85,13 +83,14 @@ void writeHeader(Buffer& out, const Mesh& mesh, const UvMap* uvs, const PlyWrite
     if (invalid > 0) {
       out.text("comment uvtk: ");
       out.integer(invalid);
-      out.text(" faces have corners without a valid UV (written as s t = 0 0); 0-based face numbers:");
+      out.text(kPlyInvalidFacesFirst);
       // Continued on further lines, so that no header line grows past what a reader holds at once.
       std::size_t onLine = 0;
       for (std::size_t f = 0; f < faceCount; ++f)
         if (uvs->faceHas(f, kFaceInvalid)) {
-          if (onLine++ == kFaceNumbersPerLine) {
-            out.text("\ncomment uvtk: more 0-based face numbers:");
+          if (onLine++ == kInvalidFacesPerLine) {
+            out.character('\n');
+            out.text(kPlyInvalidFacesMore);
             onLine = 1;
           }
           out.character(' ');
@@ -148,9 +147,9 @@ void writePly(std::ostream& stream, const Mesh& mesh, const UvMap* uvs, const Pl
       for (int a = 0; a < 3; ++a) values[count++] = n[a];
     }
     if (uvs) {
-      const bool valid = uvs->cornerInvalid.empty() || uvs->cornerInvalid[c] == kCornerValid;
-      values[count++] = valid ? uvs->uv[c].x() : 0.0;
-      values[count++] = valid ? uvs->uv[c].y() : 0.0;
+      const Vec2 uv = uvs->writtenUv(c);
+      values[count++] = uv.x();
+      values[count++] = uv.y();
     }
     for (int k = 0; k < count; ++k) {
       if (!options.ascii) {

@@ -26,7 +26,10 @@ SplitVertices split(const Mesh& mesh, const SplitVertexKey& key, int threads) {
   const bool useNormals = key.normals && mesh.hasNormals();
   const int* vertexOf = mesh.triangles.empty() ? nullptr : mesh.triangles.data()->data();  // corner c: vertexOf[c]
   const auto sameKey = [&](std::size_t a, std::size_t b) {
-    if (uvs && !(sameBits(uvs->uv[a].x(), uvs->uv[b].x()) && sameBits(uvs->uv[a].y(), uvs->uv[b].y()))) return false;
+    if (uvs) {
+      const Vec2 p = uvs->writtenUv(a), q = uvs->writtenUv(b);
+      if (!(sameBits(p.x(), q.x()) && sameBits(p.y(), q.y()))) return false;
+    }
     if (useW && !sameBits(uvs->w[a], uvs->w[b])) return false;
     return !useNormals || mesh.cornerNormals[a / 3][a % 3] == mesh.cornerNormals[b / 3][b % 3];
   };

@@ -11,7 +11,7 @@
 namespace uvtk::io {
 
 struct SplitVertexKey {
-  const UvMap* uvs = nullptr;  // split where (u, v) differ, bit for bit (-0 and +0 apart); null: no UVs
+  const UvMap* uvs = nullptr;  // split where the written (u, v) differ (UvMap::writtenUv), bit for bit (-0 and +0 apart); null: no UVs
   bool w = false;              // ... and where the UvMap's third component differs
   bool normals = false;        // ... and where the mesh's per-corner normal index differs
 };

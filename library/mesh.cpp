@@ -73,7 +73,8 @@ Mesh fromEngine(const uvtk::Mesh& engine) {
 
 MeshWarnings fromEngine(const uvtk::MeshWarnings& w) {
   return {w.degenerateFaces, w.unreferencedVertices, w.nonSimplePolygons,
-          w.firstNonSimplePolygonLine, w.vertexColours, w.parameterVertices, w.weldedCorners, w.skippedPrimitives};
+          w.firstNonSimplePolygonLine, w.vertexColours, w.parameterVertices, w.weldedCorners, w.skippedPrimitives,
+          w.listedInvalidUvFaces};
 }
 
 Mesh readMesh(const std::string& path, MeshWarnings* warnings) {
@@ -104,7 +105,8 @@ CheckedMesh checked(const Mesh& mesh) {
                {"degenerate_faces", warnings.degenerateFaces},
                {"unreferenced_vertices", warnings.unreferencedVertices},
                {"welded_corners", 0},  // what a reader did: nothing, for a mesh in memory
-               {"skipped_primitives", 0}};
+               {"skipped_primitives", 0},
+               {"listed_invalid_uv_faces", 0}};
   return out;
 }
 

@@ -245,6 +245,7 @@ py::dict warningsDict(const api::MeshWarnings& w) {
   d["parameter_vertices"] = w.parameterVertices;
   d["welded_corners"] = w.weldedCorners;
   d["skipped_primitives"] = w.skippedPrimitives;
+  d["listed_invalid_uv_faces"] = w.listedInvalidUvFaces;
   return d;
 }
 

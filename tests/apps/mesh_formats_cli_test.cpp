@@ -259,5 +259,42 @@ TEST_F(MeshFormatsCli, SeamsSurviveARoundTripThroughEachFormat) {
   }
 }
 
+// A map whose normal rays miss the cylinder on the torus's inner side: every format lists the faces
+// with corners without a valid UV, so `report` of each file judges what `map` judged, not the (0, 0)
+// those corners hold (which read as valid gave other stretch, overlap and zero-area-UV reasons).
+TEST_F(MeshFormatsCli, ReportOfAWrittenMapJudgesItsInvalidCornersAsTheMapDid) {
+  generated("torus.obj", meshes::torus(48, 24, 1.0, 0.3));
+  const std::string input = path("torus.obj");
+  ASSERT_EQ(uvtk("map " + input + " --projector cylinder --omap normal -q -o " + path("m.obj") + " --json " +
+                 path("m.json")).status, 0);
+  const json mapped = json::parse(readText(path("m.json")));
+  const int invalidFaces = mapped["invalid_faces"].get<int>();
+  ASSERT_GT(invalidFaces, 0);
+  for (const std::string format : {"obj", "ply", "glb", "gltf"}) {
+    const std::string file = path("t." + format), report = path("t." + format + ".json");
+    ASSERT_EQ(uvtk("map " + input + " --projector cylinder --omap normal -q -o " + file).status, 0) << format;
+    const CliRun result = uvtk("report " + file + " --json " + report);
+    ASSERT_EQ(result.status, 0) << format;
+    EXPECT_NE(result.err.find(std::to_string(invalidFaces) + " faces listed by uvtk as having corners without a valid UV"),
+              std::string::npos) << result.err;
+    const json judged = json::parse(readText(report));
+    EXPECT_EQ(judged["input"]["listed_invalid_uv_faces"], invalidFaces) << format;
+    EXPECT_EQ(judged["status_counts"]["invalid"], invalidFaces) << format;
+    // And `check` takes the listed faces as without a value, not as a file missing its vt.
+    const CliRun check = uvtk("check " + file + " --projector cylinder --omap normal --tolerance 1e-6");
+    EXPECT_EQ(check.status, 0) << format << ": " << check.err;
+    EXPECT_EQ(judged["invalid_corners"]["no_texcoord"].get<double>(), mapped["reasons"][0]["value"].get<double>()) << format;
+    // The same reasons: the map's out_of_range_corners is the file's invalid_corners (the file keeps no why).
+    ASSERT_EQ(judged["reasons"].size(), mapped["reasons"].size()) << format;
+    for (std::size_t i = 0; i < mapped["reasons"].size(); ++i) {
+      const json &a = mapped["reasons"][i], &b = judged["reasons"][i];
+      EXPECT_EQ(b["code"], i == 0 ? json("invalid_corners") : a["code"]) << format << " " << i;
+      EXPECT_EQ(b["faces"], a["faces"]) << format << " " << i;
+      const double tolerance = format == "obj" || format == "ply" ? 0.0 : 1e-6 * std::abs(a["value"].get<double>());
+      EXPECT_NEAR(b["value"].get<double>(), a["value"].get<double>(), tolerance) << format << " " << i;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace uvtk

@@ -53,7 +53,9 @@ SplitVertices referenceSplit(const Mesh& mesh, const SplitVertexKey& key) {
   const bool useNormals = key.normals && mesh.hasNormals();
   const auto vertexOf = [&](std::size_t c) { return mesh.triangles[c / 3][c % 3]; };
   const auto sameKey = [&](std::size_t a, std::size_t b) {
-    if (uvs && !(sameBits(uvs->uv[a].x(), uvs->uv[b].x()) && sameBits(uvs->uv[a].y(), uvs->uv[b].y()))) return false;
+    if (uvs && !(sameBits(uvs->writtenUv(a).x(), uvs->writtenUv(b).x()) &&
+                 sameBits(uvs->writtenUv(a).y(), uvs->writtenUv(b).y())))
+      return false;
     if (useW && !sameBits(uvs->w[a], uvs->w[b])) return false;
     return !useNormals || mesh.cornerNormals[a / 3][a % 3] == mesh.cornerNormals[b / 3][b % 3];
   };
@@ -108,9 +110,9 @@ std::string referenceObj(const Mesh& mesh, const UvMap* uvs, const ObjWriteOptio
     SplitVertices split = referenceSplit(mesh, {uvs, hasW, false});
     for (const std::size_t c : split.corner) {
       out += "vt ";
-      number(uvs->uv[c].x(), options.floatPrecision);
+      number(uvs->writtenUv(c).x(), options.floatPrecision);
       out += ' ';
-      number(uvs->uv[c].y(), options.floatPrecision);
+      number(uvs->writtenUv(c).y(), options.floatPrecision);
       if (options.writeW) {
         out += ' ';
         number(hasW ? uvs->w[c] : 0.0, options.floatPrecision);
@@ -128,8 +130,14 @@ std::string referenceObj(const Mesh& mesh, const UvMap* uvs, const ObjWriteOptio
     for (std::size_t f = 0; f < faceCount; ++f) invalid += uvs->faceHas(f, kFaceInvalid) ? 1 : 0;
     if (invalid > 0) {
       out += "# " + std::to_string(invalid) + " faces have corners without a valid UV (written as vt 0 0); 1-based face numbers:";
+      // Each block of 8192 faces after the first that lists any goes on a line of its own.
+      std::size_t lineBlock = faceCount;
       for (std::size_t f = 0; f < faceCount; ++f)
-        if (uvs->faceHas(f, kFaceInvalid)) out += " " + std::to_string(f + 1);
+        if (uvs->faceHas(f, kFaceInvalid)) {
+          if (lineBlock != faceCount && f / 8192 != lineBlock) out += "\n# more 1-based face numbers:";
+          lineBlock = f / 8192;
+          out += " " + std::to_string(f + 1);
+        }
       out += '\n';
     }
   }
@@ -168,7 +176,10 @@ struct Scene {
       uvs.uv[c] = Vec2(random() % 50 == 0 ? -0.0 : u, std::acos(std::clamp(p.z(), -1.0, 1.0)) / M_PI);
       uvs.w[c] = static_cast<double>(c % 6);
     }
-    for (std::size_t f = 0; f < mesh.triangles.size(); f += 997) uvs.faceFlags[f] = kFaceInvalid;
+    for (std::size_t f = 0; f < mesh.triangles.size(); f += 997) {  // one corner each, its stored UV not (0, 0)
+      uvs.faceFlags[f] = kFaceInvalid;
+      uvs.cornerInvalid[3 * f + f % 3] = kCornerMiss;
+    }
     mesh.normals = {{0, 0, 1}, {1.0 / 3.0, 0.25, -1e-300}};
     mesh.cornerNormals.assign(mesh.triangles.size(), {-1, -1, -1});
     for (std::size_t f = 0; f < mesh.triangles.size(); f += 3) mesh.cornerNormals[f] = {0, 1, f % 2 == 0 ? 0 : -1};

@@ -249,6 +249,21 @@ def test_formats_by_extension_keep_the_uvs(tmp_path):
         uvtk.read_mesh(broken)
 
 
+
+def test_every_format_gives_back_the_corners_a_map_left_without_a_uv(tmp_path):
+    """Normal rays from a torus's inner side miss the cylinder; every writer lists those faces, and
+    every reader gives their corners back as NaN (no UV) rather than the (0, 0) the file holds."""
+    positions, triangles = torus()
+    m = uvtk.map(uvtk.Mesh(positions, triangles), projector="cylinder", omap="normal")
+    invalid = np.asarray(m.invalid_reason) != 0
+    assert 0 < invalid.any(axis=1).sum() < len(triangles)
+    for name in ("t.obj", "t.ply", "t.glb"):
+        uvtk.write_mesh(tmp_path / name, m)
+        mesh, warnings = uvtk.read_mesh(tmp_path / name, with_warnings=True)
+        assert warnings["listed_invalid_uv_faces"] == invalid.any(axis=1).sum(), name
+        np.testing.assert_array_equal(np.isnan(mesh.uv).any(axis=2), invalid, err_msg=name)
+
+
 # ---- mappings: hand-computed values ----
 
 

@@ -52,6 +52,8 @@ struct MeshWarnings {
   std::size_t parameterVertices = 0;        // OBJ `vp` lines, ignored
   std::size_t weldedCorners = 0;            // STL: corners that became an earlier corner's vertex (same position)
   std::size_t skippedPrimitives = 0;        // glTF: primitives of points or lines, left out
+  // Faces a uvtk writer listed as having corners without a valid UV: their (0, 0) corners read as without a UV.
+  std::size_t listedInvalidUvFaces = 0;
 };
 
 // Reads a mesh file by its extension (.obj, .off, .ply, .stl, .gltf, .glb; docs/formats.md) as

@@ -1,0 +1,169 @@
+// The list of faces with corners without a valid UV, as each writer notes it and each reader gives
+// it back (io/invalid_uv_faces.h).
+#include "io/invalid_uv_faces.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "io/gltf_reader.h"
+#include "io/gltf_writer.h"
+#include "io/mesh_reader.h"
+#include "io/obj_writer.h"
+#include "io/ply_reader.h"
+#include "io/ply_writer.h"
+#include "meshes/generators.h"
+
+namespace uvtk::io {
+namespace {
+
+using Faces = std::vector<std::size_t>;
+
+Faces objLine(std::string_view line) {
+  Faces faces = {99};
+  if (!readInvalidFaceLine(line, "# ", kObjInvalidFacesFirst, kObjInvalidFacesMore, 1, faces)) return {};
+  return Faces(faces.begin() + 1, faces.end());
+}
+
+Faces plyLine(std::string_view line) {
+  Faces faces;
+  if (!readInvalidFaceLine(line, "comment uvtk: ", kPlyInvalidFacesFirst, kPlyInvalidFacesMore, 0, faces)) return {};
+  return faces;
+}
+
+TEST(InvalidUvFaces, ReadsTheLinesOfEachFormatsListAndNoOtherComment) {
+  EXPECT_EQ(objLine("# 3 faces have corners without a valid UV (written as vt 0 0); 1-based face numbers: 2 7\t10"),
+            (Faces{1, 6, 9}));
+  EXPECT_EQ(objLine("# more 1-based face numbers: 1 12 "), (Faces{0, 11}));
+  EXPECT_EQ(plyLine("comment uvtk: 2 faces have corners without a valid UV (written as s t = 0 0); 0-based face numbers: 0 5"),
+            (Faces{0, 5}));
+  EXPECT_EQ(plyLine("comment uvtk: more 0-based face numbers: 8"), (Faces{8}));
+
+  // Anything else leaves the faces as they were.
+  for (const std::string_view other :
+       {"# uvtk map bunny.obj", "# 3 faces have corners", "# more 1-based face numbers: 4 x",
+        "# more 1-based face numbers: 0",  // 1-based: 0 is no face
+        "# more 1-based face numbers: 4 -5", "# more 1-based face numbers: 4,5",
+        "# faces have corners without a valid UV (written as vt 0 0); 1-based face numbers: 2",
+        "#3 faces have corners without a valid UV (written as vt 0 0); 1-based face numbers: 2"}) {
+    Faces faces = {42};
+    EXPECT_FALSE(readInvalidFaceLine(other, "# ", kObjInvalidFacesFirst, kObjInvalidFacesMore, 1, faces)) << other;
+    EXPECT_EQ(faces, Faces{42}) << other;
+  }
+  Faces faces;
+  EXPECT_FALSE(readInvalidFaceLine("comment more 0-based face numbers: 1", "comment uvtk: ", kPlyInvalidFacesFirst,
+                                   kPlyInvalidFacesMore, 0, faces));
+  EXPECT_FALSE(readInvalidFaceLine("# more 1-based face numbers: 1", "comment uvtk: ", kPlyInvalidFacesFirst,
+                                   kPlyInvalidFacesMore, 0, faces));  // one format's list is not another's
+  EXPECT_TRUE(faces.empty());
+}
+
+TEST(InvalidUvFaces, MarksOnlyTheCornersAtZeroOfListedFaces) {
+  Mesh mesh;
+  mesh.positions.assign(4, Vec3::Zero());
+  mesh.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 2, 3}};
+  mesh.texcoords = {Vec3(0, 0, 0), Vec3(0.5, 0, 0), Vec3(0, 0.5, 0), Vec3(0, 0, 7)};  // w plays no part
+  mesh.cornerTexcoords = {{0, 1, 2}, {0, 1, 3}, {-1, 1, 2}};
+  // Face 0 lists nothing; face 1 twice (counted once); face 2 has no (0, 0) corner; 3 and 9 are beyond the faces.
+  std::vector<std::size_t> marked;
+  markListedInvalidFaces(mesh, 0, 3, {1, 2, 1, 3, 9}, marked);
+  EXPECT_EQ(marked, Faces{1});
+  EXPECT_EQ(mesh.cornerTexcoords, (std::vector<Triangle>{{0, 1, 2}, {-1, 1, -1}, {-1, 1, 2}}));
+
+  // Numbered from a first face (a glTF mesh's faces after an earlier mesh's), within its count.
+  mesh.cornerTexcoords = {{0, 1, 2}, {0, 1, 3}, {0, 0, 0}};
+  marked.clear();
+  markListedInvalidFaces(mesh, 1, 1, {0, 1}, marked);
+  EXPECT_EQ(marked, Faces{1});
+  EXPECT_EQ(mesh.cornerTexcoords, (std::vector<Triangle>{{0, 1, 2}, {-1, 1, -1}, {0, 0, 0}}));
+
+  Mesh without = mesh;
+  without.cornerTexcoords.clear();
+  marked.clear();
+  markListedInvalidFaces(without, 0, 3, {0, 1, 2}, marked);
+  EXPECT_TRUE(marked.empty());
+}
+
+// A mesh like a scan, every third face with one corner without a valid UV, the valid UVs away from (0, 0).
+struct Listed {
+  Mesh mesh = meshes::scannedPatch(6);
+  UvMap uvs;
+  std::size_t invalidFaces = 0;
+  Listed() {
+    const std::size_t faces = mesh.triangles.size();
+    uvs.faceFlags.assign(faces, kFaceOk);
+    uvs.cornerInvalid.assign(3 * faces, kCornerValid);
+    uvs.uv.resize(3 * faces);
+    for (std::size_t c = 0; c < 3 * faces; ++c) {
+      const Vec3& p = mesh.positions[static_cast<std::size_t>(mesh.triangles[c / 3][c % 3])];
+      uvs.uv[c] = Vec2(0.25 + 0.01 * std::abs(p.x()), 0.25 + 0.01 * std::abs(p.y()));
+    }
+    for (std::size_t f = 1; f < faces; f += 3) {
+      uvs.faceFlags[f] = kFaceInvalid;
+      uvs.cornerInvalid[3 * f + f % 3] = kCornerMiss;
+      ++invalidFaces;
+    }
+  }
+  // Every corner read back without a UV is one written without a valid UV, and the other way round.
+  void expectSameInvalidCorners(const ReadMeshResult& read, const std::string& format) const {
+    ASSERT_EQ(read.mesh.cornerTexcoords.size(), mesh.triangles.size()) << format;
+    EXPECT_EQ(read.warnings.listedInvalidUvFaces, invalidFaces) << format;
+    EXPECT_EQ(read.listedInvalidUvFaces.size(), invalidFaces) << format;
+    std::size_t differing = 0;
+    for (std::size_t c = 0; c < uvs.cornerInvalid.size(); ++c)
+      differing += (read.mesh.cornerTexcoords[c / 3][c % 3] < 0) != (uvs.cornerInvalid[c] != kCornerValid) ? 1 : 0;
+    EXPECT_EQ(differing, 0u) << format;
+  }
+};
+
+TEST(InvalidUvFaces, EveryWritersListComesBackAsTheSameCornersWithoutAUv) {
+  const Listed listed;
+  ASSERT_GT(listed.invalidFaces, kInvalidFacesPerLine);  // lists of several lines in every format
+
+  std::ostringstream obj;
+  writeObj(obj, listed.mesh, &listed.uvs);
+  const std::string text = obj.str();
+  std::size_t listLines = 0, longest = 0;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+    if (line.find("face numbers:") != std::string::npos) ++listLines, longest = std::max(longest, line.size());
+  EXPECT_GT(listLines, 1u);
+  EXPECT_LT(longest, 16 * kInvalidFacesPerLine);  // no line near the reader's 64 MiB limit
+  // In parallel chunks of several sizes (a chunk may begin inside the list) and as a stream.
+  for (const std::size_t chunkBytes : {std::size_t{4096}, std::size_t{100000}, kObjChunkBytes})
+    listed.expectSameInvalidCorners(readObjText(text, "listed.obj", 2, chunkBytes), "obj " + std::to_string(chunkBytes));
+  std::istringstream objStream(text);
+  listed.expectSameInvalidCorners(readObj(objStream, "listed.obj"), "obj stream");
+
+  for (const bool ascii : {false, true}) {
+    PlyWriteOptions options;
+    options.ascii = ascii;
+    std::stringstream ply;
+    writePly(ply, listed.mesh, &listed.uvs, options);
+    listed.expectSameInvalidCorners(readPly(ply, "listed.ply"), ascii ? "ascii ply" : "binary ply");
+  }
+
+  std::stringstream glb;
+  writeGlb(glb, listed.mesh, &listed.uvs);
+  listed.expectSameInvalidCorners(readGltf(glb.str(), "listed.glb", ".", true), "glb");
+}
+
+TEST(InvalidUvFaces, AFileWithoutTheListKeepsItsCornersAtZero) {
+  const Listed listed;
+  std::ostringstream obj;
+  writeObj(obj, listed.mesh, &listed.uvs);
+  // The same file without the list's lines: its invalid corners are the (0, 0) they hold.
+  std::istringstream lines(obj.str());
+  std::string text;
+  for (std::string line; std::getline(lines, line);)
+    if (line.find("face numbers:") == std::string::npos) text += line + "\n";
+  const ReadMeshResult read = readObjText(text, "unlisted.obj", 2, 4096);
+  EXPECT_EQ(read.warnings.listedInvalidUvFaces, 0u);
+  for (const Triangle& t : read.mesh.cornerTexcoords) ASSERT_EQ(std::count(t.begin(), t.end(), -1), 0);
+}
+
+}  // namespace
+}  // namespace uvtk::io
