@@ -35,6 +35,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "io/invalid_uv_faces.h"
 #include "io/split_vertices.h"
 
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "glTF buffers are little-endian; written with memcpy");
@@ -195,10 +196,8 @@ GltfParts buildGltf(const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& 
 
   json gltfMesh = {{"primitives", json::array({primitive})}};
   if (uvs) {
-    json invalid = json::array();
-    for (std::size_t f = 0; f < faceCount; ++f)
-      if (uvs->faceHas(f, kFaceInvalid)) invalid.push_back(f);
-    if (!invalid.empty()) gltfMesh["extras"] = {{"uvtk", {{"invalid_faces", std::move(invalid)}}}};
+    const std::vector<std::size_t> invalid = invalidUvFaces(*uvs);
+    if (!invalid.empty()) gltfMesh["extras"] = {{"uvtk", {{"invalid_faces", invalid}}}};
   }
   document["meshes"] = json::array({std::move(gltfMesh)});
   document["buffers"] = json::array({{{"byteLength", parts.bin.size()}}});

@@ -28,6 +28,13 @@ bool readNumbers(std::string_view text, std::size_t firstNumber, std::vector<std
 
 }  // namespace
 
+std::vector<std::size_t> invalidUvFaces(const UvMap& uvs) {
+  std::vector<std::size_t> faces;
+  for (std::size_t f = 0; f < uvs.faceCount(); ++f)
+    if (uvs.faceHas(f, kFaceInvalid)) faces.push_back(f);
+  return faces;
+}
+
 bool readInvalidFaceLine(std::string_view line, std::string_view lead, std::string_view first, std::string_view more,
                          std::size_t firstNumber, std::vector<std::size_t>& faces) {
   std::string_view numbers;

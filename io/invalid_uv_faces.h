@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "core/uv_map.h"
 
 namespace uvtk::io {
 
@@ -26,6 +27,9 @@ inline constexpr std::string_view kPlyInvalidFacesFirst =
     " faces have corners without a valid UV (written as s t = 0 0); 0-based face numbers:";
 inline constexpr std::string_view kPlyInvalidFacesMore = "comment uvtk: more 0-based face numbers:";
 inline constexpr std::size_t kInvalidFacesPerLine = 10000;
+
+// The faces a writer lists: those with a corner without a valid UV (kFaceInvalid), ascending.
+std::vector<std::size_t> invalidUvFaces(const UvMap& uvs);
 
 // The face numbers of one line of a list, 0-based (`firstNumber` 1: the line's are 1-based),
 // appended to `faces`. `line` is a whole OBJ comment ("# ...") or PLY header line ("comment ...");

@@ -120,13 +120,11 @@ void writeObj(std::ostream& stream, const Mesh& mesh, const UvMap* uvs, const Ob
   if (uvs) {
     // The list of invalid faces (io/invalid_uv_faces.h): the first block's numbers on the line that
     // counts them, every later block's on a line of its own, so that no line is long.
-    std::size_t invalid = 0, firstInvalid = faceCount;
-    for (std::size_t f = 0; f < faceCount; ++f)
-      if (uvs->faceHas(f, kFaceInvalid) && invalid++ == 0) firstInvalid = f;
+    const std::vector<std::size_t> invalid = invalidUvFaces(*uvs);
     static_assert(kLinesPerBlock <= kInvalidFacesPerLine);
-    if (invalid > 0) {
-      out.text("# " + std::to_string(invalid) + std::string(kObjInvalidFacesFirst));
-      const std::size_t firstBlock = firstInvalid / kLinesPerBlock;
+    if (!invalid.empty()) {
+      out.text("# " + std::to_string(invalid.size()) + std::string(kObjInvalidFacesFirst));
+      const std::size_t firstBlock = invalid.front() / kLinesPerBlock;
       out.blocks((faceCount + kLinesPerBlock - 1) / kLinesPerBlock, [&](std::size_t block, TextBlock& text) {
         bool started = block == firstBlock;
         for (std::size_t f = block * kLinesPerBlock, end = std::min(faceCount, f + kLinesPerBlock); f < end; ++f)

@@ -78,24 +78,20 @@ void writeHeader(Buffer& out, const Mesh& mesh, const UvMap* uvs, const PlyWrite
   }
   const std::size_t faceCount = mesh.triangles.size();
   if (uvs) {
-    std::size_t invalid = 0;
-    for (std::size_t f = 0; f < faceCount; ++f) invalid += uvs->faceHas(f, kFaceInvalid) ? 1 : 0;
-    if (invalid > 0) {
+    const std::vector<std::size_t> invalid = invalidUvFaces(*uvs);
+    if (!invalid.empty()) {
       out.text("comment uvtk: ");
-      out.integer(invalid);
+      out.integer(invalid.size());
       out.text(kPlyInvalidFacesFirst);
       // Continued on further lines, so that no header line grows past what a reader holds at once.
-      std::size_t onLine = 0;
-      for (std::size_t f = 0; f < faceCount; ++f)
-        if (uvs->faceHas(f, kFaceInvalid)) {
-          if (onLine++ == kInvalidFacesPerLine) {
-            out.character('\n');
-            out.text(kPlyInvalidFacesMore);
-            onLine = 1;
-          }
-          out.character(' ');
-          out.integer(f);
+      for (std::size_t i = 0; i < invalid.size(); ++i) {
+        if (i > 0 && i % kInvalidFacesPerLine == 0) {
+          out.character('\n');
+          out.text(kPlyInvalidFacesMore);
         }
+        out.character(' ');
+        out.integer(invalid[i]);
+      }
       out.character('\n');
     }
   }
