@@ -19,6 +19,11 @@
 //   primitive restart value glTF forbids), UNSIGNED_INT beyond.
 // - min and max of POSITION and TEXCOORD_0 are those of the float32 values written, as the
 //   validator recomputes them.
+// - A mesh far from the origin (its bounding box's centre farther, in its largest coordinate, than
+//   1.5 times the box's largest side) is written relative to that centre, which becomes the node's
+//   translation (a JSON double): float32 then spends its digits on the shape, not on the distance,
+//   as CesiumJS's relative-to-centre and 3D Tiles do. A reader composes the node's transform in
+//   double and gets the positions back to float32's precision at the mesh's size.
 // - Degenerate and non-manifold triangles are written as they are.
 #include "io/gltf_writer.h"
 
@@ -93,6 +98,17 @@ void addFloatAccessor(GltfParts& parts, const std::vector<float>& values, int n,
   parts.document["accessors"].push_back(std::move(accessor));
 }
 
+// The node's translation: the centre of the written vertices' bounding box when the mesh lies far
+// from the origin (see the decisions above), else zero.
+Vec3 positionOrigin(const Mesh& mesh, const std::vector<int>& vertices) {
+  Eigen::AlignedBox3d box;
+  for (const int v : vertices) box.extend(mesh.positions[static_cast<std::size_t>(v)]);
+  if (box.isEmpty()) return Vec3::Zero();
+  const Vec3 centre = 0.5 * box.min() + 0.5 * box.max();  // halves first: the sum could overflow
+  const double side = (box.max() - box.min()).maxCoeff();  // inf when the box spans the doubles: not moved
+  return centre.cwiseAbs().maxCoeff() > 1.5 * side ? centre : Vec3::Zero();
+}
+
 GltfParts buildGltf(const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& options) {
   const std::size_t faceCount = mesh.triangles.size();
   UVTK_CHECK(!uvs || uvs->uv.size() == 3 * faceCount);
@@ -102,12 +118,16 @@ GltfParts buildGltf(const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& 
 
   const SplitVertices split = splitVertices(mesh, {uvs, false, true});
   const std::size_t n = split.size();
+  const Vec3 origin = positionOrigin(mesh, split.vertex);
   // Everything is converted, and checked against float32's range, before a byte is written.
   std::vector<float> positions(3 * n), texcoords(uvs ? 2 * n : 0);
+  double largest = 0.0;  // of the coordinates written
   for (std::size_t s = 0; s < n; ++s) {
     const Vec3& p = mesh.positions[static_cast<std::size_t>(split.vertex[s])];
     for (int a = 0; a < 3; ++a) {
-      const float f = static_cast<float>(p[a]);
+      const double written = p[a] - origin[a];
+      largest = std::max(largest, std::fabs(written));
+      const float f = static_cast<float>(written);
       if (!std::isfinite(f))
         throw OutputError(cannot + "vertex " + std::to_string(split.vertex[s]) + " at (" + numberText(p.x()) + ", " +
                           numberText(p.y()) + ", " + numberText(p.z()) +
@@ -127,10 +147,11 @@ GltfParts buildGltf(const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& 
   }
   // A mesh whose every coordinate is below float32's normal range would reach the file as zeros
   // and subnormals: its shape gone, with no number out of range to say so.
-  double largest = 0.0;
-  for (const int v : split.vertex) largest = std::max(largest, mesh.positions[static_cast<std::size_t>(v)].cwiseAbs().maxCoeff());
   if (largest > 0.0 && largest < double(std::numeric_limits<float>::min()))
     throw OutputError(cannot + "the mesh's coordinates (largest magnitude " + numberText(largest) +
+                      (origin.isZero(0.0) ? std::string()
+                                          : ", relative to its centre (" + numberText(origin.x()) + ", " +
+                                                numberText(origin.y()) + ", " + numberText(origin.z()) + ")") +
                       ") are below glTF's float32 normal range (1.17549435e-38): its shape would be lost; scale it first");
 
   GltfParts parts;
@@ -140,7 +161,9 @@ GltfParts buildGltf(const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& 
   if (!options.copyright.empty()) document["asset"]["copyright"] = options.copyright;
   document["scene"] = 0;
   document["scenes"] = json::array({{{"nodes", {0}}}});
-  document["nodes"] = json::array({{{"mesh", 0}}});
+  json node = {{"mesh", 0}};
+  if (!origin.isZero(0.0)) node["translation"] = {origin.x(), origin.y(), origin.z()};
+  document["nodes"] = json::array({std::move(node)});
   document["bufferViews"] = json::array();
   document["accessors"] = json::array();
   json primitive = {{"attributes", json::object()}};

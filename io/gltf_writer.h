@@ -25,7 +25,8 @@ void writeGlb(std::ostream& out, const Mesh& mesh, const UvMap* uvs, const GltfW
 // name relative to the JSON's folder, e.g. "model.bin"; percent-encoded into the uri where it
 // holds other than letters, digits, '-', '.', '_', '~' and '/'), and the buffer's bytes to `binary`.
 // Both throw OutputError "NAME: error: cannot write: ..." before writing anything when a position
-// or UV is beyond float32's range, or the mesh has no triangle.
+// (relative to the node's translation, for a mesh far from the origin: gltf_writer.cpp) or UV is
+// beyond float32's range, or the mesh has no triangle.
 void writeGltf(std::ostream& json, std::ostream& binary, const std::string& binaryUri, const Mesh& mesh,
                const UvMap* uvs, const GltfWriteOptions& options = {});
 

@@ -296,5 +296,41 @@ TEST_F(MeshFormatsCli, ReportOfAWrittenMapJudgesItsInvalidCornersAsTheMapDid) {
   }
 }
 
+
+// A scan far from the origin (at 1e6, -2e6, 3e5, 2 units across) mapped to a GLB: glTF's float32
+// would round its coordinates to 1/8 of a unit, a twentieth of the mesh, so the writer stores them
+// relative to the node's translation. `report` of the far GLB judges it as it judges the same scan
+// written at the origin (every face's status, every reason's faces and value to float32's
+// precision), and the validator accepts the file.
+TEST_F(MeshFormatsCli, AScanFarFromTheOriginMapsToAGlbThatReportsAsAtTheOrigin) {
+  const auto reported = [&](const std::string& name, const Vec3& offset) {
+    Mesh scan = meshes::scannedPatch(4);
+    for (Vec3& p : scan.positions) p += offset;
+    const std::string input = generated(name + ".ply", scan);
+    const CliRun map = uvtk("map " + input + " --projector cylinder -q -o " + path(name + ".glb"));
+    EXPECT_EQ(map.status, 0) << map.err;
+    const CliRun report = uvtk("report " + path(name + ".glb") + " -q --json " + path(name + ".json"));
+    EXPECT_EQ(report.status, 0) << report.err;
+    return json::parse(readText(path(name + ".json")));
+  };
+  const json near = reported("near", Vec3::Zero()), far = reported("far", Vec3(1e6, -2e6, 3e5));
+  EXPECT_EQ(far["status_counts"], near["status_counts"]);
+  ASSERT_EQ(far["reasons"].size(), near["reasons"].size());
+  for (std::size_t i = 0; i < near["reasons"].size(); ++i) {
+    EXPECT_EQ(far["reasons"][i]["code"], near["reasons"][i]["code"]) << i;
+    EXPECT_EQ(far["reasons"][i]["faces"], near["reasons"][i]["faces"]) << i;
+    EXPECT_NEAR(far["reasons"][i]["value"].get<double>(), near["reasons"][i]["value"].get<double>(),
+                1e-5 * std::abs(near["reasons"][i]["value"].get<double>())) << i;
+  }
+  EXPECT_NEAR(far["stretch_l2"].get<double>(), near["stretch_l2"].get<double>(), 1e-5);
+  bool skipped = false;
+  int status = 0;
+  const std::string summary = validate(path("far.glb"), skipped, status);
+  if (skipped) GTEST_SKIP() << "glTF-Validator not installed (scripts/test.sh installs it with npm): not run";
+  EXPECT_EQ(status, 0) << summary;
+  EXPECT_NE(summary.find("errors 0 "), std::string::npos) << summary;
+  EXPECT_NE(summary.find("warnings 0 "), std::string::npos) << summary;
+}
+
 }  // namespace
 }  // namespace uvtk

@@ -691,5 +691,69 @@ TEST(WriteGltf, RefusesAMeshWhoseShapeFloat32CannotHold) {
   EXPECT_FALSE(out.str().empty());
 }
 
+
+// The centre of the mesh's bounding box, as the writer's rule names it.
+Vec3 boxCentre(const Mesh& mesh) {
+  Vec3 lo = mesh.positions[0], hi = lo;
+  for (const Vec3& p : mesh.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return 0.5 * lo + 0.5 * hi;
+}
+
+// A mesh far from the origin is written relative to its box's centre, the node's translation: read
+// back, every corner lies within float32's rounding at the mesh's size, where writing the far
+// coordinates themselves as float32 moves them by up to an eighth of a unit (a torus knot 10 across at
+// 2e6: 4,866 of the hostile knot's 29,237 faces collapsed). Beyond float32's range (1e39) it can be
+// written at all.
+TEST(WriteGltf, AMeshFarFromTheOriginIsWrittenRelativeToItsCentreAndKeepsItsShape) {
+  for (const Vec3& offset : {Vec3(1e6, -2e6, 3e5), Vec3(-7e12, 0.0, 5.0), Vec3(1e39, 2e39, -3e39)}) {
+    Mesh mesh = meshes::torusKnot(2, 3, 96, 8);
+    for (Vec3& p : mesh.positions) p += offset;
+    const UvMap uvs = seamUvs(mesh);
+    const std::string glb = glbOf(mesh, &uvs);
+    const json doc = jsonOfGlb(glb);
+    const Vec3 centre = boxCentre(mesh);
+    ASSERT_TRUE(doc["nodes"][0].contains("translation")) << offset.transpose();
+    for (int a = 0; a < 3; ++a) EXPECT_EQ(doc["nodes"][0]["translation"][a].get<double>(), centre[a]);
+    // POSITION's bounds are the floats written: within the knot's own half-size (about 3.4).
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_LT(std::fabs(doc["accessors"][0]["min"][a].get<double>()), 4.0);
+      EXPECT_LT(std::fabs(doc["accessors"][0]["max"][a].get<double>()), 4.0);
+    }
+    const Mesh read = readGltf(glb, "out.glb", "", true).mesh;
+    ASSERT_EQ(read.triangles.size(), mesh.triangles.size());
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const Vec3& p = mesh.positions[std::size_t(mesh.triangles[f][k])];
+        const Vec3& q = read.positions[std::size_t(read.triangles[f][k])];
+        for (int a = 0; a < 3; ++a) {
+          // Half a float32 ulp of a coordinate below 4 (2^-23), then the reader's one double rounding.
+          const double bound = 0x1p-23 + std::fabs(centre[a]) * 0x1p-52;
+          ASSERT_LE(std::fabs(q[a] - p[a]), bound) << "face " << f << " offset " << offset.transpose();
+        }
+      }
+  }
+}
+
+// The rule's edge: a box whose centre is more than 1.5 times its largest side from the origin (in
+// its largest coordinate) is moved; one at exactly 1.5 times, or about the origin, is not, and its
+// positions are exactly their float32 values.
+TEST(WriteGltf, OnlyAMeshFartherThanOneAndAHalfSidesFromTheOriginIsMoved) {
+  Mesh m;
+  m.triangles = {{0, 1, 2}};
+  const auto written = [&](double x0) {
+    m.positions = {{x0, 0, 0}, {x0 + 1, 0, 0}, {x0, 0.5, 0.25}};
+    return jsonOfGlb(glbOf(m, nullptr))["nodes"][0];
+  };
+  EXPECT_FALSE(written(1.0).contains("translation"));         // centre 1.5, side 1
+  EXPECT_FALSE(written(-2.0).contains("translation"));        // centre -1.5
+  EXPECT_EQ(written(1.0 + 0x1p-20)["translation"], json::array({1.5 + 0x1p-20, 0.25, 0.125}));
+  EXPECT_EQ(written(-2.0 - 0x1p-20)["translation"], json::array({-1.5 - 0x1p-20, 0.25, 0.125}));
+  EXPECT_FALSE(written(-0.5).contains("translation"));        // about the origin
+  m.positions = {{0.1, 0.2, 0.3}, {1.1, 0.2, 0.3}, {0.1, 0.7, 0.3}};
+  const Mesh read = readGltf(glbOf(m, nullptr), "out.glb", "", true).mesh;
+  for (std::size_t v = 0; v < 3; ++v)
+    for (int a = 0; a < 3; ++a) EXPECT_EQ(read.positions[v][a], double(float(m.positions[v][a])));
+}
+
 }  // namespace
 }  // namespace uvtk::io
