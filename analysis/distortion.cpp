@@ -72,6 +72,32 @@ void singularValues(const Eigen::Matrix2d& m, double& s1, double& s2) {
   s2 = m.determinant() / s1;
 }
 
+// The singular values of a face's Jacobian (s2 signed as its determinant). A face far smaller or
+// larger than the mesh (a sliver of a mesh 1e-149 across: a determinant of 1e-310 inverted, 1e310
+// squared) can overflow or underflow on the way to values that are themselves representable: such
+// a face is measured again with its 3D and UV edges each brought to about 1 by a power of two
+// (exact), and the values scaled back. Faces measured directly keep their bits.
+void faceSingularValues(const Edges& p, const std::array<Vec2, 3>& t, double& s1, double& s2) {
+  singularValues(jacobian(p, t[0], t[1], t[2]), s1, s2);
+  if (std::isfinite(s1) && std::isnormal(s2)) return;
+  const int k3 = std::ilogb(std::max(p.e1.cwiseAbs().maxCoeff(), p.e2.cwiseAbs().maxCoeff()));
+  const int kUv = std::ilogb(std::max((t[1] - t[0]).cwiseAbs().maxCoeff(), (t[2] - t[0]).cwiseAbs().maxCoeff()));
+  Edges unit = p;
+  unit.e1 = p.e1.unaryExpr([&](double x) { return std::ldexp(x, -k3); });
+  unit.e2 = p.e2.unaryExpr([&](double x) { return std::ldexp(x, -k3); });
+  const auto unitUv = [&](const Vec2& c) { return Vec2((c - t[0]).unaryExpr([&](double x) { return std::ldexp(x, -kUv); })); };
+  singularValues(jacobian(unit, Vec2::Zero(), unitUv(t[1]), unitUv(t[2])), s1, s2);
+  s1 = std::ldexp(s1, kUv - k3);  // J scales as UV over 3D lengths
+  s2 = std::ldexp(s2, kUv - k3);
+}
+
+// log2 of r = (Auv / A3) (sum(A3) / sum(Auv)), by logarithms where the quotients overflow or
+// underflow (the sliver above: Auv / A3 = 1e308).
+double log2AreaRatio(double areaUv, double area3d, double surfacePerUv) {
+  const double direct = std::log2(areaUv / area3d * surfacePerUv);
+  return std::isfinite(direct) ? direct : std::log2(areaUv) - std::log2(area3d) + std::log2(surfacePerUv);
+}
+
 }  // namespace
 
 const char* toString(FaceStatus status) {
@@ -204,9 +230,14 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
       const bool mirrored = (orientation[f] & (majority > 0.0 ? kClockwise : kCounterClockwise)) != 0;
       if (uv.faceHas(f, kFacePole)) face.status = FaceStatus::PoleFace;
       else if (mirrored) face.status = orientation[f] & kTurnedAway ? FaceStatus::Backfacing : FaceStatus::Flipped;
-      const Eigen::Matrix2d j = jacobian(edges(f), t[0], t[1], t[2]);
-      singularValues(j, face.sigmaMax, face.sigmaMin);
+      faceSingularValues(edges(f), t, face.sigmaMax, face.sigmaMin);
       face.sigmaMin *= majority;
+      // Beyond the doubles even at the face's own scale: its UV triangle is degenerate beside its
+      // 3D one (s2 underflows), or the other way round (s1 overflows); it is counted as such.
+      if (!std::isnormal(face.sigmaMin) || !std::isfinite(1.0 / face.sigmaMin))
+        face.status = FaceStatus::ZeroAreaUv, face.sigmaMax = face.sigmaMin = 0.0;
+      else if (!std::isfinite(face.sigmaMax))
+        face.status = FaceStatus::ZeroArea3d, face.sigmaMax = face.sigmaMin = 0.0;
     }
   });
 
@@ -214,7 +245,8 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
   const double surfacePerUv = okAreaTotals(faces).surfacePerUv();
   forEachChunk([&](int, std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f)
-      if (isMeasured(faces[f].status)) faces[f].areaDistortion = std::log2(faces[f].areaRatio() * surfacePerUv);
+      if (isMeasured(faces[f].status))
+        faces[f].areaDistortion = log2AreaRatio(faces[f].areaUv, faces[f].area3d, surfacePerUv);
   });
   return faces;
 }

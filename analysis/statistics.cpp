@@ -297,6 +297,7 @@ Statistics weightedStatistics(const double* values, const double* weights, std::
   int lowestExponent = 2047, highestExponent = 0;
   for (std::size_t i = 0; i < count; ++i) {
     const double value = values[i], weight = weights[i];
+    UVTK_CHECK(std::isfinite(value) && std::isfinite(weight) && weight >= 0.0);  // the precondition: a NaN derails the search
     if (value < s.min) s.min = value;   // the first of equal smallest values
     if (!(value < s.max)) s.max = value;  // the last of equal largest ones (std::minmax_element's choice)
     s.totalWeight += weight, weightedSum += weight * value;

@@ -31,7 +31,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     uvtk::io::writeGlb(glb, result.mesh, nullptr);
   } catch (const uvtk::OutputError&) {
-    return 0;  // a transform took a position beyond float32's range
+    return 0;  // the transforms took a position beyond the doubles
   }
   // Any exception here escapes: the writer wrote what its reader refuses.
   const uvtk::io::ReadMeshResult back = uvtk::io::readGltf(glb.str(), "fuzz.glb", "", true);

@@ -19,6 +19,8 @@
 #include "inspect/run_report.h"
 #include "inspect/verdict.h"
 #include "io/atomic_file.h"
+#include "io/gltf_writer.h"
+#include "io/mesh_format.h"
 #include "io/mesh_reader.h"
 #include "io/mesh_format.h"
 #include "io/mesh_writer.h"
@@ -114,6 +116,11 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   io::OutputSet outputs;
   io::writeMesh(outputs, paths.output, mapped.mesh, &mapped.uv, write);
   const double writeMs = clock.stop();
+  const io::MeshFormat format = *io::outputFormatOf(paths.output);
+  const std::size_t collapsedUvFaces = format == io::MeshFormat::gltf || format == io::MeshFormat::glb
+                                           ? io::facesCollapsedInGltfTexcoords(mapped.uv)
+                                           : 0;
+  if (!paths.json.empty()) summary["output_collapsed_uv_faces"] = collapsedUvFaces;
 
   if (!paths.json.empty()) {
     // The mapping stage split as the projection measured it: seams (repair and summary) and the
@@ -125,6 +132,14 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   }
   outputs.publish();
   printMappingNotes(paths.input, input.warnings, mapped);
+  if (collapsedUvFaces > 0) {
+    const Eigen::AlignedBox2d& box = judgement.summary.uvBounds;
+    const Vec2 size = box.sizes(), centre = 0.5 * box.min() + 0.5 * box.max();
+    printProgressMessage(paths.output + ": warning: " + std::to_string(collapsedUvFaces) +
+                         " faces' UVs have zero area as glTF holds them (float32 u, 1 - v): the layout is " +
+                         numberText(size.x()) + " x " + numberText(size.y()) + " about (" + numberText(centre.x()) +
+                         ", " + numberText(centre.y()) + "); --uv-scale and --uv-offset bring it near [0, 1]");
+  }
   if (job.projector.surface == param::SurfaceKind::Triplanar && !quiet()) {
     char note[256];
     std::snprintf(note, sizeof note,

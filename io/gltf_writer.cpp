@@ -24,6 +24,10 @@
 //   translation (a JSON double): float32 then spends its digits on the shape, not on the distance,
 //   as CesiumJS's relative-to-centre and 3D Tiles do. A reader composes the node's transform in
 //   double and gets the positions back to float32's precision at the mesh's size.
+// - A mesh whose coordinates (relative to that centre) reach 2^63 or stay below 2^-62 is written
+//   divided by a power of two, the node's uniform scale, so that they lie in (-2, 2): float32's
+//   range (about 1.2e-38 to 3.4e38) holds any double mesh, and squared lengths, which renderers
+//   compute in float32, stay in it too. The division is exact.
 // - Degenerate and non-manifold triangles are written as they are.
 #include "io/gltf_writer.h"
 
@@ -98,15 +102,31 @@ void addFloatAccessor(GltfParts& parts, const std::vector<float>& values, int n,
   parts.document["accessors"].push_back(std::move(accessor));
 }
 
-// The node's translation: the centre of the written vertices' bounding box when the mesh lies far
-// from the origin (see the decisions above), else zero.
-Vec3 positionOrigin(const Mesh& mesh, const std::vector<int>& vertices) {
+// Where the written positions sit: p = origin + 2^exponent q, q the float32 values in the buffer
+// (the node's translation and scale; see the decisions above).
+struct PositionFrame {
+  Vec3 origin = Vec3::Zero();
+  int exponent = 0;
+  bool moved() const { return !origin.isZero(0.0); }
+};
+
+// Coordinates of magnitude in [2^-62, 2^63) are written unscaled: their squares, as renderers
+// compute lengths in float32, stay in its normal range.
+constexpr int kLargestUnscaledExponent = 62;
+
+PositionFrame positionFrame(const Mesh& mesh, const std::vector<int>& vertices) {
+  PositionFrame frame;
   Eigen::AlignedBox3d box;
   for (const int v : vertices) box.extend(mesh.positions[static_cast<std::size_t>(v)]);
-  if (box.isEmpty()) return Vec3::Zero();
+  if (box.isEmpty()) return frame;
   const Vec3 centre = 0.5 * box.min() + 0.5 * box.max();  // halves first: the sum could overflow
   const double side = (box.max() - box.min()).maxCoeff();  // inf when the box spans the doubles: not moved
-  return centre.cwiseAbs().maxCoeff() > 1.5 * side ? centre : Vec3::Zero();
+  if (centre.cwiseAbs().maxCoeff() > 1.5 * side) frame.origin = centre;
+  double largest = 0.0;
+  for (const int v : vertices) largest = std::max(largest, (mesh.positions[static_cast<std::size_t>(v)] - frame.origin).cwiseAbs().maxCoeff());
+  if (largest > 0.0 && std::isfinite(largest) && std::abs(std::ilogb(largest)) > kLargestUnscaledExponent)
+    frame.exponent = std::ilogb(largest);
+  return frame;
 }
 
 GltfParts buildGltf(const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& options) {
@@ -118,16 +138,14 @@ GltfParts buildGltf(const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& 
 
   const SplitVertices split = splitVertices(mesh, {uvs, false, true});
   const std::size_t n = split.size();
-  const Vec3 origin = positionOrigin(mesh, split.vertex);
+  const PositionFrame frame = positionFrame(mesh, split.vertex);
   // Everything is converted, and checked against float32's range, before a byte is written.
   std::vector<float> positions(3 * n), texcoords(uvs ? 2 * n : 0);
-  double largest = 0.0;  // of the coordinates written
+  double largestUv = 0.0;
   for (std::size_t s = 0; s < n; ++s) {
     const Vec3& p = mesh.positions[static_cast<std::size_t>(split.vertex[s])];
     for (int a = 0; a < 3; ++a) {
-      const double written = p[a] - origin[a];
-      largest = std::max(largest, std::fabs(written));
-      const float f = static_cast<float>(written);
+      const float f = static_cast<float>(std::ldexp(p[a] - frame.origin[a], -frame.exponent));
       if (!std::isfinite(f))
         throw OutputError(cannot + "vertex " + std::to_string(split.vertex[s]) + " at (" + numberText(p.x()) + ", " +
                           numberText(p.y()) + ", " + numberText(p.z()) +
@@ -137,23 +155,21 @@ GltfParts buildGltf(const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& 
     if (uvs) {
       const std::size_t c = split.corner[s];
       const Vec2 uv = uvs->writtenUv(c);
-      const float u = static_cast<float>(uv.x()), v = static_cast<float>(1.0 - uv.y());
+      const auto [u, v] = gltfTexcoord(uv);
       if (!std::isfinite(u) || !std::isfinite(v))
         throw OutputError(cannot + "the UV (" + numberText(uv.x()) + ", " + numberText(uv.y()) + ") of face " + std::to_string(c / 3) +
                           " corner " + std::to_string(c % 3) + " is beyond glTF's float32 range (magnitude at most 3.40282347e+38)");
       texcoords[2 * s] = u;
       texcoords[2 * s + 1] = v;
+      largestUv = std::max({largestUv, std::fabs(uv.x()), std::fabs(uv.y())});
     }
   }
-  // A mesh whose every coordinate is below float32's normal range would reach the file as zeros
-  // and subnormals: its shape gone, with no number out of range to say so.
-  if (largest > 0.0 && largest < double(std::numeric_limits<float>::min()))
-    throw OutputError(cannot + "the mesh's coordinates (largest magnitude " + numberText(largest) +
-                      (origin.isZero(0.0) ? std::string()
-                                          : ", relative to its centre (" + numberText(origin.x()) + ", " +
-                                                numberText(origin.y()) + ", " + numberText(origin.z()) + ")") +
-                      ") are below glTF's float32 normal range (1.17549435e-38): its shape would be lost; scale it first");
-
+  // UVs can be placed by no transform: a layout below float32's normal range (a two-plane map of a
+  // mesh 1e-150 across, in object units) would reach the file as zeros and subnormals.
+  if (largestUv > 0.0 && largestUv < double(std::numeric_limits<float>::min()))
+    throw OutputError(cannot + "the UVs (largest magnitude " + numberText(largestUv) +
+                      ") are below glTF's float32 normal range (1.17549435e-38): the layout would be lost; scale "
+                      "them first (--uv-scale)");
   GltfParts parts;
   json& document = parts.document;
   document["asset"] = {{"version", "2.0"}};
@@ -162,7 +178,11 @@ GltfParts buildGltf(const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& 
   document["scene"] = 0;
   document["scenes"] = json::array({{{"nodes", {0}}}});
   json node = {{"mesh", 0}};
-  if (!origin.isZero(0.0)) node["translation"] = {origin.x(), origin.y(), origin.z()};
+  if (frame.moved()) node["translation"] = {frame.origin.x(), frame.origin.y(), frame.origin.z()};
+  if (frame.exponent != 0) {
+    const double scale = std::ldexp(1.0, frame.exponent);
+    node["scale"] = {scale, scale, scale};
+  }
   document["nodes"] = json::array({std::move(node)});
   document["bufferViews"] = json::array();
   document["accessors"] = json::array();
@@ -252,6 +272,24 @@ std::string uriOf(const std::string& file) {
 }
 
 }  // namespace
+
+std::array<float, 2> gltfTexcoord(const Vec2& uv) { return {static_cast<float>(uv.x()), static_cast<float>(1.0 - uv.y())}; }
+
+std::size_t facesCollapsedInGltfTexcoords(const UvMap& uvs) {
+  // Twice the signed area, in double: exactly 0 for collinear floats (their products are exact).
+  const auto area = [](double ax, double ay, double bx, double by, double cx, double cy) {
+    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+  };
+  std::size_t collapsed = 0;
+  for (std::size_t f = 0; 3 * f < uvs.uv.size(); ++f) {
+    if (!uvs.cornerValid(3 * f) || !uvs.cornerValid(3 * f + 1) || !uvs.cornerValid(3 * f + 2)) continue;
+    const Vec2 &a = uvs.uv[3 * f], &b = uvs.uv[3 * f + 1], &c = uvs.uv[3 * f + 2];
+    if (area(a.x(), a.y(), b.x(), b.y(), c.x(), c.y()) == 0.0) continue;
+    const auto p = gltfTexcoord(a), q = gltfTexcoord(b), r = gltfTexcoord(c);
+    collapsed += area(p[0], p[1], q[0], q[1], r[0], r[1]) == 0.0 ? 1 : 0;
+  }
+  return collapsed;
+}
 
 void writeGlb(std::ostream& out, const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& options) {
   GltfParts parts = buildGltf(mesh, uvs, options);

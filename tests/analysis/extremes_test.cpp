@@ -85,6 +85,13 @@ const std::vector<SliverRow>& rows() {
             scaled(needle, 1e-150), planar(needle), {FaceStatus::Ok, 1e150, 1e150, 1e-150, 1e-150, 1, 1e300}),
         row("needle with edges of 1e150 (area 5e291) mapped onto the unit needle: ok, s1 = s2 = 1e-150, stretch 1e150",
             scaled(needle, 1e150), planar(needle), {FaceStatus::Ok, 1e-150, 1e-150, 1e150, 1e150, 1, 1e-300}),
+        row("needle of angle 1e-10 with edges of 1e-150 (the 3D edges' determinant 1e-310, whose inverse "
+            "overflows) onto the right UV triangle of 1e-10: measured at its own scale, ok, s1 = 1.414e150, "
+            "s2 = 7.07e139, L2 = 1e-140, Linf = 1.414e-140, angle 2e10, area ratio 1e290",
+            scaled({{0, 0, 0}, {1, 0, 0}, {std::cos(1e-10), std::sin(1e-10), 0}}, 1e-150),
+            {{0, 0}, {1e-10, 0}, {0, 1e-10}},
+            {FaceStatus::Ok, std::sqrt(2.0) * 1e150, std::sqrt(0.5) * 1e140, 1e-140, std::sqrt(2.0) * 1e-140, 2e10,
+             1e290}),
         row("needle of angle 1.5e-8 (2^-26, the coordinates' ulp) 1e8 from the origin, isometric: edges are exact "
             "differences, ok, every measure 1 within 1e-6",
             {Vec3(1e8, 1e8, 1e8), Vec3(1e8 + 1, 1e8, 1e8), Vec3(1e8 + 1, 1e8 + 0x1p-26, 1e8)},
@@ -192,6 +199,50 @@ TEST(AnalysisExtremes, AJudgementDoesNotDependOnTheMeshScale) {
     expectSameJudgement(j, reference);
     for (std::size_t f = 0; f < j.faces.size(); ++f)
       EXPECT_TRUE(std::isfinite(j.faces[f].l2Stretch()) && std::isfinite(j.faces[f].area3d)) << "face " << f;
+  }
+}
+
+// A mesh 1e-149 across (inside the scales measured as they are) with slivers: a sliver's 3D
+// determinant (1e-310) overflowed when inverted, its stretches were NaN and `uvtk report` stopped
+// with an internal error in the statistics (a torus knot at 1e-150 written as glTF and read back).
+// Each such face is measured at its own scale: the judgement is the knot's at unit scale, face by face.
+TEST(AnalysisExtremes, SliversOfATinyMeshAreMeasuredAsAtUnitScale) {
+  Mesh knot = meshes::torusKnot(2, 3, 64, 8);
+  param::ProjectorOptions o;
+  o.surface = param::SurfaceKind::Cylinder;
+  o.placement.fit = param::Fit::BBox;
+  UvMap uv = param::project(knot, o).uv;
+  // Slivers beside the knot: needles of angles 1e-10 to 1e-12 onto UV triangles of size 0.01.
+  for (const double angle : {1e-10, 1e-11, 1e-12}) {
+    const int first = int(knot.positions.size());
+    for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(std::cos(angle), std::sin(angle), 0)})
+      knot.positions.push_back(p + Vec3(5, 5, 5));
+    knot.triangles.push_back({first, first + 1, first + 2});
+    uv.uv.insert(uv.uv.end(), {Vec2(0.5, 0.5), Vec2(0.51, 0.5), Vec2(0.5, 0.51)});
+    uv.faceFlags.push_back(kFaceOk);
+    if (!uv.cornerInvalid.empty()) uv.cornerInvalid.insert(uv.cornerInvalid.end(), 3, 0);
+  }
+  const Judgement reference = judge(knot, uv);
+  Mesh tiny = knot;
+  for (Vec3& p : tiny.positions) p = p.unaryExpr([](double x) { return std::ldexp(x, -495); });
+  ASSERT_EQ(measureLengthScale(tiny), 1.0);  // measured as it is
+  const Judgement j = judge(tiny, uv);
+  ASSERT_EQ(j.faces.size(), reference.faces.size());
+  for (std::size_t f = 0; f < j.faces.size(); ++f) {
+    const FaceDistortion &a = j.faces[f], &b = reference.faces[f];
+    ASSERT_EQ(a.status, b.status) << "face " << f;
+    for (const double x : {a.l2Stretch(), a.linfStretch(), a.angleDistortion(), a.areaDistortion})
+      ASSERT_TRUE(std::isfinite(x)) << "face " << f;
+    // The slivers' areas are subnormal at 2^-990: a few digits are lost, no more.
+    EXPECT_NEAR(a.angleDistortion(), b.angleDistortion(), 1e-9 * b.angleDistortion()) << "face " << f;
+    EXPECT_NEAR(a.areaDistortion, b.areaDistortion, 1e-6) << "face " << f;
+  }
+  EXPECT_EQ(j.verdict, reference.verdict);
+  ASSERT_EQ(j.reasons.size(), reference.reasons.size());
+  for (std::size_t r = 0; r < j.reasons.size(); ++r) {
+    EXPECT_EQ(j.reasons[r].rule, reference.reasons[r].rule);
+    EXPECT_EQ(j.reasons[r].faces, reference.reasons[r].faces);
+    EXPECT_NEAR(j.reasons[r].value, reference.reasons[r].value, 1e-9 * std::abs(reference.reasons[r].value));
   }
 }
 

@@ -332,5 +332,40 @@ TEST_F(MeshFormatsCli, AScanFarFromTheOriginMapsToAGlbThatReportsAsAtTheOrigin) 
   EXPECT_NE(summary.find("warnings 0 "), std::string::npos) << summary;
 }
 
+
+// A two-plane map writes UVs in object units: a bone at x = 1e15 has u near 1e15, where float32's
+// steps are 2^26 wide. The GLB is written, `map` warns with the count of faces whose UVs float32
+// collapsed, and the JSON has the same count: an independent recount over the GLB read back against
+// the OBJ of the same mapping (doubles) finds exactly those faces.
+TEST_F(MeshFormatsCli, AMapWarnsOfTheFacesWhoseUvsGltfsFloat32Collapses) {
+  Mesh bone = meshes::bone(40, 12);
+  for (Vec3& p : bone.positions) p.x() += 1e15;
+  const std::string input = generated("far_bone.obj", bone);
+  const CliRun glb = uvtk("map " + input + " --projector two-plane -q -o " + path("b.glb") + " --json " + path("b.json"));
+  ASSERT_EQ(glb.status, 0) << glb.err;
+  ASSERT_EQ(uvtk("map " + input + " --projector two-plane -q -o " + path("b.obj")).status, 0);
+  const std::size_t counted = json::parse(readText(path("b.json")))["output_collapsed_uv_faces"].get<std::size_t>();
+  const Mesh exact = io::readMesh(path("b.obj")).mesh, stored = io::readMesh(path("b.glb")).mesh;
+  ASSERT_EQ(exact.faceCount(), stored.faceCount());
+  const auto zeroArea = [](const Mesh& m, std::size_t f) {
+    const auto t = [&](int k) { return m.texcoords[std::size_t(m.cornerTexcoords[f][k])]; };
+    const Vec3 a = t(0), b = t(1), c = t(2);
+    return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x()) == 0.0;
+  };
+  std::size_t recounted = 0;
+  for (std::size_t f = 0; f < exact.faceCount(); ++f) recounted += !zeroArea(exact, f) && zeroArea(stored, f) ? 1 : 0;
+  EXPECT_GT(recounted, exact.faceCount() / 4);
+  EXPECT_EQ(counted, recounted);
+  EXPECT_NE(glb.err.find("b.glb: warning: " + std::to_string(counted) +
+                         " faces' UVs have zero area as glTF holds them (float32 u, 1 - v)"),
+            std::string::npos) << glb.err;
+  // Brought near [0, 1], nothing collapses and nothing is said.
+  const CliRun near = uvtk("map " + input + " --projector two-plane --uv-offset -1e15,0 -q -o " + path("n.glb") +
+                           " --json " + path("n.json"));
+  ASSERT_EQ(near.status, 0) << near.err;
+  EXPECT_EQ(json::parse(readText(path("n.json")))["output_collapsed_uv_faces"], 0);
+  EXPECT_EQ(near.err.find("warning"), std::string::npos) << near.err;
+}
+
 }  // namespace
 }  // namespace uvtk

@@ -642,55 +642,63 @@ TEST(WriteGltf, WritesUnitNormalsFallingBackToTheVertexNormal) {
   EXPECT_EQ(withGiven.normals, (std::vector<Vec3>{{1, 0, 0}, {0, 0, -1}, {0, 0, 1}, {0, 0, 1}}));
 }
 
-TEST(WriteGltf, RefusesValuesBeyondFloat32BeforeWritingAnything) {
+TEST(WriteGltf, RefusesUvsBeyondFloat32BeforeWritingAnything) {
   Mesh m;
-  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1e39, 0}};
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   m.triangles = {{0, 1, 2}};
-  GltfWriteOptions options;
-  options.name = "out.glb";
-  std::ostringstream out;
-  try {
-    writeGlb(out, m, nullptr, options);
-    FAIL() << "no error";
-  } catch (const OutputError& e) {
-    EXPECT_STREQ(e.what(), "out.glb: error: cannot write: vertex 2 at (0.0, 1e+39, 0.0) is beyond glTF's float32 range "
-                           "(magnitude at most 3.40282347e+38)");
-  }
-  EXPECT_TRUE(out.str().empty());
-  m.positions[2].y() = 1;
   UvMap uvs;
   uvs.uv = {{0, 0}, {-1e300, 0}, {0, 1}};
   uvs.faceFlags = {kFaceOk};
   uvs.cornerInvalid = {0, 0, 0};
-  std::ostringstream text, binary;
+  GltfWriteOptions options;
+  options.name = "out.glb";
+  std::ostringstream out, text, binary;
+  try {
+    writeGlb(out, m, &uvs, options);
+    FAIL() << "no error";
+  } catch (const OutputError& e) {
+    EXPECT_STREQ(e.what(), "out.glb: error: cannot write: the UV (-1e+300, 0.0) of face 0 corner 1 is beyond glTF's "
+                           "float32 range (magnitude at most 3.40282347e+38)");
+  }
+  EXPECT_TRUE(out.str().empty());
   EXPECT_THROW(writeGltf(text, binary, "out.bin", m, &uvs, options), OutputError);
   EXPECT_TRUE(text.str().empty() && binary.str().empty());
 }
 
-// A mesh of extent 1e-200 would be written as zeros: refused; one tiny coordinate beside others of
-// size 1 is an ordinary rounding, written.
-TEST(WriteGltf, RefusesAMeshWhoseShapeFloat32CannotHold) {
-  Mesh m;
-  m.positions = {{0, 0, 0}, {1e-200, 0, 0}, {0, 1e-200, 0}};
-  m.triangles = {{0, 1, 2}};
-  GltfWriteOptions options;
-  options.name = "out.glb";
-  std::ostringstream out;
-  try {
-    writeGlb(out, m, nullptr, options);
-    FAIL() << "no error";
-  } catch (const OutputError& e) {
-    EXPECT_STREQ(e.what(), "out.glb: error: cannot write: the mesh's coordinates (largest magnitude 1e-200) are below "
-                           "glTF's float32 normal range (1.17549435e-38): its shape would be lost; scale it first");
+// A mesh of a size float32 cannot hold (1e-200 across: zeros; 1e39: beyond its range) or whose
+// squared lengths would leave it is written divided by a power of two, the node's uniform scale,
+// and reads back to float32's precision at its size. The rule's edge: coordinates in [2^-62, 2^63)
+// are written as they are.
+TEST(WriteGltf, AMeshOfAnySizeIsWrittenAtAPowerOfTwoScaleAndReadsBack) {
+  for (const double size : {1e-300, 1e-200, 1e-40, 1e-20, 1e20, 1e39, 1e300}) {
+    Mesh mesh = meshes::torusKnot(2, 3, 64, 8);
+    for (Vec3& p : mesh.positions) p *= size;
+    double largest = 0.0;
+    for (const Vec3& p : mesh.positions) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+    const std::string glb = glbOf(mesh, nullptr);
+    const json node = jsonOfGlb(glb)["nodes"][0];
+    EXPECT_FALSE(node.contains("translation")) << size;
+    const double scale = std::ldexp(1.0, std::ilogb(largest));
+    ASSERT_TRUE(node.contains("scale")) << size;
+    EXPECT_EQ(node["scale"], json::array({scale, scale, scale})) << size;
+    const Mesh read = readGltf(glb, "out.glb", "", true).mesh;
+    ASSERT_EQ(read.positions.size(), mesh.positions.size());
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+      for (int a = 0; a < 3; ++a)  // the coordinate divided by the scale, rounded to float32, times the scale
+        ASSERT_EQ(read.positions[v][a], double(float(mesh.positions[v][a] / scale)) * scale) << size << " vertex " << v;
   }
-  EXPECT_TRUE(out.str().empty());
-  m.positions[1].x() = 1;
-  m.positions[2].y() = 1;
-  m.positions[0].z() = 1e-200;
-  writeGlb(out, m, nullptr, options);
-  EXPECT_FALSE(out.str().empty());
+  Mesh m;
+  m.triangles = {{0, 1, 2}};
+  const auto nodeFor = [&](double largest) {
+    m.positions = {{-largest, 0, 0}, {largest, 0, 0}, {0, largest / 2, 0}};
+    return jsonOfGlb(glbOf(m, nullptr))["nodes"][0];
+  };
+  EXPECT_FALSE(nodeFor(0x1p63 * (1 - 0x1p-53)).contains("scale"));
+  EXPECT_EQ(nodeFor(0x1p63)["scale"][0], 0x1p63);
+  EXPECT_FALSE(nodeFor(0x1p-62).contains("scale"));
+  EXPECT_EQ(nodeFor(0x1p-62 * (1 - 0x1p-53))["scale"][0], 0x1p-63);
+  EXPECT_FALSE(nodeFor(1.0).contains("scale"));
 }
-
 
 // The centre of the mesh's bounding box, as the writer's rule names it.
 Vec3 boxCentre(const Mesh& mesh) {
@@ -753,6 +761,51 @@ TEST(WriteGltf, OnlyAMeshFartherThanOneAndAHalfSidesFromTheOriginIsMoved) {
   const Mesh read = readGltf(glbOf(m, nullptr), "out.glb", "", true).mesh;
   for (std::size_t v = 0; v < 3; ++v)
     for (int a = 0; a < 3; ++a) EXPECT_EQ(read.positions[v][a], double(float(m.positions[v][a])));
+}
+
+
+// A UV triangle whose float32 (u, 1 - v) corners are collinear: far from [0, 1] (u = 1e15, where
+// float32's step is 2^26), or finer than its step near v = 0 (1 - 1e-9 rounds to 1). A triangle
+// already of zero area, or with an invalid corner, is not counted.
+TEST(GltfTexcoords, CountsTheFacesWhoseLayoutFloat32Collapses) {
+  UvMap uvs;
+  uvs.uv = {{0, 0}, {1, 0}, {0, 1},                  // kept
+            {1e15, 0}, {1e15 + 1, 0}, {1e15, 1},     // u collapses
+            {0.5, 0}, {0.6, 0}, {0.5, 1e-9},         // v collapses
+            {0.5, 0}, {0.6, 0}, {0.7, 0},            // zero area already
+            {1e15, 0}, {1e15 + 1, 0}, {1e15, 1}};    // an invalid corner: not counted
+  uvs.faceFlags.assign(5, kFaceOk);
+  uvs.cornerInvalid.assign(15, kCornerValid);
+  uvs.cornerInvalid[13] = kCornerOutOfRange;
+  EXPECT_EQ(facesCollapsedInGltfTexcoords(uvs), 2u);
+  EXPECT_EQ(gltfTexcoord(Vec2(0.25, 1e-9)), (std::array<float, 2>{0.25f, 1.0f}));
+  uvs.cornerInvalid.clear();  // every corner valid
+  EXPECT_EQ(facesCollapsedInGltfTexcoords(uvs), 3u);
+}
+
+// A layout below float32's normal range (a two-plane map of a mesh 1e-150 across) would be written
+// as zeros and ones: refused, nothing written.
+TEST(WriteGltf, RefusesALayoutBelowFloat32sNormalRange) {
+  Mesh m;
+  m.positions = {{0, 0, 0}, {1e-150, 0, 0}, {0, 1e-150, 0}};
+  m.triangles = {{0, 1, 2}};
+  UvMap uvs;
+  uvs.uv = {{0, 0}, {1e-150, 0}, {0, 1e-150}};
+  uvs.faceFlags = {kFaceOk};
+  GltfWriteOptions options;
+  options.name = "out.glb";
+  std::ostringstream out;
+  try {
+    writeGlb(out, m, &uvs, options);
+    FAIL() << "no error";
+  } catch (const OutputError& e) {
+    EXPECT_STREQ(e.what(), "out.glb: error: cannot write: the UVs (largest magnitude 1e-150) are below glTF's float32 "
+                           "normal range (1.17549435e-38): the layout would be lost; scale them first (--uv-scale)");
+  }
+  EXPECT_TRUE(out.str().empty());
+  for (Vec2& uv : uvs.uv) uv *= 1e150;  // the same layout at unit size: written, the positions at a power-of-two scale
+  writeGlb(out, m, &uvs, options);
+  EXPECT_FALSE(out.str().empty());
 }
 
 }  // namespace
