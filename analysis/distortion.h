@@ -66,7 +66,11 @@ struct FaceDistortion {
   double l2Stretch() const {
     if (!isMeasured(status)) return 0.0;
     const double bigG = 1.0 / std::fabs(sigmaMin), smallG = 1.0 / sigmaMax;
-    return std::sqrt(0.5 * (bigG * bigG + smallG * smallG));
+    const double squares = bigG * bigG + smallG * smallG;
+    if (squares >= 0x1p-1022 && squares <= 0x1p1023) return std::sqrt(0.5 * squares);
+    // Squares beyond the doubles (a sliver of a mesh 1e150 across): the same, taken out of the larger, G >= g.
+    const double ratio = smallG / bigG;
+    return bigG * std::sqrt(0.5 * (1.0 + ratio * ratio));
   }
   // Linf = G, the greatest stretch in any direction.
   double linfStretch() const { return isMeasured(status) ? 1.0 / std::fabs(sigmaMin) : 0.0; }

@@ -289,7 +289,10 @@ Statistics weightedStatistics(const double* values, const double* weights, std::
   Statistics s;
   s.histogram.spacing = spacing;
   s.histogram.weightFraction.assign(static_cast<std::size_t>(bins), 0.0);
-  if (count == 0) return s;
+  if (count == 0) {
+    s.histogram.spacing = BinSpacing::Linear;  // no values to space by log2: the edges of [0, 0] would be log2(0)
+    return s;
+  }
 
   // One pass for the extremes and the sums in the items' order, and the weights' exponents.
   s.min = s.max = values[0];

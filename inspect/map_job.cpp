@@ -117,10 +117,9 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   io::writeMesh(outputs, paths.output, mapped.mesh, &mapped.uv, write);
   const double writeMs = clock.stop();
   const io::MeshFormat format = *io::outputFormatOf(paths.output);
-  const std::size_t collapsedUvFaces = format == io::MeshFormat::gltf || format == io::MeshFormat::glb
-                                           ? io::facesCollapsedInGltfTexcoords(mapped.uv)
-                                           : 0;
-  if (!paths.json.empty()) summary["output_collapsed_uv_faces"] = collapsedUvFaces;
+  const bool gltf = format == io::MeshFormat::gltf || format == io::MeshFormat::glb;
+  const std::size_t collapsedUvFaces = gltf ? io::facesCollapsedInGltfTexcoords(mapped.uv) : 0;
+  if (gltf && !paths.json.empty()) summary["output_collapsed_uv_faces"] = collapsedUvFaces;
 
   if (!paths.json.empty()) {
     // The mapping stage split as the projection measured it: seams (repair and summary) and the

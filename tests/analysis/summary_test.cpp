@@ -213,6 +213,11 @@ TEST(WeightedStatistics, OneValueAndNoValue) {
   const Statistics none = weightedStatistics({}, {}, BinSpacing::Linear, 4);
   EXPECT_EQ(none.mean, 0.0);
   EXPECT_EQ(none.histogram.weightFraction, (std::vector<double>(4, 0.0)));
+  // No value asked for log2 bins (a mapping without an ok face): linear bins over [0, 0], whose edges
+  // are 0, where log2 spacing made them log2(0) and NaN (null in the JSON of `report`).
+  const Statistics noRatio = weightedStatistics({}, {}, BinSpacing::Log2, 4);
+  EXPECT_EQ(noRatio.histogram.spacing, BinSpacing::Linear);
+  for (int i = 0; i <= 4; ++i) EXPECT_EQ(noRatio.histogram.edge(i), 0.0) << i;
 }
 
 // An exact running weight for the recount: Shewchuk's expansion (non-overlapping doubles, smallest
