@@ -169,7 +169,7 @@ GltfParts buildGltf(const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& 
   if (largestUv > 0.0 && largestUv < double(std::numeric_limits<float>::min()))
     throw OutputError(cannot + "the UVs (largest magnitude " + numberText(largestUv) +
                       ") are below glTF's float32 normal range (1.17549435e-38): the layout would be lost; scale "
-                      "them first (--uv-scale)");
+                      "them first");
   GltfParts parts;
   json& document = parts.document;
   document["asset"] = {{"version", "2.0"}};
@@ -276,7 +276,7 @@ std::string uriOf(const std::string& file) {
 std::array<float, 2> gltfTexcoord(const Vec2& uv) { return {static_cast<float>(uv.x()), static_cast<float>(1.0 - uv.y())}; }
 
 std::size_t facesCollapsedInGltfTexcoords(const UvMap& uvs) {
-  // Twice the signed area, in double: exactly 0 for collinear floats (their products are exact).
+  // Twice the signed area, in double.
   const auto area = [](double ax, double ay, double bx, double by, double cx, double cy) {
     return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
   };

@@ -800,7 +800,7 @@ TEST(WriteGltf, RefusesALayoutBelowFloat32sNormalRange) {
     FAIL() << "no error";
   } catch (const OutputError& e) {
     EXPECT_STREQ(e.what(), "out.glb: error: cannot write: the UVs (largest magnitude 1e-150) are below glTF's float32 "
-                           "normal range (1.17549435e-38): the layout would be lost; scale them first (--uv-scale)");
+                           "normal range (1.17549435e-38): the layout would be lost; scale them first");
   }
   EXPECT_TRUE(out.str().empty());
   for (Vec2& uv : uvs.uv) uv *= 1e150;  // the same layout at unit size: written, the positions at a power-of-two scale
