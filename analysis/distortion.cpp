@@ -82,6 +82,7 @@ void faceSingularValues(const Edges& p, const std::array<Vec2, 3>& t, double& s1
   if (std::isfinite(s1) && std::isnormal(s2)) return;
   const int k3 = std::ilogb(std::max(p.e1.cwiseAbs().maxCoeff(), p.e2.cwiseAbs().maxCoeff()));
   const int kUv = std::ilogb(std::max((t[1] - t[0]).cwiseAbs().maxCoeff(), (t[2] - t[0]).cwiseAbs().maxCoeff()));
+  // ldexp per coordinate rather than unitPowerOfTwo's factor: subnormal edges need 2^1074, no double.
   Edges unit = p;
   unit.e1 = p.e1.unaryExpr([&](double x) { return std::ldexp(x, -k3); });
   unit.e2 = p.e2.unaryExpr([&](double x) { return std::ldexp(x, -k3); });

@@ -116,8 +116,7 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   io::OutputSet outputs;
   io::writeMesh(outputs, paths.output, mapped.mesh, &mapped.uv, write);
   const double writeMs = clock.stop();
-  const io::MeshFormat format = *io::outputFormatOf(paths.output);
-  const bool gltf = format == io::MeshFormat::gltf || format == io::MeshFormat::glb;
+  const bool gltf = io::isGltf(*io::outputFormatOf(paths.output));
   const std::size_t collapsedUvFaces = gltf ? io::facesCollapsedInGltfTexcoords(mapped.uv) : 0;
   if (gltf && !paths.json.empty()) summary["output_collapsed_uv_faces"] = collapsedUvFaces;
 

@@ -22,6 +22,9 @@ const char* extensionOf(MeshFormat format);
 // Whether writeMesh writes the format: it keeps per-corner UVs (OFF and STL hold none).
 inline bool writesUvs(MeshFormat format) { return format != MeshFormat::off && format != MeshFormat::stl; }
 
+// glTF 2.0, as .gltf (+ .bin) or .glb: float32 attributes, v running down.
+inline bool isGltf(MeshFormat format) { return format == MeshFormat::gltf || format == MeshFormat::glb; }
+
 // "a .obj, .off, .ply, .stl, .gltf or .glb extension" and "a .obj, .ply, .gltf or .glb extension":
 // what messages expect of an input and of an output.
 extern const char* const kReadableExtensions;

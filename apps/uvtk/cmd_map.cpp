@@ -67,8 +67,7 @@ void runMap(const MapArguments& a) {
   io::checkMeshOutput(a.output, a.write);
   const inspect::MeshResult result = inspect::mapMesh({a.input, a.output, a.json}, job, true);
   if (!a.quiet) std::fprintf(stderr, "uvtk map: %s\n", result.numbers.c_str());
-  const io::MeshFormat format = *io::outputFormatOf(a.output);
-  if (!a.quiet && (format == io::MeshFormat::gltf || format == io::MeshFormat::glb))
+  if (!a.quiet && io::isGltf(*io::outputFormatOf(a.output)))
     std::fprintf(stderr, "uvtk map: %s: glTF stores positions, normals and UVs as float32 (v as 1 - v)\n",
                  a.output.c_str());
   enforceVerdict(a.verdict, result.verdict, "uvtk map");
