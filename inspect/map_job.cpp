@@ -107,6 +107,12 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
     summary = mapSummaryJson(mapped, judgement, inputSummary, paths.output);
     if (job.density) summary["density_scale"] = {{"density", *job.density}, {"factor", densityFactor}};
   }
+  // The measured faces whose UV triangle glTF's float32 collapses (the others have no area to lose).
+  std::size_t collapsedUvFaces = 0;
+  const bool gltf = io::isGltf(*io::outputFormatOf(paths.output));
+  for (std::size_t f = 0; gltf && f < judgement.faces.size(); ++f)
+    collapsedUvFaces += analysis::isMeasured(judgement.faces[f].status) &&
+                        io::collapsesInGltfTexcoords(mapped.uv.uv[3 * f], mapped.uv.uv[3 * f + 1], mapped.uv.uv[3 * f + 2]);
   std::vector<analysis::FaceDistortion>().swap(judgement.faces);  // every face's measures: not needed while writing
 
   clock.start("writing", paths.output);
@@ -116,8 +122,6 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   io::OutputSet outputs;
   io::writeMesh(outputs, paths.output, mapped.mesh, &mapped.uv, write);
   const double writeMs = clock.stop();
-  const bool gltf = io::isGltf(*io::outputFormatOf(paths.output));
-  const std::size_t collapsedUvFaces = gltf ? io::facesCollapsedInGltfTexcoords(mapped.uv) : 0;
   if (gltf && !paths.json.empty()) summary["output_collapsed_uv_faces"] = collapsedUvFaces;
 
   if (!paths.json.empty()) {
@@ -133,10 +137,14 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   if (collapsedUvFaces > 0) {
     const Eigen::AlignedBox2d& box = judgement.summary.uvBounds;
     const Vec2 size = box.sizes(), centre = 0.5 * box.min() + 0.5 * box.max();
+    // Far from [0, 1] the steps are coarse and placing the layout helps; near it only slivers collapse.
+    const bool far = box.min().cwiseAbs().maxCoeff() > 2.0 || box.max().cwiseAbs().maxCoeff() > 2.0;
     printProgressMessage(paths.output + ": warning: " + std::to_string(collapsedUvFaces) +
                          " faces' UVs have zero area as glTF holds them (float32 u, 1 - v): the layout is " +
                          numberText(size.x()) + " x " + numberText(size.y()) + " about (" + numberText(centre.x()) +
-                         ", " + numberText(centre.y()) + "); --uv-scale and --uv-offset bring it near [0, 1]");
+                         ", " + numberText(centre.y()) + ")" +
+                         (far ? "; --uv-scale, --uv-offset or --fit bring it near [0, 1]"
+                              : ": faces finer than float32's steps (2^-24 near 1)"));
   }
   if (job.projector.surface == param::SurfaceKind::Triplanar && !quiet()) {
     char note[256];

@@ -275,20 +275,15 @@ std::string uriOf(const std::string& file) {
 
 std::array<float, 2> gltfTexcoord(const Vec2& uv) { return {static_cast<float>(uv.x()), static_cast<float>(1.0 - uv.y())}; }
 
-std::size_t facesCollapsedInGltfTexcoords(const UvMap& uvs) {
-  // Twice the signed area, in double.
-  const auto area = [](double ax, double ay, double bx, double by, double cx, double cy) {
-    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+bool collapsesInGltfTexcoords(const Vec2& a, const Vec2& b, const Vec2& c) {
+  const auto twiceArea = [](const Vec2& p, const Vec2& q, const Vec2& r) {  // signed, in double
+    return (q.x() - p.x()) * (r.y() - p.y()) - (q.y() - p.y()) * (r.x() - p.x());
   };
-  std::size_t collapsed = 0;
-  for (std::size_t f = 0; 3 * f < uvs.uv.size(); ++f) {
-    if (!uvs.cornerValid(3 * f) || !uvs.cornerValid(3 * f + 1) || !uvs.cornerValid(3 * f + 2)) continue;
-    const Vec2 &a = uvs.uv[3 * f], &b = uvs.uv[3 * f + 1], &c = uvs.uv[3 * f + 2];
-    if (area(a.x(), a.y(), b.x(), b.y(), c.x(), c.y()) == 0.0) continue;
-    const auto p = gltfTexcoord(a), q = gltfTexcoord(b), r = gltfTexcoord(c);
-    collapsed += area(p[0], p[1], q[0], q[1], r[0], r[1]) == 0.0 ? 1 : 0;
-  }
-  return collapsed;
+  const auto stored = [](const Vec2& uv) {
+    const auto [u, v] = gltfTexcoord(uv);
+    return Vec2(u, v);
+  };
+  return twiceArea(a, b, c) != 0.0 && twiceArea(stored(a), stored(b), stored(c)) == 0.0;
 }
 
 void writeGlb(std::ostream& out, const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& options) {

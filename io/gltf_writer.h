@@ -23,10 +23,10 @@ struct GltfWriteOptions {
 // TEXCOORD_0 as a glTF holds a UV: float32 (u, 1 - v), glTF's v running down the image.
 std::array<float, 2> gltfTexcoord(const Vec2& uv);
 
-// The faces whose corners all have a valid UV of non-zero area in `uvs`, and whose UV triangle as a
-// glTF holds it (gltfTexcoord) has none: float32 lost their layout (UVs far from [0, 1], or finer
-// than its steps: 2^-24 near v = 0, where 1 - v is near 1). `uvtk map` warns with this count.
-std::size_t facesCollapsedInGltfTexcoords(const UvMap& uvs);
+// Whether the UV triangle (a, b, c) has an area and, as a glTF holds it (gltfTexcoord), none:
+// float32 lost it (UVs far from [0, 1], or a triangle finer than float32's steps: 2^-24 near
+// v = 0, where 1 - v is near 1). `uvtk map` warns with the count of such faces among the measured ones.
+bool collapsesInGltfTexcoords(const Vec2& a, const Vec2& b, const Vec2& c);
 
 // A .glb: the JSON chunk and the binary chunk in one stream.
 void writeGlb(std::ostream& out, const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& options = {});

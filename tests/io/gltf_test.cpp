@@ -766,21 +766,14 @@ TEST(WriteGltf, OnlyAMeshFartherThanOneAndAHalfSidesFromTheOriginIsMoved) {
 
 // A UV triangle whose float32 (u, 1 - v) corners are collinear: far from [0, 1] (u = 1e15, where
 // float32's step is 2^26), or finer than its step near v = 0 (1 - 1e-9 rounds to 1). A triangle
-// already of zero area, or with an invalid corner, is not counted.
-TEST(GltfTexcoords, CountsTheFacesWhoseLayoutFloat32Collapses) {
-  UvMap uvs;
-  uvs.uv = {{0, 0}, {1, 0}, {0, 1},                  // kept
-            {1e15, 0}, {1e15 + 1, 0}, {1e15, 1},     // u collapses
-            {0.5, 0}, {0.6, 0}, {0.5, 1e-9},         // v collapses
-            {0.5, 0}, {0.6, 0}, {0.7, 0},            // zero area already
-            {1e15, 0}, {1e15 + 1, 0}, {1e15, 1}};    // an invalid corner: not counted
-  uvs.faceFlags.assign(5, kFaceOk);
-  uvs.cornerInvalid.assign(15, kCornerValid);
-  uvs.cornerInvalid[13] = kCornerOutOfRange;
-  EXPECT_EQ(facesCollapsedInGltfTexcoords(uvs), 2u);
+// already of zero area has nothing to lose.
+TEST(GltfTexcoords, ATriangleCollapsesWhereFloat32LosesItsArea) {
+  EXPECT_FALSE(collapsesInGltfTexcoords({0, 0}, {1, 0}, {0, 1}));
+  EXPECT_TRUE(collapsesInGltfTexcoords({1e15, 0}, {1e15 + 1, 0}, {1e15, 1}));
+  EXPECT_TRUE(collapsesInGltfTexcoords({0.5, 0}, {0.6, 0}, {0.5, 1e-9}));
+  EXPECT_FALSE(collapsesInGltfTexcoords({0.5, 0}, {0.6, 0}, {0.7, 0}));
+  EXPECT_FALSE(collapsesInGltfTexcoords({0.5, 0.5}, {0.6, 0.5}, {0.5, 0.5 + 1e-6}));  // float32 holds 1e-6 here
   EXPECT_EQ(gltfTexcoord(Vec2(0.25, 1e-9)), (std::array<float, 2>{0.25f, 1.0f}));
-  uvs.cornerInvalid.clear();  // every corner valid
-  EXPECT_EQ(facesCollapsedInGltfTexcoords(uvs), 3u);
 }
 
 // A layout below float32's normal range (a two-plane map of a mesh 1e-150 across) would be written
