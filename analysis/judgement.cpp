@@ -75,19 +75,6 @@ bool spansSeam(const UvMap& uv, std::size_t f, double period) {
   return hi - lo > 0.5 * period;
 }
 
-// Faces that cover the centre of a pixel another face covers too, on the overlap's own raster.
-std::size_t countOverlappedFaces(const UvMap& uv, const std::vector<FaceDistortion>& faces, const Overlap& overlap,
-                                 const Eigen::AlignedBox2d& bounds) {
-  if (overlap.overlappedPixels == 0) return 0;
-  const UvGrid grid = uvGridOver(bounds, overlap.resolution);
-  const std::vector<std::uint8_t> counts = coverageCounts(uv, faces, grid);
-  std::vector<std::uint8_t> overlapped(faces.size(), 0);
-  forEachCoveredPixel(uv, faces, grid, [&](std::size_t face, int x, int y) {
-    if (counts[std::size_t(y) * std::size_t(grid.resolution) + std::size_t(x)] >= 2) overlapped[face] = 1;
-  });
-  return std::size_t(std::count(overlapped.begin(), overlapped.end(), std::uint8_t(1)));
-}
-
 }  // namespace
 
 const char* toString(Verdict verdict) {
@@ -252,8 +239,7 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
     j.sphereMapSingularFaces += t.sphereMapSingularFaces;
     j.unrepairedSeamFaces += t.unrepairedSeamFaces;
   }
-  if (j.summary.overlap.overlappedPixels > 0)
-    j.overlappedFaces = countOverlappedFaces(uv, j.faces, j.summary.overlap, measuredUvBounds(uv, j.faces));
+  j.overlappedFaces = j.summary.overlap.overlappedFaces;
 
   const auto share = [&](double area) { return j.surfaceArea > 0.0 ? area / j.surfaceArea : 0.0; };
   const auto set = [&](Rule rule, double value, std::size_t faces) {

@@ -23,9 +23,10 @@
 namespace uvtk::analysis {
 
 struct Overlap {
-  int resolution = 0;
+  int resolution = 0;  // the raster's, after overlapResolution
   std::size_t coveredPixels = 0;     // covered at least once
   std::size_t overlappedPixels = 0;  // covered at least twice
+  std::size_t overlappedFaces = 0;   // faces covering a pixel centre that another face covers too
   // overlappedPixels / coveredPixels; 0 when nothing is covered.
   double fraction() const {
     return coveredPixels == 0 ? 0.0 : static_cast<double>(overlappedPixels) / static_cast<double>(coveredPixels);
@@ -49,6 +50,13 @@ Eigen::AlignedBox2d measuredUvBounds(const UvMap& uv, const std::vector<FaceDist
 // The grid of `resolution` pixels a side over `uvBounds` (non-empty, finite), with its scale.
 UvGrid uvGridOver(const Eigen::AlignedBox2d& uvBounds, int resolution);
 
+// Calls visit(face, y, x0, x1) for every row y of `grid` whose pixel centres x0..x1 (inclusive, never
+// empty) a face covers: the rows of forEachCoveredPixel's pixels, each solved exactly in integers from
+// the three edge functions, so the cost is one call per row and face plus the pixels themselves.
+// Preconditions as forEachCoveredPixel.
+void forEachCoveredSpan(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid,
+                        const std::function<void(std::size_t face, int y, int x0, int x1)>& visit);
+
 // Calls visit(face, x, y) for every pixel centre of `grid` that a face covers, face by face in
 // index order, for the faces with a non-degenerate Jacobian (isMeasured(faces[f].status): ok,
 // pole, backfacing and flipped faces, whatever their winding). Preconditions: `faces` from
@@ -63,8 +71,20 @@ void forEachCoveredPixel(const UvMap& uv, const std::vector<FaceDistortion>& fac
 // 255. Preconditions as forEachCoveredPixel.
 std::vector<std::uint8_t> coverageCounts(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid);
 
-// Covered and overlapped pixels from the coverageCounts of those faces over their own UV
-// bounding box. Preconditions: `faces` from measureFaces on the same UVs, resolution in [1, 65536].
+// The raster's work in pixel visits is bounded by the input: at most kOverlapWorkBase plus
+// kOverlapWorkPerFace per measured face. A usual layout (its faces' UV area about its box's, so about
+// resolution^2 covered pixels) stays far below it at 1024; faces stacked on one another (a thousand
+// copies of a triangle, a normal O-mapping of a scan) would cost their area times their number.
+constexpr double kOverlapWorkBase = double(1 << 23);
+constexpr double kOverlapWorkPerFace = 256.0;
+
+// `resolution`, halved until the raster's estimated work (the faces' covered pixels, their rows, one
+// step per face) is within the budget above. `unitGrid`: uvGridOver(measuredUvBounds(uv, faces), 1).
+int overlapResolution(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& unitGrid,
+                      int resolution);
+
+// Covered and overlapped pixels from the coverageCounts of those faces over their own UV bounding
+// box at overlapResolution, and the faces that cover an overlapped pixel. Preconditions: `faces` from measureFaces on the same UVs, resolution in [1, 65536].
 Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces, int resolution = 1024);
 
 }  // namespace uvtk::analysis
