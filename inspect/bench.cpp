@@ -228,9 +228,10 @@ std::vector<nlohmann::json> benchEndToEnd(const BenchOptions& a) {
   const fs::path folder = fs::temp_directory_path() / ("uvtk-bench-" + std::to_string(getpid()));
   std::error_code ignored;
   fs::create_directories(folder, ignored);
+  // The input's own format where it holds UVs (OFF and STL do not: OBJ then).
   const std::optional<io::MeshFormat> format = io::outputFormatOf(a.mesh);
-  const std::string output =
-      (folder / ("mapped" + std::string(io::extensionOf(format ? *format : io::MeshFormat::obj)))).string();
+  const io::MeshFormat written = format && io::writesUvs(*format) ? *format : io::MeshFormat::obj;
+  const std::string output = (folder / ("mapped" + std::string(io::extensionOf(written)))).string();
   const std::string json = (folder / "mapped.json").string();
   std::vector<nlohmann::json> records;
   for (int threads : a.threads) {

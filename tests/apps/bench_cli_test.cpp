@@ -5,13 +5,16 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <utility>
 
 #include "apps/cli_test.h"
 #include "io/image_io.h"
 #include "io/mesh_reader.h"
+#include "io/mesh_writer.h"
 #include "io/obj_writer.h"
 #include "meshes/generators.h"
 
@@ -209,6 +212,43 @@ TEST_F(BenchCli, RefusesUnknownChoicesBeforeMeasuringAnything) {
       << run.err;
   EXPECT_FALSE(fs::exists(path("b.json")));
   EXPECT_EQ(uvtk("bench --projector cube --mesh " + path("sphere.obj")).status, 2);
+}
+
+// Round-trip digits for the hand-written OFF file.
+std::string offNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+// The end-to-end row maps every input format; OFF and STL hold no UVs, so their map is written as OBJ.
+TEST_F(BenchCli, TheEndToEndMapTakesEveryInputFormat) {
+  for (const char* format : {"off", "stl", "ply"}) {
+    const std::string mesh = path(std::string("sphere.") + format);
+    const Mesh sphere = meshes::latLongSphere(64, 32);
+    if (std::string(format) == "ply") {
+      ASSERT_EQ(uvtk("map " + path("sphere.obj") + " --projector plane -o " + mesh).status, 0);
+    } else if (std::string(format) == "stl") {
+      io::writeMesh(mesh, sphere, nullptr);
+    } else {
+      std::string off = "OFF\n" + std::to_string(sphere.positions.size()) + " " + std::to_string(sphere.faceCount()) + " 0\n";
+      for (const Vec3& p : sphere.positions) off += offNumber(p.x()) + " " + offNumber(p.y()) + " " + offNumber(p.z()) + "\n";
+      for (const Triangle& t : sphere.triangles)
+        off += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + "\n";
+      writeText(std::string("sphere.") + format, off);
+    }
+    const CliRun run = uvtk("bench --mesh " + mesh + " --projector plane --precision double --math exact" +
+                            " --min-time 0.01 --no-peers --threads 1 --json " + path("b.json"));
+    ASSERT_EQ(run.status, 0) << format << ": " << run.err;
+    std::size_t rows = 0;
+    const nlohmann::json b = readJson("b.json");
+    for (const nlohmann::json& r : b["records"])
+      if (r["section"] == "end-to-end") {
+        ++rows;
+        EXPECT_EQ(r["mesh"], mesh);
+      }
+    EXPECT_EQ(rows, 1u) << format;
+  }
 }
 
 TEST_F(BenchCli, MapInFloatWithFastMathStaysWithinTheBoundOfTheDoubleResult) {
