@@ -162,8 +162,9 @@ std::vector<nlohmann::json> benchMapping(const BenchOptions& a, const Mesh& mesh
 // What the table says of the peer when it has no rows; empty when it has them or was not asked for.
 std::string peerNote(const BenchOptions& a) {
   if (!a.peers || peers::assimpAvailable()) return "";
-  return "Peer: assimp's aiProcess_GenUVCoords was not built into this uvtk (libassimp-dev was missing when it "
-         "was configured; scripts/setup.sh installs it), so the table has no assimp rows.\n\n";
+  return "Peer: assimp's aiProcess_GenUVCoords is not available (" + peers::assimpUnavailableReason() +
+         "; the plugin is built when libassimp-dev is installed, which scripts/setup.sh does), so the table has no "
+         "assimp rows.\n\n";
 }
 
 std::vector<nlohmann::json> benchPeers(const BenchOptions& a, const Mesh& mesh) {

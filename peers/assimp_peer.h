@@ -1,10 +1,12 @@
 // The "peer" of `uvtk bench`: the speed of assimp's aiProcess_GenUVCoords step on the same mesh.
-// Optional: without assimp at build time, assimpAvailable() is false and the measurement is
-// std::nullopt. No assimp header leaks out of this file.
+// assimp lives in a plugin (libuvtk_peer_assimp.so, opened on the first call, found as
+// core/plugin.h says; $UVTK_ASSIMP_PEER names another), built when libassimp-dev is found: without
+// it assimpAvailable() is false and the measurement is std::nullopt. No assimp header leaks out.
 #pragma once
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -40,8 +42,9 @@ struct PeerTiming {
   int repetitions = 0;  // timed runs (one more untimed warm-up run precedes them)
 };
 
-// True when this library was built against assimp.
+// True when the plugin loads; else assimpUnavailableReason() says why in one line.
 bool assimpAvailable();
+const std::string& assimpUnavailableReason();
 
 // Builds the aiScene contents for `mesh` once (outside the timing): one aiMesh in the given layout,
 // one aiMaterial with a diffuse texture "checker.png" whose mapping is `mapping` around +Y. Then for

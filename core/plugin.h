@@ -1,0 +1,20 @@
+// Plugins: shared modules a program opens on first use, so that a process that never needs what
+// they hold (OpenImageIO, assimp) never loads it and never pays its start-up.
+#pragma once
+
+#include <string>
+
+namespace uvtk {
+
+// Where a plugin is looked for, in order: $`variable` when set; `installed` (relative to the folder of
+// the executable or shared object this code is linked into: an installed prefix's
+// ../lib/uvtk/NAME); `built`, the build tree's, for a program of the build tree `buildDir` with no
+// install beside it. Any other program gets the installed path, which its error then names.
+std::string pluginPath(const char* variable, const std::string& installed, const std::string& built,
+                       const std::string& buildDir);
+
+// dlopen of `path` (never closed, symbols local) and the address of its `entry`; null with `error`
+// set to one line naming `what`, the path and why it failed.
+void* openPluginEntry(const std::string& path, const char* entry, const std::string& what, std::string& error);
+
+}  // namespace uvtk
