@@ -1,6 +1,7 @@
 #include "analysis/overlap.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <utility>
@@ -91,50 +92,91 @@ UvGrid uvGridOver(const Eigen::AlignedBox2d& uvBounds, int resolution) {
 
 namespace {
 
-// forEachCoveredSpan with the visit inlined: the raster's loops call it once a row.
-template <class Visit>
-void forEachSpan(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid, Visit&& visit) {
-  UVTK_CHECK(uv.uv.size() == 3 * faces.size());
-  const int resolution = grid.resolution;
-  UVTK_CHECK(resolution >= 1 && resolution <= 65536);
-  const Vec2 origin = grid.bounds.min(), size = grid.bounds.sizes();
-  UVTK_CHECK(origin.allFinite() && size.allFinite() && size.x() > 0.0 && size.y() > 0.0);
-  auto snap = [&](const Vec2& uvPoint) {
-    const Vec2 relative = (uvPoint * grid.scale - origin).cwiseQuotient(size);  // in [0, 1] over the grid
-    UVTK_CHECK(relative.x() >= -1.0 && relative.x() <= 2.0 && relative.y() >= -1.0 && relative.y() <= 2.0);
-    const double scale = static_cast<double>(resolution * kSubpixel);
-    return Point{std::llround(relative.x() * scale), std::llround(relative.y() * scale)};
-  };
+// A face's corners snapped to 1/256 pixel of a grid, counter-clockwise, and the box of pixels whose
+// centres it can cover, clamped to the grid (empty when x0 > x1 or y0 > y1).
+struct SnappedFace {
+  Point p[3];
+  std::int64_t x0, x1, y0, y1;
+};
 
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    if (!isMeasured(faces[f].status)) continue;
-    Point p[3] = {snap(uv.uv[3 * f]), snap(uv.uv[3 * f + 1]), snap(uv.uv[3 * f + 2])};
+class GridSnap {
+ public:
+  explicit GridSnap(const UvGrid& grid)
+      : origin_(grid.bounds.min()),
+        size_(grid.bounds.sizes()),
+        scale_(grid.scale),
+        resolution_(grid.resolution),
+        subpixels_(static_cast<double>(std::int64_t(grid.resolution) * kSubpixel)) {
+    UVTK_CHECK(resolution_ >= 1 && resolution_ <= 65536);
+    UVTK_CHECK(origin_.allFinite() && size_.allFinite() && size_.x() > 0.0 && size_.y() > 0.0);
+  }
+
+  // Face f's corners, or false when snapping collapsed it (it covers no centre).
+  bool snap(const UvMap& uv, std::size_t f, SnappedFace& face) const {
+    Point* p = face.p;
+    for (int k = 0; k < 3; ++k) p[k] = point(uv.uv[3 * f + std::size_t(k)]);
     const std::int64_t area = twiceArea(p[0], p[1], p[2]);
-    if (area == 0) continue;  // snapping collapsed it: it covers no centre
+    if (area == 0) return false;
     if (area < 0) std::swap(p[1], p[2]);
     // Pixels whose centre (i + 1/2) lies within the triangle's snapped bounding box.
     const std::int64_t minX = std::min({p[0].x, p[1].x, p[2].x}), maxX = std::max({p[0].x, p[1].x, p[2].x});
     const std::int64_t minY = std::min({p[0].y, p[1].y, p[2].y}), maxY = std::max({p[0].y, p[1].y, p[2].y});
-    const std::int64_t boxX0 = std::max<std::int64_t>(0, floorDiv(minX - kHalfPixel + kSubpixel - 1, kSubpixel));
-    const std::int64_t boxX1 = std::min<std::int64_t>(resolution - 1, floorDiv(maxX - kHalfPixel, kSubpixel));
-    const std::int64_t y0 = std::max<std::int64_t>(0, floorDiv(minY - kHalfPixel + kSubpixel - 1, kSubpixel));
-    const std::int64_t y1 = std::min<std::int64_t>(resolution - 1, floorDiv(maxY - kHalfPixel, kSubpixel));
-    // Each edge ab keeps the centres c of a row where its edge function (b - a) x (c - a), linear in
-    // c.x = 256 x + 128, is positive (or zero on an edge that owns them): N - 256 dy x >= 0 with
-    // N = K - t, solved for x exactly in integers; N grows by 256 dx a row, so each bound
-    // floor(N / 256 |dy|) steps on without a division. The span is the same set of centres a test of
-    // each one would keep.
-    EdgeBound bounds[3];
-    for (int e = 0; e < 3; ++e) bounds[e] = EdgeBound(p[e], p[(e + 1) % 3], y0 * kSubpixel + kHalfPixel);
-    for (std::int64_t y = y0; y <= y1; ++y) {
-      std::int64_t x0 = boxX0, x1 = boxX1;
-      for (EdgeBound& bound : bounds) {
-        bound.limit(x0, x1);
-        bound.nextRow();
-      }
-      if (x0 <= x1) visit(f, static_cast<int>(y), static_cast<int>(x0), static_cast<int>(x1));
-    }
+    face.x0 = std::max<std::int64_t>(0, floorDiv(minX - kHalfPixel + kSubpixel - 1, kSubpixel));
+    face.x1 = std::min<std::int64_t>(resolution_ - 1, floorDiv(maxX - kHalfPixel, kSubpixel));
+    face.y0 = std::max<std::int64_t>(0, floorDiv(minY - kHalfPixel + kSubpixel - 1, kSubpixel));
+    face.y1 = std::min<std::int64_t>(resolution_ - 1, floorDiv(maxY - kHalfPixel, kSubpixel));
+    return true;
   }
+
+ private:
+  Point point(const Vec2& uvPoint) const {
+    const Vec2 relative = (uvPoint * scale_ - origin_).cwiseQuotient(size_);  // in [0, 1] over the grid
+    UVTK_CHECK(relative.x() >= -1.0 && relative.x() <= 2.0 && relative.y() >= -1.0 && relative.y() <= 2.0);
+    return Point{std::llround(relative.x() * subpixels_), std::llround(relative.y() * subpixels_)};
+  }
+
+  Vec2 origin_, size_;
+  double scale_;
+  int resolution_;
+  double subpixels_;
+};
+
+// Calls visit(y, x0, x1) for the rows y in [from, to] of `face` with covered centres x0..x1.
+// Each edge ab keeps the centres c of a row where its edge function (b - a) x (c - a), linear in
+// c.x = 256 x + 128, is positive (or zero on an edge that owns them): N - 256 dy x >= 0 with
+// N = K - t, solved for x exactly in integers; N grows by 256 dx a row, so each bound
+// floor(N / 256 |dy|) steps on without a division. The span is the same set of centres a test of
+// each one would keep.
+template <class Visit>
+void forEachRowSpan(const SnappedFace& face, std::int64_t from, std::int64_t to, Visit&& visit) {
+  from = std::max(from, face.y0), to = std::min(to, face.y1);
+  if (from > to || face.x0 > face.x1) return;
+  EdgeBound bounds[3];
+  for (int e = 0; e < 3; ++e) bounds[e] = EdgeBound(face.p[e], face.p[(e + 1) % 3], from * kSubpixel + kHalfPixel);
+  for (std::int64_t y = from; y <= to; ++y) {
+    std::int64_t x0 = face.x0, x1 = face.x1;
+    for (EdgeBound& bound : bounds) {
+      bound.limit(x0, x1);
+      bound.nextRow();
+    }
+    if (x0 <= x1) visit(static_cast<int>(y), static_cast<int>(x0), static_cast<int>(x1));
+  }
+}
+
+// forEachCoveredSpan with the visit inlined: the raster's loops call it once a row.
+template <class Visit>
+void forEachSpan(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid, Visit&& visit) {
+  UVTK_CHECK(uv.uv.size() == 3 * faces.size());
+  const GridSnap snap(grid);
+  SnappedFace face;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    if (isMeasured(faces[f].status) && snap.snap(uv, f, face))
+      forEachRowSpan(face, 0, grid.resolution - 1, [&](int y, int x0, int x1) { visit(f, y, x0, x1); });
+}
+
+// Adds 1 to the counts x0..x1 of a row, saturating at 255.
+void countSpan(std::uint8_t* row, int x0, int x1) {
+  for (int x = x0; x <= x1; ++x) row[x] = static_cast<std::uint8_t>(row[x] + (row[x] < 255));
 }
 
 }  // namespace
@@ -154,10 +196,8 @@ void forEachCoveredPixel(const UvMap& uv, const std::vector<FaceDistortion>& fac
 std::vector<std::uint8_t> coverageCounts(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid) {
   const auto n = static_cast<std::size_t>(grid.resolution);
   std::vector<std::uint8_t> counts(n * n, 0);
-  forEachSpan(uv, faces, grid, [&](std::size_t, int y, int x0, int x1) {
-    std::uint8_t* row = counts.data() + static_cast<std::size_t>(y) * n;
-    for (int x = x0; x <= x1; ++x) row[x] = static_cast<std::uint8_t>(row[x] + (row[x] < 255));  // saturating
-  });
+  forEachSpan(uv, faces, grid,
+              [&](std::size_t, int y, int x0, int x1) { countSpan(counts.data() + std::size_t(y) * n, x0, x1); });
   return counts;
 }
 
@@ -191,20 +231,53 @@ Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces
   if (bounds.isEmpty()) return overlap;
   resolution = overlap.resolution = overlapResolution(uv, faces, uvGridOver(bounds, 1), resolution);
   const UvGrid grid = uvGridOver(bounds, resolution);
-  const std::vector<std::uint8_t> counts = coverageCounts(uv, faces, grid);
-  for (std::uint8_t count : counts) {
-    overlap.coveredPixels += count >= 1;
-    overlap.overlappedPixels += count >= 2;
+  const GridSnap snap(grid);
+
+  // The counts in bands of rows. A mesh with few faces for its grid (at most R^2 / 64) is drawn band by
+  // band into 64 KiB used again for each, its faces snapped again for each band they cross: at 1024
+  // the sixteen bands cost less than touching 1 MB of fresh memory, which this machine's pages make
+  // the larger part of a small mesh's judgement. Other meshes are one band, the whole grid.
+  const std::int64_t n = resolution;
+  std::size_t measured = 0;
+  for (const FaceDistortion& face : faces) measured += isMeasured(face.status);
+  const bool banded = std::int64_t(measured) <= n * n / 64;
+  const std::int64_t bandRows = banded ? std::max<std::int64_t>(1, 65536 / n) : n;
+  // A banded mesh's faces' rows, so that a band skips the faces that do not reach it (-1: none).
+  std::vector<std::array<std::int32_t, 2>> faceRows;
+  SnappedFace face;
+  if (banded) {
+    faceRows.assign(faces.size(), {0, -1});
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      if (isMeasured(faces[f].status) && snap.snap(uv, f, face) && face.x0 <= face.x1)
+        faceRows[f] = {std::int32_t(face.y0), std::int32_t(face.y1)};
   }
-  if (overlap.overlappedPixels == 0) return overlap;
-  // The faces that cover a centre another face covers too: a second pass over the same spans.
+  auto reaches = [&](std::size_t f, std::int64_t from, std::int64_t to) {
+    return banded ? faceRows[f][0] <= to && faceRows[f][1] >= from && faceRows[f][0] <= faceRows[f][1]
+                  : isMeasured(faces[f].status);
+  };
+  std::vector<std::uint8_t> counts(std::size_t(bandRows * n));
   std::vector<std::uint8_t> overlapped(faces.size(), 0);
-  const auto n = static_cast<std::size_t>(resolution);
-  forEachSpan(uv, faces, grid, [&](std::size_t face, int y, int x0, int x1) {
-    if (overlapped[face]) return;
-    const std::uint8_t* row = counts.data() + static_cast<std::size_t>(y) * n;
-    overlapped[face] = std::any_of(row + x0, row + x1 + 1, [](std::uint8_t count) { return count >= 2; });
-  });
+  for (std::int64_t from = 0; from < n; from += bandRows) {
+    const std::int64_t to = std::min(n - 1, from + bandRows - 1);
+    std::fill(counts.begin(), counts.end(), std::uint8_t(0));
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      if (reaches(f, from, to) && snap.snap(uv, f, face))
+        forEachRowSpan(face, from, to, [&](int y, int x0, int x1) { countSpan(&counts[std::size_t((y - from) * n)], x0, x1); });
+    std::size_t overlappedHere = 0;
+    for (const std::uint8_t count : counts) {
+      overlap.coveredPixels += count >= 1;
+      overlappedHere += count >= 2;
+    }
+    overlap.overlappedPixels += overlappedHere;
+    if (overlappedHere == 0) continue;
+    // The faces that cover a centre another face covers too: a second pass over the band's spans.
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      if (!overlapped[f] && reaches(f, from, to) && snap.snap(uv, f, face))
+        forEachRowSpan(face, from, to, [&](int y, int x0, int x1) {
+          const std::uint8_t* row = &counts[std::size_t((y - from) * n)];
+          overlapped[f] |= std::any_of(row + x0, row + x1 + 1, [](std::uint8_t count) { return count >= 2; });
+        });
+  }
   overlap.overlappedFaces = static_cast<std::size_t>(std::count(overlapped.begin(), overlapped.end(), std::uint8_t(1)));
   return overlap;
 }

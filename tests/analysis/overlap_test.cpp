@@ -110,6 +110,44 @@ TEST(OverlapSpans, CoverExactlyThePixelCentresATestOfEachCentreFinds) {
   }
 }
 
+// measureOverlap draws a small mesh in bands of rows (16 at 1024); its figures are those of the whole
+// grid's coverageCounts, which the test above recounts centre by centre.
+TEST(OverlapSpans, BandsGiveTheFiguresOfTheWholeGrid) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> anywhere(0.0, 1.0);
+  for (int round = 0; round < 6; ++round) {
+    std::vector<Vec3> positions;
+    std::vector<Triangle> triangles;
+    std::vector<Vec2> uvs;
+    for (int f = 0; f < 30 + 40 * round; ++f) {
+      // Small faces (their UV area keeps the raster at 1024), some across bands of 64 rows.
+      const Vec2 first(anywhere(random), anywhere(random));
+      for (int k = 0; k < 3; ++k) {
+        const Vec2 uv = k == 0 ? first : Vec2(first + Vec2(0.2 * anywhere(random) - 0.1, 0.3 * anywhere(random) - 0.15));
+        positions.push_back(Vec3(uv.x(), uv.y(), 0.0));
+        uvs.push_back(uv);
+      }
+      triangles.push_back({3 * f, 3 * f + 1, 3 * f + 2});
+    }
+    const Layout l = makeLayout(positions, triangles, uvs);
+    const std::vector<FaceDistortion> faces = measureFaces(l.mesh, l.uv);
+    const UvGrid grid = uvGridOver(measuredUvBounds(l.uv, faces), 1024);
+    const std::vector<std::uint8_t> counts = coverageCounts(l.uv, faces, grid);
+    std::size_t covered = 0, overlapped = 0;
+    for (const std::uint8_t count : counts) covered += count >= 1, overlapped += count >= 2;
+    std::set<std::size_t> overlappedFaces;
+    forEachCoveredPixel(l.uv, faces, grid, [&](std::size_t f, int x, int y) {
+      if (counts[std::size_t(y) * 1024 + std::size_t(x)] >= 2) overlappedFaces.insert(f);
+    });
+    const Overlap overlap = measureOverlap(l.uv, faces, 1024);
+    ASSERT_EQ(overlap.resolution, 1024);
+    EXPECT_EQ(overlap.coveredPixels, covered) << round;
+    EXPECT_EQ(overlap.overlappedPixels, overlapped) << round;
+    EXPECT_EQ(overlap.overlappedFaces, overlappedFaces.size()) << round;
+    EXPECT_GT(overlapped, 0u);
+  }
+}
+
 // Counts saturate at 255: 300 copies of one triangle over the grid.
 TEST(OverlapSpans, CountsSaturateAt255) {
   std::vector<Vec3> positions;
