@@ -2,7 +2,7 @@
 # Set up, build, and run every test: the release build's suite; its install, with examples/ built
 # and run against the installed package alone (docs/point-api.md); the same suite built by clang under
 # AddressSanitizer and UndefinedBehaviorSanitizer (the fuzz preset); every fuzz target for
-# UVTK_FUZZ_SECONDS (default 60) each; the Python module's tests (pytest) against its install. Written
+# UVTK_FUZZ_SECONDS (default 45) each; the Python module's tests (pytest) against its install. Written
 # glTF files are checked by the Khronos glTF-Validator (npm), which setup.sh --validator installs.
 # docs/robustness.md says what each part checks.
 set -euo pipefail
@@ -59,5 +59,5 @@ if ! ctest --test-dir build-fuzz --output-on-failure -j "$(nproc)" 2>&1 | tee "$
   ctest --test-dir build-fuzz --output-on-failure --rerun-failed
 fi
 stage "fuzzing"
-scripts/fuzz.sh "${UVTK_FUZZ_SECONDS:-60}" build-fuzz
+scripts/fuzz.sh "${UVTK_FUZZ_SECONDS:-45}" build-fuzz
 stage "done"
