@@ -252,7 +252,7 @@ Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces
         faceRows[f] = {std::int32_t(face.y0), std::int32_t(face.y1)};
   }
   auto reaches = [&](std::size_t f, std::int64_t from, std::int64_t to) {
-    return banded ? faceRows[f][0] <= to && faceRows[f][1] >= from && faceRows[f][0] <= faceRows[f][1]
+    return banded ? faceRows[f][0] <= to && faceRows[f][1] >= from
                   : isMeasured(faces[f].status);
   };
   std::vector<std::uint8_t> counts(std::size_t(bandRows * n));
