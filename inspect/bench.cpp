@@ -246,8 +246,8 @@ std::vector<nlohmann::json> benchEndToEnd(const BenchOptions& a) {
       int status = 0;
       try {
         MapJob job;
-        job.projector = a.mapProjector.options;
-        job.threads = threads;
+        job.settings.projector.options = a.mapProjector.options;
+        job.settings.threads = threads;
         setProgressEnabled(false);
         mapMesh({a.mesh, output, json}, job, false);
       } catch (const std::exception& e) {
@@ -373,13 +373,13 @@ std::vector<nlohmann::json> benchRendering(const BenchOptions& a, const Mesh& me
                        {"projection", a.camera.ortho.empty() ? "perspective" : "orthographic"},
                        {"eye", {eye.x(), eye.y(), eye.z()}},
                        {"texture", a.textureSource},
-                       {"wrap", cli::nameOf(cli::kWrapNames, a.textureOptions.wrap)},
-                       {"env", cli::nameOf(cli::kEnvNames, a.textureOptions.env)},
+                       {"wrap", nameOf(cli::kWrapNames, a.textureOptions.wrap)},
+                       {"env", nameOf(cli::kEnvNames, a.textureOptions.env)},
                        {"seamless", a.textureOptions.seamless},
                        {"two_sided", a.textureOptions.twoSided},
-                       {"cull", cli::nameOf(cli::kCullNames, a.frame.cull)},
+                       {"cull", nameOf(cli::kCullNames, a.frame.cull)},
                        {"background", {a.frame.background.x(), a.frame.background.y(), a.frame.background.z()}},
-                       {"filter", cli::nameOf(cli::kFilterNames, c.filter)},
+                       {"filter", nameOf(cli::kFilterNames, c.filter)},
                        {"uv", c.uv},
                        {"spp", c.spp},
                        {"threads", c.threads},
@@ -560,8 +560,8 @@ BenchOptions BenchArguments::resolve() const {
       throw UsageError(*path + ": the folder " + folder.string() + " does not exist");
   }
   BenchOptions o;
-  o.precisions = cli::parseNameList(precisions, cli::kPrecisionNames, "--precision");
-  o.maths = cli::parseNameList(maths, cli::kMathNames, "--math");
+  o.precisions = cli::parseNameList(precisions, param::kPrecisionNames, "--precision");
+  o.maths = cli::parseNameList(maths, param::kMathNames, "--math");
   o.threads = parseCounts(threads, "--threads", 1, 256);
   cli::projectorNamed("plane", omap);  // a bad --omap is named before a bad projector
   for (const std::string& projector : cli::splitList(projectors)) {

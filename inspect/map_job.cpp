@@ -85,27 +85,29 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   StageClock clock("uvtk map", showStages);
   checkMapMemory(paths.input);
   clock.start("reading", paths.input);
-  io::ReadMeshResult input = io::readMesh(paths.input, job.threads);
+  io::ReadMeshResult input = io::readMesh(paths.input, job.settings.threads);
   const double readMs = clock.stop();
   const nlohmann::json inputSummary = inputJson(paths.input, input);
 
   clock.start("mapping", std::to_string(input.mesh.faceCount()) + " faces");
-  MappedMesh mapped = mapByProjector(std::move(input.mesh), job.projector, job.seamPlaceAuto, job.threads);
+  const MapSettings& settings = job.settings;
+  MappedMesh mapped =
+      mapByProjector(std::move(input.mesh), settings.projector.options, settings.projector.seamPlaceAuto, settings.threads);
   const double mapMs = clock.stop();
   const param::MappingSummary& s = mapped.projection->summary;
 
   clock.start("judging", std::to_string(mapped.mesh.faceCount()) + " faces");
-  analysis::Judgement judgement = mapped.judge(job.thresholds, job.overlapResolution, job.threads, job.textureSize);
+  analysis::Judgement judgement = mapped.judge(settings.thresholds, settings.overlapResolution, settings.threads, settings.textureSize);
   double densityFactor = 1.0;
-  if (job.density) {  // judged again: the summary and the verdict are those of the UVs written
-    densityFactor = scaleToTexelDensity(mapped, judgement, *job.density, paths.input);
-    judgement = mapped.judge(job.thresholds, job.overlapResolution, job.threads, job.textureSize);
+  if (settings.density) {  // judged again: the summary and the verdict are those of the UVs written
+    densityFactor = scaleToTexelDensity(mapped, judgement, *settings.density, paths.input);
+    judgement = mapped.judge(settings.thresholds, settings.overlapResolution, settings.threads, settings.textureSize);
   }
   const double judgeMs = clock.stop();
   nlohmann::json summary;
   if (!paths.json.empty()) {
     summary = mapSummaryJson(mapped, judgement, inputSummary, paths.output);
-    if (job.density) summary["density_scale"] = {{"density", *job.density}, {"factor", densityFactor}};
+    if (settings.density) summary["density_scale"] = {{"density", *settings.density}, {"factor", densityFactor}};
   }
   // The measured faces whose UV triangle glTF's float32 collapses (the others have no area to lose).
   std::size_t collapsedUvFaces = 0;
@@ -118,7 +120,7 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   clock.start("writing", paths.output);
   io::MeshWriteOptions write = job.write;
   write.header = "uvtk map " + paths.input;
-  write.threads = job.threads;
+  write.threads = job.settings.threads;
   io::OutputSet outputs;
   io::writeMesh(outputs, paths.output, mapped.mesh, &mapped.uv, write);
   const double writeMs = clock.stop();
@@ -147,7 +149,7 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
                          (far ? "; --uv-scale, --uv-offset or --fit bring it near [0, 1]"
                               : ": faces finer than float32's steps (2^-24 near 1)"));
   }
-  if (job.projector.surface == param::SurfaceKind::Triplanar && !quiet()) {
+  if (job.settings.projector.options.surface == param::SurfaceKind::Triplanar && !quiet()) {
     char note[256];
     std::snprintf(note, sizeof note,
                   "uvtk map: %s holds one UV per corner, not a triplanar blend: each face has its dominant axis's "
@@ -302,7 +304,7 @@ BatchResult mapBatch(const std::vector<std::string>& inputs, const std::string& 
   // whole), not one output.
   const std::vector<MeshPaths> paths = batchPaths(inputs, output, json, job.batchFormat);
   MapJob each = job;
-  if (each.threads == 0) each.threads = 1;  // the meshes run side by side
+  if (each.settings.threads == 0) each.settings.threads = 1;  // the meshes run side by side
   createFolder(output);
   if (!json.empty()) createFolder(json);
   const auto start = std::chrono::steady_clock::now();
@@ -324,7 +326,7 @@ BatchResult mapBatch(const std::vector<std::string>& inputs, const std::string& 
   result.mapped = paths.size() - result.failed;
   if (!json.empty())
     io::writeFileAtomically((fs::path(json) / "batch.json").string(),
-                            batchJson(paths, outcomes, job.projector, threads, millisecondsSince(start)).dump(2) + "\n");
+                            batchJson(paths, outcomes, job.settings.projector.options, threads, millisecondsSince(start)).dump(2) + "\n");
   return result;
 }
 

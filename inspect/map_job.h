@@ -10,24 +10,20 @@
 #include "analysis/judgement.h"
 #include "io/mesh_format.h"
 #include "io/mesh_writer.h"
+#include "inspect/map_parameters.h"
 #include "inspect/mapped_mesh.h"
 #include "param/projector.h"
 
 namespace uvtk::inspect {
 
-// How the meshes are mapped, written and judged.
+// How the meshes are mapped, judged and written.
 struct MapJob {
-  param::ProjectorOptions projector;
-  bool seamPlaceAuto = false;  // --seam-place auto: the seam placed on each mesh first
+  // The projector, the judgement's parameters, and the threads each mesh is read, mapped, judged and
+  // written with (0: one per hardware thread for a single mesh, one for each mesh of a batch, whose
+  // meshes run side by side).
+  MapSettings settings;
   io::MeshWriteOptions write;  // the written mesh's options (the header is set per mesh)
   io::MeshFormat batchFormat = io::MeshFormat::obj;  // what a batch writes, OUTDIR/STEM.obj by default
-  analysis::Thresholds thresholds;
-  int overlapResolution = 1024;
-  analysis::TextureSize textureSize;  // the texture texel density counts in
-  std::optional<double> density;      // --density D: the UVs scaled so that the mean texel density is D
-  // Threads each mesh is read, mapped, judged and written with; 0: one per hardware thread for a
-  // single mesh, one for each mesh of a batch (whose meshes run side by side).
-  int threads = 0;
 };
 
 // Multiplies every valid corner's (u, v) by D / mean about (0, 0), mean the area-weighted texel

@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "core/mesh.h"
 #include "inspect/mapped_mesh.h"
+#include "param/parameters.h"
 #include "texgen/texgen.h"
 #include "uvtk/uvtk.h"
 
@@ -42,7 +43,10 @@ CheckedMesh checked(const Mesh& mesh);
 // The public Mapping of `mapped`, judged under `thresholds`; `input` is the summary's "input" record.
 Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thresholds, int overlapResolution,
                     nlohmann::json input, std::optional<texgen::TexgenOptions> texgen = std::nullopt,
-                    analysis::TextureSize textureSize = {});
+                    analysis::TextureSize textureSize = {}, int threads = 0);
+
+// The public parameters as the engine's dictionary (the same values; a Python keyword's face).
+param::ParameterDictionary toEngine(const Parameters& parameters);
 
 // Parses `words` (a command line without the program's name) with `app`; throws UsageError with
 // CLI11's message.
@@ -58,6 +62,8 @@ template <class Work>
 auto translatingErrors(Work&& work) -> decltype(work()) {
   try {
     return work();
+  } catch (const param::ParameterTypeError& error) {
+    throw ParameterTypeError(uvtk::errorMessage(error));
   } catch (const uvtk::UsageError& error) {
     throw std::invalid_argument(uvtk::errorMessage(error));
   } catch (const uvtk::InputError& error) {

@@ -8,6 +8,7 @@
 #include "detail.h"
 #include "option_fields.h"
 #include "inspect/map_job.h"
+#include "inspect/map_parameters.h"
 #include "inspect/texgen_job.h"
 #include "io/mesh_format.h"
 #include "io/mesh_writer.h"
@@ -20,12 +21,44 @@ namespace uvtk::api {
 
 namespace {
 
+// --seam-place: degrees or auto, two fields of the struct.
+Field<MapOptions> seamPlaceField() {
+  const auto given = [](const MapOptions& o) -> std::optional<ParameterValue> {
+    if (o.seamPlaceAuto) return ParameterValue(std::string("auto"));
+    if (o.seamPlace) return ParameterValue(*o.seamPlace);
+    return std::nullopt;
+  };
+  return {"--seam-place",
+          [](MapOptions& o, const std::vector<std::string>& r) {
+            if (r.back() == "auto") o.seamPlaceAuto = true;
+            else o.seamPlace = std::stod(r.back());
+          },
+          [](const MapOptions& o) {
+            if (o.seamPlaceAuto) return std::vector<std::string>{"--seam-place", "auto"};
+            if (o.seamPlace) return std::vector<std::string>{"--seam-place", number(*o.seamPlace)};
+            return std::vector<std::string>{};
+          },
+          given};
+}
+
+// --texture-size W,H (or N).
+Field<MapOptions> textureSizeField() {
+  return field(
+      "--texture-size", &MapOptions::textureSize,
+      [](MapOptions& o, const std::vector<std::string>& r) {
+        const analysis::TextureSize size = cli::parseTextureSize(r.back(), "--texture-size");
+        o.textureSize = {size.width, size.height};
+      },
+      [](const std::array<int, 2>& v) { return std::to_string(v[0]) + "," + std::to_string(v[1]); },
+      [](const std::array<int, 2>& v) { return std::vector<double>{double(v[0]), double(v[1])}; });
+}
+
 const std::vector<Field<MapOptions>>& mapFields() {
   using O = MapOptions;
   static const std::vector<Field<O>> fields = {
       textField("--projector", &O::projector),
       textField("--omap", &O::omap),
-      textField("--fit", &O::fit),
+      optionalTextField("--fit", &O::fit),
       textField("--axis", &O::axis),
       optionalArrayField("--center", &O::center),
       arrayField("--axis-dir", &O::axisDir),
@@ -49,7 +82,7 @@ const std::vector<Field<MapOptions>>& mapFields() {
       textField("--seam", &O::seam),
       textField("--pole", &O::pole),
       numberField("--pole-eps", &O::poleEps),
-      textField("--seam-place", &O::seamPlace),
+      seamPlaceField(),
       arrayField("--uv-scale", &O::uvScale),
       arrayField("--uv-offset", &O::uvOffset),
       numberField("--uv-rotate", &O::uvRotate),
@@ -61,8 +94,9 @@ const std::vector<Field<MapOptions>>& mapFields() {
       listField("--fail-on", &O::failOn),
       listField("--warn-on", &O::warnOn),
       integerField("--overlap-resolution", &O::overlapResolution),
-      textField("--texture-size", &O::textureSize),
-      numberField("--density", &O::density),
+      textureSizeField(),
+      optionalNumberField("--density", &O::density),
+      integerField("--threads", &O::threads),
   };
   return fields;
 }
@@ -91,19 +125,19 @@ struct MapCommand {
   CLI::App app;
   cli::ProjectorArguments projector;
   cli::VerdictArguments verdict;
-  int overlapResolution = 1024;
-  std::string textureSize = "1024,1024";
+  int overlapResolution = 1024, threads = 0;
+  std::string textureSize;
   std::optional<double> density;
 
   explicit MapCommand(const std::vector<std::string>& words) {
     cli::addProjectorOptions(app, projector);
     cli::addVerdictOptions(app, verdict);
-    app.add_option("--overlap-resolution", overlapResolution)->check(CLI::Range(16, 8192));
+    app.add_option("--overlap-resolution", overlapResolution);
     app.add_option("--texture-size", textureSize);
     app.add_option("--density", density);
+    app.add_option("--threads", threads);
     parseWords(app, words);
     verdict.check();
-    if (density) cli::checkDensity(*density);
   }
 };
 
@@ -138,12 +172,18 @@ Reason reasonOf(const analysis::Reason& reason) {
 MapOptions MapOptions::parse(const std::string& commandLine) {
   return translatingErrors([&] {
     const std::vector<std::string> words = splitCommandLine(commandLine);
-    MapCommand(words).projector.resolve();
-    return fromWords(words, mapFields());
+    const MapCommand checked(words);  // CLI11's checks of the syntax and each value
+    MapOptions options = fromWords(words, mapFields());
+    Parameters parameters = options.parameters();
+    parameters.face = Parameters::Face::CommandLine;
+    inspect::readMapSettings(toEngine(parameters));  // the engine's checks of the combination
+    return options;
   });
 }
 
 std::string MapOptions::commandLine() const { return joinCommandLine(wordsOf(*this, mapFields())); }
+
+Parameters MapOptions::parameters() const { return parametersOf(*this, mapFields()); }
 
 TexgenOptions TexgenOptions::parse(const std::string& commandLine) {
   return translatingErrors([&] {
@@ -156,9 +196,10 @@ TexgenOptions TexgenOptions::parse(const std::string& commandLine) {
 std::string TexgenOptions::commandLine() const { return joinCommandLine(wordsOf(*this, texgenFields())); }
 
 Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thresholds, int overlapResolution,
-                    nlohmann::json input, std::optional<texgen::TexgenOptions> texgen, analysis::TextureSize textureSize) {
+                    nlohmann::json input, std::optional<texgen::TexgenOptions> texgen, analysis::TextureSize textureSize,
+                    int threads) {
   auto detail = std::make_shared<MappingDetail>();
-  detail->judgement = mapped.judge(thresholds, overlapResolution, 0, textureSize);
+  detail->judgement = mapped.judge(thresholds, overlapResolution, threads, textureSize);
   detail->overlapResolution = overlapResolution;
   detail->input = std::move(input);
   detail->texgen = std::move(texgen);
@@ -196,18 +237,30 @@ Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thre
   return mapping;
 }
 
-Mapping map(const Mesh& mesh, const MapOptions& options) {
-  CheckedMesh in = checked(mesh);
+param::ParameterDictionary toEngine(const Parameters& parameters) {
+  param::ParameterDictionary dictionary(parameters.face == Parameters::Face::Keyword       ? param::ParameterFace::Keyword
+                                        : parameters.face == Parameters::Face::CommandLine ? param::ParameterFace::CommandLine
+                                                                                           : param::ParameterFace::Library);
+  for (const Parameter& p : parameters.values)
+    std::visit([&](const auto& value) { dictionary.add(p.name, value, p.place); }, p.value);
+  return dictionary;
+}
+
+Mapping map(const Mesh& mesh, const MapOptions& options) { return map(mesh, options.parameters()); }
+
+Mapping map(const Mesh& mesh, const Parameters& parameters) {
   return translatingErrors([&] {
-    const MapCommand command(wordsOf(options, mapFields()));
-    const param::ProjectorOptions resolved = command.projector.resolve();
-    const analysis::TextureSize textureSize = cli::parseTextureSize(command.textureSize, "--texture-size");
-    inspect::MappedMesh mapped = inspect::mapByProjector(std::move(in.engine), resolved, command.projector.seamPlaceAuto());
-    if (command.density)  // as `uvtk map --density`: scaled by the mean of the judgement before it
-      inspect::scaleToTexelDensity(mapped, mapped.judge(command.verdict.thresholds(), command.overlapResolution, 0, textureSize),
-                                   *command.density, "mesh");
-    return makeMapping(std::move(mapped), command.verdict.thresholds(), command.overlapResolution, std::move(in.input),
-                       std::nullopt, textureSize);
+    const param::ParameterDictionary dictionary = toEngine(parameters);
+    const inspect::MapSettings s = inspect::readMapSettings(dictionary);
+    dictionary.checkAllRead(inspect::mapParameterNames());
+    CheckedMesh in = checked(mesh);
+    inspect::MappedMesh mapped =
+        inspect::mapByProjector(std::move(in.engine), s.projector.options, s.projector.seamPlaceAuto, s.threads);
+    if (s.density)  // as `uvtk map --density`: scaled by the mean of the judgement before it
+      inspect::scaleToTexelDensity(mapped, mapped.judge(s.thresholds, s.overlapResolution, s.threads, s.textureSize),
+                                   *s.density, "mesh");
+    return makeMapping(std::move(mapped), s.thresholds, s.overlapResolution, std::move(in.input), std::nullopt,
+                       s.textureSize, s.threads);
   });
 }
 

@@ -48,6 +48,7 @@ void checkFinite(const std::vector<Vector3>& points, const char* what) {
 
 InputError::~InputError() = default;
 OutputError::~OutputError() = default;
+ParameterTypeError::~ParameterTypeError() = default;
 
 uvtk::Mesh toEngine(const Mesh& mesh) {
   uvtk::Mesh engine;

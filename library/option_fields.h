@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "uvtk/mapping.h"
 #include "options/cli_values.h"
 
 namespace uvtk::api {
@@ -44,67 +45,93 @@ std::array<double, N> arrayFrom(const std::string& text, const std::string& opti
   return values;
 }
 
-// One option of a struct: how parse() sets its field from the option's results, and the words
-// commandLine() gives for it (none at its default).
+// One option of a struct: how parse() sets its field from the option's results, the words
+// commandLine() gives for it, and the typed parameter parameters() gives (neither at its default).
 template <class Options>
 struct Field {
-  const char* name;
+  const char* name;  // "--cap-angle"; the parameter's name is without the dashes
   std::function<void(Options&, const std::vector<std::string>&)> set;
   std::function<std::vector<std::string>(const Options&)> words;
+  std::function<std::optional<ParameterValue>(const Options&)> value;
 };
 
-template <class Options, class Value>
-Field<Options> textField(const char* name, Value Options::*member) {
-  return {name, [member](Options& o, const std::vector<std::string>& r) { o.*member = r.back(); },
-          [name, member](const Options& o) {
+template <class Options, class Value, class Set, class Words, class Typed>
+Field<Options> field(const char* name, Value Options::*member, Set set, Words words, Typed typed) {
+  return {name, std::move(set),
+          [name, member, words](const Options& o) {
             return o.*member == Options{}.*member ? std::vector<std::string>{}
-                                                  : std::vector<std::string>{name, o.*member};
+                                                  : std::vector<std::string>{name, words(o.*member)};
+          },
+          [member, typed](const Options& o) -> std::optional<ParameterValue> {
+            if (o.*member == Options{}.*member) return std::nullopt;
+            return ParameterValue(typed(o.*member));
           }};
+}
+
+template <class Options>
+Field<Options> textField(const char* name, std::string Options::*member) {
+  return field(
+      name, member, [member](Options& o, const std::vector<std::string>& r) { o.*member = r.back(); },
+      [](const std::string& v) { return v; }, [](const std::string& v) { return v; });
+}
+
+template <class Options>
+Field<Options> optionalTextField(const char* name, std::optional<std::string> Options::*member) {
+  return field(
+      name, member, [member](Options& o, const std::vector<std::string>& r) { o.*member = r.back(); },
+      [](const std::optional<std::string>& v) { return *v; }, [](const std::optional<std::string>& v) { return *v; });
 }
 
 template <class Options>
 Field<Options> numberField(const char* name, double Options::*member) {
-  return {name, [member](Options& o, const std::vector<std::string>& r) { o.*member = std::stod(r.back()); },
-          [name, member](const Options& o) {
-            return o.*member == Options{}.*member ? std::vector<std::string>{}
-                                                  : std::vector<std::string>{name, number(o.*member)};
-          }};
+  return field(
+      name, member, [member](Options& o, const std::vector<std::string>& r) { o.*member = std::stod(r.back()); },
+      [](double v) { return number(v); }, [](double v) { return v; });
+}
+
+template <class Options>
+Field<Options> optionalNumberField(const char* name, std::optional<double> Options::*member) {
+  return field(
+      name, member, [member](Options& o, const std::vector<std::string>& r) { o.*member = std::stod(r.back()); },
+      [](const std::optional<double>& v) { return number(*v); }, [](const std::optional<double>& v) { return *v; });
 }
 
 template <class Options>
 Field<Options> integerField(const char* name, int Options::*member) {
-  return {name, [member](Options& o, const std::vector<std::string>& r) { o.*member = std::stoi(r.back()); },
-          [name, member](const Options& o) {
-            return o.*member == Options{}.*member ? std::vector<std::string>{}
-                                                  : std::vector<std::string>{name, std::to_string(o.*member)};
-          }};
+  return field(
+      name, member, [member](Options& o, const std::vector<std::string>& r) { o.*member = std::stoi(r.back()); },
+      [](int v) { return std::to_string(v); }, [](int v) { return std::int64_t(v); });
 }
 
+// A flag: the option alone sets the field to `whenGiven` (false: --no-normalize).
 template <class Options>
 Field<Options> flagField(const char* name, bool Options::*member, bool whenGiven = true) {
   return {name, [member, whenGiven](Options& o, const std::vector<std::string>&) { o.*member = whenGiven; },
           [name, member, whenGiven](const Options& o) {
             return o.*member == whenGiven ? std::vector<std::string>{name} : std::vector<std::string>{};
+          },
+          [member, whenGiven](const Options& o) -> std::optional<ParameterValue> {
+            if (o.*member != whenGiven) return std::nullopt;
+            return ParameterValue(true);
           }};
 }
 
 template <class Options, std::size_t N>
 Field<Options> arrayField(const char* name, std::array<double, N> Options::*member) {
-  return {name,
-          [member, name](Options& o, const std::vector<std::string>& r) { o.*member = arrayFrom<N>(r.back(), name); },
-          [name, member](const Options& o) {
-            return o.*member == Options{}.*member ? std::vector<std::string>{}
-                                                  : std::vector<std::string>{name, numbers(o.*member)};
-          }};
+  return field(
+      name, member,
+      [member, name](Options& o, const std::vector<std::string>& r) { o.*member = arrayFrom<N>(r.back(), name); },
+      [](const std::array<double, N>& v) { return numbers(v); },
+      [](const std::array<double, N>& v) { return std::vector<double>(v.begin(), v.end()); });
 }
 
 template <class Options, std::size_t N>
 Field<Options> optionalArrayField(const char* name, std::optional<std::array<double, N>> Options::*member) {
-  return {name,
-          [member, name](Options& o, const std::vector<std::string>& r) { o.*member = arrayFrom<N>(r.back(), name); },
-          [name, member](const Options& o) {
-            return o.*member ? std::vector<std::string>{name, numbers(*(o.*member))} : std::vector<std::string>{};
-          }};
+  return field(
+      name, member,
+      [member, name](Options& o, const std::vector<std::string>& r) { o.*member = arrayFrom<N>(r.back(), name); },
+      [](const std::optional<std::array<double, N>>& v) { return numbers(*v); },
+      [](const std::optional<std::array<double, N>>& v) { return std::vector<double>(v->begin(), v->end()); });
 }
 
 template <class Options>
@@ -114,7 +141,21 @@ Field<Options> listField(const char* name, std::vector<std::string> Options::*me
             std::vector<std::string> words;
             for (const std::string& value : o.*member) words.insert(words.end(), {name, value});
             return words;
+          },
+          [member](const Options& o) -> std::optional<ParameterValue> {
+            if ((o.*member).empty()) return std::nullopt;
+            return ParameterValue(o.*member);
           }};
+}
+
+// The fields that differ from their defaults as typed parameters, named without the dashes.
+template <class Options>
+Parameters parametersOf(const Options& options, const std::vector<Field<Options>>& fields) {
+  Parameters parameters;
+  for (const Field<Options>& field : fields)
+    if (std::optional<ParameterValue> value = field.value(options))
+      parameters.values.push_back({field.name + 2, std::move(*value), ""});
+  return parameters;
 }
 
 template <class Options>

@@ -125,7 +125,8 @@ inspect::ImageCheckRun checkImageFile(CheckArguments a) {
   if (projectorGiven) {  // the reflection O-mapping sees from the camera's eye, as in `uvtk render`
     if (projector.options.ray == param::RayKind::Reflection)
       projector.options.eye = (worldFromObject.inverse() * camera.eye().homogeneous()).head<3>();
-    mapped = inspect::mapByProjector(std::move(input.mesh), projector.resolve(), projector.seamPlaceAuto());
+    const param::Projector resolved = projector.resolve();
+    mapped = inspect::mapByProjector(std::move(input.mesh), resolved.options, resolved.seamPlaceAuto);
   } else if (a.mapping.isTexgen()) {
     a.mapping.texgen.arithmetic = projector.options.arithmetic;
     mapped = inspect::mapByTexgen(std::move(input.mesh), a.mapping.texgen.resolve(camera.viewFromWorld, worldFromObject));

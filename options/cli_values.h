@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "analysis/distortion.h"
 #include "core/math.h"
+#include "core/names.h"
 
 namespace uvtk::cli {
 
@@ -21,15 +22,6 @@ Eigen::VectorXd parseNumbers(const std::string& text, int n, const std::string& 
 inline Vec2 parseVec2(const std::string& text, const std::string& option) { return parseNumbers(text, 2, option); }
 inline Vec3 parseVec3(const std::string& text, const std::string& option) { return parseNumbers(text, 3, option); }
 inline Vec4 parseVec4(const std::string& text, const std::string& option) { return parseNumbers(text, 4, option); }
-
-// The name among `names` that a mistyped `typed` most likely meant, ignoring case: the nearest by
-// Damerau-Levenshtein distance when it is at most a third of the longer one's length, else the only
-// name that `typed` (3 characters or more) begins; "" when none is that close.
-std::string nearestName(const std::string& typed, const std::vector<std::string>& names);
-
-// "'sphera' is not one of: plane, two-plane, cylinder, sphere, cube; did you mean 'sphere'?", the
-// question only when nearestName finds one.
-std::string notOneOf(const std::string& typed, const std::vector<std::string>& names);
 
 // Accepts exactly the strings in `names`, refusing others with notOneOf's text (CLI11 puts the
 // option's name before it): for a string option checked against a list of names.
@@ -55,14 +47,6 @@ inline CLI::Option* addChoice(CLI::App& app, const std::string& name, Enum& targ
     return notOneOf(text, names);
   };
   return app.add_option(name, target, help)->transform(CLI::Validator(toValue, ""))->type_name(CLI::detail::join(names, "|"));
-}
-
-// The name `table` gives `value`.
-template <class Enum>
-const std::string& nameOf(const std::vector<std::pair<std::string, Enum>>& table, Enum value) {
-  for (const auto& [name, v] : table)
-    if (v == value) return name;
-  throw std::logic_error("a choice without a name");
 }
 
 // The items of a comma-separated list.

@@ -25,6 +25,7 @@ void addMappingOptions(CLI::App& app, MappingArguments& a, param::Fit defaultFit
   a.app = &app;
   const std::vector<std::string> before = optionNames(app);
   a.projector.options.placement.fit = defaultFit;
+  a.projector.context.defaultFit = defaultFit;
   addProjectorOptions(app, a.projector);
   for (const std::string& name : optionNames(app))
     if (std::find(before.begin(), before.end(), name) == before.end() &&
@@ -50,8 +51,9 @@ ResolvedMapping resolveMapping(const MappingArguments& a) {
   if (!a.isTexgen()) {
     for (const char* name : {"--model", "--texmatrix", "--no-normalize"})
       if (given(a.app, name)) throw UsageError(std::string(name) + " goes with --texgen or --s/--t/--r/--q only");
-    out.projector = a.projector.resolve();
-    out.seamPlaceAuto = a.projector.seamPlaceAuto();
+    const param::Projector projector = a.projector.resolve();
+    out.projector = projector.options;
+    out.seamPlaceAuto = projector.seamPlaceAuto;
     return out;
   }
   for (const std::string& name : a.projectorOnlyOptions)

@@ -9,53 +9,8 @@ namespace uvtk::cli {
 
 using namespace uvtk::param;
 
-// The option names of each choice, shared by the options and the JSON record of a run.
-const std::vector<std::pair<std::string, SurfaceKind>> kSurfaceNames = {{"plane", SurfaceKind::Plane},
-                                                                        {"two-plane", SurfaceKind::TwoPlane},
-                                                                        {"cylinder", SurfaceKind::Cylinder},
-                                                                        {"sphere", SurfaceKind::Sphere},
-                                                                        {"cube", SurfaceKind::Cube},
-                                                                        {"camera", SurfaceKind::Camera},
-                                                                        {"triplanar", SurfaceKind::Triplanar}};
-const std::vector<std::pair<std::string, TriplanarPreset>> kTriplanarPresetNames = {
-    {"unity", TriplanarPreset::Unity}, {"materialx", TriplanarPreset::MaterialX}, {"godot", TriplanarPreset::Godot}};
-const std::vector<std::pair<std::string, RayKind>> kRayNames = {{"isn", RayKind::SurfaceNormal},
-                                                                {"centroid", RayKind::Centroid},
-                                                                {"normal", RayKind::ObjectNormal},
-                                                                {"reflection", RayKind::Reflection}};
-const std::vector<std::pair<std::string, Fit>> kFitNames = {
-    {"none", Fit::None}, {"bbox", Fit::BBox}, {"center", Fit::Center}, {"pca", Fit::Pca}, {"obb", Fit::Obb}};
-const std::vector<std::pair<std::string, int>> kAxisNames = {{"x", 0}, {"y", 1}, {"z", 2}};
-const std::vector<std::pair<std::string, SpherePreset>> kSpherePresetNames = {
-    {"default", SpherePreset::Default}, {"glu", SpherePreset::Glu}, {"seed004", SpherePreset::Seed004}};
-const std::vector<std::pair<std::string, CubeConvention>> kCubeConventionNames = {{"gl", CubeConvention::Gl},
-                                                                                  {"direct", CubeConvention::Direct}};
-const std::vector<std::pair<std::string, CubeLayout>> kCubeLayoutNames = {{"faces", CubeLayout::Faces},
-                                                                          {"cross", CubeLayout::Cross},
-                                                                          {"strip", CubeLayout::Strip},
-                                                                          {"3x2", CubeLayout::ThreeByTwo}};
-const std::vector<std::pair<std::string, SeamMode>> kSeamNames = {
-    {"none", SeamMode::None}, {"shift", SeamMode::Shift}, {"cut", SeamMode::Cut}};
-const std::vector<std::pair<std::string, PoleMode>> kPoleNames = {{"none", PoleMode::None}, {"fan", PoleMode::Fan}};
-const std::vector<std::pair<std::string, Precision>> kPrecisionNames = {{"double", Precision::Double},
-                                                                        {"float", Precision::Float}};
-const std::vector<std::pair<std::string, MathMode>> kMathNames = {
-    {"exact", MathMode::Exact}, {"fast", MathMode::Fast}, {"fast-u10", MathMode::FastU10}};
-
-namespace {
-
-// The name `table` gives `value` (cli_values.h has the same for the parser's side).
-template <class Enum>
-const std::string& nameOf(const std::vector<std::pair<std::string, Enum>>& table, Enum value) {
-  for (const auto& [name, v] : table)
-    if (v == value) return name;
-  throw std::logic_error("a choice without a name");
-}
-
-}  // namespace
-
-const std::string& precisionName(Precision precision) { return nameOf(kPrecisionNames, precision); }
-const std::string& mathName(MathMode math) { return nameOf(kMathNames, math); }
+const std::string& precisionName(Precision precision) { return nameOf(param::kPrecisionNames, precision); }
+const std::string& mathName(MathMode math) { return nameOf(param::kMathNames, math); }
 
 nlohmann::json projectorOptionsJson(const ProjectorOptions& o) {
   nlohmann::json j = {{"projector", nameOf(kSurfaceNames, o.surface)},

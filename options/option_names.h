@@ -10,22 +10,11 @@
 
 #include "core/arithmetic.h"
 #include "param/projector.h"
+#include "param/projector_names.h"
 #include "texgen/texgen.h"
 
 namespace uvtk::cli {
 
-extern const std::vector<std::pair<std::string, param::SurfaceKind>> kSurfaceNames;
-extern const std::vector<std::pair<std::string, param::RayKind>> kRayNames;
-extern const std::vector<std::pair<std::string, param::Fit>> kFitNames;
-extern const std::vector<std::pair<std::string, int>> kAxisNames;
-extern const std::vector<std::pair<std::string, param::SpherePreset>> kSpherePresetNames;
-extern const std::vector<std::pair<std::string, param::CubeConvention>> kCubeConventionNames;
-extern const std::vector<std::pair<std::string, CubeLayout>> kCubeLayoutNames;
-extern const std::vector<std::pair<std::string, param::SeamMode>> kSeamNames;
-extern const std::vector<std::pair<std::string, param::PoleMode>> kPoleNames;
-extern const std::vector<std::pair<std::string, param::TriplanarPreset>> kTriplanarPresetNames;
-extern const std::vector<std::pair<std::string, Precision>> kPrecisionNames;
-extern const std::vector<std::pair<std::string, MathMode>> kMathNames;
 extern const std::vector<std::pair<std::string, texgen::TexgenMode>> kTexgenModeNames;
 
 const std::string& precisionName(Precision precision);

@@ -7,47 +7,39 @@
 #include <string>
 
 #include "options/option_names.h"
+#include "param/make_projector.h"
 #include "param/projector.h"
 
 namespace uvtk::cli {
 
-// Other tools' projectors, expressed in uvtk's options (docs/conventions.md, "Other tools").
-enum class Convention {
-  Uvtk,
-  Blender,  // uv.sphere_project / uv.cylinder_project, ALIGN_TO_OBJECT, POLAR_ZX
-  Assimp,   // aiProcess_GenUVCoords with its default axis +y
-  Notes,    // the lecture notes' worked examples (the seeds): cube direct, sphere seed004, object frame
-};
-
-// The raw option values as typed; resolve() turns them into ProjectorOptions.
+// The projector options as CLI11 parsed them (typed, once); parameters() hands the ones given to
+// param::makeProjector, which checks and combines them.
 struct ProjectorArguments {
-  param::ProjectorOptions options;
+  param::ProjectorOptions options;  // the choices, flags and numbers
   std::string center, axisDir, refDir;
   double scale = 1.0;
-  std::string planeU = "1,0,0,0", planeV = "0,1,0,0";
+  std::string planeU, planeV;
   std::string eye;
-  std::string uvScale = "1,1", uvOffset = "0,0";
+  std::string uvScale, uvOffset;
   std::string seamPlace;  // "auto" or degrees
-  Convention convention = Convention::Uvtk;
-  CLI::App* app = nullptr;
-  bool cameraOwnsEye = false;  // `uvtk render`: --eye and --center belong to the camera
-  // --projector camera: --eye and --center above are its gluLookAt eye and centre; where the
-  // command's own camera has a name (`uvtk render`: all five; `uvtk report`: --up), the camera
-  // projector's option is --proj-NAME instead. The names given are kept for the messages.
+  param::Convention convention = param::Convention::Uvtk;
   std::string up, projEye, projCenter;
-  param::CameraOptionNames cameraNames;
+  CLI::App* app = nullptr;
+  // The command's names for the projector's parameters: `uvtk render` (cameraOwnsEye) calls the
+  // placement's origin --frame-center and the camera projector's --proj-eye, --proj-center, ...;
+  // where the command's camera has --up, the camera projector's is --proj-up.
+  param::ProjectorContext context;
 
-  // Checks combinations and parses vectors; throws UsageError. `--seam-place auto` is left to
-  // the caller, which has the mesh (mapByProjector in mapped_mesh.h).
-  param::ProjectorOptions resolve() const;
-  bool seamPlaceAuto() const { return seamPlace == "auto"; }
+  // The options given on the command line, typed, each at its option's name.
+  param::ParameterDictionary parameters() const;
+  // param::makeProjector of parameters(): throws UsageError.
+  param::Projector resolve() const;
 };
 
 // Default options for the projector and O-mapping of these names (as --projector and --omap take
 // them); throws UsageError for an unknown name.
 param::ProjectorOptions projectorNamed(const std::string& projector, const std::string& omap);
 
-const std::string& conventionName(Convention convention);
 
 
 

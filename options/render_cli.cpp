@@ -337,7 +337,8 @@ RenderResult renderMeshFile(RenderJob a) {
   MappedMesh mapped;
   if (projectorGiven) {
     a.projector.options.eye = (worldFromObject.inverse() * camera.eye().homogeneous()).head<3>();
-    mapped = mapByProjector(std::move(input.mesh), a.projector.resolve(), a.projector.seamPlaceAuto());
+    const param::Projector projector = a.projector.resolve();
+    mapped = mapByProjector(std::move(input.mesh), projector.options, projector.seamPlaceAuto);
   } else if (a.texgen.given()) {
     a.texgen.arithmetic = a.projector.options.arithmetic;  // render's --precision serves both
     mapped = mapByTexgen(std::move(input.mesh), a.texgen.resolve(camera.viewFromWorld, worldFromObject));

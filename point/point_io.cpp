@@ -349,7 +349,7 @@ EvalCounts evaluatePoints(const EvalJob& job, const cli::MappingArguments& mappi
   cli::ResolvedMapping resolved;
   if (eyeFromRows) {
     cli::MappingArguments placeholder = m;
-    placeholder.projector.eye = "0,0,1";
+    placeholder.projector.options.eye = Vec3(0, 0, 1);
     resolved = cli::resolveMapping(placeholder);
   } else {
     resolved = cli::resolveMapping(m);

@@ -132,6 +132,62 @@ std::string commandLine(const py::kwargs& kwargs) {
   return line;
 }
 
+// The keywords as typed parameters, each named by its keyword in messages: True and False are
+// booleans (and so are numpy's), int an integer, float a number, a str or os.PathLike a text, a
+// sequence of numbers a list of numbers, of str a list of texts, None nothing. The engine decides
+// what each parameter takes (ParameterTypeError -> TypeError naming the keyword).
+api::Parameters keywordParameters(const py::kwargs& kwargs) {
+  api::Parameters parameters;
+  parameters.face = api::Parameters::Face::Keyword;
+  for (const auto& [key, rawValue] : kwargs) {
+    const std::string keyword = key.cast<std::string>();
+    std::string name = keyword;
+    for (char& c : name) c = c == '_' ? '-' : c;
+    const py::object value = plain(rawValue);
+    api::ParameterValue typed;
+    const auto kindError = [&] {
+      return py::type_error(keyword + ": expected a bool, a number, a str or a sequence of numbers or of str, got " +
+                            py::repr(rawValue).cast<std::string>());
+    };
+    if (value.is_none()) {
+    } else if (py::isinstance<py::bool_>(value)) {
+      typed = value.cast<bool>();
+    } else if (py::isinstance<py::int_>(value)) {
+      try {
+        typed = value.cast<std::int64_t>();
+      } catch (const py::cast_error&) {
+        throw py::value_error(keyword + ": " + py::repr(value).cast<std::string>() + " is out of range");
+      }
+    } else if (py::isinstance<py::float_>(value)) {
+      typed = value.cast<double>();
+    } else if (py::isinstance<py::str>(value)) {
+      typed = value.cast<std::string>();
+    } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+      const py::sequence items = value;
+      if (items.size() > 0 && py::isinstance<py::str>(items[0])) {
+        std::vector<std::string> texts;
+        for (const py::handle item : items) {
+          if (!py::isinstance<py::str>(item)) throw kindError();
+          texts.push_back(item.cast<std::string>());
+        }
+        typed = std::move(texts);
+      } else {
+        std::vector<double> numbers;
+        for (const py::handle item : items) {
+          if (py::isinstance<py::bool_>(item) || !(py::isinstance<py::int_>(item) || py::isinstance<py::float_>(item)))
+            throw kindError();
+          numbers.push_back(item.cast<double>());
+        }
+        typed = std::move(numbers);
+      }
+    } else {
+      throw kindError();
+    }
+    parameters.values.push_back({name, std::move(typed), keyword});
+  }
+  return parameters;
+}
+
 // The options from either an options object or keywords (not both: which would win is unclear).
 template <class Options>
 Options optionsFrom(const py::object& options, const py::kwargs& kwargs) {
@@ -366,6 +422,13 @@ line, bit for bit. Options are keywords named as the command line's options (cap
 
   py::register_exception<api::InputError>(m, "InputError", PyExc_Exception)
       .doc() = "A file could not be read: 'PATH:LINE: error: ...' (the command line's exit 3).";
+  py::register_exception_translator([](std::exception_ptr error) {
+    try {
+      if (error) std::rethrow_exception(error);
+    } catch (const api::ParameterTypeError& e) {
+      PyErr_SetString(PyExc_TypeError, e.what());
+    }
+  });
   py::register_exception<api::OutputError>(m, "OutputError", PyExc_OSError)
       .doc() = "An output could not be written, and nothing was left behind: 'PATH: error: cannot write: ...'.";
 
@@ -477,6 +540,7 @@ Raises uvtk.InputError "PATH:LINE: error: ...". with_warnings=True returns (mesh
       .def_readwrite("pole", &api::MapOptions::pole)
       .def_readwrite("pole_eps", &api::MapOptions::poleEps)
       .def_readwrite("seam_place", &api::MapOptions::seamPlace)
+      .def_readwrite("seam_place_auto", &api::MapOptions::seamPlaceAuto)
       .def_readwrite("uv_scale", &api::MapOptions::uvScale)
       .def_readwrite("uv_offset", &api::MapOptions::uvOffset)
       .def_readwrite("uv_rotate", &api::MapOptions::uvRotate)
@@ -489,7 +553,8 @@ Raises uvtk.InputError "PATH:LINE: error: ...". with_warnings=True returns (mesh
       .def_readwrite("warn_on", &api::MapOptions::warnOn)
       .def_readwrite("overlap_resolution", &api::MapOptions::overlapResolution)
       .def_readwrite("texture_size", &api::MapOptions::textureSize)
-      .def_readwrite("density", &api::MapOptions::density);
+      .def_readwrite("density", &api::MapOptions::density)
+      .def_readwrite("threads", &api::MapOptions::threads);
 
   py::class_<api::TexgenOptions>(m, "TexgenOptions", "The options of `uvtk texgen` as fields; TexgenOptions.parse(command_line).")
       .def(py::init<>())
@@ -582,21 +647,27 @@ along the seam (more vertices and faces than the input).)")
   m.def(
       "map",
       [](py::object mesh, py::object options, py::kwargs kwargs) {
-        const api::MapOptions resolved = optionsFrom<api::MapOptions>(options, kwargs);
+        if (!options.is_none() && kwargs.size() > 0)
+          throw py::type_error("give the options either as an options object or as keywords, not both");
+        const api::Parameters parameters =
+            options.is_none() ? keywordParameters(kwargs) : options.cast<api::MapOptions>().parameters();
         const api::Mesh& input = meshOf(mesh);
         api::Mapping mapping;
         {
           py::gil_scoped_release release;
-          mapping = api::map(input, resolved);
+          mapping = api::map(input, parameters);
         }
         return wrap(std::move(mapping), mesh);
       },
       py::arg("mesh"), py::arg("options") = py::none(),
       R"(Maps `mesh` by a projector, as `uvtk map` does (the same numbers, bit for bit).
 
-Every option of `uvtk map` is a keyword: projector="cylinder", fit="obb", caps=True, cap_angle=30,
-center=(0, 0, 1), fail_on=["flipped_area=0.01"], ... (or options=uvtk.MapOptions(...)). Returns a
-uvtk.Mapping. Bad options raise ValueError with the command line's message.)");
+Every option of `uvtk map` but its outputs is a keyword: projector="cylinder", fit="obb",
+caps=True, cap_angle=30, center=(0, 0, 1), seam_place="auto" or 90, texture_size=(2048, 1024) or
+2048, fail_on=["flipped_area=0.01"], threads=1, ... (or options=uvtk.MapOptions(...)). Flags take
+True or False; None means "not given" only for the optional ones (center, eye, up, density);
+fit="none" asks for no fit. Returns a uvtk.Mapping. A value of the wrong kind raises TypeError, a
+wrong value or an unknown keyword ValueError, naming the keyword.)");
   m.def(
       "texgen",
       [](py::object mesh, py::object options, py::kwargs kwargs) {

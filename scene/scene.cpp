@@ -116,6 +116,28 @@ class SceneReader {
     }
   }
 
+  // The keys of `object` (but `sceneKeys`) as typed parameters: key "axis_dir" is the parameter
+  // axis-dir, named "axis_dir" in messages. The schema has checked the keys and their types.
+  param::ParameterDictionary sceneParameters(const json& object, const std::set<std::string>& sceneKeys,
+                                             const std::string& pointer) const {
+    param::ParameterDictionary parameters(param::ParameterFace::Scene);
+    for (const auto& [key, value] : object.items()) {
+      if (sceneKeys.count(key)) continue;
+      std::string name = key;
+      std::replace(name.begin(), name.end(), '_', '-');
+      param::ParameterValue typed;
+      if (value.is_boolean()) typed = value.get<bool>();
+      else if (value.is_number_integer()) typed = value.get<std::int64_t>();
+      else if (value.is_number()) typed = value.get<double>();
+      else if (value.is_string()) typed = value.get<std::string>();
+      else if (value.is_array() && !value.empty() && value[0].is_string()) typed = value.get<std::vector<std::string>>();
+      else if (value.is_array()) typed = value.get<std::vector<double>>();
+      else if (!value.is_null()) fail(pointer + "/" + key, "expected a boolean, a number, a text or a list");
+      parameters.add(name, std::move(typed), key);
+    }
+    return parameters;
+  }
+
   // Inputs may be anywhere; a NUL would make the system read the file named by the part before it.
   std::string input(const json& value, const std::string& pointer) const {
     const std::string name = value.get<std::string>();
@@ -251,11 +273,14 @@ class SceneReader {
     const std::string kind = j["kind"];
     if (kind == "projector") {
       m.kind = SceneMapping::Kind::Projector;
-      ProjectorArguments arguments;
-      addProjectorOptions(*m.parser, arguments);
-      parseOptions(*m.parser, j, {"kind", "name"}, pointer);
-      m.projector = at(pointer, [&] { return arguments.resolve(); });
-      m.seamPlaceAuto = arguments.seamPlaceAuto();
+      const param::ParameterDictionary parameters = sceneParameters(j, {"kind", "name"}, pointer);
+      const param::Projector projector = at(pointer, [&] {
+        param::Projector made = param::makeProjector(parameters);
+        parameters.checkAllRead(param::projectorParameterNames());
+        return made;
+      });
+      m.projector = projector.options;
+      m.seamPlaceAuto = projector.seamPlaceAuto;
     } else if (kind == "texgen") {
       m.kind = SceneMapping::Kind::Texgen;
       addTexgenOptions(*m.parser, m.texgen, "--texgen");

@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "core/progress.h"
 #include "inspect/map_job.h"
+#include "inspect/map_parameters.h"
 #include "io/mesh_format.h"
 #include "io/mesh_writer.h"
 #include "options/cli_values.h"
@@ -38,20 +39,23 @@ struct MapArguments {
 void runMap(const MapArguments& a) {
   if (a.quiet) setProgressEnabled(false), setQuiet(true);
   if (a.input.empty() == a.list.empty()) throw UsageError("expected a mesh, a folder of meshes or --list FILE");
+  // The projector's options and the judgement's, typed by CLI11, read by the engine as every face's.
+  param::ParameterDictionary parameters = a.projector.parameters();
+  const auto given = [&](const char* name) { return a.projector.app->get_option(name)->count() > 0; };
+  if (given("--fail-on")) parameters.add("fail-on", a.verdict.failOn);
+  if (given("--warn-on")) parameters.add("warn-on", a.verdict.warnOn);
+  if (given("--overlap-resolution")) parameters.add("overlap-resolution", std::int64_t(a.overlapResolution));
+  if (given("--texture-size")) {
+    const analysis::TextureSize size = parseTextureSize(a.textureSize, "--texture-size");
+    parameters.add("texture-size", std::vector<double>{double(size.width), double(size.height)});
+  }
+  if (a.density) parameters.add("density", *a.density);
+  if (given("--threads")) parameters.add("threads", std::int64_t(a.threads));
   inspect::MapJob job;
-  job.projector = a.projector.resolve();
+  job.settings = inspect::readMapSettings(parameters);
   a.verdict.check();
-  if (a.overlapResolution < 1 || a.overlapResolution > 16384)
-    throw UsageError("--overlap-resolution: expected 1 to 16384 pixels");
-  job.seamPlaceAuto = a.projector.seamPlaceAuto();
   job.write = a.write;
   job.batchFormat = a.batchFormat;
-  job.thresholds = a.verdict.thresholds();
-  job.overlapResolution = a.overlapResolution;
-  job.textureSize = parseTextureSize(a.textureSize, "--texture-size");
-  if (a.density) checkDensity(*a.density);
-  job.density = a.density;
-  job.threads = a.threads;
   std::error_code ignored;
   if (!a.list.empty() || std::filesystem::is_directory(a.input, ignored)) {
     io::checkMeshOutput(std::string("STEM") + io::extensionOf(a.batchFormat), a.write, "--format");

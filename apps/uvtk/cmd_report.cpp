@@ -35,7 +35,7 @@ void runReport(const ReportCommandArguments& a) {
   a.report.check();
   a.verdict.check();
   const bool projectorGiven = given(a.projector.app, "--projector");
-  const param::ProjectorOptions projectorOptions = a.projector.resolve();
+  const param::Projector projector = a.projector.resolve();
 
   StageClock clock("uvtk report");
   clock.start("reading", a.input);
@@ -46,7 +46,7 @@ void runReport(const ReportCommandArguments& a) {
 
   clock.start("texture coordinates", std::to_string(input.mesh.faceCount()) + " faces");
   const MappedMesh mapped = projectorGiven
-                                ? mapByProjector(std::move(input.mesh), projectorOptions, a.projector.seamPlaceAuto())
+                                ? mapByProjector(std::move(input.mesh), projector.options, projector.seamPlaceAuto)
                                 : withFileUvs(std::move(input.mesh), a.input);
   const double mapMs = clock.stop();
 
@@ -58,7 +58,7 @@ void runReport(const ReportCommandArguments& a) {
   clock.start("writing", a.report.html.empty() ? a.report.json : a.report.html);
   inspect::ReportOptions reportOptions = a.report.options();
   // A triplanar page shows its blend too, unless --views says what to show.
-  if (projectorGiven && projectorOptions.surface == param::SurfaceKind::Triplanar && !reportOptions.html.empty() &&
+  if (projectorGiven && projector.options.surface == param::SurfaceKind::Triplanar && !reportOptions.html.empty() &&
       !given(a.projector.app, "--views"))
     reportOptions.views.insert(reportOptions.views.end(), {views::View::Weights, views::View::BlendZone});
   std::optional<analysis::Judgement> withLine;  // with the mip line's rule when the page draws it

@@ -20,7 +20,7 @@ namespace {
 
 // "; did you mean 'NAME'?" for the nearest of `names` to `typed`, or "".
 std::string didYouMean(const std::string& typed, const std::vector<std::string>& names) {
-  const std::string nearest = uvtk::cli::nearestName(typed, names);
+  const std::string nearest = uvtk::nearestName(typed, names);
   return nearest.empty() ? "" : "; did you mean '" + nearest + "'?";
 }
 
@@ -46,7 +46,7 @@ std::string unplacedArgument(const CLI::App& app) {
     const auto bare = [](const std::string& name) { return name.substr(std::min(name.find_first_not_of('-'), name.size())); };
     std::vector<std::string> bareNames;
     for (const std::string& name : names) bareNames.push_back(bare(name));
-    const std::string nearest = uvtk::cli::nearestName(bare(typed), bareNames);
+    const std::string nearest = uvtk::nearestName(bare(typed), bareNames);
     std::string hint;
     for (std::size_t i = 0; i < names.size() && !nearest.empty() && hint.empty(); ++i)
       if (bareNames[i] == nearest) hint = "; did you mean '" + names[i] + "'?";

@@ -140,18 +140,18 @@ TEST_F(CliManners, AChoiceSetsTheValueItNamesInAnyCase) {
 
 TEST_F(CliManners, NearestNameIsCloseOrNothing) {
   const std::vector<std::string> projectors = {"plane", "two-plane", "cylinder", "sphere", "cube"};
-  EXPECT_EQ(cli::nearestName("sphera", projectors), "sphere");  // a substitution
-  EXPECT_EQ(cli::nearestName("SPHERE", projectors), "sphere");  // case only
-  EXPECT_EQ(cli::nearestName("two-plnae", projectors), "two-plane");  // neighbours swapped: one edit
-  EXPECT_EQ(cli::nearestName("cyl", projectors), "cylinder");         // the only name it begins
-  EXPECT_EQ(cli::nearestName("cub", projectors), "cube");             // one insertion
-  EXPECT_EQ(cli::nearestName("torus", projectors), "");
-  EXPECT_EQ(cli::nearestName("x", {"q", "o"}), "");  // one letter for one: not close
-  EXPECT_EQ(cli::nearestName("pla", {"plane", "planar"}), "");  // begins two: which?
-  EXPECT_EQ(cli::nearestName("", projectors), "");
+  EXPECT_EQ(uvtk::nearestName("sphera", projectors), "sphere");  // a substitution
+  EXPECT_EQ(uvtk::nearestName("SPHERE", projectors), "sphere");  // case only
+  EXPECT_EQ(uvtk::nearestName("two-plnae", projectors), "two-plane");  // neighbours swapped: one edit
+  EXPECT_EQ(uvtk::nearestName("cyl", projectors), "cylinder");         // the only name it begins
+  EXPECT_EQ(uvtk::nearestName("cub", projectors), "cube");             // one insertion
+  EXPECT_EQ(uvtk::nearestName("torus", projectors), "");
+  EXPECT_EQ(uvtk::nearestName("x", {"q", "o"}), "");  // one letter for one: not close
+  EXPECT_EQ(uvtk::nearestName("pla", {"plane", "planar"}), "");  // begins two: which?
+  EXPECT_EQ(uvtk::nearestName("", projectors), "");
   // A third of the longer name: 2 edits in 6 letters are close, 3 are not.
-  EXPECT_EQ(cli::nearestName("spxxre", {"sphere"}), "sphere");
-  EXPECT_EQ(cli::nearestName("sxxxre", {"sphere"}), "");
+  EXPECT_EQ(uvtk::nearestName("spxxre", {"sphere"}), "sphere");
+  EXPECT_EQ(uvtk::nearestName("sxxxre", {"sphere"}), "");
 }
 
 TEST_F(CliManners, NameCheckAcceptsExactlyTheNames) {

@@ -51,7 +51,7 @@ std::string messageOf(Work&& work) {
 TEST(MapOptions, DefaultsAreTheCommandLinesAndSayNothing) {
   const MapOptions defaults;
   EXPECT_EQ(defaults.projector, "sphere");
-  EXPECT_EQ(defaults.fit, "bbox");
+  EXPECT_FALSE(defaults.fit.has_value());  // the projector's own: bbox, triplanar none
   EXPECT_EQ(defaults.seam, "shift");
   EXPECT_EQ(defaults.commandLine(), "");
   const MapOptions parsed = MapOptions::parse("");
@@ -71,7 +71,8 @@ TEST(MapOptions, ParseFillsTheFieldsAndCommandLineGivesThemBack) {
   EXPECT_EQ(*o.center, (Vector3{1, 2, 3}));
   EXPECT_EQ(o.failOn, (std::vector<std::string>{"overlap=0.5", "stretch_p99=4"}));
   EXPECT_EQ(o.seam, "cut");
-  EXPECT_EQ(o.seamPlace, "auto");
+  EXPECT_TRUE(o.seamPlaceAuto);
+  EXPECT_FALSE(o.seamPlace.has_value());
   EXPECT_TRUE(o.flipV);
   EXPECT_FALSE(o.flipU);
   EXPECT_EQ(o.commandLine(),
@@ -135,6 +136,29 @@ TEST(Map, TriplanarAndTheCameraAreFieldsLikeEveryOtherOption) {
   EXPECT_EQ(map(triangle(), camera).uv[1], (Vector2{0.6, 0.5}));
 }
 
+TEST(MapOptions, TheOverlapResolutionTakesWhatTheCommandLineTakes) {
+  MapOptions o;
+  o.projector = "plane";
+  o.overlapResolution = 8;  // refused (16 to 8192) when the library parsed a command line of its own
+  EXPECT_NE(map(triangle(), o).summaryJson.find("\"resolution\":8}"), std::string::npos);
+  o.overlapResolution = 16385;
+  EXPECT_EQ(messageOf([&] { map(triangle(), o); }), "overlapResolution: expected 1 to 16384, got 16385");
+  EXPECT_EQ(messageOf([] { MapOptions::parse("--overlap-resolution 0"); }),
+            "--overlap-resolution: expected 1 to 16384, got 0");
+}
+
+TEST(Map, TypedParametersAreCheckedWhereTheyCameFrom) {
+  Parameters p;
+  p.face = Parameters::Face::Keyword;
+  p.values = {{"projector", std::string("cylinder"), "projector"}, {"caps", std::int64_t(2), "caps"}};
+  EXPECT_THROW(map(triangle(), p), ParameterTypeError);
+  EXPECT_EQ(messageOf([&] { map(triangle(), p); }), "caps: expected True or False, got 2");
+  p.values[1].value = std::int64_t(0);  // Python's 0 is False
+  EXPECT_EQ(map(triangle(), p).uv, map(triangle(), MapOptions::parse("--projector cylinder")).uv);
+  p.values.push_back({"thread", std::int64_t(1), "thread"});
+  EXPECT_EQ(messageOf([&] { map(triangle(), p); }), "thread: not a parameter here; did you mean threads?");
+}
+
 TEST(Map, DensityScalesTheUvsToTexelsPerUnitOfTheTextureSize) {
   // The plane in object coordinates maps the triangle isometrically: sqrt(Auv W H / A3) = W = 1024.
   MapOptions o;
@@ -143,13 +167,15 @@ TEST(Map, DensityScalesTheUvsToTexelsPerUnitOfTheTextureSize) {
   o.density = 256;
   EXPECT_EQ(o.commandLine(), "--projector plane --fit none --density 256");
   EXPECT_EQ(map(triangle(), o).uv, (std::vector<Vector2>{{0, 0}, {0.5, 0}, {0, 0.75}}));  // a quarter
-  o.textureSize = "256";  // already 256 texels per unit of a 256 x 256 texture
+  o.textureSize = {256, 256};  // already 256 texels per unit of a 256 x 256 texture
   EXPECT_EQ(map(triangle(), o).uv, (std::vector<Vector2>{{0, 0}, {2, 0}, {0, 3}}));
-  o.density = -1;
-  EXPECT_NE(messageOf([&] { map(triangle(), o); }).find("--density"), std::string::npos);
-  o.density = 0;
-  o.textureSize = "0,5";
-  EXPECT_NE(messageOf([&] { map(triangle(), o); }).find("--texture-size"), std::string::npos);
+  o.density = -1;  // messages name the struct's fields
+  EXPECT_EQ(messageOf([&] { map(triangle(), o); }),
+            "density: expected a positive number of texels per object unit, found -1");
+  o.density.reset();
+  o.textureSize = {0, 5};
+  EXPECT_EQ(messageOf([&] { map(triangle(), o); }),
+            "textureSize: expected W,H or N (N,N) texels with 1 <= W, H <= 16384");
 }
 
 TEST(Map, TheSphereOnAnOctahedronGivesTheAzimuthsAndMarksThePoles) {

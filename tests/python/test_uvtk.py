@@ -322,7 +322,7 @@ def test_triplanar_the_camera_and_density_are_keywords():
     m = uvtk.map(mesh, options)
     np.testing.assert_allclose(m.uv, (0.5 + positions[:, :2] * 3 / 10)[triangles], rtol=0, atol=1e-15)
     # Texel density: the plane maps the square isometrically (1024 texels per unit); 512 halves the UVs.
-    m = uvtk.map(mesh, projector="plane", fit="none", density=512, texture_size="1024,1024")
+    m = uvtk.map(mesh, projector="plane", fit="none", density=512, texture_size=(1024, 1024))
     np.testing.assert_array_equal(m.uv, (positions[:, :2] * 1.5)[triangles])
 
 
@@ -333,9 +333,9 @@ def test_keywords_reach_every_option():
     reason = m.verdict["reasons"][0]
     assert (reason["rule"], reason["severity"], reason["threshold"]) == ("pole_area", "fail", 0.5)
     assert reason["value"] > 0.5 and reason["faces"] == 8 and reason["text"].startswith("pole_area")
-    # a negative vector, a float, a flag, None (omitted) and numpy values
-    shifted = uvtk.map(mesh, projector="sphere", fit=None, center=np.array([-0.0, 0.0, -0.0]), scale=np.float64(1.0),
-                       flip_v=True, seam="none", pole="none")
+    # a negative vector, a float, a flag, None (not given, where that is allowed) and numpy values
+    shifted = uvtk.map(mesh, projector="sphere", center=np.array([-0.0, 0.0, -0.0]), scale=np.float64(1.0),
+                       flip_v=np.True_, seam="none", pole="none", density=None)
     plain = uvtk.map(mesh, projector="sphere", fit="none", seam="none", pole="none")
     np.testing.assert_array_equal(shifted.uv[..., 1], 1 - plain.uv[..., 1])
     np.testing.assert_array_equal(shifted.uv[..., 0], plain.uv[..., 0])
@@ -361,13 +361,15 @@ def test_bad_options_are_value_errors_with_the_programs_message(tmp_path, cli):
     mesh = uvtk.read_mesh(path)
     with pytest.raises(ValueError) as error:
         uvtk.map(mesh, projector="bogus")
-    message = str(error.value)
-    assert "--projector" in message and "bogus" in message
+    message = str(error.value)  # the program's words, naming the keyword rather than the option
+    assert message.startswith("projector: 'bogus' is not one of: plane, ")
     run = cli("map", path, "-o", tmp_path / "out.obj", "--projector", "bogus")
-    assert run.returncode == 2 and message in run.stderr
-    with pytest.raises(ValueError, match="no-such-option"):
+    assert run.returncode == 2 and "--" + message in run.stderr
+    with pytest.raises(ValueError, match="^no_such_option: not a parameter here"):
         uvtk.map(mesh, no_such_option=1)
-    with pytest.raises(ValueError, match="cap-angle"):
+    with pytest.raises(ValueError, match="cap_angel: not a parameter here; did you mean cap_angle[?]"):
+        uvtk.map(mesh, projector="cylinder", cap_angel=30)
+    with pytest.raises(TypeError, match="^cap_angle: expected a number, got 'steep'"):
         uvtk.map(mesh, projector="cylinder", caps=True, cap_angle="steep")
     with pytest.raises(ValueError):
         uvtk.MapOptions.parse("--seam sideways")
@@ -779,3 +781,30 @@ def test_compare_ranks_the_projectors():
     result = uvtk.compare(uvtk.Mesh(*uv_sphere()), no_baselines=True, top=3)
     assert set(result) == {"json", "table", "best"}
     assert result["best"] and result["best"] in result["table"] and isinstance(result["json"], dict)
+
+
+def test_keywords_are_typed_as_python_users_expect():
+    # Each of these behaved otherwise when the keywords became a command line: caps=0 turned the
+    # caps on, fit=None was the default fit, threads was refused, and the library took
+    # overlap_resolution from 16 to 8192 where the command line takes 1 to 16384.
+    mesh = uvtk.Mesh(*torus())
+    off = uvtk.map(mesh, projector="cylinder")
+    on = uvtk.map(mesh, projector="cylinder", caps=True)
+    assert not np.array_equal(on.uv, off.uv)
+    np.testing.assert_array_equal(uvtk.map(mesh, projector="cylinder", caps=0).uv, off.uv)
+    np.testing.assert_array_equal(uvtk.map(mesh, projector="cylinder", caps=1).uv, on.uv)
+    np.testing.assert_array_equal(uvtk.map(mesh, projector="cylinder", caps=np.bool_(True)).uv, on.uv)
+    for wrong in ("no", "false", 2, 0.0):
+        with pytest.raises(TypeError, match="^caps: expected True or False, got "):
+            uvtk.map(mesh, projector="cylinder", caps=wrong)
+    with pytest.raises(TypeError, match="^fit: expected one of 'none', 'bbox', 'center', 'pca', 'obb', got None"):
+        uvtk.map(mesh, fit=None)
+    np.testing.assert_array_equal(uvtk.map(mesh, threads=1).uv, uvtk.map(mesh).uv)
+    coarse = uvtk.map(mesh, overlap_resolution=8)
+    assert coarse.summary["judgement"]["overlap"]["resolution"] == 8
+    with pytest.raises(ValueError, match="^overlap_resolution: expected 1 to 16384, got 16385"):
+        uvtk.map(mesh, overlap_resolution=16385)
+    with pytest.raises(ValueError, match="^seam_place: only the wrapping projectors"):
+        uvtk.map(mesh, projector="plane", seam_place=90)
+    np.testing.assert_array_equal(uvtk.map(mesh, texture_size=512).summary["judgement"]["texel_density"]["texture_size"],
+                                  [512, 512])

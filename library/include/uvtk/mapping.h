@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "uvtk/export.h"
@@ -16,12 +17,31 @@
 
 namespace uvtk::api {
 
+// One parameter of a mapping as a face gives it: its name as `uvtk map` spells the option without
+// the dashes ("cap-angle"), its typed value, and where it came from for messages ("": the face's
+// spelling of the name, capAngle for the library, cap_angle for a Python keyword). Nothing
+// (std::monostate) is Python's None: "not given" where a parameter is optional, else a
+// ParameterTypeError. A choice is its name ("cylinder").
+using ParameterValue =
+    std::variant<std::monostate, bool, std::int64_t, double, std::vector<double>, std::string, std::vector<std::string>>;
+struct Parameter {
+  std::string name;
+  ParameterValue value;
+  std::string place;
+};
+struct Parameters {
+  // Who gave them, which decides how a message names a parameter: capAngle (the library's
+  // fields), cap_angle (a Python keyword), --cap-angle (a command line, as MapOptions::parse reads it).
+  enum class Face { Library, Keyword, CommandLine } face = Face::Library;
+  std::vector<Parameter> values;
+};
+
 // The options of `uvtk map` (docs/conventions.md): each field is the option of that name, with
 // its default; a choice is spelled as on the command line.
 struct MapOptions {
   std::string projector = "sphere";  // --projector: plane, two-plane, cylinder, sphere, cube, camera, triplanar
   std::string omap = "isn";          // --omap: isn, centroid, normal, reflection
-  std::string fit = "bbox";          // --fit: none, bbox, center, pca, obb
+  std::optional<std::string> fit;    // --fit: none, bbox, center, pca, obb (unset: bbox; triplanar none)
   std::string axis = "z";            // --axis: x, y, z, the object axis that becomes local z (bbox fit)
   std::optional<Vector3> center;     // --center: an explicit placement's origin (replaces the fit)
   Vector3 axisDir{0, 0, 1};          // --axis-dir: the explicit placement's local z
@@ -45,7 +65,8 @@ struct MapOptions {
   std::string seam = "shift";        // --seam: none, shift (u in [0, 1.5)), cut (u in [0, 1])
   std::string pole = "fan";          // --pole: none (u = 0), fan (mean u of the face's other corners)
   double poleEps = 1e-6;             // --pole-eps: a pole is hypot(x, y) <= eps |q|
-  std::string seamPlace;             // --seam-place: "" (none), degrees, or "auto"
+  std::optional<double> seamPlace;   // --seam-place DEGREES: the seam turned to this azimuth
+  bool seamPlaceAuto = false;        // --seam-place auto: where it crosses the fewest faces
   Vector2 uvScale{1, 1};             // --uv-scale: the UV transform's scale
   Vector2 uvOffset{0, 0};            // --uv-offset: its offset
   double uvRotate = 0.0;             // --uv-rotate: its turn in degrees about (0.5, 0.5)
@@ -56,14 +77,17 @@ struct MapOptions {
   std::vector<std::string> failOn;   // --fail-on: RULE=VALUE thresholds of the verdict (docs/conventions.md §11)
   std::vector<std::string> warnOn;   // --warn-on: RULE=VALUE
   int overlapResolution = 1024;      // --overlap-resolution: pixels across the overlap raster
-  std::string textureSize = "1024,1024";  // --texture-size: texels W,H (or N) texel density counts in
-  double density = 0.0;              // --density: scale the UVs to this mean texel density (0: leave them)
+  std::array<int, 2> textureSize{1024, 1024};  // --texture-size: texels W, H that texel density counts in
+  std::optional<double> density;     // --density: scale the UVs to this mean texel density (unset: leave them)
+  int threads = 0;                   // --threads: 0 is one per hardware thread
 
   // The options from `uvtk map`'s syntax, e.g. "--projector cylinder --fit obb --caps". Throws
   // std::invalid_argument with the command line's message.
   UVTK_API static MapOptions parse(const std::string& commandLine);
   // The options as `uvtk map` takes them (the ones that differ from the defaults).
   UVTK_API std::string commandLine() const;
+  // The options that differ from the defaults, as typed parameters (no text).
+  UVTK_API Parameters parameters() const;
 };
 
 // The options of `uvtk texgen`: OpenGL's glTexGen for s, t, r and q under a gluLookAt view.
@@ -137,6 +161,9 @@ struct Mapping {
 
 // `mesh` mapped by a projector, as `uvtk map` maps it (the same numbers, bit for bit).
 UVTK_API Mapping map(const Mesh& mesh, const MapOptions& options = {});
+// The same from typed parameters (Python's keywords): every name `uvtk map` takes but its outputs;
+// a name it does not take is std::invalid_argument with the nearest one.
+UVTK_API Mapping map(const Mesh& mesh, const Parameters& parameters);
 // `mesh` with OpenGL texgen's (s, t, r, q), as `uvtk texgen` computes them.
 UVTK_API Mapping texgen(const Mesh& mesh, const TexgenOptions& options);
 // The mesh's own texture coordinates, judged. Throws std::invalid_argument when it has none.

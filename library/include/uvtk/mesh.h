@@ -31,6 +31,14 @@ class UVTK_API OutputError : public std::runtime_error {
   ~OutputError() override;
 };
 
+// A parameter of the wrong kind (a number where true or false belongs, None where a choice
+// belongs): Python's TypeError. Other refused values are std::invalid_argument, which it derives from.
+class UVTK_API ParameterTypeError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+  ~ParameterTypeError() override;
+};
+
 struct Mesh {
   std::vector<Vector3> positions;   // object space
   std::vector<Triangle> triangles;  // indices into positions; polygons arrive triangulated

@@ -1,0 +1,55 @@
+#include "inspect/map_parameters.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace uvtk::inspect {
+
+namespace {
+
+analysis::TextureSize textureSizeOf(const param::ParameterDictionary& p) {
+  analysis::TextureSize size;
+  if (!p.given("texture-size")) return size;
+  const std::string range = ": expected W,H or N (N,N) texels with 1 <= W, H <= 16384";
+  if (p.givenAsNumbers("texture-size")) {
+    const Eigen::Vector2d wh = *p.getVector<2>("texture-size");
+    if (wh != wh.array().floor().matrix() || wh.minCoeff() < 1 || wh.maxCoeff() > 16384)
+      throw UsageError(p.spelled("texture-size") + range);
+    size.width = int(wh.x()), size.height = int(wh.y());
+  } else {
+    size.width = size.height = p.getInteger("texture-size", 1024, 1, 16384);
+  }
+  return size;
+}
+
+}  // namespace
+
+MapSettings readMapSettings(const param::ParameterDictionary& p) {
+  MapSettings s;
+  s.projector = param::makeProjector(p);
+  for (const std::string& entry : p.getTexts("fail-on"))
+    if (!analysis::parseVerdict(entry)) s.thresholds.set(entry, analysis::Verdict::Fail, p.spelled("fail-on"));
+  for (const std::string& entry : p.getTexts("warn-on"))
+    s.thresholds.set(entry, analysis::Verdict::Warn, p.spelled("warn-on"));
+  s.overlapResolution = p.getInteger("overlap-resolution", 1024, 1, 16384);
+  s.textureSize = textureSizeOf(p);
+  if (p.given("density")) {
+    const double density = p.getNumber("density", 0.0);
+    if (!(density > 0.0 && std::isfinite(density))) {
+      char found[32];
+      std::snprintf(found, sizeof found, "%g", density);
+      throw UsageError(p.spelled("density") + ": expected a positive number of texels per object unit, found " + found);
+    }
+    s.density = density;
+  }
+  s.threads = p.getInteger("threads", 0, 0, 1024);
+  return s;
+}
+
+std::vector<std::string> mapParameterNames() {
+  std::vector<std::string> names = param::projectorParameterNames();
+  names.insert(names.end(), {"fail-on", "warn-on", "overlap-resolution", "texture-size", "density", "threads"});
+  return names;
+}
+
+}  // namespace uvtk::inspect

@@ -1,0 +1,30 @@
+// `uvtk map`'s parameters beyond its projector (the verdict's thresholds, the overlap raster, the
+// texture size, the texel density, the threads), read from the same typed dictionary by every
+// face: the command line, the library's MapOptions and Python's keywords.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/judgement.h"
+#include "param/make_projector.h"
+
+namespace uvtk::inspect {
+
+struct MapSettings {
+  param::Projector projector;
+  analysis::Thresholds thresholds;        // fail-on, warn-on (RULE=VALUE; "warn" and "fail" are the command's)
+  int overlapResolution = 1024;           // 1 to 16384 pixels
+  analysis::TextureSize textureSize;      // W,H (or N: N,N) texels, 1 to 16384 each
+  std::optional<double> density;          // positive and finite
+  int threads = 0;                        // 0 to 1024; 0: one per hardware thread
+};
+
+// Throws UsageError (ParameterTypeError for a value of the wrong kind) naming the parameter.
+MapSettings readMapSettings(const param::ParameterDictionary& parameters);
+
+// Every name readMapSettings reads, for ParameterDictionary::checkAllRead.
+std::vector<std::string> mapParameterNames();
+
+}  // namespace uvtk::inspect

@@ -1,0 +1,31 @@
+#include "param/projector_names.h"
+
+namespace uvtk::param {
+
+const ChoiceNames<SurfaceKind> kSurfaceNames = {{"plane", SurfaceKind::Plane},   {"two-plane", SurfaceKind::TwoPlane},
+                                                {"cylinder", SurfaceKind::Cylinder}, {"sphere", SurfaceKind::Sphere},
+                                                {"cube", SurfaceKind::Cube},     {"camera", SurfaceKind::Camera},
+                                                {"triplanar", SurfaceKind::Triplanar}};
+const ChoiceNames<TriplanarPreset> kTriplanarPresetNames = {
+    {"unity", TriplanarPreset::Unity}, {"materialx", TriplanarPreset::MaterialX}, {"godot", TriplanarPreset::Godot}};
+const ChoiceNames<RayKind> kRayNames = {{"isn", RayKind::SurfaceNormal},
+                                        {"centroid", RayKind::Centroid},
+                                        {"normal", RayKind::ObjectNormal},
+                                        {"reflection", RayKind::Reflection}};
+const ChoiceNames<Fit> kFitNames = {
+    {"none", Fit::None}, {"bbox", Fit::BBox}, {"center", Fit::Center}, {"pca", Fit::Pca}, {"obb", Fit::Obb}};
+const ChoiceNames<int> kAxisNames = {{"x", 0}, {"y", 1}, {"z", 2}};
+const ChoiceNames<SpherePreset> kSpherePresetNames = {
+    {"default", SpherePreset::Default}, {"glu", SpherePreset::Glu}, {"seed004", SpherePreset::Seed004}};
+const ChoiceNames<CubeConvention> kCubeConventionNames = {{"gl", CubeConvention::Gl}, {"direct", CubeConvention::Direct}};
+const ChoiceNames<CubeLayout> kCubeLayoutNames = {
+    {"faces", CubeLayout::Faces}, {"cross", CubeLayout::Cross}, {"strip", CubeLayout::Strip}, {"3x2", CubeLayout::ThreeByTwo}};
+const ChoiceNames<SeamMode> kSeamNames = {{"none", SeamMode::None}, {"shift", SeamMode::Shift}, {"cut", SeamMode::Cut}};
+const ChoiceNames<PoleMode> kPoleNames = {{"none", PoleMode::None}, {"fan", PoleMode::Fan}};
+const ChoiceNames<Precision> kPrecisionNames = {{"double", Precision::Double}, {"float", Precision::Float}};
+const ChoiceNames<MathMode> kMathNames = {
+    {"exact", MathMode::Exact}, {"fast", MathMode::Fast}, {"fast-u10", MathMode::FastU10}};
+const ChoiceNames<Convention> kConventionNames = {
+    {"uvtk", Convention::Uvtk}, {"blender", Convention::Blender}, {"assimp", Convention::Assimp}, {"notes", Convention::Notes}};
+
+}  // namespace uvtk::param
