@@ -94,7 +94,7 @@ std::vector<nlohmann::json> benchMapping(const BenchOptions& a, const Mesh& mesh
   });
   const std::vector<Vec3> normals = readsNormals ? areaWeightedVertexNormals(mesh) : std::vector<Vec3>();
   for (const auto& [projector, base] : a.projectors) {
-    UVTK_CHECK(base.surface != param::SurfaceKind::Cube);  // it chooses its face per triangle
+    UVTK_CHECK(!param::traitsOf(base.surface).choosesPerTriangle);
     const Affine3 frame = param::fitPlacement(mesh.positions, base.surface, base.placement);
     // The kernel's input, in the local frame once per precision (as a caller mapping many times keeps it).
     auto doublePoints = std::make_shared<param::LocalPoints<double>>();
@@ -104,7 +104,7 @@ std::vector<nlohmann::json> benchMapping(const BenchOptions& a, const Mesh& mesh
     if (!quiet()) std::fprintf(stderr, "uvtk bench: %s: the long-double reference ...\n", projector.c_str());
     std::vector<param::ReferenceUv> reference;
     param::mapVerticesReference(base, frame, mesh.positions, normals, reference);
-    const bool wraps = base.surface == param::SurfaceKind::Cylinder || base.surface == param::SurfaceKind::Sphere;
+    const bool wraps = param::traitsOf(base.surface).wraps;
     for (Precision precision : precisions)
       for (MathMode math : maths) {
         if (!wraps && math != maths.front()) continue;  // no arctangent: the math mode changes nothing
@@ -566,9 +566,9 @@ BenchOptions BenchArguments::resolve() const {
   cli::projectorNamed("plane", omap);  // a bad --omap is named before a bad projector
   for (const std::string& projector : cli::splitList(projectors)) {
     o.projectors.push_back({projector, cli::projectorNamed(projector, omap)});
-    if (o.projectors.back().options.surface == param::SurfaceKind::Cube)
-      throw UsageError(
-          "--projector cube: the cube chooses its face per triangle; `uvtk bench` times per-vertex mappings");
+    if (param::traitsOf(o.projectors.back().options.surface).choosesPerTriangle)
+      throw UsageError("--projector " + projector +
+                       ": it chooses a projection per triangle; `uvtk bench` times per-vertex mappings");
   }
   if (render) {
     o.samples = parseCounts(samples, "--spp", 1, 256);

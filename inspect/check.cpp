@@ -86,7 +86,7 @@ Reference byMapping(const Mesh& mesh, const CheckOptions& mapping, const std::st
   printMappingNotes(inputPath, MeshWarnings{}, mapped);
   r.uv = std::move(mapped.uv);
   r.poleVertices = mapped.projection->summary.poleVertexList;
-  const bool wraps = o.surface == param::SurfaceKind::Sphere || o.surface == param::SurfaceKind::Cylinder;
+  const bool wraps = param::traitsOf(o.surface).wraps;
   if (wraps) r.period = o.uvTransform.apply(Vec2(1, 0)) - o.uvTransform.apply(Vec2(0, 0));
   r.noValue = "the mapping has no value (the ray misses the surface, or the result is not finite)";
   r.record = {{"source", "projector"}, {"options", cli::projectorOptionsJson(o)}};

@@ -65,11 +65,6 @@ bool ranksBefore(const RankedMapping& x, const RankedMapping& y) {
 // do not overlap in UV.
 std::vector<std::pair<std::string, param::ProjectorOptions>> configurations(const Mesh& mesh) {
   using namespace param;
-  const std::pair<const char*, SurfaceKind> surfaces[] = {{"plane", SurfaceKind::Plane},
-                                                          {"two-plane", SurfaceKind::TwoPlane},
-                                                          {"cylinder", SurfaceKind::Cylinder},
-                                                          {"sphere", SurfaceKind::Sphere},
-                                                          {"cube", SurfaceKind::Cube}};
   const std::pair<const char*, RayKind> rays[] = {
       {"isn", RayKind::SurfaceNormal}, {"centroid", RayKind::Centroid}, {"normal", RayKind::ObjectNormal}};
   const auto fitted = [&mesh](Fit fit, int axis) {
@@ -87,18 +82,21 @@ std::vector<std::pair<std::string, param::ProjectorOptions>> configurations(cons
                                                            {"pca", fitted(Fit::Pca, 2)},
                                                            {"obb", fitted(Fit::Obb, 2)}};
   std::vector<std::pair<std::string, ProjectorOptions>> out;
-  for (const auto& [surfaceName, surface] : surfaces)
+  for (const SurfaceKind surface : kSurfaces) {
+    const SurfaceTraits& traits = traitsOf(surface);
+    if (traits.isPerspective || traits.blendsProjections) continue;  // a view's and the engines' blend, not a layout
     for (const auto& [rayName, ray] : rays)
       for (const auto& [fitName, fit] : fits) {
-        if (surface == SurfaceKind::TwoPlane && fitName != std::string("bbox-z")) continue;
+        if (!traits.fitsToMesh && fitName != std::string("bbox-z")) continue;
         ProjectorOptions o;
         o.surface = surface;
         o.ray = ray;
         o.placement = fit;
         o.cubeLayout = CubeLayout::Cross;
-        const std::string fitLabel = surface == SurfaceKind::TwoPlane ? "object" : fitName;
-        out.emplace_back(std::string(surfaceName) + "/" + rayName + "/" + fitLabel, o);
+        const std::string fitLabel = traits.fitsToMesh ? fitName : "object";
+        out.emplace_back(std::string(traits.name) + "/" + rayName + "/" + fitLabel, o);
       }
+  }
   return out;
 }
 
@@ -205,7 +203,7 @@ Comparison rankMappings(const CompareOptions& a, const Mesh& mesh, const nlohman
   for (std::size_t i = 0; i < all.size(); ++i) {
     const auto& [name, options] = all[i];
     clock.start("mapping", name + " (" + std::to_string(i + 1) + "/" + std::to_string(all.size()) + ")");
-    const bool wraps = options.surface == param::SurfaceKind::Cylinder || options.surface == param::SurfaceKind::Sphere;
+    const bool wraps = param::traitsOf(options.surface).wraps;
     try {
       ranked.push_back(measure(name, mapByProjector(mesh, options, a.seamPlaceAuto && wraps), a));
     } catch (const UsageError& e) {

@@ -149,7 +149,7 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
                          (far ? "; --uv-scale, --uv-offset or --fit bring it near [0, 1]"
                               : ": faces finer than float32's steps (2^-24 near 1)"));
   }
-  if (job.settings.projector.options.surface == param::SurfaceKind::Triplanar && !quiet()) {
+  if (param::traitsOf(job.settings.projector.options.surface).blendsProjections && !quiet()) {
     char note[256];
     std::snprintf(note, sizeof note,
                   "uvtk map: %s holds one UV per corner, not a triplanar blend: each face has its dominant axis's "

@@ -14,9 +14,9 @@ namespace uvtk::inspect {
 
 analysis::DistortionOptions MappedMesh::distortionOptions() const {
   analysis::DistortionOptions options;
-  if (projector && projector->surface == param::SurfaceKind::Plane)
+  if (projector && param::traitsOf(projector->surface).projectsAlongAxis)
     options.projectionDirection = projection->localFromObject.inverse().linear().col(2);
-  if (projector && projector->surface == param::SurfaceKind::Triplanar) {
+  if (projector && param::traitsOf(projector->surface).blendsProjections) {
     // A local direction d is the object-space normal L^T d (normals transform by the inverse transpose).
     const Mat3 toObject = projection->localFromObject.linear().transpose();
     std::array<Vec3, 3> facing;
@@ -67,7 +67,7 @@ render::TexcoordSource MappedMesh::texcoordSource(bool perPixel, bool baked) con
 }
 
 bool writesCubeFaceIds(const param::ProjectorOptions& options) {
-  return options.surface == param::SurfaceKind::Cube && options.cubeLayout == CubeLayout::Faces;
+  return param::traitsOf(options.surface).hasFaceIds && options.cubeLayout == CubeLayout::Faces;
 }
 
 std::vector<Vec4> MappedMesh::corners(bool baked) const {
@@ -84,7 +84,7 @@ namespace {
 // The projector evaluated at every pixel (docs/conventions.md §9).
 render::PixelMapping projectorPixelMapping(const param::ProjectorOptions& options, const Affine3& localFromObject,
                                            const Mesh& mesh, const UvMap& uv) {
-  if (options.surface == param::SurfaceKind::Triplanar) {  // three lookups blended by the pixel's normal
+  if (param::traitsOf(options.surface).blendsProjections) {  // three lookups blended by the pixel's normal
     render::PixelMapping blend;
     blend.needsNormal = true;
     blend.blendAt = [mapping = param::TriplanarMapping(options, localFromObject)](const Vec3& p, const Vec3& n,
@@ -157,7 +157,7 @@ MappedMesh mapByProjector(Mesh mesh, param::ProjectorOptions options, bool seamP
   out.projector = options;
   out.source = "projector";
   out.exact = projectorPixelMapping(options, out.projection->localFromObject, out.mesh, out.uv);
-  if (options.surface == param::SurfaceKind::Camera) {
+  if (param::traitsOf(options.surface).isPerspective) {
     const param::CameraTransform camera(options.camera);
     out.cameraQ.assign(out.uv.uv.size(), 1.0);
     for (std::size_t f = 0; f < out.mesh.faceCount(); ++f)
@@ -197,7 +197,7 @@ void addMappingOrigin(nlohmann::json& record, const MappedMesh& mapped) {
 
 nlohmann::json mapSummaryJson(const MappedMesh& mapped, const analysis::Judgement& judgement,
                               const nlohmann::json& input, const std::string& output) {
-  nlohmann::json j = mapped.projection ? summaryJson(mapped.projection->summary, mapped.projector && mapped.projector->surface == param::SurfaceKind::Triplanar) : nlohmann::json::object();
+  nlohmann::json j = mapped.projection ? summaryJson(mapped.projection->summary, mapped.projector && param::traitsOf(mapped.projector->surface).blendsProjections) : nlohmann::json::object();
   j["judgement"] = judgementJson(mapped, judgement);
   j["verdict"] = j["judgement"]["verdict"];
   j["reasons"] = j["judgement"]["reasons"];

@@ -57,7 +57,7 @@ nlohmann::json reportJson(const MappedMesh& mapped, const analysis::Judgement& j
   report["tool"] = {{"name", "uvtk"}, {"version", UVTK_VERSION}};
   report["input"] = input;
   report["texcoords"] = mapped.source;
-  if (mapped.projection) report["mapping"] = summaryJson(mapped.projection->summary, mapped.projector && mapped.projector->surface == param::SurfaceKind::Triplanar);
+  if (mapped.projection) report["mapping"] = summaryJson(mapped.projection->summary, mapped.projector && param::traitsOf(mapped.projector->surface).blendsProjections);
   addMappingOrigin(report, mapped);
   if (!options.html.empty()) {
     report["views"] = nlohmann::json::array();

@@ -93,10 +93,10 @@ inspect::ImageCheckRun checkImageFile(CheckArguments a) {
   ProjectorArguments& projector = a.mapping.projector;
   const bool projectorGiven = given(app, "--projector");
   if (projectorGiven && a.mapping.isTexgen()) throw UsageError("--projector and texgen options exclude each other");
-  if (projectorGiven && projector.options.surface == param::SurfaceKind::Camera)
+  if (projectorGiven && param::traitsOf(projector.options.surface).isPerspective)
     throw UsageError("--image: --eye, --center and --up are the camera's; --projector camera is not supported");
   // A triplanar blend exists per pixel only: drawn so unless --uv asks for the box mapping, as `uvtk render` does.
-  if (projectorGiven && projector.options.surface == param::SurfaceKind::Triplanar && !given(app, "--uv"))
+  if (projectorGiven && param::traitsOf(projector.options.surface).blendsProjections && !given(app, "--uv"))
     a.frame.uv = FrameArguments::Uv::PerPixel;
   if (!projectorGiven && !a.mapping.isTexgen() && a.frame.uv == FrameArguments::Uv::PerPixel)
     throw UsageError("--uv per-pixel evaluates a mapping: give --projector or --texgen");

@@ -71,7 +71,7 @@ ResolvedMapping resolveMapping(const MappingArguments& a) {
 }
 
 bool fitsToMesh(const param::ProjectorOptions& o) {
-  return !o.placement.frame && o.placement.fit != param::Fit::None && o.surface != param::SurfaceKind::TwoPlane;
+  return !o.placement.frame && o.placement.fit != param::Fit::None && param::traitsOf(o.surface).fitsToMesh;
 }
 
 }  // namespace uvtk::cli

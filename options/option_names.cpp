@@ -41,7 +41,7 @@ nlohmann::json projectorOptionsJson(const ProjectorOptions& o) {
                   {"ref_dir", {f->refDir.x(), f->refDir.y(), f->refDir.z()}},
                   {"scale", f->scale}};
   if (o.eye) j["eye"] = {o.eye->x(), o.eye->y(), o.eye->z()};
-  if (o.surface == SurfaceKind::Camera) {
+  if (traitsOf(o.surface).isPerspective) {
     const CameraProjector& c = o.camera;
     j["camera"] = {{"eye", {c.eye.x(), c.eye.y(), c.eye.z()}},
                    {"center", {c.center.x(), c.center.y(), c.center.z()}},
@@ -49,7 +49,7 @@ nlohmann::json projectorOptionsJson(const ProjectorOptions& o) {
                    {"fovy", c.fovyDegrees},
                    {"aspect", c.aspect}};
   }
-  if (o.surface == SurfaceKind::Triplanar)
+  if (traitsOf(o.surface).blendsProjections)
     j["triplanar"] = {{"preset", nameOf(kTriplanarPresetNames, o.triplanar.preset)},
                       {"tile", o.triplanar.tile},
                       {"blend", o.triplanar.blend},

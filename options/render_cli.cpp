@@ -356,7 +356,7 @@ RenderResult renderMeshFile(RenderJob a) {
   const auto measured = [&]() -> const analysis::Judgement& { return judgement = mapped.judge({}, 1024, 0, a.frame.densityTexture()); };
   io::OutputSet outputs;  // the picture, its AOVs and the record, published together
   // A triplanar blend exists per pixel only: drawn so unless --uv asks for the box mapping an OBJ holds.
-  if (projectorGiven && a.projector.options.surface == param::SurfaceKind::Triplanar && !given(a.projector.app, "--uv"))
+  if (projectorGiven && param::traitsOf(a.projector.options.surface).blendsProjections && !given(a.projector.app, "--uv"))
     a.frame.uv = FrameArguments::Uv::PerPixel;
   const FrameOptions frame = a.frame.options();
   RenderResult result;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "param/surface_traits.h"
+
 namespace uvtk::param {
 
 namespace {
@@ -9,7 +11,7 @@ namespace {
 // Another tool's projector as uvtk's placement, seam turn and UV transform (docs/conventions.md,
 // "Other tools"): each is one of our surfaces seen from a frame that tool uses.
 void applyConvention(const ParameterDictionary& p, Convention convention, ProjectorOptions& o) {
-  const bool wraps = o.surface == SurfaceKind::Sphere || o.surface == SurfaceKind::Cylinder;
+  const bool wraps = traitsOf(o.surface).wraps;
   const std::string given = p.spelledWith("convention", nameOf(kConventionNames, convention));
   const std::string projector = p.spelled("projector");
   switch (convention) {
@@ -134,7 +136,7 @@ Projector makeProjector(const ParameterDictionary& p, const ProjectorContext& c)
   if (c.cameraOwnsEye) cameraOnly.insert(cameraOnly.end(), {c.cameraEye, c.cameraCenter});
   for (const std::string& name : cameraOnly)
     if (p.given(name)) throw UsageError(p.spelled(name) + " goes with " + p.spelledWith("projector", "camera") + " only");
-  const bool triplanar = o.surface == SurfaceKind::Triplanar;
+  const bool triplanar = traitsOf(o.surface).blendsProjections;
   for (const char* name : {"tile", "blend", "triplanar-preset"})
     if (!triplanar && p.given(name))
       throw UsageError(p.spelled(name) + " goes with " + p.spelledWith("projector", "triplanar") + " only");
@@ -145,6 +147,9 @@ Projector makeProjector(const ParameterDictionary& p, const ProjectorContext& c)
                          p.spelledWith("projector", "triplanar"));
     if (!p.given("fit")) o.placement.fit = Fit::None;  // object space, as the engines project
   }
+  for (const char* name : {"caps", "cap-angle"})
+    if (o.surface != SurfaceKind::Cylinder && p.given(name))
+      throw UsageError(p.spelled(name) + " goes with " + p.spelledWith("projector", "cylinder") + " only");
   if (convention != Convention::Uvtk) {
     std::vector<std::string> owned(std::begin(kConventionOwned), std::end(kConventionOwned));
     if (convention != Convention::Blender) owned.push_back(c.center);  // Blender's pivot may be anywhere
@@ -179,7 +184,7 @@ Projector makeProjector(const ParameterDictionary& p, const ProjectorContext& c)
     throw UsageError(p.spelled("eye") + " and " + p.spelled("at-infinity") + " go with " +
                      p.spelledWith("omap", "reflection") + " only");
   if (p.given("seam-place")) {
-    if (o.surface != SurfaceKind::Cylinder && o.surface != SurfaceKind::Sphere)
+    if (!traitsOf(o.surface).wraps)
       throw UsageError(p.spelled("seam-place") +
                        ": only the wrapping projectors (cylinder, sphere) have a seam to place");
     const std::optional<std::string> text = p.getText("seam-place");

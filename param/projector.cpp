@@ -187,13 +187,15 @@ void applyCaps(const Mesh& mesh, const LocalFrameT<T>& frame, const CylinderCaps
   }
 }
 
-// Where the u period of a wrapping surface starts (u lies in [start, start + 1)); nothing for
-// the surfaces that do not wrap.
+}  // namespace
+
 std::optional<double> uPeriodStartOf(const ProjectorOptions& o) {
   if (o.surface == SurfaceKind::Cylinder) return CylinderSurface{}.uStart();
   if (o.surface == SurfaceKind::Sphere) return SphereSurface{o.spherePreset}.uStart();
   return std::nullopt;
 }
+
+namespace {
 
 // The checks of values that no type expresses; throws UsageError.
 void checkOptions(const ProjectorOptions& o) {

@@ -14,6 +14,7 @@
 #include "param/camera_projector.h"
 #include "param/formulas.h"
 #include "param/placement.h"
+#include "param/surface_traits.h"
 #include "param/triplanar.h"
 
 namespace uvtk::param {
@@ -66,6 +67,14 @@ struct ProjectorOptions {
   UvTransform uvTransform;
   Arithmetic arithmetic;  // precision and math mode of the per-vertex evaluation (docs/precision.md)
 };
+
+// Why a projector found no value at a finite point (docs/conventions.md §4), in words: the reason
+// the mapping carried, and for a miss which miss the options make it.
+const char* invalidReasonText(const ProjectorOptions& options, CornerInvalid reason);
+
+// Where the u period of a wrapping surface starts (u lies in [start, start + 1)); nothing for the
+// surfaces that do not wrap.
+std::optional<double> uPeriodStartOf(const ProjectorOptions& options);
 
 // The state of one evaluated vertex or corner.
 enum class CornerState : std::uint8_t {

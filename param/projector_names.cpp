@@ -1,11 +1,14 @@
 #include "param/projector_names.h"
 
+#include "param/surface_traits.h"
+
 namespace uvtk::param {
 
-const ChoiceNames<SurfaceKind> kSurfaceNames = {{"plane", SurfaceKind::Plane},   {"two-plane", SurfaceKind::TwoPlane},
-                                                {"cylinder", SurfaceKind::Cylinder}, {"sphere", SurfaceKind::Sphere},
-                                                {"cube", SurfaceKind::Cube},     {"camera", SurfaceKind::Camera},
-                                                {"triplanar", SurfaceKind::Triplanar}};
+const ChoiceNames<SurfaceKind> kSurfaceNames = [] {
+  ChoiceNames<SurfaceKind> names;
+  for (const SurfaceKind surface : kSurfaces) names.emplace_back(traitsOf(surface).name, surface);
+  return names;
+}();
 const ChoiceNames<TriplanarPreset> kTriplanarPresetNames = {
     {"unity", TriplanarPreset::Unity}, {"materialx", TriplanarPreset::MaterialX}, {"godot", TriplanarPreset::Godot}};
 const ChoiceNames<RayKind> kRayNames = {{"isn", RayKind::SurfaceNormal},

@@ -77,7 +77,7 @@ SeamCandidate bestSeamPosition(const std::vector<double>& turns, const std::vect
 SeamPlacement placeSeam(const Mesh& mesh, const ProjectorOptions& options) {
   if (options.surface != SurfaceKind::Cylinder && options.surface != SurfaceKind::Sphere)
     throw UsageError("--seam-place: only the wrapping projectors (cylinder, sphere) have a seam to place");
-  const double uStart = options.surface == SurfaceKind::Sphere ? SphereSurface{options.spherePreset}.uStart() : 0.0;
+  const double uStart = uPeriodStartOf(options).value_or(0.0);
   const double uPerTurn = options.surface == SurfaceKind::Sphere ? SphereSurface{options.spherePreset}.uPerTurn()
                                                                  : CylinderSurface{}.uPerTurn();
 

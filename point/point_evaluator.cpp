@@ -17,49 +17,6 @@ namespace {
 
 Vec3 toVec3(const Vector3& v) { return {v[0], v[1], v[2]}; }
 
-// Why a projector found no value at a finite point (docs/conventions.md §4): the reason the
-// mapping carried, and for a miss which miss the options make it.
-const char* missReason(const param::ProjectorOptions& o, CornerInvalid reason) {
-  using param::RayKind;
-  static_assert(param::kSensibleRange == 2.0, "the out-of-range text below names the factor");
-  if (o.surface == SurfaceKind::Triplanar) return "the result is not finite";
-  if (o.surface == SurfaceKind::Camera)
-    return reason == kCornerBehind ? "the point is at or behind the camera's eye plane (q <= 0)"
-                                   : "the result is not finite";
-  switch (reason) {
-    case kCornerBehind:
-      return o.surface == SurfaceKind::Cube ? "the ray meets the cube face's plane only behind the point"
-                                            : "the ray meets the plane only behind the point";
-    case kCornerOutOfRange:
-      return "the hit lies beyond 2 times the fitted extent";
-    case kCornerNotFinite:
-      return "the result is not finite";
-    default:
-      break;
-  }
-  if (o.ray == RayKind::Centroid || (o.ray == RayKind::Reflection && o.atInfinity))
-    return o.surface == SurfaceKind::Cylinder ? "the central ray runs along the cylinder's axis"
-           : o.surface == SurfaceKind::Sphere ? "the point is the sphere's centre"
-                                              : "the central ray points away from the surface";
-  if (o.ray == RayKind::SurfaceNormal)  // isn misses nothing else (the cylinder's axis is a pole)
-    return o.surface == SurfaceKind::Cube ? "the point is the cube's centre" : "the point is the sphere's centre";
-  switch (o.surface) {
-    case SurfaceKind::Plane:
-    case SurfaceKind::TwoPlane:
-      return "the ray is parallel to the plane";
-    case SurfaceKind::Cylinder:
-      return "the ray misses the cylinder";
-    case SurfaceKind::Sphere:
-      return "the ray misses the sphere";
-    case SurfaceKind::Cube:
-      return "the ray misses the cube, or is parallel to its face's plane";
-    case SurfaceKind::Camera:
-    case SurfaceKind::Triplanar:
-      break;
-  }
-  return "the ray misses the surface";
-}
-
 Result invalid(Result out, const char* reason) {
   out.u = out.v = out.w = 0.0;
   out.q = 1.0;
@@ -90,14 +47,15 @@ PointEvaluator::PointEvaluator(const cli::ResolvedMapping& mapping, const Affine
     return;
   }
   projector_ = mapping.projector;
-  if (projector_->surface == SurfaceKind::Camera) camera_.emplace(projector_->camera);
-  if (projector_->surface == SurfaceKind::Triplanar) triplanar_.emplace(*projector_, localFromObject);
+  const param::SurfaceTraits& traits = param::traitsOf(projector_->surface);
+  if (traits.isPerspective) camera_.emplace(projector_->camera);
+  if (traits.blendsProjections) triplanar_.emplace(*projector_, localFromObject);
   param::ProjectorOptions raw = *projector_;
   raw.uvTransform = param::UvTransform{};
   raw.cubeLayout = CubeLayout::Faces;
   raw_.emplace(raw, localFromObject, sensible);
   needsNormal_ = raw_->needsNormal() || projector_->cylinderCaps;
-  if (raw.surface == SurfaceKind::Cylinder && raw.cylinderCaps) caps_.emplace(localFromObject, raw.capAngleDegrees);
+  if (raw.cylinderCaps) caps_.emplace(localFromObject, raw.capAngleDegrees);
   if (raw_->wrapsU()) period_ = projector_->uvTransform.apply(Vec2(1, 0)) - projector_->uvTransform.apply(Vec2(0, 0));
 }
 
@@ -121,7 +79,7 @@ Result PointEvaluator::projectorAt(const Vec3& p, const Vec3& n, Result out) con
   if (triplanar_) return triplanarAt(p, n, out);
   const bool cap = caps_ && caps_->isCap(n);  // as project() decides it
   const param::VertexUv raw = raw_->at(p, n, cap);
-  if (raw.state == CornerState::Invalid) return invalid(out, missReason(o, raw.reason));
+  if (raw.state == CornerState::Invalid) return invalid(out, param::invalidReasonText(o, raw.reason));
   Vec2 uv = raw.uv;
   out.status = Status::Ok;
   if (camera_) out.q = camera_->homogeneous(p).w();  // (u, v) are s/q, t/q: q is w_c, the divisor
@@ -129,14 +87,14 @@ Result PointEvaluator::projectorAt(const Vec3& p, const Vec3& n, Result out) con
     out.status = Status::Pole;
     out.reason = "on the axis: u is undefined there (written as 0), v is exact";
   } else if (raw_->wrapsU() && !cap) {
-    const double start = o.surface == SurfaceKind::Sphere ? param::uPeriodStart(o.spherePreset) : 0.0;
+    const double start = *param::uPeriodStartOf(o);
     if (uv.x() == start || uv.x() == start + 1.0) {
       out.status = Status::OnSeam;
       out.reason = "on the seam: u and u + 1 are the same point";
     }
-  } else if (o.surface == SurfaceKind::Cube) {
+  } else if (param::traitsOf(o.surface).hasFaceIds) {
     const std::optional<CubeFace> face = raw_->cubeFaceAt(p, n);
-    if (!face) return invalid(out, missReason(o, kCornerMiss));
+    if (!face) return invalid(out, param::invalidReasonText(o, kCornerMiss));
     if (uv.x() == 0.0 || uv.x() == 1.0 || uv.y() == 0.0 || uv.y() == 1.0) {
       out.status = Status::OnSeam;
       out.reason = "on an edge of the cube: the face follows the tie rule (x before y before z)";

@@ -419,7 +419,7 @@ EvalCounts evaluatePoints(const EvalJob& job, const cli::MappingArguments& mappi
     else
       std::fwrite(text.data(), 1, text.size(), stdout);
   };
-  const bool triplanar = !isTexgen && resolved.projector->surface == param::SurfaceKind::Triplanar;
+  const bool triplanar = !isTexgen && param::traitsOf(resolved.projector->surface).blendsProjections;
   write(outputHeader(job.format, withNormals, withEyes, triplanar));
   EvalCounts counts;
   counts.points = rows.size();

@@ -384,10 +384,9 @@ class SceneReader {
       if (mapping->kind != SceneMapping::Kind::Projector)
         fail(pointer + "/mapping",
              "mapping \"" + mapping->name + "\" is not a projector: `uvtk bench` times projectors");
-      if (mapping->projector.surface == param::SurfaceKind::Cube)
-        fail(pointer + "/mapping",
-             "mapping \"" + mapping->name +
-                 "\" is a cube, which chooses its face per triangle; `uvtk bench` times per-vertex mappings");
+      if (param::traitsOf(mapping->projector.surface).choosesPerTriangle)
+        fail(pointer + "/mapping", "mapping \"" + mapping->name +
+                                       "\" chooses a projection per triangle; `uvtk bench` times per-vertex mappings");
     }
     arguments.mesh = scene.meshes[mapping ? mapping->mesh : *o.mesh].path;
     arguments.noEndToEnd = true;

@@ -78,7 +78,7 @@ std::vector<std::string> benchComputes(const BenchOptions& b) {
   std::size_t configurations = 0;
   for (const BenchProjector& p : b.projectors) {
     const bool wraps =
-        p.options.surface == param::SurfaceKind::Cylinder || p.options.surface == param::SurfaceKind::Sphere;
+        param::traitsOf(p.options.surface).wraps;
     configurations += b.precisions.size() * (wraps ? b.maths.size() : 1) * b.threads.size();
   }
   char text[96];

@@ -58,7 +58,7 @@ void runReport(const ReportCommandArguments& a) {
   clock.start("writing", a.report.html.empty() ? a.report.json : a.report.html);
   inspect::ReportOptions reportOptions = a.report.options();
   // A triplanar page shows its blend too, unless --views says what to show.
-  if (projectorGiven && projector.options.surface == param::SurfaceKind::Triplanar && !reportOptions.html.empty() &&
+  if (projectorGiven && param::traitsOf(projector.options.surface).blendsProjections && !reportOptions.html.empty() &&
       !given(a.projector.app, "--views"))
     reportOptions.views.insert(reportOptions.views.end(), {views::View::Weights, views::View::BlendZone});
   std::optional<analysis::Judgement> withLine;  // with the mip line's rule when the page draws it

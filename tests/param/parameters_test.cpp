@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "param/make_projector.h"
+#include "param/surface_traits.h"
 
 namespace uvtk::param {
 namespace {
@@ -174,6 +175,36 @@ TEST(MakeProjector, TheCameraTakesItsOwnNamesWhereTheCommandsCameraHasThePlainOn
   p.add("frame-center", std::vector<double>{0, 0, 0});
   EXPECT_EQ(messageOf([&] { makeProjector(p, render); }),
             "--frame-center goes with the surface projectors, not --projector camera");
+}
+
+}  // namespace
+}  // namespace uvtk::param
+
+namespace uvtk::param {
+namespace {
+
+TEST(SurfaceTraits, EachSurfaceIsAskedInOnePlace) {
+  std::vector<std::string> wrapping, perTriangle;
+  for (const SurfaceKind surface : kSurfaces) {
+    const SurfaceTraits& t = traitsOf(surface);
+    if (t.wraps) wrapping.push_back(t.name);
+    if (t.choosesPerTriangle) perTriangle.push_back(t.name);
+    EXPECT_EQ(nameOf(kSurfaceNames, surface), t.name);  // one spelling
+    // u's period starts where the surface says, and only wrapping surfaces have one
+    EXPECT_EQ(uPeriodStartOf([&] { ProjectorOptions o; o.surface = surface; return o; }()).has_value(), t.wraps);
+  }
+  EXPECT_EQ(wrapping, (std::vector<std::string>{"cylinder", "sphere"}));
+  EXPECT_EQ(perTriangle, (std::vector<std::string>{"cube", "triplanar"}));
+  ProjectorOptions seed;
+  seed.spherePreset = SpherePreset::Seed004;  // s = atan2(y, x)/(2 pi): u in [-1/2, 1/2)
+  EXPECT_EQ(uPeriodStartOf(seed), -0.5);
+}
+
+TEST(MakeProjector, CapsGoWithTheCylinderOnly) {
+  ParameterDictionary p(ParameterFace::Keyword);
+  p.add("projector", std::string("sphere"));
+  p.add("caps", true);
+  EXPECT_EQ(messageOf([&] { makeProjector(p); }), "caps goes with projector='cylinder' only");
 }
 
 }  // namespace

@@ -1,0 +1,27 @@
+// What each surface is, answered in one place: every layer asks traitsOf() rather than comparing
+// the surface enum (a surface added here and in its formula is known everywhere).
+#pragma once
+
+#include "param/placement.h"
+
+namespace uvtk::param {
+
+struct SurfaceTraits {
+  const char* name;         // as every face spells it (param/projector_names.h)
+  bool wraps;               // u turns about the axis with period 1: a seam, poles, --seam-place, the math mode
+  bool choosesPerTriangle;  // a projection per triangle (cube faces, triplanar axes): no per-vertex mapping
+  bool fitsToMesh;          // its placement is fitted to the mesh (two-plane works in object space)
+  bool projectsAlongAxis;   // one projection along local z (the plane): stretch is measured against it
+  bool blendsProjections;   // three projections blended by the normal per pixel (triplanar)
+  bool isPerspective;       // a camera's perspective, with a q per corner; no surface, no placement
+  bool hasFaceIds;          // a face id per corner (the cube's six), written as w by its faces layout
+};
+
+const SurfaceTraits& traitsOf(SurfaceKind surface);
+
+// Every surface, in the order help and messages list them.
+inline constexpr SurfaceKind kSurfaces[] = {SurfaceKind::Plane,  SurfaceKind::TwoPlane, SurfaceKind::Cylinder,
+                                            SurfaceKind::Sphere, SurfaceKind::Cube,     SurfaceKind::Camera,
+                                            SurfaceKind::Triplanar};
+
+}  // namespace uvtk::param
