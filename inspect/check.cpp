@@ -15,7 +15,8 @@
 #include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "io/mesh_reader.h"
-#include "options/option_names.h"
+#include "inspect/projector_json.h"
+#include "param/projector_names.h"
 #include "render/camera.h"
 #include "views/corner_error.h"
 #include "views/legend.h"
@@ -75,10 +76,10 @@ Reference byMapping(const Mesh& mesh, const CheckOptions& mapping, const std::st
     r.record = {{"source", "texgen"},
                 {"coordinates", texgenCoordinatesJson(*mapping.texgen)},
                 {"normalize", mapping.texgen->normalize},
-                {"precision", cli::precisionName(mapping.texgen->precision)}};
+                {"precision", param::precisionName(mapping.texgen->precision)}};
     r.noValue = "texgen's value is not finite";
-    r.description = std::string("texgen (s ") + cli::texgenModeName(mapping.texgen->coordinates[0].mode) + ", t " +
-                    cli::texgenModeName(mapping.texgen->coordinates[1].mode) + "), compared plainly";
+    r.description = std::string("texgen (s ") + texgen::texgenModeName(mapping.texgen->coordinates[0].mode) + ", t " +
+                    texgen::texgenModeName(mapping.texgen->coordinates[1].mode) + "), compared plainly";
     return r;
   }
   const param::ProjectorOptions& o = *mapping.projector;  // never --seam cut
@@ -89,9 +90,9 @@ Reference byMapping(const Mesh& mesh, const CheckOptions& mapping, const std::st
   const bool wraps = param::traitsOf(o.surface).wraps;
   if (wraps) r.period = o.uvTransform.apply(Vec2(1, 0)) - o.uvTransform.apply(Vec2(0, 0));
   r.noValue = "the mapping has no value (the ray misses the surface, or the result is not finite)";
-  r.record = {{"source", "projector"}, {"options", cli::projectorOptionsJson(o)}};
-  if (mapped.seamPlacement) r.record["seam_placement"] = cli::seamPlacementJson(*mapped.seamPlacement);
-  const nlohmann::json options = cli::projectorOptionsJson(o);
+  r.record = {{"source", "projector"}, {"options", inspect::projectorOptionsJson(o)}};
+  if (mapped.seamPlacement) r.record["seam_placement"] = inspect::seamPlacementJson(*mapped.seamPlacement);
+  const nlohmann::json options = inspect::projectorOptionsJson(o);
   char period[96] = "";
   if (wraps) std::snprintf(period, sizeof period, ", u modulo the period (%.17g, %.17g)", r.period.x(), r.period.y());
   r.description = "projector " + options["projector"].get<std::string>() + " (omap " +

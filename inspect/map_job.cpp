@@ -24,7 +24,8 @@
 #include "io/mesh_reader.h"
 #include "io/mesh_format.h"
 #include "io/mesh_writer.h"
-#include "options/option_names.h"
+#include "inspect/projector_json.h"
+#include "param/projector_names.h"
 
 namespace uvtk::inspect {
 
@@ -287,7 +288,7 @@ nlohmann::json batchJson(const std::vector<MeshPaths>& paths, const std::vector<
     meshes.push_back(std::move(mesh));
   }
   return {{"tool", {{"name", "uvtk"}, {"version", UVTK_VERSION}}},
-          {"options", cli::projectorOptionsJson(options)},
+          {"options", inspect::projectorOptionsJson(options)},
           {"jobs", threads},
           {"meshes", std::move(meshes)},
           {"mapped", paths.size() - failed},

@@ -4,7 +4,8 @@
 #include <memory>
 
 #include "core/error.h"
-#include "options/option_names.h"
+#include "inspect/projector_json.h"
+#include "param/projector_names.h"
 #include "param/projector.h"
 #include "inspect/measures_json.h"
 #include "inspect/run_report.h"
@@ -191,8 +192,8 @@ MappedMesh withFileUvs(Mesh mesh, const std::string& path) {
 }
 
 void addMappingOrigin(nlohmann::json& record, const MappedMesh& mapped) {
-  if (mapped.projector) record["options"] = cli::projectorOptionsJson(*mapped.projector);
-  if (mapped.seamPlacement) record["seam_placement"] = cli::seamPlacementJson(*mapped.seamPlacement);
+  if (mapped.projector) record["options"] = inspect::projectorOptionsJson(*mapped.projector);
+  if (mapped.seamPlacement) record["seam_placement"] = inspect::seamPlacementJson(*mapped.seamPlacement);
 }
 
 nlohmann::json mapSummaryJson(const MappedMesh& mapped, const analysis::Judgement& judgement,
@@ -218,7 +219,7 @@ nlohmann::json mapSummaryJson(const MappedMesh& mapped, const analysis::Judgemen
 
 void printMappingNotes(const std::string& inputPath, const MeshWarnings& warnings, const MappedMesh& mapped) {
   printInputWarnings(inputPath, warnings);
-  if (mapped.seamPlacement) cli::printSeamPlacement(*mapped.seamPlacement);
+  if (mapped.seamPlacement) param::printSeamPlacement(*mapped.seamPlacement);
 }
 
 render::Camera ViewCamera::frame(const Mesh& mesh, const std::string& meshFile, int width, int height) const {

@@ -8,7 +8,8 @@
 #include "io/mesh_reader.h"
 #include "io/mesh_format.h"
 #include "io/mesh_writer.h"
-#include "options/option_names.h"
+#include "inspect/projector_json.h"
+#include "param/projector_names.h"
 
 namespace uvtk::inspect {
 
@@ -48,7 +49,7 @@ nlohmann::json texgenCoordinatesJson(const texgen::TexgenOptions& options) {
   const char* const names[4] = {"s", "t", "r", "q"};
   for (std::size_t i = 0; i < 4; ++i) {
     const texgen::TexgenCoordinate& c = options.coordinates[i];
-    modes[names[i]] = {{"mode", cli::texgenModeName(c.mode)}, {"plane", {c.plane[0], c.plane[1], c.plane[2], c.plane[3]}}};
+    modes[names[i]] = {{"mode", texgen::texgenModeName(c.mode)}, {"plane", {c.plane[0], c.plane[1], c.plane[2], c.plane[3]}}};
   }
   return modes;
 }
@@ -67,7 +68,7 @@ nlohmann::json texgenSummaryJson(const texgen::TexgenResult& result, const Proje
           {"q_not_one_corners", divided.qNotOneCorners},
           {"q_zero_corners", divided.qZeroCorners},
           {"normalize", options.normalize},
-          {"precision", cli::precisionName(options.precision)},
+          {"precision", param::precisionName(options.precision)},
           {"coordinates", texgenCoordinatesJson(options)},
           {"input", input},
           {"output", output},

@@ -16,7 +16,7 @@ void addArithmeticOptions(CLI::App& app, Arithmetic& arithmetic, bool withMath) 
 }
 
 nlohmann::json arithmeticJson(const Arithmetic& arithmetic) {
-  return {{"precision", precisionName(arithmetic.precision)}, {"math", mathName(arithmetic.math)}};
+  return {{"precision", param::precisionName(arithmetic.precision)}, {"math", param::mathName(arithmetic.math)}};
 }
 
 }  // namespace uvtk::cli

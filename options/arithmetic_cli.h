@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/arithmetic.h"
-#include "options/option_names.h"  // the names of --precision and --math
+#include "param/projector_names.h"  // the names of --precision and --math
 
 namespace uvtk::cli {
 

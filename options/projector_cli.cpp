@@ -3,7 +3,6 @@
 #include "core/error.h"
 #include "options/arithmetic_cli.h"
 #include "options/cli_values.h"
-#include "options/option_names.h"
 
 namespace uvtk::cli {
 

@@ -6,7 +6,6 @@
 #include <optional>
 #include <string>
 
-#include "options/option_names.h"
 #include "param/make_projector.h"
 #include "param/projector.h"
 

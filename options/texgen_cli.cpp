@@ -5,7 +5,8 @@
 
 #include "options/arithmetic_cli.h"
 #include "options/cli_values.h"
-#include "options/option_names.h"
+#include "inspect/projector_json.h"
+#include "param/projector_names.h"
 #include "core/error.h"
 
 namespace uvtk::cli {
@@ -23,7 +24,7 @@ texgen::TexgenCoordinate parseCoordinate(const std::string& text, const std::str
   const std::string name = text.substr(0, colon);
   texgen::TexgenCoordinate c = defaults;
   bool known = false;
-  for (const auto& [modeText, value] : kTexgenModeNames)
+  for (const auto& [modeText, value] : texgen::kTexgenModeNames)
     if (name == modeText) {
       c.mode = value;
       known = true;
@@ -68,7 +69,7 @@ texgen::TexgenOptions TexgenArguments::resolve(const Mat4& view, const Mat4& mod
     const TexgenMode m = o.coordinates[i].mode;
     if ((m == TexgenMode::SphereMap && i >= 2) ||
         ((m == TexgenMode::NormalMap || m == TexgenMode::ReflectionMap) && i == 3))
-      throw UsageError(std::string(kCoordinateOptions[i]) + ": " + texgenModeName(m) +
+      throw UsageError(std::string(kCoordinateOptions[i]) + ": " + texgen::texgenModeName(m) +
                        " is not allowed on this coordinate (sphere_map: s, t only; normal_map, reflection_map: "
                        "s, t, r only)");
   }

@@ -7,7 +7,7 @@
 #include <array>
 #include <string>
 
-#include "options/option_names.h"
+#include "texgen/texgen.h"
 #include "texgen/texgen.h"
 
 namespace uvtk::cli {

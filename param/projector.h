@@ -221,6 +221,9 @@ struct SeamPlacement {
 // UsageError unless the surface wraps (cylinder, sphere).
 SeamPlacement placeSeam(const Mesh& mesh, const ProjectorOptions& options);
 
+// Where the seam went, as one line on stderr above a progress bar (nothing when quiet).
+void printSeamPlacement(const SeamPlacement& placement);
+
 // Maps `mesh` (taken by value: with SeamMode::Cut its triangles change) on `threads` (0: one per
 // core; the result does not depend on them). Throws UsageError for inconsistent options
 // (reflection without an eye, parallel two-plane planes, ...).

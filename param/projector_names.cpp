@@ -31,4 +31,7 @@ const ChoiceNames<MathMode> kMathNames = {
 const ChoiceNames<Convention> kConventionNames = {
     {"uvtk", Convention::Uvtk}, {"blender", Convention::Blender}, {"assimp", Convention::Assimp}, {"notes", Convention::Notes}};
 
+const std::string& precisionName(Precision precision) { return nameOf(kPrecisionNames, precision); }
+const std::string& mathName(MathMode math) { return nameOf(kMathNames, math); }
+
 }  // namespace uvtk::param

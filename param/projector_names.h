@@ -30,4 +30,7 @@ extern const ChoiceNames<Precision> kPrecisionNames;
 extern const ChoiceNames<MathMode> kMathNames;
 extern const ChoiceNames<Convention> kConventionNames;
 
+const std::string& precisionName(Precision precision);
+const std::string& mathName(MathMode math);
+
 }  // namespace uvtk::param

@@ -11,6 +11,10 @@
 
 #include "core/error.h"
 #include "param/projector.h"
+
+#include <cstdio>
+
+#include "core/progress.h"
 #include "param/surfaces.h"
 
 namespace uvtk::param {
@@ -119,6 +123,15 @@ SeamPlacement placeSeam(const Mesh& mesh, const ProjectorOptions& options) {
   placement.facesCrossed = after.summary.straddlingFaces;
   placement.seamLength = after.summary.seamLength;
   return placement;
+}
+
+void printSeamPlacement(const SeamPlacement& p) {
+  if (quiet()) return;  // a note, not a warning
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "uvtk: seam placed at %.6g degrees: it crosses %zu faces (%zu before), seam length %.6g (%.6g before)",
+                p.turnDegrees, p.facesCrossed, p.facesCrossedBefore, p.seamLength, p.seamLengthBefore);
+  printProgressMessage(line);  // above a progress bar, not through it
 }
 
 }  // namespace uvtk::param

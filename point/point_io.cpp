@@ -373,7 +373,7 @@ EvalCounts evaluatePoints(const EvalJob& job, const cli::MappingArguments& mappi
       if (resolved.seamPlaceAuto) {
         const param::SeamPlacement placed = param::placeSeam(input.mesh, options);
         options.placement.turnDegrees = placed.turnDegrees;
-        cli::printSeamPlacement(placed);
+        param::printSeamPlacement(placed);
       }
       positions = input.mesh.positions;
     }

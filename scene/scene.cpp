@@ -21,6 +21,7 @@ namespace uvtk::scene {
 
 using namespace uvtk::cli;
 using namespace uvtk::inspect;
+using namespace uvtk::timing;
 
 namespace {
 
@@ -367,13 +368,13 @@ class SceneReader {
   // `uvtk bench` of the mapping kernel on a mesh of the scene: that mesh's file, the projectors
   // named (or the one of `mapping`), quick by default. Neither the end-to-end `uvtk map`, which
   // forks, nor rendering: the schema has neither's keys.
-  inspect::BenchOptions bench(const json& j, const std::string& pointer, const SceneOutput& o,
+  timing::BenchOptions bench(const json& j, const std::string& pointer, const SceneOutput& o,
                               const Scene& scene) const {
     if (j.contains("mesh") == j.contains("mapping")) fail(pointer, "expected mesh or mapping, one of them");
-    inspect::BenchArguments arguments;
+    timing::BenchArguments arguments;
     arguments.minTime = 0.01;  // a look at the trade beside the pictures, not a measurement to publish
     CLI::App parser;
-    inspect::addBenchOptions(parser, arguments);
+    timing::addBenchOptions(parser, arguments);
     parseOptions(parser, j, {"kind", "mesh", "mapping", "path"}, pointer);
     const SceneMapping* mapping = o.mapping ? &scene.mappings[*o.mapping] : nullptr;
     if (mapping) {
@@ -391,9 +392,9 @@ class SceneReader {
     arguments.mesh = scene.meshes[mapping ? mapping->mesh : *o.mesh].path;
     arguments.noEndToEnd = true;
     // Checked without the files: their folders are created when the scene runs.
-    inspect::BenchArguments unwritten = arguments;
+    timing::BenchArguments unwritten = arguments;
     unwritten.json = unwritten.markdown = unwritten.plot = unwritten.html = "";
-    inspect::BenchOptions options = at(pointer, [&] { return unwritten.resolve(); });
+    timing::BenchOptions options = at(pointer, [&] { return unwritten.resolve(); });
     if (mapping) options.projectors = {{mapping->name, mapping->projector}};
     options.html = o.path;
     options.json = output(arguments.json, pointer + "/json");

@@ -15,7 +15,7 @@
 #include "analysis/judgement.h"
 #include "options/compare_cli.h"
 #include "core/math.h"
-#include "inspect/bench.h"
+#include "timing/bench.h"
 #include "io/mesh_writer.h"
 #include "param/projector.h"
 #include "options/render_cli.h"
@@ -70,7 +70,7 @@ struct SceneOutput {
   cli::FrameArguments frame;                      // render
   cli::ReportArguments report;                    // report
   cli::CompareArguments compare;                  // compare
-  inspect::BenchOptions bench;                    // bench: `uvtk bench` of the mesh, html = path
+  timing::BenchOptions bench;                    // bench: `uvtk bench` of the mesh, html = path
   std::string title;                         // gallery
   std::shared_ptr<CLI::App> parser;
 

@@ -13,7 +13,7 @@
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "core/stopwatch.h"
-#include "inspect/bench.h"
+#include "timing/bench.h"
 #include "inspect/html_report.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
@@ -27,6 +27,7 @@ namespace uvtk::scene {
 
 using namespace uvtk::cli;
 using namespace uvtk::inspect;
+using namespace uvtk::timing;
 
 namespace {
 

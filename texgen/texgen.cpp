@@ -256,4 +256,11 @@ TexgenResult generateTexcoords(const Mesh& mesh, const TexgenOptions& options) {
   return options.precision == Precision::Float ? generateAll(roundedToFloat(p), mesh) : generateAll(p, mesh);
 }
 
+const ChoiceNames<TexgenMode> kTexgenModeNames = {
+    {"object_linear", TexgenMode::ObjectLinear}, {"eye_linear", TexgenMode::EyeLinear},
+    {"sphere_map", TexgenMode::SphereMap},       {"normal_map", TexgenMode::NormalMap},
+    {"reflection_map", TexgenMode::ReflectionMap}, {"off", TexgenMode::Off}};
+
+const char* texgenModeName(TexgenMode mode) { return nameOf(kTexgenModeNames, mode).c_str(); }
+
 }  // namespace uvtk::texgen

@@ -11,6 +11,7 @@
 #include "core/gl_matrices.h"
 #include "core/math.h"
 #include "core/mesh.h"
+#include "core/names.h"
 #include "core/uv_map.h"
 
 namespace uvtk::texgen {
@@ -62,5 +63,9 @@ Vec4 texgenAt(const Vec3& objectPosition, const Vec3& objectNormal, const Texgen
 // sphere-map singular corner carry kFaceSphereMapSingular, faces with a non-finite corner
 // kFaceInvalid (that corner is written as (0, 0, 0, 0) and marked in cornerInvalid).
 TexgenResult generateTexcoords(const Mesh& mesh, const TexgenOptions& options);
+
+// GL's names of the modes, as every face spells them ("object_linear", ...).
+extern const ChoiceNames<TexgenMode> kTexgenModeNames;
+const char* texgenModeName(TexgenMode mode);
 
 }  // namespace uvtk::texgen

@@ -1,28 +1,28 @@
 // `uvtk bench`: the speed-accuracy trade measured in one run on the same data: mapping, rendering
 // (--render) and the peers; a Markdown table, JSON records, Pareto charts and an HTML page
-// (inspect/bench.h, docs/precision.md).
+// (timing/bench.h, docs/precision.md).
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include "commands.h"
-#include "inspect/bench.h"
+#include "timing/bench.h"
 
 namespace uvtk::cli {
 
 namespace {
 
-void runBench(const inspect::BenchArguments& a) {
-  const std::string md = inspect::bench(a.resolve());
+void runBench(const timing::BenchArguments& a) {
+  const std::string md = timing::bench(a.resolve());
   if (a.markdown.empty()) std::fputs(md.c_str(), stdout);
 }
 
 }  // namespace
 
 void addBenchCommand(CLI::App& root) {
-  auto a = std::make_shared<inspect::BenchArguments>();
+  auto a = std::make_shared<timing::BenchArguments>();
   CLI::App* cmd = root.add_subcommand("bench", "Measure speed against accuracy: mapping, rendering, and the peers");
-  inspect::addBenchOptions(*cmd, *a);
+  timing::addBenchOptions(*cmd, *a);
   cmd->callback([a] { runBench(*a); });
 }
 

@@ -10,7 +10,7 @@
 #include <set>
 
 #include "apps/cli_test.h"
-#include "inspect/bench.h"
+#include "timing/bench.h"
 #include "io/obj_writer.h"
 #include "meshes/generators.h"
 #include "scene/scene.h"
@@ -175,8 +175,8 @@ TEST_F(SceneBench, RefusesWhatItCannotTimeBeforeAnyWork) {
 // same choices: a scene is parsed by that very parser.
 TEST(SceneBenchSchema, HasTheBenchOptionsButRenderingAndTheEndToEndMap) {
   CLI::App app;
-  inspect::BenchArguments arguments;
-  inspect::addBenchOptions(app, arguments);
+  timing::BenchArguments arguments;
+  timing::addBenchOptions(app, arguments);
   std::map<std::string, const CLI::Option*> options;
   for (const CLI::Option* option : app.get_options()) {
     if (option->get_lnames().empty() || option->get_lnames().front() == "help") continue;

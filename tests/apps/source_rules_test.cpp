@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -46,6 +48,39 @@ TEST(SourceRules, OnlyParamComparesTheSurfaceEnum) {
     EXPECT_FALSE(std::regex_search(text, found, comparison)) << file << ": " << found.str();
   }
   EXPECT_GT(checked, 100u);  // the walk found the modules
+}
+
+TEST(SourceRules, IncludesRunDownTheLayers) {
+  // docs/architecture.md: core -> io, param, texgen, analysis, render -> views -> inspect -> options
+  // (the command line's parser) -> timing, scene -> apps; library/ and point/ are faces over them.
+  // A module includes its own headers and those of the modules below it, never one above.
+  const std::map<std::string, std::set<std::string>> below = {
+      {"core", {}},
+      {"io", {"core"}},
+      {"param", {"core"}},
+      {"texgen", {"core"}},
+      {"analysis", {"core"}},
+      {"render", {"core"}},
+      {"peers", {"core"}},
+      {"meshes", {"core", "io"}},
+      {"views", {"core", "analysis", "render"}},
+      {"verify", {"core", "render"}},
+      {"inspect", {"core", "io", "param", "texgen", "analysis", "render", "verify", "views"}},
+      {"options", {"core", "io", "param", "texgen", "analysis", "render", "verify", "views", "inspect"}},
+      {"timing", {"core", "io", "param", "views", "inspect", "options", "peers", "meshes"}},
+      {"scene", {"core", "io", "param", "analysis", "render", "inspect", "options", "timing"}},
+  };
+  const std::regex include(R"re(#include "([a-z_]+)/)re");
+  for (const fs::path& file : sources()) {
+    const std::string module = file.begin()->string();
+    const auto allowed = below.find(module);
+    if (allowed == below.end()) continue;  // apps/, library/, point/, python/, bench/, fuzz/: the faces
+    const std::string text = textOf(file);
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), include); it != std::sregex_iterator(); ++it) {
+      const std::string target = (*it)[1];
+      EXPECT_TRUE(target == module || allowed->second.count(target)) << file << " includes " << target << "/";
+    }
+  }
 }
 
 }  // namespace

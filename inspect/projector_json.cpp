@@ -1,16 +1,10 @@
-#include "options/option_names.h"
+#include "inspect/projector_json.h"
 
-#include <cstdio>
-#include <stdexcept>
+#include "param/projector_names.h"
 
-#include "core/progress.h"
-
-namespace uvtk::cli {
+namespace uvtk::inspect {
 
 using namespace uvtk::param;
-
-const std::string& precisionName(Precision precision) { return nameOf(param::kPrecisionNames, precision); }
-const std::string& mathName(MathMode math) { return nameOf(param::kMathNames, math); }
 
 nlohmann::json projectorOptionsJson(const ProjectorOptions& o) {
   nlohmann::json j = {{"projector", nameOf(kSurfaceNames, o.surface)},
@@ -66,24 +60,4 @@ nlohmann::json seamPlacementJson(const SeamPlacement& p) {
           {"seam_length_before", p.seamLengthBefore}};
 }
 
-const std::vector<std::pair<std::string, texgen::TexgenMode>> kTexgenModeNames = {
-    {"object_linear", texgen::TexgenMode::ObjectLinear}, {"eye_linear", texgen::TexgenMode::EyeLinear},
-    {"sphere_map", texgen::TexgenMode::SphereMap},       {"normal_map", texgen::TexgenMode::NormalMap},
-    {"reflection_map", texgen::TexgenMode::ReflectionMap}, {"off", texgen::TexgenMode::Off}};
-
-const char* texgenModeName(texgen::TexgenMode mode) {
-  for (const auto& [name, value] : kTexgenModeNames)
-    if (value == mode) return name.c_str();
-  return "?";
-}
-
-void printSeamPlacement(const SeamPlacement& p) {
-  if (quiet()) return;  // a note, not a warning
-  char line[256];
-  std::snprintf(line, sizeof line,
-                "uvtk: seam placed at %.6g degrees: it crosses %zu faces (%zu before), seam length %.6g (%.6g before)",
-                p.turnDegrees, p.facesCrossed, p.facesCrossedBefore, p.seamLength, p.seamLengthBefore);
-  printProgressMessage(line);  // above a progress bar, not through it
-}
-
-}  // namespace uvtk::cli
+}  // namespace uvtk::inspect

@@ -1,4 +1,4 @@
-#include "inspect/bench.h"
+#include "timing/bench.h"
 
 #include "core/progress.h"
 
@@ -28,7 +28,8 @@
 #include "inspect/map_job.h"
 #include "meshes/generators.h"
 #include "options/cli_values.h"
-#include "options/option_names.h"
+#include "inspect/projector_json.h"
+#include "param/projector_names.h"
 #include "options/projector_cli.h"
 #include "options/render_cli.h"
 #include "param/batch_atan2.h"
@@ -38,7 +39,9 @@
 #include "views/pareto.h"
 #include "views/pareto_svg.h"
 
-namespace uvtk::inspect {
+namespace uvtk::timing {
+
+using namespace uvtk::inspect;
 
 namespace {
 
@@ -140,10 +143,10 @@ std::vector<nlohmann::json> benchMapping(const BenchOptions& a, const Mesh& mesh
   for (const MappingCase& c : cases) {
     const param::ProjectorOptions& o = c.options;
     records.push_back({{"section", "mapping"},
-                       {"projector", cli::projectorOptionsJson(o)["projector"]},
+                       {"projector", inspect::projectorOptionsJson(o)["projector"]},
                        {"omap", a.omap},
-                       {"precision", cli::precisionName(o.arithmetic.precision)},
-                       {"math", cli::mathName(o.arithmetic.math)},
+                       {"precision", param::precisionName(o.arithmetic.precision)},
+                       {"math", param::mathName(o.arithmetic.math)},
                        {"threads", c.threads},
                        {"vertices", mesh.vertexCount()},
                        {"ns_per_vertex", timings.secondsOf(c.name) * 1e9 / vertices},
@@ -701,4 +704,4 @@ std::string bench(const BenchOptions& a) {
   return result.markdown;
 }
 
-}  // namespace uvtk::inspect
+}  // namespace uvtk::timing

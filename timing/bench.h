@@ -22,7 +22,7 @@
 #include "param/projector.h"
 #include "views/pareto.h"
 
-namespace uvtk::inspect {
+namespace uvtk::timing {
 
 // A projector as named on the command line (the progress lines and records use the name) and its
 // default options.
@@ -50,9 +50,9 @@ struct BenchOptions {
   BenchProjector renderProjector;
   cli::CameraArguments camera;  // checked; made on the rendered mesh
   std::string textureSource;    // as given
-  BoundTexture texture;         // loaded, with mipmaps (the 64-sample reference reads them)
-  TextureOptions textureOptions;
-  FrameOptions frame;  // size, culling, background, per-pixel UVs
+  inspect::BoundTexture texture;  // loaded, with mipmaps (the 64-sample reference reads them)
+  inspect::TextureOptions textureOptions;
+  inspect::FrameOptions frame;  // size, culling, background, per-pixel UVs
   render::Filter filter = render::Filter::LinearMipmapLinear;  // of the UV and sample-count rows
   std::vector<render::Filter> filters;                          // the sweep
   std::vector<int> samples;                                     // per pixel
@@ -116,4 +116,4 @@ void writeBenchOutputs(io::OutputSet& outputs, const BenchOptions& options, cons
 // Measures, writes the outputs, publishes them together, and returns the Markdown tables.
 std::string bench(const BenchOptions& options);
 
-}  // namespace uvtk::inspect
+}  // namespace uvtk::timing
