@@ -284,7 +284,9 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath,
 
 std::string htmlReport(const nlohmann::json& report, const std::vector<std::pair<std::string, Image>>& views,
                        const std::string& view3d) {
-  const std::string title = "uvtk report: " + report.at("input").at("path").get<std::string>();
+  // A mesh the library or Python made in memory has no path: "a mesh in memory".
+  const std::string title =
+      "uvtk report: " + report.value("input", nlohmann::json::object()).value("path", std::string("a mesh in memory"));
   std::ostringstream html;
   html << pageStart(title);
   html << "<style>.first-screen{display:flex;flex-wrap:wrap;gap:1.5em;align-items:flex-start}"

@@ -45,6 +45,10 @@ Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thre
                     nlohmann::json input, std::optional<texgen::TexgenOptions> texgen = std::nullopt,
                     analysis::TextureSize textureSize = {}, int threads = 0);
 
+// What `function` needs of a mapping: its detail, which only map(), texgen() and fileUvs() make;
+// a default Mapping{} is std::invalid_argument.
+const MappingDetail& detailOf(const Mapping& mapping, const char* function);
+
 // The public parameters as the engine's dictionary (the same values; a Python keyword's face).
 param::ParameterDictionary toEngine(const Parameters& parameters);
 

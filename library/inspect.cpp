@@ -170,7 +170,7 @@ std::string RenderOptions::commandLine() const { return joinCommandLine(wordsOf(
 std::string CompareOptions::commandLine() const { return joinCommandLine(wordsOf(*this, compareFields())); }
 
 std::string report(const Mapping& mapping, const ReportOptions& options) {
-  UVTK_CHECK(mapping.detail != nullptr);
+  detailOf(mapping, "report");
   return translatingErrors([&] {
     const ReportCommand command(wordsOf(options, reportFields()));
     const inspect::ReportOptions o = command.options();
@@ -194,7 +194,7 @@ std::vector<std::uint8_t> Image::bytes() const {
 }
 
 Image render(const Mapping& mapping, const RenderOptions& options) {
-  UVTK_CHECK(mapping.detail != nullptr);
+  detailOf(mapping, "render");
   return translatingErrors([&] {
     const RenderCommand command(wordsOf(options, renderFields()));
     const inspect::MappedMesh& mapped = mapping.detail->mapped;

@@ -31,7 +31,7 @@ Field<MapOptions> seamPlaceField() {
   return {"--seam-place",
           [](MapOptions& o, const std::vector<std::string>& r) {
             if (r.back() == "auto") o.seamPlaceAuto = true;
-            else o.seamPlace = std::stod(r.back());
+            else o.seamPlace = numberFrom(r.back());
           },
           [](const MapOptions& o) {
             if (o.seamPlaceAuto) return std::vector<std::string>{"--seam-place", "auto"};
@@ -237,6 +237,13 @@ Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thre
   return mapping;
 }
 
+const MappingDetail& detailOf(const Mapping& mapping, const char* function) {
+  if (!mapping.detail)
+    throw std::invalid_argument(std::string(function) +
+                                ": the mapping is empty (a default Mapping); make one with map(), texgen() or fileUvs()");
+  return *mapping.detail;
+}
+
 param::ParameterDictionary toEngine(const Parameters& parameters) {
   param::ParameterDictionary dictionary(parameters.face == Parameters::Face::Keyword       ? param::ParameterFace::Keyword
                                         : parameters.face == Parameters::Face::CommandLine ? param::ParameterFace::CommandLine
@@ -282,17 +289,17 @@ Mapping fileUvs(const Mesh& mesh) {
 void writeMesh(const std::string& path, const Mapping& mapping, const WriteOptions& options) {
   if (options.uvDigits != "double" && options.uvDigits != "float")
     throw std::invalid_argument("writeMesh: uvDigits is '" + options.uvDigits + "', expected double or float");
-  UVTK_CHECK(mapping.detail != nullptr);
+  const MappingDetail& detail = detailOf(mapping, "writeMesh");
   translatingErrors([&] {
-    const inspect::MappedMesh& mapped = mapping.detail->mapped;
+    const inspect::MappedMesh& mapped = detail.mapped;
     io::MeshWriteOptions write;
     write.writeW = options.writeW;
     write.floatDigits = options.uvDigits == "float";
     write.ascii = options.ascii;
-    if (!mapping.detail->texgen) return io::writeMesh(path, mapped.mesh, &mapped.uv, write);
+    if (!detail.texgen) return io::writeMesh(path, mapped.mesh, &mapped.uv, write);
     // As `uvtk texgen -o`: r when generated (in an OBJ), and (s, t, r) divided by q where q is not 1.
     const bool obj = io::outputFormatOf(path) == io::MeshFormat::obj;
-    write.writeW = write.writeW || (obj && inspect::texgenWritesR(*mapping.detail->texgen));
+    write.writeW = write.writeW || (obj && inspect::texgenWritesR(*detail.texgen));
     const inspect::ProjectiveDivision divided = inspect::divideByQ(mapped.uv, mapped.q);
     io::writeMesh(path, mapped.mesh, divided.applied ? &divided.uv : &mapped.uv, write);
   });

@@ -37,6 +37,10 @@ std::string numbers(const std::array<double, N>& values) {
   return text;
 }
 
+// A number the command line's parser has accepted, as it read it (strtod: 1e-400 is 0, not an
+// exception as std::stod's out_of_range).
+inline double numberFrom(const std::string& text) { return std::strtod(text.c_str(), nullptr); }
+
 template <std::size_t N>
 std::array<double, N> arrayFrom(const std::string& text, const std::string& option) {
   const Eigen::VectorXd parsed = cli::parseNumbers(text, int(N), option);
@@ -85,21 +89,21 @@ Field<Options> optionalTextField(const char* name, std::optional<std::string> Op
 template <class Options>
 Field<Options> numberField(const char* name, double Options::*member) {
   return field(
-      name, member, [member](Options& o, const std::vector<std::string>& r) { o.*member = std::stod(r.back()); },
+      name, member, [member](Options& o, const std::vector<std::string>& r) { o.*member = numberFrom(r.back()); },
       [](double v) { return number(v); }, [](double v) { return v; });
 }
 
 template <class Options>
 Field<Options> optionalNumberField(const char* name, std::optional<double> Options::*member) {
   return field(
-      name, member, [member](Options& o, const std::vector<std::string>& r) { o.*member = std::stod(r.back()); },
+      name, member, [member](Options& o, const std::vector<std::string>& r) { o.*member = numberFrom(r.back()); },
       [](const std::optional<double>& v) { return number(*v); }, [](const std::optional<double>& v) { return *v; });
 }
 
 template <class Options>
 Field<Options> integerField(const char* name, int Options::*member) {
   return field(
-      name, member, [member](Options& o, const std::vector<std::string>& r) { o.*member = std::stoi(r.back()); },
+      name, member, [member](Options& o, const std::vector<std::string>& r) { o.*member = int(numberFrom(r.back())); },
       [](int v) { return std::to_string(v); }, [](int v) { return std::int64_t(v); });
 }
 

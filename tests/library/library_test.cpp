@@ -3,6 +3,8 @@
 // public exception types, and files written and read back.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -157,6 +159,23 @@ TEST(Map, TypedParametersAreCheckedWhereTheyCameFrom) {
   EXPECT_EQ(map(triangle(), p).uv, map(triangle(), MapOptions::parse("--projector cylinder")).uv);
   p.values.push_back({"thread", std::int64_t(1), "thread"});
   EXPECT_EQ(messageOf([&] { map(triangle(), p); }), "thread: not a parameter here; did you mean threads?");
+}
+
+TEST(Mapping, ADefaultMappingIsRefusedNotAnAbort) {
+  // report, render and writeMesh of Mapping{} ended the process with a failed check.
+  const Mapping empty;
+  for (const std::string& message : {messageOf([&] { report(empty); }), messageOf([&] { render(empty); }),
+                                     messageOf([&] { writeMesh("never.obj", empty); })})
+    EXPECT_NE(message.find(": the mapping is empty (a default Mapping); make one with map(), texgen() or fileUvs()"),
+              std::string::npos)
+        << message;
+  EXPECT_THROW(report(empty), std::invalid_argument);
+  EXPECT_FALSE(std::filesystem::exists("never.obj"));
+}
+
+TEST(MapOptions, ANumberBelowTheSmallestDoubleReadsAsTheCommandLineReadsIt) {
+  // std::stod's out_of_range escaped parse() (Python: IndexError) where the command line takes it.
+  EXPECT_EQ(MapOptions::parse("--pole-eps 1e-400").poleEps, 0.0);
 }
 
 TEST(Map, DensityScalesTheUvsToTexelsPerUnitOfTheTextureSize) {

@@ -677,6 +677,10 @@ def test_report_is_the_programs_json(tmp_path, cli):
         uvtk.report(uvtk.Mesh(*octahedron()), m)
     with pytest.raises(ValueError, match="--size: expected WxH"):
         uvtk.report(mesh, m, size="big")
+    # The page of a mesh made in memory (no path): it raised nlohmann's out_of_range 'path' before.
+    uvtk.report(mesh, m, html=tmp_path / "py.html")
+    page = (tmp_path / "py.html").read_text()
+    assert page.startswith("<!DOCTYPE html>") and "uvtk report: a mesh in memory" in page
 
 
 def read_png(path):
