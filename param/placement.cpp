@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "param/formulas.h"
+#include "param/surface_traits.h"
 
 namespace uvtk::param {
 
@@ -34,7 +35,7 @@ Mat3 fittedRotation(const std::vector<Vec3>& positions, SurfaceKind surface, con
   const Mat3 e = options.spreadAxes ? *options.spreadAxes
                  : options.fit == Fit::Pca ? principalAxes(positions)
                                            : orientedBoxAxes(positions);
-  if (surface == SurfaceKind::Plane) return frameRows(e.row(2), e.row(0));
+  if (traitsOf(surface).shape == UnitShape::Plane) return frameRows(e.row(2), e.row(0));
   return frameRows(e.row(0), e.row(1));
 }
 
@@ -75,14 +76,14 @@ Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface,
 
   // local = scale (rotation unit - origin), per axis, all in units of the unit box
   Vec3 origin = center, scale = Vec3::Ones();
-  switch (options.fit == Fit::Center ? SurfaceKind::TwoPlane : surface) {  // Center: no surface-specific fit
-    case SurfaceKind::Plane: {
+  switch (options.fit == Fit::Center ? UnitShape::None : traitsOf(surface).shape) {  // Center: no surface-specific fit
+    case UnitShape::Plane: {
       const double xy = positiveOr(std::max(extent.x(), extent.y()), 1.0);
       origin = Vec3(lo.x(), lo.y(), center.z());
       scale = Vec3(1.0 / positiveOr(extent.x(), xy), 1.0 / positiveOr(extent.y(), xy), 1.0 / xy);
       break;
     }
-    case SurfaceKind::Cylinder: {
+    case UnitShape::Cylinder: {
       double radius = 0.0;
       for (const Vec3& p : box.unit) {
         const Vec3 r = rotation * p;
@@ -93,23 +94,22 @@ Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface,
       scale = Vec3(1.0 / radius, 1.0 / radius, 1.0 / positiveOr(extent.z(), radius));
       break;
     }
-    case SurfaceKind::Sphere: {
+    case UnitShape::Ball: {
       double radius = 0.0;
       for (const Vec3& p : box.unit) radius = std::max(radius, (rotation * p - center).norm());
       scale = Vec3::Constant(1.0 / positiveOr(radius, 1.0));
       break;
     }
-    case SurfaceKind::Cube: {
+    case UnitShape::Cube: {
       const double largest = positiveOr(0.5 * extent.maxCoeff(), 1.0);
       for (int a = 0; a < 3; ++a) scale[a] = 1.0 / positiveOr(0.5 * extent[a], largest);
       break;
     }
-    case SurfaceKind::Triplanar:
+    case UnitShape::Box:
       origin = lo;
       scale = Vec3::Constant(1.0 / positiveOr(extent.maxCoeff(), 1.0));
       break;
-    case SurfaceKind::TwoPlane:
-    case SurfaceKind::Camera:
+    case UnitShape::None:
       break;
   }
 

@@ -150,7 +150,7 @@ Evaluated evaluateCorners(const S& surface, const M& mapping, const Mesh& mesh, 
         }
         if (invalid)
           c.faceFlags[f] |= kFaceInvalid;
-        else if (S::kWraps && (pole || enclosesAxis(s[0]->axial, s[1]->axial, s[2]->axial)))
+        else if (pole || (S::kWraps && enclosesAxis(s[0]->axial, s[1]->axial, s[2]->axial)))
           c.faceFlags[f] |= kFacePole;
       }
     });
@@ -371,21 +371,21 @@ std::optional<Eigen::AlignedBox3d> sensibleBox(const std::vector<Vec3>& position
   const LocalFrameT<double> frame(localFromObject);  // the local positions the mapping itself sees
   Eigen::AlignedBox3d box;
   for (const Vec3& p : positions) box.extend(frame.point(p));
-  switch (o.surface) {  // the unit shape the fits put the mesh on (§2)
-    case SurfaceKind::Plane:
+  switch (traitsOf(o.surface).shape) {  // the unit shape the fits put the mesh on (§2)
+    case UnitShape::Plane:
       box.extend(Vec3(0, 0, 0)).extend(Vec3(1, 1, 0));
       break;
-    case SurfaceKind::Cylinder:
+    case UnitShape::Cylinder:
       box.extend(Vec3(-1, -1, 0)).extend(Vec3(1, 1, 1));
       break;
-    case SurfaceKind::Sphere:
-    case SurfaceKind::Cube:
+    case UnitShape::Ball:
+    case UnitShape::Cube:
       box.extend(Vec3(-1, -1, -1)).extend(Vec3(1, 1, 1));
       break;
-    case SurfaceKind::TwoPlane:  // object space: no unit shape
+    case UnitShape::None:  // object space (two-plane; the camera is caught below): no unit shape
+      if (traitsOf(o.surface).isPerspective) return std::nullopt;  // no surface to hit: nothing is out of range
       break;
-    case SurfaceKind::Camera:  // no surface to hit: nothing is out of range
-    case SurfaceKind::Triplanar:
+    case UnitShape::Box:  // triplanar: three planes, every hit in range
       return std::nullopt;
   }
   if (box.isEmpty() || !box.sizes().allFinite() || !(box.sizes().maxCoeff() > 0.0)) return std::nullopt;

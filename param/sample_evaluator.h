@@ -68,6 +68,10 @@ SurfaceT<T> makeSurface(const ProjectorOptions& o) {
       return SphereSurfaceT<T>{o.spherePreset};
     case SurfaceKind::Cube:
       return CubeSurfaceT<T>{o.cubeConvention, o.cubeLayout};
+    case SurfaceKind::Octahedral:
+      return OctahedralSurfaceT<T>{};
+    case SurfaceKind::ShrinkWrap:
+      return ShrinkWrapSurfaceT<T>{};
     case SurfaceKind::Camera:  // no surface: project(), mapVertices and PointMapping go round these
     case SurfaceKind::Triplanar:
       UVTK_CHECK(false);
@@ -138,6 +142,7 @@ class SampleEvaluator {
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
 #endif
   template <class PositionOf, class NormalOf>
   void block(std::size_t n, PositionOf position, NormalOf normal, Out* out) const {
@@ -156,8 +161,7 @@ class SampleEvaluator {
       q[i] = hit.q;
       out[i].axial = OutVec2(R(q[i].x()), R(q[i].y()));
       out[i].state = CornerState::Ok;
-      if constexpr (S::kWraps)
-        if (isPole_(radialDistance(q[i].x(), q[i].y()), q[i].z())) out[i].state = CornerState::Pole;
+      if (atSingularPoint<S>(isPole_, q[i])) out[i].state = CornerState::Pole;
       if constexpr (S::kAngles > 0) {
         const auto arguments = surface_.angleArguments(q[i]);
         for (std::size_t a = 0; a < kAngles; ++a)
@@ -168,8 +172,8 @@ class SampleEvaluator {
     for (std::size_t i = 0; i < n; ++i) {
       if (out[i].state == CornerState::Invalid) continue;
       const Vec2T<T> uv = surface_.uvFromAngles(q[i], angles.data() + i * kAngles);
-      // u is undefined at a pole (§5); v is defined there.
-      out[i].uv = OutVec2(out[i].state == CornerState::Pole ? R(0) : R(uv.x()), R(uv.y()));
+      // u is undefined at a wrapping surface's pole (§5); v is defined there.
+      out[i].uv = OutVec2(S::kWraps && out[i].state == CornerState::Pole ? R(0) : R(uv.x()), R(uv.y()));
       if (!out[i].uv.allFinite())
         out[i].uv = OutVec2::Zero(), out[i].state = CornerState::Invalid, out[i].reason = kCornerNotFinite;
     }

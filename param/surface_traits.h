@@ -6,6 +6,16 @@
 
 namespace uvtk::param {
 
+// The unit shape a fit puts the mesh on (§2), which also bounds the sensible hits (§4).
+enum class UnitShape {
+  None,      // object space (two-plane) or no surface (camera)
+  Plane,     // [0, 1]^2 x {0}, looking along the smallest spread
+  Cylinder,  // radius 1 about z, z in [0, 1]
+  Ball,      // the unit ball (sphere, octahedral, shrink wrap)
+  Cube,      // [-1, 1]^3, each axis to its own extent
+  Box,       // the mesh's box scaled by its largest extent, from its low corner (triplanar)
+};
+
 struct SurfaceTraits {
   const char* name;         // as every face spells it (param/projector_names.h)
   bool wraps;               // u turns about the axis with period 1: a seam, poles, --seam-place, the math mode
@@ -15,13 +25,14 @@ struct SurfaceTraits {
   bool blendsProjections;   // three projections blended by the normal per pixel (triplanar)
   bool isPerspective;       // a camera's perspective, with a q per corner; no surface, no placement
   bool hasFaceIds;          // a face id per corner (the cube's six), written as w by its faces layout
+  UnitShape shape;
 };
 
 const SurfaceTraits& traitsOf(SurfaceKind surface);
 
 // Every surface, in the order help and messages list them.
-inline constexpr SurfaceKind kSurfaces[] = {SurfaceKind::Plane,  SurfaceKind::TwoPlane, SurfaceKind::Cylinder,
-                                            SurfaceKind::Sphere, SurfaceKind::Cube,     SurfaceKind::Camera,
-                                            SurfaceKind::Triplanar};
+inline constexpr SurfaceKind kSurfaces[] = {
+    SurfaceKind::Plane,  SurfaceKind::TwoPlane,  SurfaceKind::Cylinder,   SurfaceKind::Sphere,    SurfaceKind::Cube,
+    SurfaceKind::Camera, SurfaceKind::Triplanar, SurfaceKind::Octahedral, SurfaceKind::ShrinkWrap};
 
 }  // namespace uvtk::param

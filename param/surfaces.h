@@ -160,9 +160,23 @@ struct AtanArguments {
 template <class T>
 std::optional<T> firstNonNegativeRoot(T a, T b, T c, T cScale);
 
+// Where a surface's (u, v) is not defined: nowhere, on its axis (the poles of the wrapping
+// surfaces, §5: u is undefined there, v exact), or at -z alone (the shrink wrap's one point).
+enum class Singular { None, Axis, BelowOnly };
+
+// Whether the hit q is at the surface's singular point(s), under the pole test (--pole-eps).
+template <class S, class T>
+bool atSingularPoint(const PoleTest& isPole, const Vec3T<T>& q) {
+  if constexpr (S::kSingular == Singular::None) return false;
+  const bool onAxis = isPole(radialDistance(q.x(), q.y()), q.z());
+  if constexpr (S::kSingular == Singular::BelowOnly) return onAxis && q.z() < T(0);
+  return onAxis;
+}
+
 template <class T>
 struct PlaneSurfaceT {  // z = 0, (u, v) = (x, y)
   static constexpr bool kWraps = false;
+  static constexpr Singular kSingular = Singular::None;
   static constexpr int kAngles = 0;
   HitT<T> resolve(const ProbeT<T>& probe) const;
   std::array<AtanArguments<T>, 0> angleArguments(const Vec3T<T>&) const { return {}; }
@@ -176,6 +190,7 @@ struct PlaneSurfaceT {  // z = 0, (u, v) = (x, y)
 template <class T>
 struct TwoPlaneSurfaceT {
   static constexpr bool kWraps = false;
+  static constexpr Singular kSingular = Singular::None;
   static constexpr int kAngles = 0;
   Vec4T<T> planeU;  // normalised so that (a, b, c) has unit length
   Vec4T<T> planeV;
@@ -193,6 +208,7 @@ struct TwoPlaneSurfaceT {
 template <class T>
 struct CylinderSurfaceT {  // radius 1 about the z axis
   static constexpr bool kWraps = true;
+  static constexpr Singular kSingular = Singular::Axis;
   static constexpr int kAngles = 1;
   HitT<T> resolve(const ProbeT<T>& probe) const;
   std::array<AtanArguments<T>, 1> angleArguments(const Vec3T<T>& q) const { return {{{q.y(), q.x()}}}; }
@@ -206,6 +222,7 @@ struct CylinderSurfaceT {  // radius 1 about the z axis
 template <class T>
 struct SphereSurfaceT {  // radius 1 about the origin
   static constexpr bool kWraps = true;
+  static constexpr Singular kSingular = Singular::Axis;
   static constexpr int kAngles = 2;
   SpherePreset preset = SpherePreset::Default;
   HitT<T> resolve(const ProbeT<T>& probe) const;
@@ -222,11 +239,42 @@ struct SphereSurfaceT {  // radius 1 about the origin
   double uPerTurn() const { return preset == SpherePreset::Glu ? -1.0 : 1.0; }  // gluSphere's s runs clockwise
 };
 
+// The octahedral map of the direction of q (Cigolle et al., JCGT 2014; docs/conventions.md §3): the
+// unit sphere's directions on the square, the lower half folded out over the corners. No angle.
+template <class T>
+struct OctahedralSurfaceT {
+  static constexpr bool kWraps = false;
+  static constexpr Singular kSingular = Singular::None;
+  static constexpr int kAngles = 0;
+  HitT<T> resolve(const ProbeT<T>& probe) const { return SphereSurfaceT<T>{}.resolve(probe); }
+  std::array<AtanArguments<T>, 0> angleArguments(const Vec3T<T>&) const { return {}; }
+  Vec2T<T> uvFromAngles(const Vec3T<T>& q, const T*) const { return octahedralUv(q); }
+  Vec2T<T> uvAt(const Vec3T<T>& q) const { return octahedralUv(q); }
+};
+
+// 3ds Max's shrink wrap: the azimuthal equidistant projection about the -z pole, one singular
+// point (-z) instead of two poles (docs/conventions.md §3). One angle: theta from +z.
+template <class T>
+struct ShrinkWrapSurfaceT {
+  static constexpr bool kWraps = false;
+  static constexpr Singular kSingular = Singular::BelowOnly;
+  static constexpr int kAngles = 1;
+  HitT<T> resolve(const ProbeT<T>& probe) const { return SphereSurfaceT<T>{}.resolve(probe); }
+  std::array<AtanArguments<T>, 1> angleArguments(const Vec3T<T>& q) const {
+    return {{{radialDistance(q.x(), q.y()), q.z()}}};
+  }
+  Vec2T<T> uvFromAngles(const Vec3T<T>& q, const T* angles) const { return shrinkWrapUv(q, angles[0]); }
+  Vec2T<T> uvAt(const Vec3T<T>& q) const {
+    return shrinkWrapUv(q, std::atan2(radialDistance(q.x(), q.y()), q.z()));
+  }
+};
+
 // The box [-1, 1]^3. Faces are chosen per triangle (chooseFace); each corner is then projected
 // onto that face's plane by its own probe (projectOnFace), then to (s, t) (faceSt).
 template <class T>
 struct CubeSurfaceT {
   static constexpr bool kWraps = false;
+  static constexpr Singular kSingular = Singular::None;
   CubeConvention convention = CubeConvention::Gl;
   CubeLayout layout = CubeLayout::Faces;
   // `faceNormal` is the triangle's normal, used by Foot probes (box mapping).
@@ -241,8 +289,8 @@ struct CubeSurfaceT {
 };
 
 template <class T>
-using SurfaceT =
-    std::variant<PlaneSurfaceT<T>, TwoPlaneSurfaceT<T>, CylinderSurfaceT<T>, SphereSurfaceT<T>, CubeSurfaceT<T>>;
+using SurfaceT = std::variant<PlaneSurfaceT<T>, TwoPlaneSurfaceT<T>, CylinderSurfaceT<T>, SphereSurfaceT<T>,
+                              CubeSurfaceT<T>, OctahedralSurfaceT<T>, ShrinkWrapSurfaceT<T>>;
 
 using Probe = ProbeT<double>;
 using Sample = SampleT<double>;

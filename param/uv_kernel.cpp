@@ -39,8 +39,7 @@ LaneUv<T> mapLane(const S& surface, const M& mapping, const PoleTest& isPole, Ma
   const Vec3T<T>& q = hit.q;
   out.axialX = q.x(), out.axialY = q.y();
   out.state = CornerState::Ok;
-  if constexpr (S::kWraps)
-    if (isPole(radialDistance(q.x(), q.y()), q.z())) out.state = CornerState::Pole;
+  if (atSingularPoint<S>(isPole, q)) out.state = CornerState::Pole;
   constexpr std::size_t kAngles = std::max(S::kAngles, 1);
   T y[kAngles] = {}, x[kAngles] = {}, angles[kAngles] = {};
   if constexpr (S::kAngles > 0) {
@@ -49,7 +48,7 @@ LaneUv<T> mapLane(const S& surface, const M& mapping, const PoleTest& isPole, Ma
     atan2Block(math, y, x, angles, kAngles);
   }
   const Vec2T<T> uv = surface.uvFromAngles(q, angles);
-  out.u = out.state == CornerState::Pole ? T(0) : uv.x();
+  out.u = S::kWraps && out.state == CornerState::Pole ? T(0) : uv.x();
   out.v = uv.y();
   if (!std::isfinite(out.u) || !std::isfinite(out.v))
     out.u = out.v = T(0), out.state = CornerState::Invalid, out.reason = kCornerNotFinite;
@@ -69,9 +68,7 @@ std::optional<SimdVariant> simdVariantOf(const ProjectorOptions& o) {
       return foot ? SimdVariant::PlaneFoot : SimdVariant::PlaneCentral;
     case SurfaceKind::TwoPlane:
       return foot ? SimdVariant::TwoPlaneFoot : SimdVariant::TwoPlaneCentral;
-    case SurfaceKind::Cube:
-    case SurfaceKind::Camera:
-    case SurfaceKind::Triplanar:
+    default:  // the cube, camera and triplanar have no per-vertex kernel; the others, no vectors
       break;
   }
   return std::nullopt;
@@ -115,7 +112,7 @@ void UvKernel<T>::run(const KernelSpan<T>& span, std::size_t first, std::vector<
   const std::optional<SimdVariant> variant = simdVariantOf(options_);
   const PoleTest isPole(options_.poleEpsilon);
   const MathMode math = options_.arithmetic.math;
-  const bool wraps = options_.surface == SurfaceKind::Sphere || options_.surface == SurfaceKind::Cylinder;
+  const bool wraps = traitsOf(options_.surface).wraps;
   std::visit(
       [&](const auto& s, const auto& m) {
         using S = std::decay_t<decltype(s)>;

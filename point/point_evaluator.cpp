@@ -85,7 +85,8 @@ Result PointEvaluator::projectorAt(const Vec3& p, const Vec3& n, Result out) con
   if (camera_) out.q = camera_->homogeneous(p).w();  // (u, v) are s/q, t/q: q is w_c, the divisor
   if (raw.state == CornerState::Pole) {
     out.status = Status::Pole;
-    out.reason = "on the axis: u is undefined there (written as 0), v is exact";
+    out.reason = raw_->wrapsU() ? "on the axis: u is undefined there (written as 0), v is exact"
+                                : "at the singular point: (u, v) is undefined there (written at azimuth 0)";
   } else if (raw_->wrapsU() && !cap) {
     const double start = *param::uPeriodStartOf(o);
     if (uv.x() == start || uv.x() == start + 1.0) {

@@ -14,8 +14,9 @@
 namespace uvtk::param {
 namespace {
 
-constexpr SurfaceKind kSurfaces[] = {SurfaceKind::Plane, SurfaceKind::TwoPlane, SurfaceKind::Cylinder,
-                                     SurfaceKind::Sphere, SurfaceKind::Cube};
+constexpr SurfaceKind kSurfaces[] = {SurfaceKind::Plane,  SurfaceKind::TwoPlane,   SurfaceKind::Cylinder,
+                                     SurfaceKind::Sphere, SurfaceKind::Cube,       SurfaceKind::Octahedral,
+                                     SurfaceKind::ShrinkWrap};
 
 struct NamedMesh {
   const char* name;
@@ -78,6 +79,9 @@ Vec2 uvBound(const ProjectorOptions& o, const Eigen::AlignedBox3d& box) {
       return {1.5, 1.0};
     case SurfaceKind::Cube:
       return Vec2::Constant((1.0 + c.cwiseAbs().maxCoeff() + reach) / 2.0);
+    case SurfaceKind::Octahedral:  // directions on the square [0, 1]^2
+    case SurfaceKind::ShrinkWrap:
+      return {1.0, 1.0};
     case SurfaceKind::Camera:  // no range rule (camera_projector_test.cpp, triplanar_test.cpp); not among kSurfaces
     case SurfaceKind::Triplanar:
       break;

@@ -13,8 +13,9 @@
 namespace uvtk::param {
 namespace {
 
-constexpr SurfaceKind kSurfaces[] = {SurfaceKind::Plane, SurfaceKind::TwoPlane, SurfaceKind::Cylinder,
-                                     SurfaceKind::Sphere, SurfaceKind::Cube};
+constexpr SurfaceKind kSurfaces[] = {SurfaceKind::Plane,  SurfaceKind::TwoPlane,   SurfaceKind::Cylinder,
+                                     SurfaceKind::Sphere, SurfaceKind::Cube,       SurfaceKind::Octahedral,
+                                     SurfaceKind::ShrinkWrap};
 constexpr RayKind kRays[] = {RayKind::SurfaceNormal, RayKind::Centroid, RayKind::ObjectNormal, RayKind::Reflection};
 
 ProjectorOptions optionsFor(SurfaceKind surface, RayKind ray = RayKind::SurfaceNormal) {
