@@ -203,21 +203,20 @@ std::vector<std::uint8_t> coverageCounts(const UvMap& uv, const std::vector<Face
 
 int overlapResolution(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& unitGrid,
                       int resolution) {
-  // The faces' UV area and height as fractions of the grid's box (the grid's own scaling keeps them finite).
-  const Vec2 origin = unitGrid.bounds.min(), size = unitGrid.bounds.sizes();
-  double area = 0.0, height = 0.0;
+  // The faces' heights as fractions of the grid's box (the grid's own scaling keeps them finite).
+  const double origin = unitGrid.bounds.min().y(), size = unitGrid.bounds.sizes().y();
+  double height = 0.0;
   std::size_t measured = 0;
   for (std::size_t f = 0; f < faces.size(); ++f) {
     if (!isMeasured(faces[f].status)) continue;
     ++measured;
-    Vec2 p[3];
-    for (int k = 0; k < 3; ++k) p[k] = (uv.uv[3 * f + std::size_t(k)] * unitGrid.scale - origin).cwiseQuotient(size);
-    const Vec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
-    area += 0.5 * std::fabs(e1.x() * e2.y() - e1.y() * e2.x());
-    height += std::max({p[0].y(), p[1].y(), p[2].y()}) - std::min({p[0].y(), p[1].y(), p[2].y()});
+    double v[3];
+    for (int k = 0; k < 3; ++k) v[k] = (uv.uv[3 * f + std::size_t(k)].y() * unitGrid.scale - origin) / size;
+    height += std::max({v[0], v[1], v[2]}) - std::min({v[0], v[1], v[2]});
   }
   const double budget = kOverlapWorkBase + kOverlapWorkPerFace * double(measured);
-  auto work = [&](double r) { return area * r * r + height * r + double(measured); };
+  // The grid's scan, each face's spans twice (counted, then asked), one step per face.
+  auto work = [&](double r) { return r * r + 2.0 * height * r + double(measured); };
   while (resolution > 1 && work(double(resolution)) > budget) resolution /= 2;
   return resolution;
 }
@@ -232,50 +231,66 @@ Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces
   resolution = overlap.resolution = overlapResolution(uv, faces, uvGridOver(bounds, 1), resolution);
   const UvGrid grid = uvGridOver(bounds, resolution);
   const GridSnap snap(grid);
-
-  // The counts in bands of rows. A mesh with few faces for its grid (at most R^2 / 64) is drawn band by
-  // band into 64 KiB used again for each, its faces snapped again for each band they cross: at 1024
-  // the sixteen bands cost less than touching 1 MB of fresh memory, which this machine's pages make
-  // the larger part of a small mesh's judgement. Other meshes are one band, the whole grid.
   const std::int64_t n = resolution;
-  std::size_t measured = 0;
-  for (const FaceDistortion& face : faces) measured += isMeasured(face.status);
-  const bool banded = std::int64_t(measured) <= n * n / 64;
-  const std::int64_t bandRows = banded ? std::max<std::int64_t>(1, 65536 / n) : n;
-  // A banded mesh's faces' rows, so that a band skips the faces that do not reach it (-1: none).
-  std::vector<std::array<std::int32_t, 2>> faceRows;
+
+  // The grid in bands of rows whose buffers (256 KiB at 1024) are used again for each band: touching
+  // a whole grid's fresh memory would cost more than the counting. Each face is listed for the bands
+  // its rows reach (compressed rows: a count per band, then the faces).
+  const std::int64_t bandRows = std::max<std::int64_t>(1, 32768 / (n + 1));
+  const std::size_t bands = std::size_t((n + bandRows - 1) / bandRows);
+  std::vector<std::array<std::int32_t, 2>> faceBands(faces.size(), {0, -1});
+  std::vector<std::uint32_t> bandStart(bands + 1, 0);
   SnappedFace face;
-  if (banded) {
-    faceRows.assign(faces.size(), {0, -1});
-    for (std::size_t f = 0; f < faces.size(); ++f)
-      if (isMeasured(faces[f].status) && snap.snap(uv, f, face) && face.x0 <= face.x1)
-        faceRows[f] = {std::int32_t(face.y0), std::int32_t(face.y1)};
-  }
-  auto reaches = [&](std::size_t f, std::int64_t from, std::int64_t to) {
-    return banded ? faceRows[f][0] <= to && faceRows[f][1] >= from
-                  : isMeasured(faces[f].status);
-  };
-  std::vector<std::uint8_t> counts(std::size_t(bandRows * n));
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    if (isMeasured(faces[f].status) && snap.snap(uv, f, face) && face.x0 <= face.x1 && face.y0 <= face.y1) {
+      faceBands[f] = {std::int32_t(face.y0 / bandRows), std::int32_t(face.y1 / bandRows)};
+      for (std::int32_t band = faceBands[f][0]; band <= faceBands[f][1]; ++band) ++bandStart[std::size_t(band) + 1];
+    }
+  for (std::size_t band = 0; band < bands; ++band) bandStart[band + 1] += bandStart[band];
+  std::vector<std::uint32_t> bandFaces(bandStart.back()), next(bandStart.begin(), bandStart.end() - 1);
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    for (std::int32_t band = faceBands[f][0]; band <= faceBands[f][1]; ++band)
+      bandFaces[next[std::size_t(band)]++] = std::uint32_t(f);
+
+  // Per row, the faces' spans as differences (+1 at x0, -1 after x1: one step a span, not a pixel),
+  // then one pass that sums them into counts and keeps the running number of overlapped pixels, so
+  // that whether a span holds one is a difference of two of them.
+  const std::size_t stride = std::size_t(n) + 1;
+  std::vector<std::int32_t> difference(std::size_t(bandRows) * stride), overlappedBefore(std::size_t(bandRows) * stride);
   std::vector<std::uint8_t> overlapped(faces.size(), 0);
-  for (std::int64_t from = 0; from < n; from += bandRows) {
-    const std::int64_t to = std::min(n - 1, from + bandRows - 1);
-    std::fill(counts.begin(), counts.end(), std::uint8_t(0));
-    for (std::size_t f = 0; f < faces.size(); ++f)
-      if (reaches(f, from, to) && snap.snap(uv, f, face))
-        forEachRowSpan(face, from, to, [&](int y, int x0, int x1) { countSpan(&counts[std::size_t((y - from) * n)], x0, x1); });
+  for (std::size_t band = 0; band < bands; ++band) {
+    const std::int64_t from = std::int64_t(band) * bandRows, to = std::min(n - 1, from + bandRows - 1);
+    const std::uint32_t* first = bandFaces.data() + bandStart[band];
+    const std::uint32_t* last = bandFaces.data() + bandStart[band + 1];
+    std::fill(difference.begin(), difference.end(), 0);
+    for (const std::uint32_t* f = first; f != last; ++f)
+      if (snap.snap(uv, *f, face))
+        forEachRowSpan(face, from, to, [&](int y, int x0, int x1) {
+          std::int32_t* row = &difference[std::size_t(y - from) * stride];
+          ++row[x0], --row[x1 + 1];
+        });
     std::size_t overlappedHere = 0;
-    for (const std::uint8_t count : counts) {
-      overlap.coveredPixels += count >= 1;
-      overlappedHere += count >= 2;
+    for (std::int64_t y = from; y <= to; ++y) {
+      const std::int32_t* row = &difference[std::size_t(y - from) * stride];
+      std::int32_t* before = &overlappedBefore[std::size_t(y - from) * stride];
+      std::int32_t count = 0, overlappedSoFar = 0;
+      for (std::int64_t x = 0; x < n; ++x) {
+        count += row[x];
+        before[x] = overlappedSoFar;
+        overlap.coveredPixels += count >= 1;
+        overlappedSoFar += count >= 2;
+      }
+      before[n] = overlappedSoFar;
+      overlappedHere += std::size_t(overlappedSoFar);
     }
     overlap.overlappedPixels += overlappedHere;
     if (overlappedHere == 0) continue;
     // The faces that cover a centre another face covers too: a second pass over the band's spans.
-    for (std::size_t f = 0; f < faces.size(); ++f)
-      if (!overlapped[f] && reaches(f, from, to) && snap.snap(uv, f, face))
+    for (const std::uint32_t* f = first; f != last; ++f)
+      if (!overlapped[*f] && snap.snap(uv, *f, face))
         forEachRowSpan(face, from, to, [&](int y, int x0, int x1) {
-          const std::uint8_t* row = &counts[std::size_t((y - from) * n)];
-          overlapped[f] |= std::any_of(row + x0, row + x1 + 1, [](std::uint8_t count) { return count >= 2; });
+          const std::int32_t* before = &overlappedBefore[std::size_t(y - from) * stride];
+          overlapped[*f] |= before[x1 + 1] > before[x0];
         });
   }
   overlap.overlappedFaces = static_cast<std::size_t>(std::count(overlapped.begin(), overlapped.end(), std::uint8_t(1)));

@@ -71,14 +71,15 @@ void forEachCoveredPixel(const UvMap& uv, const std::vector<FaceDistortion>& fac
 // 255. Preconditions as forEachCoveredPixel.
 std::vector<std::uint8_t> coverageCounts(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid);
 
-// The raster's work in pixel visits is bounded by the input: at most kOverlapWorkBase plus
-// kOverlapWorkPerFace per measured face. A usual layout (its faces' UV area about its box's, so about
-// resolution^2 covered pixels) stays far below it at 1024; faces stacked on one another (a thousand
-// copies of a triangle, a normal O-mapping of a scan) would cost their area times their number.
+// The raster's work is bounded by the input: at most kOverlapWorkBase plus kOverlapWorkPerFace per
+// measured face. Its work is the grid's scan (resolution^2) and a step per span of a face's row
+// (spans are counted as differences, not pixel by pixel), so faces stacked on one another cost their
+// rows, not their area: a thousand copies of a triangle over the grid stay at 1024; a million faces
+// each as tall as the layout would not.
 constexpr double kOverlapWorkBase = double(1 << 23);
 constexpr double kOverlapWorkPerFace = 256.0;
 
-// `resolution`, halved until the raster's estimated work (the faces' covered pixels, their rows, one
+// `resolution`, halved until the raster's estimated work (the grid's pixels, the faces' rows twice, one
 // step per face) is within the budget above. `unitGrid`: uvGridOver(measuredUvBounds(uv, faces), 1).
 int overlapResolution(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& unitGrid,
                       int resolution);

@@ -154,7 +154,7 @@ TEST(OverlapSpans, CountsSaturateAt255) {
   std::vector<Triangle> triangles;
   std::vector<Vec2> uvs;
   for (int f = 0; f < 300; ++f) {
-    for (const Vec2 uv : {Vec2(0, 0), Vec2(1, 0), Vec2(0, 1)}) {
+    for (const Vec2& uv : {Vec2(0, 0), Vec2(1, 0), Vec2(0, 1)}) {
       positions.push_back(Vec3(uv.x(), uv.y(), 0.0));
       uvs.push_back(uv);
     }
@@ -174,8 +174,9 @@ TEST(OverlapSpans, CountsSaturateAt255) {
   EXPECT_EQ(overlap.overlappedFaces, 300u);
 }
 
-// A usual layout keeps the asked resolution; a stack of copies of one triangle is measured at the
-// largest halving whose work fits the budget, and is still wholly overlapped.
+// A usual layout keeps the asked resolution; so does a stack of a thousand copies of one triangle (its
+// spans cost a step each, not their pixels); five thousand are measured at the largest halving whose
+// work fits the budget, and are still wholly overlapped.
 TEST(OverlapSpans, AStackOfFacesIsMeasuredAtAResolutionItsFaceCountPays) {
   const Layout tiling = makeLayout({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}},
                                    {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}});
@@ -187,19 +188,30 @@ TEST(OverlapSpans, AStackOfFacesIsMeasuredAtAResolutionItsFaceCountPays) {
   std::vector<Vec3> positions;
   std::vector<Triangle> triangles;
   std::vector<Vec2> uvs;
-  const int copies = 1000;
+  const int copies = 5000;
   for (int f = 0; f < copies; ++f) {
-    for (const Vec2 uv : {Vec2(0, 0), Vec2(1, 0), Vec2(0, 1)}) {
+    for (const Vec2& uv : {Vec2(0, 0), Vec2(1, 0), Vec2(0, 1)}) {
       positions.push_back(Vec3(uv.x(), uv.y(), 0.0));
       uvs.push_back(uv);
     }
     triangles.push_back({3 * f, 3 * f + 1, 3 * f + 2});
   }
   const Layout stack = makeLayout(positions, triangles, uvs);
-  const Overlap o = measureOverlap(stack.uv, measureFaces(stack.mesh, stack.uv));
-  // Work at R: 1000 (R^2 / 2 + R + 1) within 2^23 + 256 000: R = 128 (8.32e6), not 256 (3.3e7).
-  EXPECT_EQ(o.resolution, 128);
-  EXPECT_GT(o.coveredPixels, 0u);
+  const std::vector<FaceDistortion> measured = measureFaces(stack.mesh, stack.uv);
+  // The centres ((x + 1/2) / R, (y + 1/2) / R) with x + y <= R - 2: (R - 1) R / 2 of them (those on
+  // the hypotenuse are not the triangle's, as above).
+  const std::vector<FaceDistortion> thousand(measured.begin(), measured.begin() + 1000);
+  UvMap firstThousand = stack.uv;
+  firstThousand.uv.resize(3000);
+  const Overlap o1000 = measureOverlap(firstThousand, thousand);
+  EXPECT_EQ(o1000.resolution, 1024);  // work R^2 + 2 (1000 R) + 1000 = 3.1e6 within 2^23 + 256 000
+  EXPECT_EQ(o1000.coveredPixels, 1023u * 1024u / 2u);
+  EXPECT_EQ(o1000.overlappedPixels, o1000.coveredPixels);
+  EXPECT_EQ(o1000.overlappedFaces, 1000u);
+  const Overlap o = measureOverlap(stack.uv, measured);
+  // 5000: at 1024 the work is 1.1e7 > 2^23 + 1.28e6 = 9.7e6; at 512 5.4e6.
+  EXPECT_EQ(o.resolution, 512);
+  EXPECT_EQ(o.coveredPixels, 511u * 512u / 2u);
   EXPECT_EQ(o.overlappedPixels, o.coveredPixels);
   EXPECT_EQ(o.overlappedFaces, std::size_t(copies));
 }
