@@ -270,7 +270,6 @@ class SceneReader {
     m.name = j["name"];
     m.pointer = pointer;
     m.mesh = mesh;
-    m.parser = std::make_shared<CLI::App>();
     const std::string kind = j["kind"];
     if (kind == "projector") {
       m.kind = SceneMapping::Kind::Projector;
@@ -284,6 +283,7 @@ class SceneReader {
       m.seamPlaceAuto = projector.seamPlaceAuto;
     } else if (kind == "texgen") {
       m.kind = SceneMapping::Kind::Texgen;
+      m.parser = std::make_shared<CLI::App>();
       addTexgenOptions(*m.parser, m.texgen, "--texgen");
       addArithmeticOptions(*m.parser, m.texgen.arithmetic, false);
       parseOptions(*m.parser, j, {"kind", "name", "camera", "eye", "center", "up"}, pointer);

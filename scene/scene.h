@@ -1,7 +1,8 @@
 // A scene file (schema/scene.schema.json): meshes with their mappings, cameras, textures and the
-// outputs to write, read and checked completely before any work starts. Every option object is
-// parsed by the very option parser of the subcommand it mirrors (key "axis_dir" is --axis-dir),
-// so a scene can say exactly what the command line can, and is checked the same way.
+// outputs to write, read and checked completely before any work starts. A projector mapping's keys
+// are typed parameters read by param::makeProjector, as the command line's options are (key
+// "axis_dir" is --axis-dir); the other option objects are parsed by the very option parser of the
+// subcommand they mirror, so a scene can say exactly what the command line can, checked the same way.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -42,7 +43,7 @@ struct SceneMapping {
   cli::TexgenArguments texgen;             // resolved with the view when it runs
   std::optional<std::size_t> camera;  // texgen: the view of this camera, else viewFromWorld
   Mat4 viewFromWorld = Mat4::Identity();
-  std::shared_ptr<CLI::App> parser;  // owns what the texgen arguments refer to
+  std::shared_ptr<CLI::App> parser;  // texgen: owns what its arguments refer to (a projector's are typed)
 
   // Whether computing the mapping reads vertex normals (an O-mapping or texgen mode that needs them).
   bool needsNormals() const;
