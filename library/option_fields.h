@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/names.h"
 #include "uvtk/mapping.h"
 #include "options/cli_values.h"
 
@@ -107,10 +108,17 @@ Field<Options> integerField(const char* name, int Options::*member) {
       [](int v) { return std::to_string(v); }, [](int v) { return std::int64_t(v); });
 }
 
-// A flag: the option alone sets the field to `whenGiven` (false: --no-normalize).
+// A flag: the option alone sets the field to `whenGiven` (false: --no-normalize); with a value the
+// parser took as false ("--seamless=0", "=false", "=off", "=no", as Python's seamless=0 becomes), the
+// other way.
 template <class Options>
 Field<Options> flagField(const char* name, bool Options::*member, bool whenGiven = true) {
-  return {name, [member, whenGiven](Options& o, const std::vector<std::string>&) { o.*member = whenGiven; },
+  return {name,
+          [member, whenGiven](Options& o, const std::vector<std::string>& r) {
+            const std::string value = r.empty() ? "" : lowerCase(r.back());
+            const bool no = value == "0" || value == "false" || value == "off" || value == "no";
+            o.*member = no ? !whenGiven : whenGiven;
+          },
           [name, member, whenGiven](const Options& o) {
             return o.*member == whenGiven ? std::vector<std::string>{name} : std::vector<std::string>{};
           },

@@ -161,6 +161,17 @@ TEST(Map, TypedParametersAreCheckedWhereTheyCameFrom) {
   EXPECT_EQ(messageOf([&] { map(triangle(), p); }), "thread: not a parameter here; did you mean threads?");
 }
 
+TEST(Options, AFlagGivenAsFalseIsOff) {
+  // Python's seamless=0 arrives as --seamless=0, which the command line's parser reads as false;
+  // the struct took any value of a flag as "given".
+  EXPECT_FALSE(RenderOptions::parse("--seamless=0").seamless);
+  EXPECT_FALSE(RenderOptions::parse("--two-sided=false").twoSided);
+  EXPECT_TRUE(RenderOptions::parse("--two-sided").twoSided);
+  EXPECT_TRUE(RenderOptions::parse("--two-sided=1").twoSided);
+  EXPECT_TRUE(TexgenOptions::parse("--no-normalize=0").normalize);
+  EXPECT_FALSE(TexgenOptions::parse("--no-normalize").normalize);
+}
+
 TEST(Mapping, ADefaultMappingIsRefusedNotAnAbort) {
   // report, render and writeMesh of Mapping{} ended the process with a failed check.
   const Mapping empty;
