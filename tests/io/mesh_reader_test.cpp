@@ -784,10 +784,12 @@ TEST_F(ReadMesh, RejectsAPathThroughAFile) {
 }
 
 TEST_F(ReadMesh, RejectsAnUnreadableFile) {
-  const std::string path = writeText("locked.obj", kTriangle + "f 1 2 3\n");
-  fs::permissions(path, fs::perms::none);
-  if (std::ifstream(path).good()) GTEST_SKIP() << "running with privileges that read any file";
-  EXPECT_EQ(errorOfPath(path), path + ": error: cannot open: Permission denied");
+  withoutPrivileges(dir_, [&] {
+    const std::string path = writeText("locked.obj", kTriangle + "f 1 2 3\n");
+    fs::permissions(path, fs::perms::none);
+    ASSERT_FALSE(std::ifstream(path).good());
+    EXPECT_EQ(errorOfPath(path), path + ": error: cannot open: Permission denied");
+  });
 }
 
 TEST_F(ReadMesh, ReportsWarnings) {

@@ -125,23 +125,24 @@ TEST_F(OutputSetTest, AFailingRenameUndoesTheTargetsAlreadyReplaced) {
 
 // Not as root, who writes into a read-only folder anyway.
 TEST_F(OutputSetTest, AFolderMadeReadOnlyBeforePublishLeavesNone) {
-  if (::geteuid() == 0) GTEST_SKIP() << "root writes into read-only folders";
-  fs::create_directory(path("locked"));
-  writeText("a.txt", "previous a");
-  writeText("locked/b.txt", "previous b");
-  {
-    OutputSet outputs;
-    outputs.writeText(path("a.txt"), "new a");
-    outputs.writeText(path("locked/b.txt"), "new b");
-    fs::permissions(path("locked"), fs::perms::owner_read | fs::perms::owner_exec);
-    EXPECT_THROW(outputs.publish(), OutputError);
+  withoutPrivileges(dir_, [&] {  // root writes into read-only folders
+    fs::create_directory(path("locked"));
+    writeText("a.txt", "previous a");
+    writeText("locked/b.txt", "previous b");
+    {
+      OutputSet outputs;
+      outputs.writeText(path("a.txt"), "new a");
+      outputs.writeText(path("locked/b.txt"), "new b");
+      fs::permissions(path("locked"), fs::perms::owner_read | fs::perms::owner_exec);
+      EXPECT_THROW(outputs.publish(), OutputError);
+      EXPECT_EQ(readText(path("a.txt")), "previous a");
+    }
+    fs::permissions(path("locked"), fs::perms::owner_all);
+    EXPECT_EQ(names(), (std::vector<std::string>{"a.txt", "locked"}));
+    EXPECT_EQ(names("locked"), std::vector<std::string>{"b.txt"});
     EXPECT_EQ(readText(path("a.txt")), "previous a");
-  }
-  fs::permissions(path("locked"), fs::perms::owner_all);
-  EXPECT_EQ(names(), (std::vector<std::string>{"a.txt", "locked"}));
-  EXPECT_EQ(names("locked"), std::vector<std::string>{"b.txt"});
-  EXPECT_EQ(readText(path("a.txt")), "previous a");
-  EXPECT_EQ(readText(path("locked/b.txt")), "previous b");
+    EXPECT_EQ(readText(path("locked/b.txt")), "previous b");
+  });
 }
 
 TEST_F(OutputSetTest, AdoptedOutputsArePublishedWithTheSet) {
