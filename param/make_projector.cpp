@@ -187,10 +187,11 @@ Projector makeProjector(const ParameterDictionary& p, const ProjectorContext& c)
     if (!traitsOf(o.surface).wraps)
       throw UsageError(p.spelled("seam-place") +
                        ": only the wrapping projectors (cylinder, sphere) have a seam to place");
-    const std::optional<std::string> text = p.getText("seam-place");
-    result.seamPlaceAuto = text && *text == "auto";
-    if (!result.seamPlaceAuto) {
-      if (text) throw UsageError(p.spelled("seam-place") + ": expected degrees or 'auto', got '" + *text + "'");
+    if (p.givenAsText("seam-place")) {  // auto, or degrees as a number
+      const std::string text = *p.getText("seam-place");
+      if (text != "auto") throw UsageError(p.spelled("seam-place") + ": expected degrees or 'auto', got '" + text + "'");
+      result.seamPlaceAuto = true;
+    } else {
       o.placement.turnDegrees = p.getNumber("seam-place", 0.0);
       if (!std::isfinite(o.placement.turnDegrees))
         throw UsageError(p.spelled("seam-place") + ": expected a finite number of degrees");

@@ -90,6 +90,11 @@ bool ParameterDictionary::givenAsNumbers(const std::string& name) const {
   return p && std::holds_alternative<std::vector<double>>(p->value);
 }
 
+bool ParameterDictionary::givenAsText(const std::string& name) const {
+  const Parameter* p = find(name);
+  return p && std::holds_alternative<std::string>(p->value);
+}
+
 std::string ParameterDictionary::spelled(const std::string& name) const {
   for (const Parameter& p : parameters_)
     if (p.name == name) return p.place;

@@ -52,8 +52,10 @@ class ParameterDictionary {
   ParameterFace face() const { return face_; }
   // Given with a value (None is not a value: it means "not given" where that is allowed).
   bool given(const std::string& name) const;
-  // Given as a list of numbers (a size as W,H rather than N).
+  // Given as a list of numbers (a size as W,H rather than N), or as a text (--seam-place auto
+  // rather than degrees).
   bool givenAsNumbers(const std::string& name) const;
+  bool givenAsText(const std::string& name) const;
   // Where the parameter came from, or how this face spells its name.
   std::string spelled(const std::string& name) const;
   // The parameter with a value, as this face writes it: "--projector camera", "projector='camera'".

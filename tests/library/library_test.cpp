@@ -161,6 +161,20 @@ TEST(Map, TypedParametersAreCheckedWhereTheyCameFrom) {
   EXPECT_EQ(messageOf([&] { map(triangle(), p); }), "thread: not a parameter here; did you mean threads?");
 }
 
+TEST(MapOptions, TheSeamPlacedByDegreesTurnsTheProjector) {
+  // The sphere's u at the triangle's corners, turned by 90 degrees: a quarter turn less.
+  const MapOptions turned = MapOptions::parse("--fit none --seam none --pole none --seam-place 90");
+  ASSERT_TRUE(turned.seamPlace.has_value());
+  EXPECT_EQ(*turned.seamPlace, 90.0);
+  const Mapping a = map(octahedron(), turned), b = map(octahedron(), MapOptions::parse("--fit none --seam none --pole none"));
+  for (std::size_t c = 0; c < a.uv.size(); ++c) {
+    if (a.state[c] != CornerState::Ok) continue;
+    const double d = b.uv[c][0] - a.uv[c][0];
+    EXPECT_NEAR(d - std::round(d), 0.25, 1e-12) << c;
+    EXPECT_EQ(a.uv[c][1], b.uv[c][1]);
+  }
+}
+
 TEST(Options, AFlagGivenAsFalseIsOff) {
   // Python's seamless=0 arrives as --seamless=0, which the command line's parser reads as false;
   // the struct took any value of a flag as "given".

@@ -200,6 +200,25 @@ TEST(SurfaceTraits, EachSurfaceIsAskedInOnePlace) {
   EXPECT_EQ(uPeriodStartOf(seed), -0.5);
 }
 
+TEST(MakeProjector, TheSeamIsPlacedByDegreesOrAuto) {
+  // --seam-place 30 was refused ("expected a text") when the parameters were first typed.
+  ParameterDictionary degrees(ParameterFace::CommandLine);
+  degrees.add("projector", std::string("cylinder"));
+  degrees.add("seam-place", 30.0);
+  const Projector turned = makeProjector(degrees);
+  EXPECT_EQ(turned.options.placement.turnDegrees, 30.0);
+  EXPECT_FALSE(turned.seamPlaceAuto);
+  ParameterDictionary automatic(ParameterFace::Keyword);
+  automatic.add("seam-place", std::string("auto"));
+  EXPECT_TRUE(makeProjector(automatic).seamPlaceAuto);
+  ParameterDictionary sideways(ParameterFace::Keyword);
+  sideways.add("seam-place", std::string("sideways"));
+  EXPECT_EQ(messageOf([&] { makeProjector(sideways); }), "seam_place: expected degrees or 'auto', got 'sideways'");
+  ParameterDictionary flag(ParameterFace::Keyword);
+  flag.add("seam-place", true);
+  EXPECT_THROW(makeProjector(flag), ParameterTypeError);
+}
+
 TEST(MakeProjector, CapsGoWithTheCylinderOnly) {
   ParameterDictionary p(ParameterFace::Keyword);
   p.add("projector", std::string("sphere"));
