@@ -52,13 +52,6 @@ std::pair<int, int> parseImageSize(const std::string& text, const std::string& o
   return {w, h};
 }
 
-void checkDensity(double density) {
-  if (density > 0.0 && std::isfinite(density)) return;
-  char found[32];
-  std::snprintf(found, sizeof found, "%g", density);
-  throw UsageError(std::string("--density: expected a positive number of texels per object unit, found ") + found);
-}
-
 analysis::TextureSize parseTextureSize(const std::string& text, const std::string& option) {
   analysis::TextureSize size;
   char comma = 0, extra = 0;

@@ -80,8 +80,6 @@ std::pair<int, int> parseImageSize(const std::string& text, const std::string& o
 // A texture size "W,H", or "N" meaning N,N, with 1 <= W, H <= 16384 texels; throws UsageError
 // naming `option`.
 analysis::TextureSize parseTextureSize(const std::string& text, const std::string& option);
-// `uvtk map --density D`: throws UsageError unless D is a finite positive number of texels per unit.
-void checkDensity(double density);
 
 // A 4x4 matrix from 16 numbers separated by spaces or commas, column-major like glLoadMatrix.
 Mat4 parseMatrix(const std::string& text, const std::string& option);

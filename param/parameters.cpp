@@ -56,19 +56,9 @@ std::string spellName(ParameterFace face, const std::string& name) {
 void ParameterDictionary::add(const std::string& name, ParameterValue value, std::string place) {
   for (const Parameter& p : parameters_)
     if (p.name == name) throw UsageError(p.place + ": given twice");
-  if (place.empty()) place = spelledName(name);
+  if (place.empty()) place = spellName(face_, name);
   parameters_.push_back({name, std::move(value), std::move(place)});
   read_.push_back(false);
-}
-
-void ParameterDictionary::rename(const std::string& name, const std::string& spelling) {
-  renamed_.emplace_back(name, spelling);
-}
-
-std::string ParameterDictionary::spelledName(const std::string& name) const {
-  for (const auto& [from, to] : renamed_)
-    if (from == name) return to;
-  return spellName(face_, name);
 }
 
 const Parameter* ParameterDictionary::find(const std::string& name) const {
@@ -98,11 +88,11 @@ bool ParameterDictionary::givenAsText(const std::string& name) const {
 std::string ParameterDictionary::spelled(const std::string& name) const {
   for (const Parameter& p : parameters_)
     if (p.name == name) return p.place;
-  return spelledName(name);
+  return spellName(face_, name);
 }
 
 std::string ParameterDictionary::spelledWith(const std::string& name, const std::string& value) const {
-  const std::string spelledName = this->spelledName(name);
+  const std::string spelledName = spellName(face_, name);
   switch (face_) {
     case ParameterFace::Keyword:
       return spelledName + "='" + value + "'";

@@ -45,9 +45,6 @@ class ParameterDictionary {
 
   // `place` "" is the face's spelling of `name`. The same name twice is a UsageError.
   void add(const std::string& name, ParameterValue value, std::string place = "");
-  // A command's own name for a parameter, for messages (`uvtk render`: the camera projector's
-  // eye is --proj-eye, its camera's is --eye).
-  void rename(const std::string& name, const std::string& spelling);
 
   ParameterFace face() const { return face_; }
   // Given with a value (None is not a value: it means "not given" where that is allowed).
@@ -97,12 +94,10 @@ class ParameterDictionary {
   const Parameter* find(const std::string& name) const;  // marks it read
   std::optional<std::string> getChoiceText(const std::string& name, const std::vector<std::string>& names) const;
   [[noreturn]] void wrongKind(const Parameter& parameter, const std::string& expected) const;
-  std::string spelledName(const std::string& name) const;  // the face's spelling, without the place
 
   ParameterFace face_;
   std::vector<Parameter> parameters_;
   mutable std::vector<bool> read_;
-  std::vector<std::pair<std::string, std::string>> renamed_;
 };
 
 // `name` ("cap-angle") as `face` spells it: "--cap-angle", "cap_angle", "capAngle".
