@@ -165,7 +165,8 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
                 "%.1f ms; ",
                 s.vertices, s.faces, measured.seams.wrapEdges + measured.seams.cutEdges, measured.poleVertices.size(),
                 measured.poleFaces, s.invalidVertices, totalMs);
-  return {numbers + verdictLine(judgement), judgement.verdict};
+  const std::string atlas = mapped.projection->atlas ? atlasLine(*mapped.projection->atlas) + "; " : "";
+  return {numbers + atlas + verdictLine(judgement), judgement.verdict};
 }
 
 std::vector<std::string> meshesInFolder(const std::string& folder) {

@@ -9,16 +9,7 @@ namespace {
 
 analysis::TextureSize textureSizeOf(const param::ParameterDictionary& p) {
   analysis::TextureSize size;
-  if (!p.given("texture-size")) return size;
-  const std::string range = ": expected W,H or N (N,N) texels with 1 <= W, H <= 16384";
-  if (p.givenAsNumbers("texture-size")) {
-    const Eigen::Vector2d wh = *p.getVector<2>("texture-size");
-    if (wh != wh.array().floor().matrix() || wh.minCoeff() < 1 || wh.maxCoeff() > 16384)
-      throw UsageError(p.spelled("texture-size") + range);
-    size.width = int(wh.x()), size.height = int(wh.y());
-  } else {
-    size.width = size.height = p.getInteger("texture-size", 1024, 1, 16384);
-  }
+  if (const std::optional<std::array<int, 2>> wh = param::readTextureSize(p)) size.width = (*wh)[0], size.height = (*wh)[1];
   return size;
 }
 

@@ -82,9 +82,23 @@ std::vector<Vec4> MappedMesh::corners(bool baked) const {
 
 namespace {
 
+// The atlas at every pixel: the pixel's face's chart, linear in the point, then the UV transform.
+render::PixelMapping atlasPixelMapping(const param::Atlas& atlas, const param::UvTransform& transform) {
+  auto charts = std::make_shared<const std::vector<param::AtlasChart>>(atlas.charts);
+  auto chartOfFace = std::make_shared<const std::vector<int>>(atlas.chartOfFace);
+  return render::PixelMapping{[charts, chartOfFace, transform](const Vec3& p, const Vec3&, std::int32_t face) {
+                                Vec2 uv = (*charts)[std::size_t((*chartOfFace)[std::size_t(face)])].uvAt(p);
+                                if (!transform.isIdentity()) uv = transform.apply(uv);
+                                return Vec4(uv.x(), uv.y(), 0, 1);
+                              },
+                              false, false};
+}
+
 // The projector evaluated at every pixel (docs/conventions.md §9).
-render::PixelMapping projectorPixelMapping(const param::ProjectorOptions& options, const Affine3& localFromObject,
+render::PixelMapping projectorPixelMapping(const param::ProjectorOptions& options, const param::Projection& projection,
                                            const Mesh& mesh, const UvMap& uv) {
+  if (projection.atlas) return atlasPixelMapping(*projection.atlas, options.uvTransform);
+  const Affine3& localFromObject = projection.localFromObject;
   if (param::traitsOf(options.surface).blendsProjections) {  // three lookups blended by the pixel's normal
     render::PixelMapping blend;
     blend.needsNormal = true;
@@ -157,7 +171,7 @@ MappedMesh mapByProjector(Mesh mesh, param::ProjectorOptions options, bool seamP
   out.uv = std::move(out.projection->uv);
   out.projector = options;
   out.source = "projector";
-  out.exact = projectorPixelMapping(options, out.projection->localFromObject, out.mesh, out.uv);
+  out.exact = projectorPixelMapping(options, *out.projection, out.mesh, out.uv);
   if (param::traitsOf(options.surface).isPerspective) {
     const param::CameraTransform camera(options.camera);
     out.cameraQ.assign(out.uv.uv.size(), 1.0);
@@ -211,6 +225,7 @@ nlohmann::json mapSummaryJson(const MappedMesh& mapped, const analysis::Judgemen
     for (const Vec4& c : corners) homogeneous.push_back({c[0], c[1], c[3]});
     j["homogeneous_texcoords"] = std::move(homogeneous);
   }
+  if (mapped.projection && mapped.projection->atlas) j["atlas"] = atlasJson(*mapped.projection->atlas);
   j["input"] = input;
   j["output"] = output;
   addMappingOrigin(j, mapped);

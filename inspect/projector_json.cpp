@@ -1,5 +1,8 @@
 #include "inspect/projector_json.h"
 
+#include <cmath>
+#include <cstdio>
+
 #include "param/projector_names.h"
 
 namespace uvtk::inspect {
@@ -48,8 +51,39 @@ nlohmann::json projectorOptionsJson(const ProjectorOptions& o) {
                       {"tile", o.triplanar.tile},
                       {"blend", o.triplanar.blend},
                       {"exponent", triplanarExponent(o.triplanar)}};
+  if (traitsOf(o.surface).chartsFromMesh) {
+    const AtlasOptions& a = o.atlas;
+    j["atlas"] = {{"angle_limit", a.angleLimitDegrees},
+                  {"margin", a.marginTexels},
+                  {"texture_size", {a.textureSize[0], a.textureSize[1]}},
+                  {"texels_per_unit", a.texelsPerUnit ? nlohmann::json(*a.texelsPerUnit) : nlohmann::json()}};
+  }
   if (o.ray == RayKind::Reflection) j["at_infinity"] = o.atInfinity;
   return j;
+}
+
+nlohmann::json atlasJson(const Atlas& a) {
+  const auto finiteOrNull = [](double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(); };
+  return {{"charts", a.charts.size()},
+          {"directions", a.directions},
+          {"split_charts", a.splitCharts},
+          {"degenerate_faces", a.degenerateFaces},
+          {"texels_per_unit", a.texelsPerUnit},
+          {"tiles", a.tiles},
+          {"occupancy", a.occupancy},
+          {"gutter_texels", finiteOrNull(a.gutterTexels)},
+          {"border_texels", finiteOrNull(a.borderTexels)},
+          {"seam_edges", a.seamEdges},
+          {"seam_length", a.seamLength},
+          {"stretch_bound", a.stretchBound}};
+}
+
+std::string atlasLine(const Atlas& a) {
+  char line[200];
+  std::snprintf(line, sizeof line, "%zu charts, occupancy %.3f, gutter %.3g texels, %.4g texels per unit%s",
+                a.charts.size(), a.occupancy, a.gutterTexels, a.texelsPerUnit,
+                a.tiles > 1 ? (", " + std::to_string(a.tiles) + " tiles").c_str() : "");
+  return line;
 }
 
 nlohmann::json seamPlacementJson(const SeamPlacement& p) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "param/projector.h"
 
@@ -10,6 +11,13 @@ namespace uvtk::inspect {
 
 // Every parameter of a projector by its name (the "options" record of a run).
 nlohmann::json projectorOptionsJson(const param::ProjectorOptions& options);
+
+// The atlas's charts and measures (the "atlas" record of `uvtk map --json`); a gutter with no second
+// chart near is null.
+nlohmann::json atlasJson(const param::Atlas& atlas);
+
+// "12 charts, occupancy 0.612, gutter 4 texels, 312.5 texels per unit": the atlas in a summary line.
+std::string atlasLine(const param::Atlas& atlas);
 
 // Where --seam-place auto put the seam, and what it crossed before and after.
 nlohmann::json seamPlacementJson(const param::SeamPlacement& placement);

@@ -84,6 +84,13 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEy
                              "triplanar: unity (Shader Graph's Triplanar node), materialx (triplanarprojection, "
                              "upaxis Z), godot (BaseMaterial3D's triplanar)")
       ->default_str("unity");
+  app.add_option("--angle-limit", o.atlas.angleLimitDegrees,
+                 "atlas: a face joins a projection direction within this many degrees of its normal")
+      ->default_str("66");
+  app.add_option("--margin", o.atlas.marginTexels, "atlas: texels of gutter between charts and from the border")
+      ->default_str("4");
+  app.add_option("--texels-per-unit", a.texelsPerUnit,
+                 "atlas: texels per object unit for every chart (default: the most that fit one texture)");
   // The camera projector's own, in their own names where the command's camera has the plain ones.
   const auto freeName = [&](const char* name) {
     return cameraOwnsEye || app.get_option_no_throw(std::string("--") + name) ? std::string("proj-") + name
@@ -178,6 +185,9 @@ ParameterDictionary ProjectorArguments::parameters() const {
   number("tile", o.triplanar.tile);
   number("blend", o.triplanar.blend);
   choice("triplanar-preset", kTriplanarPresetNames, o.triplanar.preset);
+  number("angle-limit", o.atlas.angleLimitDegrees);
+  number("margin", o.atlas.marginTexels);
+  number("texels-per-unit", texelsPerUnit);
   numbers(context.cameraUp, up, 3);
   number(context.cameraFovy, o.camera.fovyDegrees);
   number(context.cameraAspect, o.camera.aspect);

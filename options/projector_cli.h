@@ -23,6 +23,7 @@ struct ProjectorArguments {
   std::string seamPlace;  // "auto" or degrees
   param::Convention convention = param::Convention::Uvtk;
   std::string up, projEye, projCenter;
+  double texelsPerUnit = 0.0;  // --texels-per-unit (the options hold it as "not given" until then)
   CLI::App* app = nullptr;
   // The command's names for the projector's parameters: `uvtk render` (cameraOwnsEye) calls the
   // placement's origin --frame-center and the camera projector's --proj-eye, --proj-center, ...;

@@ -73,7 +73,23 @@ UvTransform uvTransformOf(const ParameterDictionary& p) {
   return t;
 }
 
+// The atlas's own parameters.
+const char* const kAtlasOnly[] = {"angle-limit", "margin", "texels-per-unit"};
+
 }  // namespace
+
+std::optional<std::array<int, 2>> readTextureSize(const ParameterDictionary& p) {
+  if (!p.given("texture-size")) return std::nullopt;
+  const std::string range = ": expected W,H or N (N,N) texels with 1 <= W, H <= 16384";
+  if (p.givenAsNumbers("texture-size")) {
+    const Eigen::Vector2d wh = *p.getVector<2>("texture-size");
+    if (wh != wh.array().floor().matrix() || wh.minCoeff() < 1 || wh.maxCoeff() > 16384)
+      throw UsageError(p.spelled("texture-size") + range);
+    return std::array<int, 2>{int(wh.x()), int(wh.y())};
+  }
+  const int n = int(p.getInteger("texture-size", 1024, 1, 16384));
+  return std::array<int, 2>{n, n};
+}
 
 std::vector<std::string> projectorParameterNames(const ProjectorContext& c) {
   std::vector<std::string> names = {"projector", "fit",      "axis",      "axis-dir",          "ref-dir",
@@ -82,6 +98,7 @@ std::vector<std::string> projectorParameterNames(const ProjectorContext& c) {
                                     "math",      "eye",      c.center,    c.cameraEye,         c.cameraCenter,
                                     c.cameraUp,  c.cameraFovy, c.cameraAspect};
   names.insert(names.end(), std::begin(kSurfaceOnly), std::end(kSurfaceOnly));
+  names.insert(names.end(), std::begin(kAtlasOnly), std::end(kAtlasOnly));
   return names;
 }
 
@@ -136,6 +153,34 @@ Projector makeProjector(const ParameterDictionary& p, const ProjectorContext& c)
   if (c.cameraOwnsEye) cameraOnly.insert(cameraOnly.end(), {c.cameraEye, c.cameraCenter});
   for (const std::string& name : cameraOnly)
     if (p.given(name)) throw UsageError(p.spelled(name) + " goes with " + p.spelledWith("projector", "camera") + " only");
+  const bool atlas = traitsOf(o.surface).chartsFromMesh;
+  for (const char* name : kAtlasOnly)
+    if (!atlas && p.given(name))
+      throw UsageError(p.spelled(name) + " goes with " + p.spelledWith("projector", "atlas") + " only");
+  if (atlas) {  // charts placed by the atlas itself: no placement, O-mapping, seam or pole
+    std::vector<std::string> refused = {"fit", "axis", "axis-dir", "ref-dir", "scale", "convention", c.center};
+    refused.insert(refused.end(), std::begin(kSurfaceOnly), std::end(kSurfaceOnly));
+    for (const std::string& name : refused)
+      if (p.given(name))
+        throw UsageError(p.spelled(name) + " goes with the surface projectors, not " + p.spelledWith("projector", "atlas"));
+    o.atlas.angleLimitDegrees = p.getNumber("angle-limit", o.atlas.angleLimitDegrees);
+    if (!(o.atlas.angleLimitDegrees >= 1.0 && o.atlas.angleLimitDegrees <= 89.0))
+      throw UsageError(p.spelled("angle-limit") + ": expected degrees in [1, 89]");
+    o.atlas.marginTexels = p.getNumber("margin", o.atlas.marginTexels);
+    if (!(o.atlas.marginTexels >= 0.0 && o.atlas.marginTexels <= 1024.0))
+      throw UsageError(p.spelled("margin") + ": expected texels in [0, 1024]");
+    o.atlas.textureSize = readTextureSize(p).value_or(o.atlas.textureSize);
+    if (2.0 * o.atlas.marginTexels >= double(std::min(o.atlas.textureSize[0], o.atlas.textureSize[1])))
+      throw UsageError(p.spelled("margin") + ": two margins must leave room in the texture (" + p.spelled("texture-size") + ")");
+    if (p.given("texels-per-unit")) {
+      o.atlas.texelsPerUnit = p.getNumber("texels-per-unit", 0.0);
+      if (!(*o.atlas.texelsPerUnit > 0.0 && std::isfinite(*o.atlas.texelsPerUnit)))
+        throw UsageError(p.spelled("texels-per-unit") + ": expected a finite number above 0");
+    }
+    o.placement.fit = Fit::None;
+    o.uvTransform = uvTransformOf(p);
+    return result;
+  }
   const bool triplanar = traitsOf(o.surface).blendsProjections;
   for (const char* name : {"tile", "blend", "triplanar-preset"})
     if (!triplanar && p.given(name))

@@ -5,6 +5,8 @@
 // the conventions of other tools.
 #pragma once
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +36,10 @@ struct Projector {
   ProjectorOptions options;
   bool seamPlaceAuto = false;
 };
+
+// "texture-size": W,H or N (N,N) texels, 1 to 16384 each; nothing when not given. The texture the
+// atlas packs for and the judgement counts texel densities in.
+std::optional<std::array<int, 2>> readTextureSize(const ParameterDictionary& parameters);
 
 // Throws UsageError (ParameterTypeError for a value of the wrong kind) naming the parameter.
 Projector makeProjector(const ParameterDictionary& parameters, const ProjectorContext& context = {});

@@ -45,6 +45,7 @@ struct Evaluated {
   PointEvaluator evaluateAt;
   std::array<std::size_t, 3> triplanarFaces{};  // triplanar: faces written by the x, y, z projection
   std::vector<std::uint8_t> triplanarAxis;      // and the projection of each face
+  std::optional<Atlas> atlas;                   // the atlas: its charts (its uv moved into corners)
 };
 
 // The cube: a face per triangle, then each corner projected onto it by its own probe.
@@ -204,6 +205,13 @@ void checkOptions(const ProjectorOptions& o) {
     throw UsageError("--cap-angle: expected degrees in [0, 90]");
   if (o.surface == SurfaceKind::Camera) checkCameraProjector(o.camera);
   if (o.surface == SurfaceKind::Triplanar) checkTriplanarOptions(o.triplanar);
+  if (o.surface == SurfaceKind::Atlas) checkAtlasOptions(o.atlas);
+}
+
+// Thrown where a point alone is mapped: the atlas's charts come from the whole mesh.
+void refuseCharts(const ProjectorOptions& o, const char* where) {
+  if (traitsOf(o.surface).chartsFromMesh)
+    throw UsageError(std::string(where) + ": the atlas makes its charts from a whole mesh; map the mesh (uvtk map)");
 }
 
 // A formula's (u, v) as a corner: valid, or invalid with kCornerNotFinite.
@@ -291,6 +299,18 @@ Evaluated evaluateTriplanar(const Mesh& mesh, const Affine3& localFromObject, co
   });
   for (const auto& counts : facesPerAxis)
     for (std::size_t a = 0; a < 3; ++a) result.triplanarFaces[a] += counts[a];
+  return result;
+}
+
+// The atlas's charts at every corner: each valid, the chart's own plane (param/atlas.h).
+Evaluated evaluateAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
+  Evaluated result;
+  CornerField& c = result.corners;
+  c.resize(mesh.triangles.size(), threads);
+  result.atlas = makeAtlas(mesh, options);
+  for (std::size_t corner = 0; corner < result.atlas->uv.size(); ++corner)
+    storeCorner(c, corner, finiteVertexUv(result.atlas->uv[corner]));
+  std::vector<Vec2>().swap(result.atlas->uv);
   return result;
 }
 
@@ -417,6 +437,7 @@ void mapVertices(const ProjectorOptions& o, const Affine3& localFromObject, cons
     });
     return;
   }
+  refuseCharts(o, "mapVertices");
   if (o.surface == SurfaceKind::Triplanar)
     throw UsageError("mapVertices: triplanar chooses a projection per triangle; use project() or PointMapping");
   withPrecision(o.arithmetic.precision, [&](auto zero) {
@@ -446,6 +467,7 @@ PointMapping::PointMapping(const ProjectorOptions& o, const Affine3& localFromOb
                            const std::optional<Eigen::AlignedBox3d>& sensible)
     : uvTransform_(o.uvTransform) {
   checkOptions(o);
+  refuseCharts(o, "a point");
   if (o.surface == SurfaceKind::Camera) {
     evaluate_ = [camera = CameraTransform(o.camera)](const Vec3& p, const Vec3&) { return cameraVertexUv(camera, p); };
     return;
@@ -548,6 +570,7 @@ Projection project(Mesh mesh, const ProjectorOptions& o, int threads) {
   out.localFromObject = fitPlacement(mesh.positions, o.surface, o.placement);
   Evaluated evaluated = o.surface == SurfaceKind::Camera      ? evaluateCamera(mesh, o.camera, threads)
                         : o.surface == SurfaceKind::Triplanar ? evaluateTriplanar(mesh, out.localFromObject, o.triplanar, threads)
+                        : o.surface == SurfaceKind::Atlas     ? evaluateAtlas(mesh, o.atlas, threads)
                             : withPrecision(o.arithmetic.precision, [&](auto zero) {
                                 return evaluateMesh<decltype(zero)>(mesh, out.localFromObject, o, threads);
                               });
@@ -568,6 +591,7 @@ Projection project(Mesh mesh, const ProjectorOptions& o, int threads) {
   out.summary = summarize(mesh, corners, seams);
   out.summary.triplanarFaces = evaluated.triplanarFaces;
   out.triplanarAxis = std::move(evaluated.triplanarAxis);
+  out.atlas = std::move(evaluated.atlas);
   if (!o.uvTransform.isIdentity()) {
     bool overflowed = false;
     for (std::size_t i = 0; i < corners.uv.size(); ++i) {

@@ -11,6 +11,7 @@
 #include "core/arithmetic.h"
 #include "core/mesh.h"
 #include "core/uv_map.h"
+#include "param/atlas.h"
 #include "param/camera_projector.h"
 #include "param/formulas.h"
 #include "param/placement.h"
@@ -61,6 +62,7 @@ struct ProjectorOptions {
   bool atInfinity = false;
   CameraProjector camera;  // SurfaceKind::Camera: the view projected from (not the reflection eye above)
   TriplanarOptions triplanar;  // SurfaceKind::Triplanar
+  AtlasOptions atlas;          // SurfaceKind::Atlas
   SeamMode seam = SeamMode::Shift;
   PoleMode pole = PoleMode::Fan;
   double poleEpsilon = 1e-6;  // a pole: hypot(x, y) <= eps |q|
@@ -115,6 +117,7 @@ struct Projection {
   MappingSummary summary;
   Affine3 localFromObject = Affine3::Identity();
   std::vector<std::uint8_t> triplanarAxis;  // triplanar: the projection (0: x, 1: y, 2: z) each face carries
+  std::optional<Atlas> atlas;               // atlas: its charts and measures (its uv moved into `uv`)
   struct {
     double map = 0.0;    // the placement fit and every corner through both stages
     double seams = 0.0;  // seam and pole repair, the summary, the UV transform

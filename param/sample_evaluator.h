@@ -74,6 +74,7 @@ SurfaceT<T> makeSurface(const ProjectorOptions& o) {
       return ShrinkWrapSurfaceT<T>{};
     case SurfaceKind::Camera:  // no surface: project(), mapVertices and PointMapping go round these
     case SurfaceKind::Triplanar:
+    case SurfaceKind::Atlas:
       UVTK_CHECK(false);
       break;
   }

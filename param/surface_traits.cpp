@@ -17,6 +17,7 @@ const SurfaceTraits& traitsOf(SurfaceKind surface) {
   static const SurfaceTraits kTriplanar{"triplanar", false, true, true, false, true, false, false, S::Box};
   static const SurfaceTraits kOctahedral{"octahedral", false, false, true, false, false, false, false, S::Ball};
   static const SurfaceTraits kShrinkWrap{"shrink-wrap", false, false, true, false, false, false, false, S::Ball};
+  static const SurfaceTraits kAtlas{"atlas", false, true, false, false, false, false, false, S::None, true};
   switch (surface) {
     case SurfaceKind::Plane: return kPlane;
     case SurfaceKind::TwoPlane: return kTwoPlane;
@@ -27,6 +28,7 @@ const SurfaceTraits& traitsOf(SurfaceKind surface) {
     case SurfaceKind::Triplanar: return kTriplanar;
     case SurfaceKind::Octahedral: return kOctahedral;
     case SurfaceKind::ShrinkWrap: return kShrinkWrap;
+    case SurfaceKind::Atlas: return kAtlas;
   }
   return kSphere;  // unreachable: every enumerator is above
 }
@@ -36,7 +38,7 @@ const SurfaceTraits& traitsOf(SurfaceKind surface) {
 const char* invalidReasonText(const ProjectorOptions& o, CornerInvalid reason) {
   static_assert(kSensibleRange == 2.0, "the out-of-range text below names the factor");
   const SurfaceTraits& traits = traitsOf(o.surface);
-  if (traits.blendsProjections) return "the result is not finite";
+  if (traits.blendsProjections || traits.chartsFromMesh) return "the result is not finite";
   if (traits.isPerspective)
     return reason == kCornerBehind ? "the point is at or behind the camera's eye plane (q <= 0)"
                                    : "the result is not finite";

@@ -26,6 +26,9 @@ struct SurfaceTraits {
   bool isPerspective;       // a camera's perspective, with a q per corner; no surface, no placement
   bool hasFaceIds;          // a face id per corner (the cube's six), written as w by its faces layout
   UnitShape shape;
+  // Charts made from the whole mesh (the atlas, param/atlas.h): no formula of a point alone, so no
+  // per-vertex evaluation without the mesh; each face's chart is linear, so it is exact per pixel.
+  bool chartsFromMesh = false;
 };
 
 const SurfaceTraits& traitsOf(SurfaceKind surface);
@@ -33,6 +36,7 @@ const SurfaceTraits& traitsOf(SurfaceKind surface);
 // Every surface, in the order help and messages list them.
 inline constexpr SurfaceKind kSurfaces[] = {
     SurfaceKind::Plane,  SurfaceKind::TwoPlane,  SurfaceKind::Cylinder,   SurfaceKind::Sphere,    SurfaceKind::Cube,
-    SurfaceKind::Camera, SurfaceKind::Triplanar, SurfaceKind::Octahedral, SurfaceKind::ShrinkWrap};
+    SurfaceKind::Camera, SurfaceKind::Triplanar, SurfaceKind::Octahedral, SurfaceKind::ShrinkWrap,
+    SurfaceKind::Atlas};
 
 }  // namespace uvtk::param
