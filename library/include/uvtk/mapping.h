@@ -39,7 +39,8 @@ struct Parameters {
 // The options of `uvtk map` (docs/conventions.md): each field is the option of that name, with
 // its default; a choice is spelled as on the command line.
 struct MapOptions {
-  std::string projector = "sphere";  // --projector: plane, two-plane, cylinder, sphere, cube, camera, triplanar
+  std::string projector = "sphere";  // --projector: plane, two-plane, cylinder, sphere, cube, camera, triplanar,
+                                     // octahedral, shrink-wrap, atlas
   std::string omap = "isn";          // --omap: isn, centroid, normal, reflection
   std::optional<std::string> fit;    // --fit: none, bbox, center, pca, obb (unset: bbox; triplanar none)
   std::string axis = "z";            // --axis: x, y, z, the object axis that becomes local z (bbox fit)
@@ -61,6 +62,9 @@ struct MapOptions {
   double tile = 1.0;                 // --tile: triplanar, UV units per unit of the projector's frame
   double blend = 1.0;                // --blend: triplanar, the weights' exponent (materialx: its blend)
   std::string triplanarPreset = "unity";  // --triplanar-preset: unity, materialx, godot
+  double angleLimit = 66.0;          // --angle-limit: atlas, degrees between a face's normal and its chart's direction
+  double margin = 4.0;               // --margin: atlas, texels of gutter between charts and from the border
+  std::optional<double> texelsPerUnit;  // --texels-per-unit: atlas, every chart's density (unset: the most that fit)
   bool atInfinity = false;           // --at-infinity: reflection, look up by direction only
   std::string seam = "shift";        // --seam: none, shift (u in [0, 1.5)), cut (u in [0, 1])
   std::string pole = "fan";          // --pole: none (u = 0), fan (mean u of the face's other corners)
