@@ -67,6 +67,7 @@ nlohmann::json atlasJson(const Atlas& a) {
   return {{"charts", a.charts.size()},
           {"directions", a.directions},
           {"split_charts", a.splitCharts},
+          {"merged_charts", a.mergedCharts},
           {"degenerate_faces", a.degenerateFaces},
           {"texels_per_unit", a.texelsPerUnit},
           {"tiles", a.tiles},

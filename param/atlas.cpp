@@ -6,6 +6,7 @@
 #include <limits>
 #include <numeric>
 #include <string>
+#include <unordered_map>
 
 #include "core/error.h"
 
@@ -130,11 +131,42 @@ bool interiorsOverlap(const std::array<Point2, 3>& a, const std::array<Point2, 3
   return !separates(a, b) && !separates(b, a);
 }
 
+// A face's corners in the plane of a direction, computed when asked: a table of them for a
+// million faces would be 48 MB of fresh pages, which cost more than the arithmetic.
+class FacePlanes {
+ public:
+  FacePlanes(const Mesh& mesh, const Vec3& origin, const std::vector<Eigen::Matrix<double, 2, 3>>& frames,
+             const std::vector<int>& directionOf)
+      : mesh_(mesh), origin_(origin), frames_(frames), directionOf_(directionOf) {}
+  // Along the face's own direction.
+  std::array<Point2, 3> operator[](std::size_t f) const { return along(f, directionOf_[f]); }
+  std::array<Point2, 3> along(std::size_t f, int direction) const {
+    const Eigen::Matrix<double, 2, 3>& frame = frames_[std::size_t(direction)];
+    const Triangle& t = mesh_.triangles[f];
+    return {frame * (mesh_.positions[std::size_t(t[0])] - origin_), frame * (mesh_.positions[std::size_t(t[1])] - origin_),
+            frame * (mesh_.positions[std::size_t(t[2])] - origin_)};
+  }
+
+ private:
+  const Mesh& mesh_;
+  Vec3 origin_;
+  const std::vector<Eigen::Matrix<double, 2, 3>>& frames_;
+  const std::vector<int>& directionOf_;
+};
+
+// Every face along one direction.
+struct FacesAlong {
+  const FacePlanes& planes;
+  int direction;
+  std::array<Point2, 3> operator[](std::size_t f) const { return planes.along(f, direction); }
+};
+
 // The faces of one chart in cells of a uniform grid over their projection (cells about a face's
 // size; at most about 4 cells a face), so that overlap tests meet only near faces.
 class FaceGrid {
  public:
-  FaceGrid(const std::vector<int>& faces, const std::vector<std::array<Point2, 3>>& projected) {
+  template <class Planes>
+  FaceGrid(const std::vector<int>& faces, const Planes& projected) {
     Eigen::AlignedBox2d box;
     double size = 0.0;
     for (const int f : faces) {
@@ -167,6 +199,9 @@ class FaceGrid {
       for (int x = x0; x <= x1; ++x) f(std::size_t(y) * std::size_t(nx_) + std::size_t(x));
   }
   std::size_t cellCount() const { return start_.size() - 1; }
+  std::size_t cellAt(const Point2& p) const {
+    return std::size_t(cellOf(p.y() - origin_.y(), ny_)) * std::size_t(nx_) + std::size_t(cellOf(p.x() - origin_.x(), nx_));
+  }
   const int* begin(std::size_t c) const { return faces_.data() + start_[c]; }
   const int* end(std::size_t c) const { return faces_.data() + start_[c + 1]; }
 
@@ -179,11 +214,28 @@ class FaceGrid {
   std::vector<int> faces_;
 };
 
-bool overlapsItself(const FaceGrid& grid, const std::vector<std::array<Point2, 3>>& projected) {
-  for (std::size_t c = 0; c < grid.cellCount(); ++c)
-    for (const int* i = grid.begin(c); i != grid.end(c); ++i)
-      for (const int* j = i + 1; j != grid.end(c); ++j)
-        if (interiorsOverlap(projected[std::size_t(*i)], projected[std::size_t(*j)])) return true;
+// Whether two faces of the grid overlap. A pair is tested once, in the cell of the lower left
+// corner of their boxes' intersection, and only where the boxes meet.
+template <class Planes>
+bool overlapsItself(const FaceGrid& grid, const Planes& projected) {
+  std::vector<std::array<Point2, 3>> triangles;
+  std::vector<Eigen::AlignedBox2d> boxes;
+  for (std::size_t c = 0; c < grid.cellCount(); ++c) {
+    const std::size_t n = std::size_t(grid.end(c) - grid.begin(c));
+    if (n < 2) continue;
+    triangles.resize(n);
+    boxes.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      triangles[i] = projected[std::size_t(grid.begin(c)[i])];
+      boxes[i].setEmpty();
+      for (const Point2& p : triangles[i]) boxes[i].extend(p);
+    }
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) {
+        if (!boxes[i].intersects(boxes[j]) || grid.cellAt(boxes[i].intersection(boxes[j]).min()) != c) continue;
+        if (interiorsOverlap(triangles[i], triangles[j])) return true;
+      }
+  }
   return false;
 }
 
@@ -232,46 +284,51 @@ Eigen::Matrix2d smallestBoxRotation(const std::vector<Point2>& hull) {
   return best;
 }
 
-// Bottom-left skyline packing of boxes into a bin: each box goes where its bottom is lowest,
-// then leftmost. Returns false as soon as a box does not fit.
+// Bottom-left skyline packing of boxes into a bin: each box goes where its top is lowest, then
+// leftmost, upright or turned a quarter, whichever is lower.
 class Skyline {
  public:
   Skyline(double width, double height) : width_(width), height_(height), segments_{{0.0, 0.0, width}} {}
 
-  bool place(double w, double h, Vec2& at) {
-    constexpr double kSlack = 1e-9;
-    double bestY = kInfinity, bestX = 0.0;
-    std::size_t bestIndex = 0;
+  struct Spot {
+    double x = 0.0, y = kInfinity;
+    std::size_t index = 0;
+  };
+  // The lowest spot for a box of w x h; y is infinite where none is.
+  Spot find(double w, double h) const {
+    Spot best;
     for (std::size_t i = 0; i < segments_.size(); ++i) {
       const double x = segments_[i].x;
       if (x + w > width_ + kSlack) break;
       double y = 0.0;
       for (std::size_t j = i; j < segments_.size() && segments_[j].x < x + w - kSlack; ++j) y = std::max(y, segments_[j].y);
-      if (y + h <= height_ + kSlack && y < bestY) bestY = y, bestX = x, bestIndex = i;
+      if (y + h <= height_ + kSlack && y < best.y) best = Spot{x, y, i};
     }
-    if (bestY == kInfinity) return false;
-    at = Vec2(bestX, bestY);
-    const double right = bestX + w;
-    std::size_t j = bestIndex;
+    return best;
+  }
+  void take(const Spot& spot, double w, double h) {
+    const double right = spot.x + w;
+    std::size_t j = spot.index;
     while (j < segments_.size() && segments_[j].x + segments_[j].w <= right + kSlack) ++j;
     if (j < segments_.size() && segments_[j].x < right) {
       segments_[j].w -= right - segments_[j].x;
       segments_[j].x = right;
     }
-    segments_.erase(segments_.begin() + std::ptrdiff_t(bestIndex), segments_.begin() + std::ptrdiff_t(j));
-    segments_.insert(segments_.begin() + std::ptrdiff_t(bestIndex), Segment{bestX, bestY + h, w});
-    if (bestIndex + 1 < segments_.size() && segments_[bestIndex + 1].y == segments_[bestIndex].y) {
-      segments_[bestIndex].w += segments_[bestIndex + 1].w;
-      segments_.erase(segments_.begin() + std::ptrdiff_t(bestIndex) + 1);
+    const std::size_t i = spot.index;
+    segments_.erase(segments_.begin() + std::ptrdiff_t(i), segments_.begin() + std::ptrdiff_t(j));
+    segments_.insert(segments_.begin() + std::ptrdiff_t(i), Segment{spot.x, spot.y + h, w});
+    if (i + 1 < segments_.size() && segments_[i + 1].y == segments_[i].y) {
+      segments_[i].w += segments_[i + 1].w;
+      segments_.erase(segments_.begin() + std::ptrdiff_t(i) + 1);
     }
-    if (bestIndex > 0 && segments_[bestIndex - 1].y == segments_[bestIndex].y) {
-      segments_[bestIndex - 1].w += segments_[bestIndex].w;
-      segments_.erase(segments_.begin() + std::ptrdiff_t(bestIndex));
+    if (i > 0 && segments_[i - 1].y == segments_[i].y) {
+      segments_[i - 1].w += segments_[i].w;
+      segments_.erase(segments_.begin() + std::ptrdiff_t(i));
     }
-    return true;
   }
 
  private:
+  static constexpr double kSlack = 1e-9;
   struct Segment {
     double x, y, w;
   };
@@ -280,28 +337,42 @@ class Skyline {
 };
 
 struct Placement {
-  Vec2 at;  // the box's lower left corner in the tile, in texels
+  Vec2 at;      // the box's lower left corner in the tile, in texels
   int tile;
+  bool turned;  // a quarter turn: the box lies w x h as h x w
 };
+
+// Places a box of w x h upright or turned, whichever sits lower (then further left, then upright).
+bool placeBox(Skyline& skyline, double w, double h, Placement& out) {
+  const Skyline::Spot upright = skyline.find(w, h), turned = skyline.find(h, w);
+  const bool turn = turned.y + w < upright.y + h || (turned.y + w == upright.y + h && turned.x < upright.x);
+  const Skyline::Spot& spot = turn ? turned : upright;
+  if (spot.y == kInfinity) return false;
+  skyline.take(spot, turn ? h : w, turn ? w : h);
+  out.at = Vec2(spot.x, spot.y);
+  out.turned = turn;
+  return true;
+}
 
 // Packs boxes of size * density + margin (texels) in `order` into tiles of W x H less the margin
 // along the left and bottom border. With one tile only, false when they do not all fit.
 bool pack(const std::vector<Vec2>& sizes, const std::vector<int>& order, double density, double margin,
           const std::array<int, 2>& texture, bool manyTiles, std::vector<Placement>& out) {
-  out.assign(sizes.size(), Placement{Vec2::Zero(), 0});
+  out.assign(sizes.size(), Placement{Vec2::Zero(), 0, false});
   const double binW = double(texture[0]) - margin, binH = double(texture[1]) - margin;
   Skyline skyline(binW, binH);
   int tile = 0;
   for (const int c : order) {
     const double w = sizes[std::size_t(c)].x() * density + margin, h = sizes[std::size_t(c)].y() * density + margin;
-    Vec2 at;
-    if (!skyline.place(w, h, at)) {
+    Placement& p = out[std::size_t(c)];
+    if (!placeBox(skyline, w, h, p)) {
       if (!manyTiles) return false;
       skyline = Skyline(binW, binH);
       ++tile;
-      if (!skyline.place(w, h, at)) return false;
+      if (!placeBox(skyline, w, h, p)) return false;
     }
-    out[std::size_t(c)] = Placement{at + Vec2(margin, margin), tile};
+    p.at += Vec2(margin, margin);
+    p.tile = tile;
   }
   return true;
 }
@@ -317,6 +388,69 @@ double segmentDistance(const Point2& a, const Point2& b, const Point2& c, const 
   };
   return std::min({pointSegment(a, c, d), pointSegment(b, c, d), pointSegment(c, a, b), pointSegment(d, a, b)});
 }
+
+// The faces of each direction in cells of a uniform grid of its plane, made when a merge first
+// asks about that direction, so that a chart being merged meets only the faces near it: sorted
+// (cell, face) pairs, and the faces merges projected along the direction since, in a side table.
+class DirectionGrids {
+ public:
+  DirectionGrids(const std::vector<int>& faces, const std::vector<int>& directionOf,
+                 const FacePlanes& projected, std::size_t directions)
+      : faces_(faces), directionOf_(directionOf), projected_(projected), grids_(directions) {
+    double size = 0.0;
+    for (const int f : faces) size += boxOf(projected[std::size_t(f)]).sizes().maxCoeff();
+    cell_ = std::max(size / double(std::max<std::size_t>(faces.size(), 1)), 1e-300);
+  }
+  // A face now projected along `direction` (once its grid is made, which then holds it).
+  void insert(int direction, const std::array<Point2, 3>& t, int face) {
+    Grid& grid = grids_[std::size_t(direction)];
+    if (grid.made) forKeys(t, [&](std::uint64_t key) { grid.added[key].push_back(face); });
+  }
+  // Calls f(face) for every face in the cells `t` covers in `direction`'s plane (a face may come twice).
+  template <class F>
+  void near(int direction, const std::array<Point2, 3>& t, F&& f) {
+    Grid& grid = grids_[std::size_t(direction)];
+    if (!grid.made) {
+      for (const int face : faces_)
+        if (directionOf_[std::size_t(face)] == direction)
+          forKeys(projected_[std::size_t(face)], [&](std::uint64_t key) { grid.pairs.emplace_back(key, face); });
+      std::sort(grid.pairs.begin(), grid.pairs.end());
+      grid.made = true;
+    }
+    forKeys(t, [&](std::uint64_t key) {
+      auto it = std::lower_bound(grid.pairs.begin(), grid.pairs.end(), std::make_pair(key, std::numeric_limits<int>::min()));
+      for (; it != grid.pairs.end() && it->first == key; ++it) f(it->second);
+      if (const auto extra = grid.added.find(key); extra != grid.added.end())
+        for (const int face : extra->second) f(face);
+    });
+  }
+
+ private:
+  struct Grid {
+    bool made = false;
+    std::vector<std::pair<std::uint64_t, int>> pairs;
+    std::unordered_map<std::uint64_t, std::vector<int>> added;
+  };
+  static Eigen::AlignedBox2d boxOf(const std::array<Point2, 3>& t) {
+    Eigen::AlignedBox2d b;
+    for (const Point2& p : t) b.extend(p);
+    return b;
+  }
+  template <class F>
+  void forKeys(const std::array<Point2, 3>& t, F&& f) const {
+    const Eigen::AlignedBox2d b = boxOf(t);
+    constexpr double kHalf = double(1 << 30);
+    const auto cell = [&](double x) { return std::int64_t(std::clamp(std::floor(x / cell_) + kHalf, 0.0, 2 * kHalf - 1)); };
+    const std::int64_t x0 = cell(b.min().x()), x1 = cell(b.max().x()), y0 = cell(b.min().y()), y1 = cell(b.max().y());
+    for (std::int64_t y = y0; y <= y1; ++y)
+      for (std::int64_t x = x0; x <= x1; ++x) f((std::uint64_t(x) << 32) | std::uint64_t(y));
+  }
+  const std::vector<int>& faces_;
+  const std::vector<int>& directionOf_;
+  const FacePlanes& projected_;
+  double cell_ = 1.0;
+  std::vector<Grid> grids_;
+};
 
 }  // namespace
 
@@ -369,16 +503,13 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
 
   // Each face takes the direction nearest its normal, and is projected along it.
   std::vector<int> directionOf(faceCount, -1);
-  std::vector<std::array<Point2, 3>> projected(faceCount);
+  const FacePlanes projected(mesh, origin, frames, directionOf);
   for (const int f : byArea) {
     double best = -kInfinity;
     for (std::size_t d = 0; d < directions.size(); ++d) {
       const double cosine = normals[std::size_t(f)].dot(directions[d]);
       if (cosine > best) best = cosine, directionOf[std::size_t(f)] = int(d);
     }
-    for (int k = 0; k < 3; ++k)
-      projected[std::size_t(f)][std::size_t(k)] =
-          frames[std::size_t(directionOf[std::size_t(f)])] * (mesh.positions[std::size_t(mesh.triangles[std::size_t(f)][k])] - origin);
   }
 
   // Charts: the faces of one direction joined across manifold edges, in face order; a chart whose
@@ -418,10 +549,10 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
               directionOf[std::size_t(g)] != directionOf[seed])
             continue;
           bool overlaps = false;
-          grid.forCells(projected[std::size_t(g)], [&](std::size_t c) {
+          const std::array<Point2, 3> tg = projected[std::size_t(g)];
+          grid.forCells(tg, [&](std::size_t c) {
             for (const int* h = grid.begin(c); h != grid.end(c) && !overlaps; ++h)
-              overlaps = chartOf[std::size_t(*h)] == chart &&
-                         interiorsOverlap(projected[std::size_t(g)], projected[std::size_t(*h)]);
+              overlaps = chartOf[std::size_t(*h)] == chart && interiorsOverlap(tg, projected[std::size_t(*h)]);
           });
           if (overlaps) {
             tried[std::size_t(g)] = chart;
@@ -432,6 +563,74 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
         }
     }
     atlas.splitCharts += std::size_t(charts - first - 1);
+  }
+
+  // Merging, smallest chart first: a chart joins the neighbour it shares the most edges with when
+  // every face of it lies within the angle limit of that neighbour's direction and, projected
+  // along it, overlaps neither the neighbour nor itself. Fewer charts, shorter seams, the same
+  // guarantees. Charts are then numbered by their first face.
+  {
+    const double cosLimit = std::cos(limit);
+    const std::size_t initialCharts = std::size_t(charts);
+    std::vector<std::vector<int>> facesOf(initialCharts);
+    for (std::size_t f = 0; f < faceCount; ++f)
+      if (chartOf[f] >= 0) facesOf[std::size_t(chartOf[f])].push_back(int(f));
+    std::vector<int> directionOfChart(initialCharts);
+    for (std::size_t c = 0; c < initialCharts; ++c) directionOfChart[c] = directionOf[std::size_t(facesOf[c][0])];
+    DirectionGrids grids(byArea, directionOf, projected, directions.size());
+    std::vector<int> bySize(initialCharts);
+    std::iota(bySize.begin(), bySize.end(), 0);
+    std::stable_sort(bySize.begin(), bySize.end(),
+                     [&](int a, int b) { return facesOf[std::size_t(a)].size() < facesOf[std::size_t(b)].size(); });
+    std::vector<std::pair<int, int>> shared;  // (edges shared, chart)
+    for (const int a : bySize) {
+      std::vector<int>& faces = facesOf[std::size_t(a)];
+      shared.clear();
+      for (const int f : faces)
+        for (const int g : neighbours[std::size_t(f)])
+          if (g >= 0 && chartOf[std::size_t(g)] >= 0 && chartOf[std::size_t(g)] != a) shared.emplace_back(0, chartOf[std::size_t(g)]);
+      std::sort(shared.begin(), shared.end(), [](const auto& x, const auto& y) { return x.second < y.second; });
+      std::vector<std::pair<int, int>> counted;
+      for (const auto& [unused, b] : shared)
+        if (!counted.empty() && counted.back().second == b) --counted.back().first;
+        else counted.emplace_back(-1, b);
+      std::sort(counted.begin(), counted.end());  // the most shared edges first, then the lower chart
+      for (const auto& [negativeCount, b] : counted) {
+        const int direction = directionOfChart[std::size_t(b)];
+        const Vec3& d = directions[std::size_t(direction)];
+        bool fits = true;
+        for (const int f : faces) fits = fits && normals[std::size_t(f)].dot(d) >= cosLimit;
+        if (!fits) continue;
+        const FacesAlong moved{projected, direction};
+        if (faces.size() >= 3 && overlapsItself(FaceGrid(faces, moved), moved)) continue;
+        for (std::size_t i = 0; i < faces.size() && fits; ++i) {
+          const std::array<Point2, 3> t = moved[std::size_t(faces[i])];
+          grids.near(direction, t, [&](int h) {
+            fits = fits && !(chartOf[std::size_t(h)] == b && directionOf[std::size_t(h)] == direction &&
+                             interiorsOverlap(t, projected[std::size_t(h)]));
+          });
+        }
+        if (!fits) continue;
+        for (const int f : faces) {
+          chartOf[std::size_t(f)] = b;
+          directionOf[std::size_t(f)] = direction;
+          grids.insert(direction, moved[std::size_t(f)], f);
+        }
+        std::vector<int>& into = facesOf[std::size_t(b)];
+        into.insert(into.end(), faces.begin(), faces.end());
+        std::vector<int>().swap(faces);
+        ++atlas.mergedCharts;
+        break;
+      }
+    }
+    std::vector<int> renumber(initialCharts, -1);
+    charts = 0;
+    for (std::size_t f = 0; f < faceCount; ++f)
+      if (chartOf[f] >= 0) {
+        int& to = renumber[std::size_t(chartOf[f])];
+        if (to < 0) to = charts++;
+        chartOf[f] = to;
+      }
   }
 
   // Degenerate faces join the chart of a face they share an edge with, nearest first; the rest
@@ -468,11 +667,16 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
   const std::size_t chartCount = std::size_t(charts);
   atlas.charts.assign(chartCount, AtlasChart{});
   std::vector<std::vector<Point2>> chartPoints(chartCount);
+  std::vector<int> lastChartOfVertex(mesh.vertexCount(), -1);  // each vertex once a chart (its run of faces)
   for (std::size_t f = 0; f < faceCount; ++f) {
     const int c = chartOf[f];
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.triangles[f][k];
+      if (lastChartOfVertex[std::size_t(v)] == c) continue;
+      lastChartOfVertex[std::size_t(v)] = c;
       chartPoints[std::size_t(c)].push_back(frames[std::size_t(chartDirection[std::size_t(c)])] *
-                                            (mesh.positions[std::size_t(mesh.triangles[f][k])] - origin));
+                                            (mesh.positions[std::size_t(v)] - origin));
+    }
     ++atlas.charts[std::size_t(c)].faces;
   }
   std::vector<Eigen::Matrix2d> rotation(chartCount);
@@ -522,20 +726,37 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
     }
     if (area > 0.0) high = std::min(high, std::sqrt(binW * binH / area));
     if (!std::isfinite(high)) high = 1.0;  // nothing has extent: any density will do
-    double lowDensity = 0.0;
+    // Packing is not monotone in the density (a box that no longer fits beside another may fit
+    // below it), so the search steps down from the area bound by 3 % until the charts fit, then
+    // bisects between that and the step above (below 0.4 of the bound, steps of 30 %).
+    double lowDensity = 0.0, failed = high;
     std::vector<Placement> trial;
-    if (pack(size, order, high, margin, options.textureSize, false, trial)) {
-      lowDensity = high;
-    } else {
-      for (int step = 0; step < 40 && high - lowDensity > 1e-6 * high; ++step) {
-        const double mid = 0.5 * (lowDensity + high);
-        (pack(size, order, mid, margin, options.textureSize, false, trial) ? lowDensity : high) = mid;
+    for (double d = high, step = 0.97; d > 1e-12 * high; d *= step, step = d < 0.4 * high ? 0.7 : step) {
+      if (pack(size, order, d, margin, options.textureSize, false, trial)) {
+        lowDensity = d;
+        break;
       }
+      failed = d;
     }
+    if (lowDensity > 0.0 && lowDensity < failed)
+      for (int step = 0; step < 12; ++step) {
+        const double mid = 0.5 * (lowDensity + failed);
+        (pack(size, order, mid, margin, options.textureSize, false, trial) ? lowDensity : failed) = mid;
+      }
     density = lowDensity;
     pack(size, order, density, margin, options.textureSize, false, placements);
   }
   atlas.texelsPerUnit = density;
+
+  // A chart packed turned takes a quarter turn more (a rotation, never a mirror).
+  for (std::size_t c = 0; c < chartCount; ++c)
+    if (placements[c].turned) {
+      Eigen::Matrix2d quarter;
+      quarter << 0.0, -1.0, 1.0, 0.0;
+      rotation[c] = quarter * rotation[c];
+      low[c] = Vec2(-(low[c].y() + size[c].y()), low[c].x());
+      size[c] = Vec2(size[c].y(), size[c].x());
+    }
 
   // The charts' maps: texel = density (R (T (p - origin)) - low) + at, uv = texel / (W, H) + tile.
   const Vec2 perTexel(1.0 / double(options.textureSize[0]), 1.0 / double(options.textureSize[1]));

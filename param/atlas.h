@@ -50,6 +50,7 @@ struct Atlas {
   std::vector<AtlasChart> charts;
   std::size_t directions = 0;       // projection directions the charts were grouped by
   std::size_t splitCharts = 0;      // charts split because their projection overlapped itself
+  std::size_t mergedCharts = 0;     // charts merged into a neighbour (param/atlas.cpp)
   std::size_t degenerateFaces = 0;  // faces of no area, given to a neighbour's chart (or their own)
   double texelsPerUnit = 0.0;       // the density every chart has, in texels of textureSize
   int tiles = 1;
