@@ -1,9 +1,11 @@
 #include "inspect/mapped_mesh.h"
 
+#include <algorithm>
 #include <limits>
 #include <memory>
 
 #include "core/error.h"
+#include "core/progress.h"
 #include "inspect/projector_json.h"
 #include "param/projector_names.h"
 #include "param/projector.h"
@@ -82,14 +84,38 @@ std::vector<Vec4> MappedMesh::corners(bool baked) const {
 
 namespace {
 
-// The atlas at every pixel: the pixel's face's chart, linear in the point, then the UV transform.
-render::PixelMapping atlasPixelMapping(const param::Atlas& atlas, const param::UvTransform& transform) {
-  auto charts = std::make_shared<const std::vector<param::AtlasChart>>(atlas.charts);
-  auto chartOfFace = std::make_shared<const std::vector<int>>(atlas.chartOfFace);
-  return render::PixelMapping{[charts, chartOfFace, transform](const Vec3& p, const Vec3&, std::int32_t face) {
-                                Vec2 uv = (*charts)[std::size_t((*chartOfFace)[std::size_t(face)])].uvAt(p);
-                                if (!transform.isIdentity()) uv = transform.apply(uv);
-                                return Vec4(uv.x(), uv.y(), 0, 1);
+// The atlas at every pixel: a plane chart is linear in the point (then the UV transform); an LSCM
+// or ARAP chart is linear on each face, so the pixel's UV is its face's corners' (as written,
+// transformed) at the point's barycentric coordinates.
+render::PixelMapping atlasPixelMapping(const param::Atlas& atlas, const param::UvTransform& transform, const Mesh& mesh,
+                                       const UvMap& uv) {
+  struct Charts {
+    std::vector<param::AtlasChart> charts;
+    std::vector<int> chartOfFace;
+    std::vector<Vec3> corners;  // the solved faces' corner positions, 3 per face (else empty)
+    std::vector<Vec2> uv;       // and their UVs
+  };
+  auto c = std::make_shared<Charts>(Charts{atlas.charts, atlas.chartOfFace, {}, {}});
+  if (std::any_of(atlas.charts.begin(), atlas.charts.end(), [](const param::AtlasChart& a) { return a.solved; })) {
+    c->uv = uv.uv;
+    c->corners.resize(3 * mesh.faceCount());
+    for (std::size_t f = 0; f < mesh.faceCount(); ++f)
+      for (int k = 0; k < 3; ++k) c->corners[3 * f + std::size_t(k)] = mesh.positions[std::size_t(mesh.triangles[f][k])];
+  }
+  return render::PixelMapping{[c, transform](const Vec3& p, const Vec3&, std::int32_t face) {
+                                const std::size_t f = std::size_t(face);
+                                const param::AtlasChart& chart = c->charts[std::size_t(c->chartOfFace[f])];
+                                if (chart.solved) {
+                                  const Vec3 &a = c->corners[3 * f], &b = c->corners[3 * f + 1], &d = c->corners[3 * f + 2];
+                                  const Vec3 n = (b - a).cross(d - a);
+                                  const double area = n.squaredNorm();
+                                  const double wb = (p - a).cross(d - a).dot(n) / area, wd = (b - a).cross(p - a).dot(n) / area;
+                                  const Vec2 st = (1 - wb - wd) * c->uv[3 * f] + wb * c->uv[3 * f + 1] + wd * c->uv[3 * f + 2];
+                                  return Vec4(st.x(), st.y(), 0, 1);
+                                }
+                                Vec2 st = chart.uvAt(p);
+                                if (!transform.isIdentity()) st = transform.apply(st);
+                                return Vec4(st.x(), st.y(), 0, 1);
                               },
                               false, false};
 }
@@ -97,7 +123,7 @@ render::PixelMapping atlasPixelMapping(const param::Atlas& atlas, const param::U
 // The projector evaluated at every pixel (docs/conventions.md §9).
 render::PixelMapping projectorPixelMapping(const param::ProjectorOptions& options, const param::Projection& projection,
                                            const Mesh& mesh, const UvMap& uv) {
-  if (projection.atlas) return atlasPixelMapping(*projection.atlas, options.uvTransform);
+  if (projection.atlas) return atlasPixelMapping(*projection.atlas, options.uvTransform, mesh, uv);
   const Affine3& localFromObject = projection.localFromObject;
   if (param::traitsOf(options.surface).blendsProjections) {  // three lookups blended by the pixel's normal
     render::PixelMapping blend;
@@ -235,6 +261,14 @@ nlohmann::json mapSummaryJson(const MappedMesh& mapped, const analysis::Judgemen
 void printMappingNotes(const std::string& inputPath, const MeshWarnings& warnings, const MappedMesh& mapped) {
   printInputWarnings(inputPath, warnings);
   if (mapped.seamPlacement) param::printSeamPlacement(*mapped.seamPlacement);
+  if (mapped.projection && mapped.projection->atlas && mapped.projection->atlas->fallbackCharts > 0) {
+    const param::Atlas& a = *mapped.projection->atlas;
+    std::string note = inputPath + ": note: " + std::to_string(a.fallbackCharts) + " of " +
+                       std::to_string(a.charts.size()) + " charts kept their plane projection (" +
+                       param::traitsOf(mapped.projector->surface).name + " failed on them)";
+    for (const std::string& reason : a.fallbackReasons) note += "; " + reason;
+    printProgressMessage(note);
+  }
 }
 
 render::Camera ViewCamera::frame(const Mesh& mesh, const std::string& meshFile, int width, int height) const {

@@ -76,7 +76,9 @@ nlohmann::json atlasJson(const Atlas& a) {
           {"border_texels", finiteOrNull(a.borderTexels)},
           {"seam_edges", a.seamEdges},
           {"seam_length", a.seamLength},
-          {"stretch_bound", a.stretchBound}};
+          {"stretch_bound", a.stretchBound},
+          {"fallback_charts", a.fallbackCharts},
+          {"fallback_reasons", a.fallbackReasons}};
 }
 
 std::string atlasLine(const Atlas& a) {

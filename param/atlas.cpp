@@ -9,6 +9,8 @@
 #include <unordered_map>
 
 #include "core/error.h"
+#include "param/baseline.h"
+#include "param/cut_graph.h"
 
 namespace uvtk::param {
 
@@ -454,6 +456,90 @@ class DirectionGrids {
 
 }  // namespace
 
+namespace {
+
+// LSCM or ARAP of every chart (cut to a disk first where it is not one), scaled to the chart's own
+// area so that one density serves all; a chart whose solution fails, flips a face or overlaps
+// itself keeps its plane projection (Atlas::fallbackCharts, with the reason).
+void solveCharts(const Mesh& mesh, const std::vector<int>& chartOf, std::size_t chartCount, ChartMap chartMap,
+                 Atlas& atlas, std::vector<Point2>& solved) {
+  solved.assign(3 * mesh.faceCount(), Point2::Zero());
+  std::vector<std::vector<int>> facesOf(chartCount);
+  for (std::size_t f = 0; f < mesh.faceCount(); ++f) facesOf[std::size_t(chartOf[f])].push_back(int(f));
+  std::vector<int> local(mesh.vertexCount(), -1);
+  const Baseline baseline = chartMap == ChartMap::Lscm ? Baseline::Lscm : Baseline::Arap;
+  for (std::size_t c = 0; c < chartCount; ++c) {
+    const std::vector<int>& faces = facesOf[c];
+    Mesh chart;
+    for (const int f : faces) {
+      Triangle t;
+      for (int k = 0; k < 3; ++k) {
+        const int v = mesh.triangles[std::size_t(f)][k];
+        if (local[std::size_t(v)] < 0) {
+          local[std::size_t(v)] = int(chart.positions.size());
+          chart.positions.push_back(mesh.positions[std::size_t(v)]);
+        }
+        t[k] = local[std::size_t(v)];
+      }
+      chart.triangles.push_back(t);
+    }
+    for (const int f : faces)
+      for (int k = 0; k < 3; ++k) local[std::size_t(mesh.triangles[std::size_t(f)][k])] = -1;
+    const auto fallBack = [&](const std::string& why) {
+      ++atlas.fallbackCharts;
+      if (atlas.fallbackReasons.size() < 8)
+        atlas.fallbackReasons.push_back("chart " + std::to_string(c) + " (" + std::to_string(faces.size()) +
+                                        " faces): " + why);
+    };
+    std::vector<Point2> uv;
+    try {
+      const Mesh disk = analyzeTopology(chart).isDisk() ? chart : cutToDisk(chart).mesh;
+      const UvMap map = parameterizeDisk(disk, baseline);
+      uv = map.uv;
+    } catch (const UsageError& e) {
+      fallBack(e.what());
+      continue;
+    }
+    double area3 = 0.0, areaUv = 0.0;
+    std::size_t positive = 0, negative = 0;
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+      const Triangle& t = chart.triangles[i];
+      area3 += 0.5 * (chart.positions[std::size_t(t[1])] - chart.positions[std::size_t(t[0])])
+                         .cross(chart.positions[std::size_t(t[2])] - chart.positions[std::size_t(t[0])])
+                         .norm();
+      const double a = 0.5 * orient(uv[3 * i], uv[3 * i + 1], uv[3 * i + 2]);
+      areaUv += std::abs(a);
+      positive += a > 0.0;
+      negative += a < 0.0;
+    }
+    if (positive != faces.size() && negative != faces.size()) {
+      fallBack(std::to_string(std::min(positive, negative)) + " faces flipped");
+      continue;
+    }
+    if (!(areaUv > 0.0) || !(area3 > 0.0)) {
+      fallBack("no area");
+      continue;
+    }
+    const double scale = std::sqrt(area3 / areaUv);
+    const double mirror = negative == faces.size() ? -1.0 : 1.0;  // a mirrored solution, turned over whole
+    std::vector<std::array<Point2, 3>> triangles(faces.size());
+    std::vector<int> indices(faces.size());
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+      indices[i] = int(i);
+      for (int k = 0; k < 3; ++k) triangles[i][std::size_t(k)] = Point2(mirror * uv[3 * i + std::size_t(k)].x(), uv[3 * i + std::size_t(k)].y()) * scale;
+    }
+    if (faces.size() >= 3 && overlapsItself(FaceGrid(indices, triangles), triangles)) {
+      fallBack("its flattening overlaps itself");
+      continue;
+    }
+    for (std::size_t i = 0; i < faces.size(); ++i)
+      for (int k = 0; k < 3; ++k) solved[3 * std::size_t(faces[i]) + std::size_t(k)] = triangles[i][std::size_t(k)];
+    atlas.charts[c].solved = true;
+  }
+}
+
+}  // namespace
+
 void checkAtlasOptions(const AtlasOptions& o) {
   if (!(o.angleLimitDegrees >= 1.0 && o.angleLimitDegrees <= 89.0))
     throw UsageError("--angle-limit: expected degrees in [1, 89]");
@@ -521,7 +607,10 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
   std::vector<int> tried(faceCount, -1);  // the last chart that tested the face and refused it
   int charts = 0;
   std::vector<int> component, queue;
-  for (std::size_t seed = 0; seed < faceCount; ++seed) {
+  const bool wholeDisk = options.chartMap != ChartMap::Plane && analyzeTopology(mesh).isDisk();
+  for (std::size_t seed = 0; seed < faceCount && wholeDisk; ++seed) chartOf[seed] = 0;
+  charts = wholeDisk ? 1 : 0;
+  for (std::size_t seed = 0; seed < faceCount && !wholeDisk; ++seed) {
     if (degenerate[seed] || chartOf[seed] >= 0) continue;
     component.assign(1, int(seed));
     const int first = charts;
@@ -569,7 +658,7 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
   // every face of it lies within the angle limit of that neighbour's direction and, projected
   // along it, overlaps neither the neighbour nor itself. Fewer charts, shorter seams, the same
   // guarantees. Charts are then numbered by their first face.
-  {
+  if (!wholeDisk) {
     const double cosLimit = std::cos(limit);
     const std::size_t initialCharts = std::size_t(charts);
     std::vector<std::vector<int>> facesOf(initialCharts);
@@ -663,13 +752,21 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
       }
   }
 
-  // Each chart's corners in its direction's plane, turned to their smallest box.
+  // Each chart's corners in its direction's plane (or as LSCM or ARAP flattened it), turned to
+  // their smallest box.
   const std::size_t chartCount = std::size_t(charts);
   atlas.charts.assign(chartCount, AtlasChart{});
+  std::vector<Point2> solved;  // per corner, for the solved charts
+  if (options.chartMap != ChartMap::Plane) solveCharts(mesh, chartOf, chartCount, options.chartMap, atlas, solved);
   std::vector<std::vector<Point2>> chartPoints(chartCount);
   std::vector<int> lastChartOfVertex(mesh.vertexCount(), -1);  // each vertex once a chart (its run of faces)
   for (std::size_t f = 0; f < faceCount; ++f) {
     const int c = chartOf[f];
+    if (atlas.charts[std::size_t(c)].solved) {
+      for (int k = 0; k < 3; ++k) chartPoints[std::size_t(c)].push_back(solved[3 * f + std::size_t(k)]);
+      ++atlas.charts[std::size_t(c)].faces;
+      continue;
+    }
     for (int k = 0; k < 3; ++k) {
       const int v = mesh.triangles[f][k];
       if (lastChartOfVertex[std::size_t(v)] == c) continue;
@@ -776,7 +873,14 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
   double uvArea = 0.0;
   for (std::size_t f = 0; f < faceCount; ++f) {
     const AtlasChart& chart = atlas.charts[std::size_t(atlas.chartOfFace[f])];
-    for (int k = 0; k < 3; ++k) atlas.uv[3 * f + std::size_t(k)] = chart.uvAt(mesh.positions[std::size_t(mesh.triangles[f][k])]);
+    const std::size_t c = std::size_t(atlas.chartOfFace[f]);
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t corner = 3 * f + std::size_t(k);
+      atlas.uv[corner] = chart.solved ? Vec2(perTexel.cwiseProduct(density * (rotation[c] * solved[corner] - low[c]) +
+                                                                    placements[c].at) +
+                                             Vec2(double(chart.tile % 10), double(chart.tile / 10)))
+                                      : chart.uvAt(mesh.positions[std::size_t(mesh.triangles[f][k])]);
+    }
     uvArea += 0.5 * std::abs(orient(atlas.uv[3 * f], atlas.uv[3 * f + 1], atlas.uv[3 * f + 2]));
   }
   atlas.occupancy = uvArea / double(atlas.tiles);

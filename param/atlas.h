@@ -9,6 +9,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/math.h"
@@ -16,7 +17,12 @@
 
 namespace uvtk::param {
 
+// How each chart is flattened: its plane projection, or CGAL's LSCM or ARAP (param/baseline.h) of
+// the chart, which fall back to the plane where they fail, flip or overlap themselves.
+enum class ChartMap { Plane, Lscm, Arap };
+
 struct AtlasOptions {
+  ChartMap chartMap = ChartMap::Plane;
   // A face joins the projection direction nearest its normal; directions are added until every
   // face has one within this angle (Smart UV Project's "angle limit"). It bounds each chart's
   // stretch: a face at angle a to its direction is shortened by cos a across the slope.
@@ -32,7 +38,9 @@ struct AtlasOptions {
 // Throws UsageError for values no type rules out (an angle outside (0, 90), a negative margin, ...).
 void checkAtlasOptions(const AtlasOptions& options);
 
-// One chart's projection: uv = linear * (p - origin) + offset for a point p of its faces (object space).
+// One chart's projection: uv = linear * (p - origin) + offset for a point p of its faces (object
+// space), where the chart is a plane projection (`solved` false); an LSCM or ARAP chart's UVs are
+// its own per corner.
 struct AtlasChart {
   Vec3 direction = Vec3::UnitZ();  // the projection's direction (unit): the faces look along it
   Vec3 origin = Vec3::Zero();
@@ -40,6 +48,7 @@ struct AtlasChart {
   Vec2 offset = Vec2::Zero();
   std::size_t faces = 0;
   int tile = 0;  // 0 unless texelsPerUnit asked for more than one texture
+  bool solved = false;  // flattened by LSCM or ARAP (ChartMap), not projected
 
   Vec2 uvAt(const Vec3& p) const { return linear * (p - origin) + offset; }
 };
@@ -52,6 +61,9 @@ struct Atlas {
   std::size_t splitCharts = 0;      // charts split because their projection overlapped itself
   std::size_t mergedCharts = 0;     // charts merged into a neighbour (param/atlas.cpp)
   std::size_t degenerateFaces = 0;  // faces of no area, given to a neighbour's chart (or their own)
+  // LSCM or ARAP: the charts that kept their plane projection instead, and why (the first few).
+  std::size_t fallbackCharts = 0;
+  std::vector<std::string> fallbackReasons;
   double texelsPerUnit = 0.0;       // the density every chart has, in texels of textureSize
   int tiles = 1;
   double occupancy = 0.0;  // the charts' UV area over the tiles' area
@@ -63,7 +75,7 @@ struct Atlas {
   double stretchBound = 1.0;  // 1 / cos(angle limit): no chart stretches a face more
 };
 
-// The atlas of a mesh. Deterministic: the same mesh and options give the same bits. Cost
+// The atlas of a mesh. With LSCM or ARAP, a mesh that is a topological disk is one chart. Deterministic: the same mesh and options give the same bits. Cost
 // O(F log F) for F faces (the edge table's sort), plus the packing's search over densities.
 // Throws UsageError when the charts cannot fit the texture even with no area of their own (more
 // charts than margins fit: a larger texture or a smaller margin helps), or, with texelsPerUnit,

@@ -45,7 +45,7 @@ double positiveOr(double value, double fallback) { return value > 0.0 && std::is
 Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options) {
   Affine3 localFromObject = Affine3::Identity();
   // two-plane works in object space; the camera's own view is its frame
-  if (surface == SurfaceKind::TwoPlane || surface == SurfaceKind::Camera || surface == SurfaceKind::Atlas)
+  if (surface == SurfaceKind::TwoPlane || surface == SurfaceKind::Camera || traitsOf(surface).chartsFromMesh)
     return localFromObject;  // the atlas places each chart itself
   if (options.frame) {
     const ExplicitFrame& f = *options.frame;
@@ -172,7 +172,7 @@ UnitBox toUnitBox(const std::vector<Vec3>& positions) {
 Affine3 fitPlacement(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options) {
   const Affine3 frame = frameBeforeTurn(positions, surface, options);
   if (options.turnDegrees == 0.0 || surface == SurfaceKind::TwoPlane || surface == SurfaceKind::Camera ||
-      surface == SurfaceKind::Atlas)
+      traitsOf(surface).chartsFromMesh)
     return frame;
   if (!std::isfinite(options.turnDegrees)) throw UsageError("--seam-place: expected a finite angle in degrees");
   // Turning the frame by +a puts the point at old azimuth a on the new local +x axis. Quarter

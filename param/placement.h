@@ -13,7 +13,7 @@ namespace uvtk::param {
 // Camera is no intermediate surface: the perspective projection of param/camera_projector.h,
 // which bypasses placement, O-mapping, seams and poles. Triplanar neither: three planar
 // projections blended by the normal (param/triplanar.h), placed as the others are.
-enum class SurfaceKind { Plane, TwoPlane, Cylinder, Sphere, Cube, Camera, Triplanar, Octahedral, ShrinkWrap, Atlas };
+enum class SurfaceKind { Plane, TwoPlane, Cylinder, Sphere, Cube, Camera, Triplanar, Octahedral, ShrinkWrap, Atlas, Lscm, Arap };
 
 enum class Fit {
   None,  // local = object coordinates

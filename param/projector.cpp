@@ -205,7 +205,7 @@ void checkOptions(const ProjectorOptions& o) {
     throw UsageError("--cap-angle: expected degrees in [0, 90]");
   if (o.surface == SurfaceKind::Camera) checkCameraProjector(o.camera);
   if (o.surface == SurfaceKind::Triplanar) checkTriplanarOptions(o.triplanar);
-  if (o.surface == SurfaceKind::Atlas) checkAtlasOptions(o.atlas);
+  if (traitsOf(o.surface).chartsFromMesh) checkAtlasOptions(o.atlas);
 }
 
 // Thrown where a point alone is mapped: the atlas's charts come from the whole mesh.
@@ -303,7 +303,10 @@ Evaluated evaluateTriplanar(const Mesh& mesh, const Affine3& localFromObject, co
 }
 
 // The atlas's charts at every corner: each valid, the chart's own plane (param/atlas.h).
-Evaluated evaluateAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
+Evaluated evaluateAtlas(const Mesh& mesh, SurfaceKind surface, AtlasOptions options, int threads) {
+  options.chartMap = surface == SurfaceKind::Lscm   ? ChartMap::Lscm
+                     : surface == SurfaceKind::Arap ? ChartMap::Arap
+                                                    : ChartMap::Plane;
   Evaluated result;
   CornerField& c = result.corners;
   c.resize(mesh.triangles.size(), threads);
@@ -570,7 +573,7 @@ Projection project(Mesh mesh, const ProjectorOptions& o, int threads) {
   out.localFromObject = fitPlacement(mesh.positions, o.surface, o.placement);
   Evaluated evaluated = o.surface == SurfaceKind::Camera      ? evaluateCamera(mesh, o.camera, threads)
                         : o.surface == SurfaceKind::Triplanar ? evaluateTriplanar(mesh, out.localFromObject, o.triplanar, threads)
-                        : o.surface == SurfaceKind::Atlas     ? evaluateAtlas(mesh, o.atlas, threads)
+                        : traitsOf(o.surface).chartsFromMesh  ? evaluateAtlas(mesh, o.surface, o.atlas, threads)
                             : withPrecision(o.arithmetic.precision, [&](auto zero) {
                                 return evaluateMesh<decltype(zero)>(mesh, out.localFromObject, o, threads);
                               });

@@ -75,6 +75,8 @@ SurfaceT<T> makeSurface(const ProjectorOptions& o) {
     case SurfaceKind::Camera:  // no surface: project(), mapVertices and PointMapping go round these
     case SurfaceKind::Triplanar:
     case SurfaceKind::Atlas:
+    case SurfaceKind::Lscm:
+    case SurfaceKind::Arap:
       UVTK_CHECK(false);
       break;
   }

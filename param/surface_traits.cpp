@@ -18,6 +18,8 @@ const SurfaceTraits& traitsOf(SurfaceKind surface) {
   static const SurfaceTraits kOctahedral{"octahedral", false, false, true, false, false, false, false, S::Ball};
   static const SurfaceTraits kShrinkWrap{"shrink-wrap", false, false, true, false, false, false, false, S::Ball};
   static const SurfaceTraits kAtlas{"atlas", false, true, false, false, false, false, false, S::None, true};
+  static const SurfaceTraits kLscm{"lscm", false, true, false, false, false, false, false, S::None, true};
+  static const SurfaceTraits kArap{"arap", false, true, false, false, false, false, false, S::None, true};
   switch (surface) {
     case SurfaceKind::Plane: return kPlane;
     case SurfaceKind::TwoPlane: return kTwoPlane;
@@ -29,6 +31,8 @@ const SurfaceTraits& traitsOf(SurfaceKind surface) {
     case SurfaceKind::Octahedral: return kOctahedral;
     case SurfaceKind::ShrinkWrap: return kShrinkWrap;
     case SurfaceKind::Atlas: return kAtlas;
+    case SurfaceKind::Lscm: return kLscm;
+    case SurfaceKind::Arap: return kArap;
   }
   return kSphere;  // unreachable: every enumerator is above
 }

@@ -37,6 +37,6 @@ const SurfaceTraits& traitsOf(SurfaceKind surface);
 inline constexpr SurfaceKind kSurfaces[] = {
     SurfaceKind::Plane,  SurfaceKind::TwoPlane,  SurfaceKind::Cylinder,   SurfaceKind::Sphere,    SurfaceKind::Cube,
     SurfaceKind::Camera, SurfaceKind::Triplanar, SurfaceKind::Octahedral, SurfaceKind::ShrinkWrap,
-    SurfaceKind::Atlas};
+    SurfaceKind::Atlas, SurfaceKind::Lscm, SurfaceKind::Arap};
 
 }  // namespace uvtk::param

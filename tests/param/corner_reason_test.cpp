@@ -85,6 +85,8 @@ Vec2 uvBound(const ProjectorOptions& o, const Eigen::AlignedBox3d& box) {
     case SurfaceKind::Camera:  // no range rule (camera_projector_test.cpp, triplanar_test.cpp); not among kSurfaces
     case SurfaceKind::Triplanar:
     case SurfaceKind::Atlas:  // [0, 1]^2 by construction (atlas_test.cpp)
+    case SurfaceKind::Lscm:
+    case SurfaceKind::Arap:
       break;
   }
   return Vec2::Zero();

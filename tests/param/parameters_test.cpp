@@ -194,7 +194,7 @@ TEST(SurfaceTraits, EachSurfaceIsAskedInOnePlace) {
     EXPECT_EQ(uPeriodStartOf([&] { ProjectorOptions o; o.surface = surface; return o; }()).has_value(), t.wraps);
   }
   EXPECT_EQ(wrapping, (std::vector<std::string>{"cylinder", "sphere"}));
-  EXPECT_EQ(perTriangle, (std::vector<std::string>{"cube", "triplanar", "atlas"}));
+  EXPECT_EQ(perTriangle, (std::vector<std::string>{"cube", "triplanar", "atlas", "lscm", "arap"}));
   ProjectorOptions seed;
   seed.spherePreset = SpherePreset::Seed004;  // s = atan2(y, x)/(2 pi): u in [-1/2, 1/2)
   EXPECT_EQ(uPeriodStartOf(seed), -0.5);
