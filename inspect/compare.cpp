@@ -14,8 +14,9 @@
 #include "io/image_io.h"
 #include "inspect/mapped_mesh.h"
 #include "inspect/measures_json.h"
-#include "param/baseline.h"
-#include "param/cut_graph.h"
+#include "core/progress.h"
+#include "io/mesh_writer.h"
+#include "param/projector_names.h"
 #include "render/camera.h"
 #include "inspect/run_report.h"
 #include "views/views.h"
@@ -59,11 +60,22 @@ bool ranksBefore(const RankedMapping& x, const RankedMapping& y) {
   return x.key < y.key || (x.key == y.key && x.summary().seams.length() < y.summary().seams.length());
 }
 
+// The atlas (or LSCM, ARAP per chart) for compare's texture and margin.
+param::ProjectorOptions atlasOptions(param::SurfaceKind surface, const CompareOptions& a) {
+  param::ProjectorOptions o;
+  o.surface = surface;
+  o.placement.fit = param::Fit::None;
+  o.atlas.textureSize = {a.textureSize.width, a.textureSize.height};
+  o.atlas.marginTexels = a.margin;
+  return o;
+}
+
 // The projector configurations compare runs: every surface x O-mapping (the reflection needs an
 // eye, which compare does not have) x fit (bbox about each axis, PCA, oriented box; the two-plane
 // projector works in object space, so one fit). The cube is laid out as a cross, so that its faces
 // do not overlap in UV.
-std::vector<std::pair<std::string, param::ProjectorOptions>> configurations(const Mesh& mesh) {
+std::vector<std::pair<std::string, param::ProjectorOptions>> configurations(const Mesh& mesh,
+                                                                             const CompareOptions& a) {
   using namespace param;
   const std::pair<const char*, RayKind> rays[] = {
       {"isn", RayKind::SurfaceNormal}, {"centroid", RayKind::Centroid}, {"normal", RayKind::ObjectNormal}};
@@ -85,6 +97,7 @@ std::vector<std::pair<std::string, param::ProjectorOptions>> configurations(cons
   for (const SurfaceKind surface : kSurfaces) {
     const SurfaceTraits& traits = traitsOf(surface);
     if (traits.isPerspective || traits.blendsProjections) continue;  // a view's and the engines' blend, not a layout
+    if (traits.chartsFromMesh) continue;  // the atlas and the baselines: one each, below
     for (const auto& [rayName, ray] : rays)
       for (const auto& [fitName, fit] : fits) {
         if (!traits.fitsToMesh && fitName != std::string("bbox-z")) continue;
@@ -97,59 +110,38 @@ std::vector<std::pair<std::string, param::ProjectorOptions>> configurations(cons
         out.emplace_back(std::string(traits.name) + "/" + rayName + "/" + fitLabel, o);
       }
   }
+  out.emplace_back("atlas", atlasOptions(SurfaceKind::Atlas, a));
   return out;
 }
 
-// LSCM and ARAP of the mesh if it is a disk, else of the mesh cut open along the UV seams of the
-// best-ranked projector that does not fail and whose seams cut it into a disk (a sphere's or a
-// cylinder's seam opens a closed mesh into one piece; a cube's cuts it into six), else along a cut
-// graph (param::cutToDisk: a knotted or higher-genus mesh); skipped records say why not.
-void addBaselines(const Mesh& mesh, const std::vector<RankedMapping>& ranked, const CompareOptions& a,
-                  std::vector<RankedMapping>& baselines, nlohmann::json& skipped) {
-  const auto skip = [&](const std::string& reason) {
-    for (const char* name : {"lscm", "arap"}) skipped.push_back({{"name", name}, {"reason", reason}});
-  };
-  if (mesh.faceCount() > std::size_t(a.baselineMaxFaces))
-    return skip("more than --baseline-max-faces " + std::to_string(a.baselineMaxFaces) + " faces");
-  const RankedMapping* seams = nullptr;
-  Mesh disk = mesh;
-  if (!param::analyzeTopology(mesh).isDisk()) {
-    for (const RankedMapping& c : ranked) {
-      if (c.judgement.verdict == analysis::Verdict::Fail || !c.mapped.projector) continue;
-      // Cut without fanning the poles: a fanned pole splits into a vertex per face, and ARAP then
-      // folds those slivers over each other.
-      param::ProjectorOptions unfanned = *c.mapped.projector;
-      unfanned.pole = param::PoleMode::None;
-      const MappedMesh mapped = mapByProjector(mesh, unfanned, false);
-      param::CutMesh cut = param::cutAlongUvSeams(mapped.mesh, mapped.uv);
-      if (!param::analyzeTopology(cut.mesh).isDisk()) continue;
-      disk = std::move(cut.mesh);
-      seams = &c;
-      break;
+// LSCM and ARAP as `uvtk map --projector lscm|arap` makes them: of the whole mesh where it is a
+// topological disk, else of each chart of the atlas (cut there, so they run where they can
+// succeed on any mesh), packed as the atlas. Charts where they failed keep their plane projection:
+// the record and stderr name them and why. Skipped (with the reason) only beyond
+// --baseline-max-faces or when the atlas cannot be made.
+void addBaselines(const Mesh& mesh, const CompareOptions& a, std::vector<RankedMapping>& baselines,
+                  nlohmann::json& skipped) {
+  for (const param::SurfaceKind surface : {param::SurfaceKind::Lscm, param::SurfaceKind::Arap}) {
+    const std::string name = param::traitsOf(surface).name;
+    if (mesh.faceCount() > std::size_t(a.baselineMaxFaces)) {
+      skipped.push_back({{"name", name}, {"reason", "more than --baseline-max-faces " + std::to_string(a.baselineMaxFaces) + " faces"}});
+      continue;
     }
-    if (!seams) {
-      try {
-        disk = param::cutToDisk(mesh).mesh;
-      } catch (const UsageError& e) {
-        return skip(std::string("the mesh is not a topological disk, and cannot be cut into one: ") + e.what());
-      }
-    }
-  }
-  const bool cut = disk.vertexCount() != mesh.vertexCount();
-  const std::string cutFrom = seams ? seams->name : cut ? "cut graph" : "";
-  for (const param::Baseline baseline : {param::Baseline::Lscm, param::Baseline::Arap}) {
-    const std::string name =
-        std::string(param::toString(baseline)) + (cutFrom.empty() ? "" : " (cut: " + cutFrom + ")");
     try {
-      MappedMesh mapped;
-      mapped.uv = param::parameterizeDisk(disk, baseline);
-      // Measured on the uncut mesh (same triangles in the same order), so that the cut shows as seams.
-      mapped.mesh = seams ? seams->mapped.mesh : mesh;
-      mapped.source = param::toString(baseline);
-      baselines.push_back(measure(name, std::move(mapped), a));
-      if (!cutFrom.empty()) baselines.back().record["cut_along"] = cutFrom;
+      RankedMapping row = measure(name, mapByProjector(mesh, atlasOptions(surface, a), false), a);
+      const param::Atlas& atlas = *row.mapped.projection->atlas;
+      if (atlas.fallbackCharts > 0) {
+        row.record["fallback_charts"] = atlas.fallbackCharts;
+        row.record["fallback_reasons"] = atlas.fallbackReasons;
+        std::string note = "uvtk compare: " + name + ": " + std::to_string(atlas.fallbackCharts) + " of " +
+                           std::to_string(atlas.charts.size()) + " charts kept their plane projection";
+        for (const std::string& reason : atlas.fallbackReasons) note += "; " + reason;
+        printProgressMessage(note);
+      }
+      baselines.push_back(std::move(row));
     } catch (const UsageError& e) {
       skipped.push_back({{"name", name}, {"reason", e.what()}});
+      printProgressMessage("uvtk compare: " + name + " skipped: " + e.what());
     }
   }
 }
@@ -193,13 +185,16 @@ void CompareOptions::check() const {
   if (overlapResolution < 1 || overlapResolution > 16384)
     throw UsageError("--overlap-resolution: expected 1 to 16384 pixels");
   if (!sheet.empty()) io::checkImageType(sheet, io::PixelType::UInt8);
+  if (!writeBest.empty()) io::checkMeshOutput(writeBest, io::MeshWriteOptions{}, "--write-best");
+  if (!(margin >= 0 && 2 * margin < std::min(textureSize.width, textureSize.height)))
+    throw UsageError("--margin: expected texels from 0 to less than half the texture");
 }
 
 Comparison rankMappings(const CompareOptions& a, const Mesh& mesh, const nlohmann::json& input) {
   StageClock clock("uvtk compare");
   std::vector<RankedMapping> ranked;
   nlohmann::json skipped = nlohmann::json::array();
-  const auto all = configurations(mesh);
+  const auto all = configurations(mesh, a);
   for (std::size_t i = 0; i < all.size(); ++i) {
     const auto& [name, options] = all[i];
     clock.start("mapping", name + " (" + std::to_string(i + 1) + "/" + std::to_string(all.size()) + ")");
@@ -215,7 +210,7 @@ Comparison rankMappings(const CompareOptions& a, const Mesh& mesh, const nlohman
   if (a.baselines) {
     clock.start("baselines", "LSCM, ARAP");
     std::vector<RankedMapping> baselines;
-    addBaselines(mesh, ranked, a, baselines, skipped);
+    addBaselines(mesh, a, baselines, skipped);
     for (RankedMapping& b : baselines) ranked.push_back(std::move(b));
     std::stable_sort(ranked.begin(), ranked.end(), ranksBefore);
     clock.stop();
@@ -271,8 +266,37 @@ Comparison compareMappings(io::OutputSet& outputs, const CompareOptions& a, cons
     io::writeImage(outputs, a.sheet, comparisonSheet(out, a), io::PixelType::UInt8);
     clock.stop();
   }
+  if (!a.writeBest.empty() && !out.ranking.empty()) {
+    const RankedMapping& best = out.ranking.front();
+    io::MeshWriteOptions write;
+    write.header = "uvtk compare: the first-ranked mapping, " + best.name;
+    io::writeMesh(outputs, a.writeBest, best.mapped.mesh, &best.mapped.uv, write);
+    out.record["best"] = {{"name", best.name},
+                          {"output", a.writeBest},
+                          {"verdict", analysis::toString(best.judgement.verdict)},
+                          {"map_options", best.mapped.projector ? mapOptionsOf(*best.mapped.projector) : ""}};
+  }
   if (!a.json.empty()) outputs.writeText(a.json, out.record.dump(2) + "\n");
   return out;
+}
+
+std::string mapOptionsOf(const param::ProjectorOptions& o) {
+  using namespace param;
+  const SurfaceTraits& traits = traitsOf(o.surface);
+  std::string line = std::string("--projector ") + traits.name;
+  if (traits.chartsFromMesh) {
+    char extra[96];
+    std::snprintf(extra, sizeof extra, " --texture-size %d,%d --margin %g", o.atlas.textureSize[0], o.atlas.textureSize[1],
+                  o.atlas.marginTexels);
+    return line + extra;
+  }
+  line += std::string(" --omap ") + nameOf(kRayNames, o.ray);
+  if (traits.fitsToMesh) {
+    line += std::string(" --fit ") + nameOf(kFitNames, o.placement.fit);
+    if (o.placement.fit == Fit::BBox) line += std::string(" --axis ") + nameOf(kAxisNames, o.placement.axis);
+  }
+  if (traits.hasFaceIds) line += std::string(" --cube-layout ") + nameOf(kCubeLayoutNames, o.cubeLayout);
+  return line;
 }
 
 Comparison compareMappings(const CompareOptions& a, const Mesh& mesh, const nlohmann::json& input) {

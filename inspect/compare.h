@@ -17,12 +17,14 @@ struct CompareOptions {
   std::string json;                 // the ranking as JSON; empty: not written
   std::string markdown;             // the Markdown table; empty: not written
   std::string sheet;                // the contact sheet of the best; empty: not drawn
+  std::string writeBest;            // the first-ranked mapping's mesh, as uvtk map writes it; empty: not written
   RankBy by = RankBy::StretchL2;    // the measure that ranks within a verdict
   int top = 8;                      // candidates on the contact sheet
   int tileSize = 256;               // pixels across each picture of the sheet
   int overlapResolution = 512;      // pixels across the layout raster that measures overlap
   analysis::TextureSize textureSize;  // the texture texel density counts in
   int baselineMaxFaces = 200000;    // LSCM and ARAP only on meshes up to this size
+  int margin = 4;                   // the atlas's (and LSCM's and ARAP's) gutter in texels of textureSize
   int threads = 0;                  // threads for the pictures (0: one per hardware thread)
   bool seamPlaceAuto = false;       // place the seam of cylinder and sphere
   bool baselines = true;            // rank CGAL's LSCM and ARAP too
@@ -57,6 +59,10 @@ Comparison rankMappings(const CompareOptions& options, const Mesh& mesh, const n
 
 // The checker and stretch views of the first options.top mappings, two mappings per row.
 Image comparisonSheet(const Comparison& comparison, const CompareOptions& options);
+
+// The `uvtk map` options that make the mapping a ranked row names ("--projector sphere --omap isn
+// --fit pca"): what --write-best wrote, and how to write it again.
+std::string mapOptionsOf(const param::ProjectorOptions& options);
 
 // rankMappings, then the outputs `options` names, published together.
 Comparison compareMappings(const CompareOptions& options, const Mesh& mesh, const nlohmann::json& input);

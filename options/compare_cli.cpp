@@ -6,9 +6,9 @@ namespace uvtk::cli {
 
 inspect::CompareOptions CompareArguments::resolve() const {
   inspect::CompareOptions o = options;
+  o.textureSize = parseTextureSize(textureSize, "--texture-size");
   o.check();
   o.camera = camera.resolve();
-  o.textureSize = parseTextureSize(textureSize, "--texture-size");
   return o;
 }
 
@@ -24,6 +24,10 @@ void addCompareOptions(CLI::App& app, CompareArguments& arguments) {
   app.add_option("--json", a.json, "Write the ranking with every measure as JSON");
   app.add_option("--markdown", a.markdown, "Also write the table (printed on stdout) to this file");
   app.add_option("--sheet", a.sheet, "Write a contact sheet of the checker and stretch views of the best ones");
+  app.add_option("--write-best", a.writeBest,
+                 "Write the mesh with the first-ranked mapping's UVs, as uvtk map writes it with that row's options");
+  app.add_option("--margin", a.margin, "Texels of gutter between the charts of the atlas, LSCM and ARAP")
+      ->capture_default_str();
   app.add_option("--top", a.top, "How many of the best the contact sheet shows")->capture_default_str();
   app.add_option("--tile-size", a.tileSize, "Pixels across each picture of the sheet")->capture_default_str();
   addViewCameraOptions(app, arguments.camera);

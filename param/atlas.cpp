@@ -8,6 +8,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "core/disjoint_sets.h"
 #include "core/error.h"
 #include "param/baseline.h"
 #include "param/cut_graph.h"
@@ -466,25 +467,42 @@ void solveCharts(const Mesh& mesh, const std::vector<int>& chartOf, std::size_t 
   solved.assign(3 * mesh.faceCount(), Point2::Zero());
   std::vector<std::vector<int>> facesOf(chartCount);
   for (std::size_t f = 0; f < mesh.faceCount(); ++f) facesOf[std::size_t(chartOf[f])].push_back(int(f));
-  std::vector<int> local(mesh.vertexCount(), -1);
   const Baseline baseline = chartMap == ChartMap::Lscm ? Baseline::Lscm : Baseline::Arap;
   for (std::size_t c = 0; c < chartCount; ++c) {
     const std::vector<int>& faces = facesOf[c];
+    // The chart's own mesh, a vertex per fan of corners: two corners of a vertex share one only
+    // where faces of the chart join them across an edge, so that a chart touching itself at a
+    // vertex (a bowtie) is cut there rather than refused as not manifold.
+    DisjointSets fans(3 * faces.size());
+    std::vector<std::array<int, 4>> halfEdges;  // (low, high, corner of low, corner of high)
+    for (std::size_t i = 0; i < faces.size(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        const int a = mesh.triangles[std::size_t(faces[i])][k], b = mesh.triangles[std::size_t(faces[i])][(k + 1) % 3];
+        const int ca = int(3 * i) + k, cb = int(3 * i) + (k + 1) % 3;
+        halfEdges.push_back(a < b ? std::array<int, 4>{a, b, ca, cb} : std::array<int, 4>{b, a, cb, ca});
+      }
+    std::sort(halfEdges.begin(), halfEdges.end());
+    for (std::size_t i = 0; i < halfEdges.size();) {
+      std::size_t j = i;
+      while (j < halfEdges.size() && halfEdges[j][0] == halfEdges[i][0] && halfEdges[j][1] == halfEdges[i][1]) ++j;
+      if (j - i == 2) fans.join(std::size_t(halfEdges[i][2]), std::size_t(halfEdges[i + 1][2])),
+                      fans.join(std::size_t(halfEdges[i][3]), std::size_t(halfEdges[i + 1][3]));
+      i = j;
+    }
     Mesh chart;
-    for (const int f : faces) {
+    std::vector<int> vertexOfSet(3 * faces.size(), -1);
+    for (std::size_t i = 0; i < faces.size(); ++i) {
       Triangle t;
       for (int k = 0; k < 3; ++k) {
-        const int v = mesh.triangles[std::size_t(f)][k];
-        if (local[std::size_t(v)] < 0) {
-          local[std::size_t(v)] = int(chart.positions.size());
-          chart.positions.push_back(mesh.positions[std::size_t(v)]);
+        int& v = vertexOfSet[fans.find(3 * i + std::size_t(k))];
+        if (v < 0) {
+          v = int(chart.positions.size());
+          chart.positions.push_back(mesh.positions[std::size_t(mesh.triangles[std::size_t(faces[i])][k])]);
         }
-        t[k] = local[std::size_t(v)];
+        t[k] = v;
       }
       chart.triangles.push_back(t);
     }
-    for (const int f : faces)
-      for (int k = 0; k < 3; ++k) local[std::size_t(mesh.triangles[std::size_t(f)][k])] = -1;
     const auto fallBack = [&](const std::string& why) {
       ++atlas.fallbackCharts;
       if (atlas.fallbackReasons.size() < 8)

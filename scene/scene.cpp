@@ -354,6 +354,7 @@ class SceneReader {
       o.compare.options.json = output(o.compare.options.json, pointer + "/json");
       o.compare.options.markdown = output(o.compare.options.markdown, pointer + "/markdown");
       o.compare.options.sheet = output(o.compare.options.sheet, pointer + "/sheet");
+      o.compare.options.writeBest = output(o.compare.options.writeBest, pointer + "/write_best");
       at(pointer, [&] { o.compare.check(); });
     } else if (kind == "bench") {
       o.kind = SceneOutput::Kind::Bench;
@@ -449,7 +450,8 @@ std::vector<std::string> SceneOutput::files() const {
   add(json);
   if (kind == Kind::Render && !frame.aov.empty()) add(frame.aovOutput);
   if (kind == Kind::Report) add(report.json), add(report.html);
-  if (kind == Kind::Compare) add(compare.options.json), add(compare.options.markdown), add(compare.options.sheet);
+  if (kind == Kind::Compare) add(compare.options.json), add(compare.options.markdown), add(compare.options.sheet),
+                                  add(compare.options.writeBest);
   if (kind == Kind::Bench) add(bench.json), add(bench.markdown), add(bench.plot);
   return out;
 }

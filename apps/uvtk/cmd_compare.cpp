@@ -40,6 +40,11 @@ void runCompare(CompareCommandArguments& a) {
   if (!quiet())
     std::fprintf(stderr, "uvtk compare: %zu mappings ranked, %zu skipped; best: %s\n",
                comparison.record["ranking"].size(), comparison.skipped, comparison.best.c_str());
+  if (comparison.record.contains("best"))
+    std::fprintf(stderr, "uvtk compare: wrote %s: %s, %s (as uvtk map %s -o %s %s)\n", options.writeBest.c_str(),
+                 comparison.best.c_str(), comparison.record["best"]["verdict"].get<std::string>().c_str(),
+                 a.input.c_str(), options.writeBest.c_str(),
+                 comparison.record["best"]["map_options"].get<std::string>().c_str());
 }
 
 }  // namespace
