@@ -346,8 +346,8 @@ struct Placement {
 };
 
 // Places a box of w x h upright or turned, whichever sits lower (then further left, then upright).
-bool placeBox(Skyline& skyline, double w, double h, Placement& out) {
-  const Skyline::Spot upright = skyline.find(w, h), turned = skyline.find(h, w);
+bool placeBox(Skyline& skyline, double w, double h, bool mayTurn, Placement& out) {
+  const Skyline::Spot upright = skyline.find(w, h), turned = mayTurn ? skyline.find(h, w) : Skyline::Spot{};
   const bool turn = turned.y + w < upright.y + h || (turned.y + w == upright.y + h && turned.x < upright.x);
   const Skyline::Spot& spot = turn ? turned : upright;
   if (spot.y == kInfinity) return false;
@@ -359,20 +359,26 @@ bool placeBox(Skyline& skyline, double w, double h, Placement& out) {
 
 // Packs boxes of size * density + margin (texels) in `order` into tiles of W x H less the margin
 // along the left and bottom border. With one tile only, false when they do not all fit.
-bool pack(const std::vector<Vec2>& sizes, const std::vector<int>& order, double density, double margin,
+// How the packer goes about it: the order it takes the boxes in, and whether it may turn them.
+struct PackingStrategy {
+  std::vector<int> order;
+  bool mayTurn = true;
+};
+
+bool pack(const std::vector<Vec2>& sizes, const PackingStrategy& strategy, double density, double margin,
           const std::array<int, 2>& texture, bool manyTiles, std::vector<Placement>& out) {
   out.assign(sizes.size(), Placement{Vec2::Zero(), 0, false});
   const double binW = double(texture[0]) - margin, binH = double(texture[1]) - margin;
   Skyline skyline(binW, binH);
   int tile = 0;
-  for (const int c : order) {
+  for (const int c : strategy.order) {
     const double w = sizes[std::size_t(c)].x() * density + margin, h = sizes[std::size_t(c)].y() * density + margin;
     Placement& p = out[std::size_t(c)];
-    if (!placeBox(skyline, w, h, p)) {
+    if (!placeBox(skyline, w, h, strategy.mayTurn, p)) {
       if (!manyTiles) return false;
       skyline = Skyline(binW, binH);
       ++tile;
-      if (!placeBox(skyline, w, h, p)) return false;
+      if (!placeBox(skyline, w, h, strategy.mayTurn, p)) return false;
     }
     p.at += Vec2(margin, margin);
     p.tile = tile;
@@ -805,14 +811,21 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
     std::vector<Point2>().swap(chartPoints[c]);
   }
 
-  // One density for every chart: the largest at which all fit (bisection between no area and
-  // the area bound), or the one asked for, over as many tiles as it takes.
-  std::vector<int> order(chartCount);
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return size[std::size_t(a)].y() != size[std::size_t(b)].y() ? size[std::size_t(a)].y() > size[std::size_t(b)].y()
-                                                                 : size[std::size_t(a)].x() > size[std::size_t(b)].x();
-  });
+  // One density for every chart: the largest at which all fit, or the one asked for, over as
+  // many tiles as it takes. Boxes go in by decreasing height, area or longer side, turned where
+  // that sits lower or never turned: the strategy that packs the densest wins (the first on a tie).
+  std::vector<PackingStrategy> strategies;
+  for (int key = 0; key < 3; ++key) {
+    const auto measure = [&](int c) {
+      const Vec2& s = size[std::size_t(c)];
+      return key == 0 ? s.y() : key == 1 ? s.x() * s.y() : std::max(s.x(), s.y());
+    };
+    std::vector<int> order(chartCount);
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return measure(a) > measure(b); });
+    strategies.push_back({order, true});
+    strategies.push_back({order, false});
+  }
   const double margin = options.marginTexels;
   const double binW = double(options.textureSize[0]) - margin, binH = double(options.textureSize[1]) - margin;
   std::vector<Placement> placements;
@@ -826,9 +839,9 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
                          std::to_string(int(std::ceil(size[c].x() * density))) + " x " +
                          std::to_string(int(std::ceil(size[c].y() * density))) +
                          " texels, more than one texture less its margins holds");
-    pack(size, order, density, margin, options.textureSize, true, placements);
+    pack(size, strategies.front(), density, margin, options.textureSize, true, placements);
   } else {
-    if (!pack(size, order, 0.0, margin, options.textureSize, false, placements))
+    if (!pack(size, strategies.front(), 0.0, margin, options.textureSize, false, placements))
       throw UsageError(std::to_string(charts) + " charts with " + std::to_string(margin) +
                        " texels of margin each do not fit a " + std::to_string(options.textureSize[0]) + " x " +
                        std::to_string(options.textureSize[1]) +
@@ -842,24 +855,29 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
     if (area > 0.0) high = std::min(high, std::sqrt(binW * binH / area));
     if (!std::isfinite(high)) high = 1.0;  // nothing has extent: any density will do
     // Packing is not monotone in the density (a box that no longer fits beside another may fit
-    // below it), so the search steps down from the area bound by 3 % until the charts fit, then
-    // bisects between that and the step above (below 0.4 of the bound, steps of 30 %).
-    double lowDensity = 0.0, failed = high;
+    // below it), so each strategy's search steps down from the area bound by 3 % until the charts
+    // fit (below 0.4 of the bound by 30 %), then bisects between that and the step above; it
+    // stops where it could no longer beat the best so far.
+    std::size_t best = 0;
     std::vector<Placement> trial;
-    for (double d = high, step = 0.97; d > 1e-12 * high; d *= step, step = d < 0.4 * high ? 0.7 : step) {
-      if (pack(size, order, d, margin, options.textureSize, false, trial)) {
-        lowDensity = d;
-        break;
+    for (std::size_t k = 0; k < strategies.size(); ++k) {
+      const PackingStrategy& strategy = strategies[k];
+      double fits = 0.0, failed = high;
+      for (double d = high, step = 0.97; d > 1e-12 * high && d > density; d *= step, step = d < 0.4 * high ? 0.7 : step) {
+        if (pack(size, strategy, d, margin, options.textureSize, false, trial)) {
+          fits = d;
+          break;
+        }
+        failed = d;
       }
-      failed = d;
+      if (fits == 0.0) continue;
+      for (int step = 0; step < 12 && fits < failed; ++step) {
+        const double mid = 0.5 * (fits + failed);
+        (pack(size, strategy, mid, margin, options.textureSize, false, trial) ? fits : failed) = mid;
+      }
+      if (fits > density) density = fits, best = k;
     }
-    if (lowDensity > 0.0 && lowDensity < failed)
-      for (int step = 0; step < 12; ++step) {
-        const double mid = 0.5 * (lowDensity + failed);
-        (pack(size, order, mid, margin, options.textureSize, false, trial) ? lowDensity : failed) = mid;
-      }
-    density = lowDensity;
-    pack(size, order, density, margin, options.textureSize, false, placements);
+    pack(size, strategies[best], density, margin, options.textureSize, false, placements);
   }
   atlas.texelsPerUnit = density;
 
