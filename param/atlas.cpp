@@ -10,6 +10,7 @@
 
 #include "core/disjoint_sets.h"
 #include "core/error.h"
+#include "core/parallel.h"
 #include "param/baseline.h"
 #include "param/cut_graph.h"
 
@@ -39,22 +40,33 @@ struct EdgeTable {
     int low, high, face;
   };
   std::vector<HalfEdge> halfEdges;  // sorted by (low, high, face)
-  std::vector<std::size_t> groupStart;  // edge e's half-edges: [groupStart[e], groupStart[e + 1])
+  std::vector<std::uint32_t> groupStart;  // edge e's half-edges: [groupStart[e], groupStart[e + 1])
 
+  // A counting sort by the lower vertex, then each vertex's few half-edges by (high, face):
+  // linear in the faces rather than a sort of them all.
   explicit EdgeTable(const Mesh& mesh) {
-    halfEdges.reserve(3 * mesh.faceCount());
+    std::vector<std::uint32_t> start(mesh.vertexCount() + 1, 0);
+    for (const Triangle& t : mesh.triangles)
+      for (int k = 0; k < 3; ++k)
+        if (t[k] != t[(k + 1) % 3]) ++start[std::size_t(std::min(t[k], t[(k + 1) % 3])) + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    halfEdges.resize(start.back());
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
     for (std::size_t f = 0; f < mesh.faceCount(); ++f)
       for (int k = 0; k < 3; ++k) {
         const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
-        if (a != b) halfEdges.push_back({std::min(a, b), std::max(a, b), int(f)});
+        if (a != b) halfEdges[fill[std::size_t(std::min(a, b))]++] = {std::min(a, b), std::max(a, b), int(f)};
       }
-    std::sort(halfEdges.begin(), halfEdges.end(), [](const HalfEdge& x, const HalfEdge& y) {
-      return x.low != y.low ? x.low < y.low : x.high != y.high ? x.high < y.high : x.face < y.face;
-    });
+    for (std::size_t v = 0; v + 1 < start.size(); ++v)
+      if (start[v + 1] - start[v] > 1)
+        std::sort(halfEdges.begin() + start[v], halfEdges.begin() + start[v + 1], [](const HalfEdge& x, const HalfEdge& y) {
+          return x.high != y.high ? x.high < y.high : x.face < y.face;
+        });
+    groupStart.reserve(halfEdges.size() / 2 + 2);
     for (std::size_t i = 0; i < halfEdges.size(); ++i)
       if (i == 0 || halfEdges[i].low != halfEdges[i - 1].low || halfEdges[i].high != halfEdges[i - 1].high)
-        groupStart.push_back(i);
-    groupStart.push_back(halfEdges.size());
+        groupStart.push_back(std::uint32_t(i));
+    groupStart.push_back(std::uint32_t(halfEdges.size()));
   }
   std::size_t edgeCount() const { return groupStart.size() - 1; }
 };
@@ -219,6 +231,21 @@ class FaceGrid {
 
 // Whether two faces of the grid overlap. A pair is tested once, in the cell of the lower left
 // corner of their boxes' intersection, and only where the boxes meet.
+// Whether two of a few faces overlap: every pair, where their boxes meet.
+template <class Planes>
+bool fewOverlap(const std::vector<int>& faces, const Planes& projected) {
+  std::array<std::array<Point2, 3>, 32> t;
+  std::array<Eigen::AlignedBox2d, 32> box;
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    t[i] = projected[std::size_t(faces[i])];
+    box[i].setEmpty();
+    for (const Point2& p : t[i]) box[i].extend(p);
+    for (std::size_t j = 0; j < i; ++j)
+      if (box[i].intersects(box[j]) && interiorsOverlap(t[i], t[j])) return true;
+  }
+  return false;
+}
+
 template <class Planes>
 bool overlapsItself(const FaceGrid& grid, const Planes& projected) {
   std::vector<std::array<Point2, 3>> triangles;
@@ -398,66 +425,44 @@ double segmentDistance(const Point2& a, const Point2& b, const Point2& c, const 
   return std::min({pointSegment(a, c, d), pointSegment(b, c, d), pointSegment(c, a, b), pointSegment(d, a, b)});
 }
 
-// The faces of each direction in cells of a uniform grid of its plane, made when a merge first
-// asks about that direction, so that a chart being merged meets only the faces near it: sorted
-// (cell, face) pairs, and the faces merges projected along the direction since, in a side table.
+// The faces of each direction in a FaceGrid of its plane, made when a merge first asks about that
+// direction, so that a chart being merged meets only the faces near it; the faces merges projected
+// along the direction since go in a side table by cell (cells clamp, so they are found as well).
 class DirectionGrids {
  public:
-  DirectionGrids(const std::vector<int>& faces, const std::vector<int>& directionOf,
-                 const FacePlanes& projected, std::size_t directions)
-      : faces_(faces), directionOf_(directionOf), projected_(projected), grids_(directions) {
-    double size = 0.0;
-    for (const int f : faces) size += boxOf(projected[std::size_t(f)]).sizes().maxCoeff();
-    cell_ = std::max(size / double(std::max<std::size_t>(faces.size(), 1)), 1e-300);
-  }
+  DirectionGrids(const std::vector<int>& faces, const std::vector<int>& directionOf, const FacePlanes& projected,
+                 std::size_t directions)
+      : faces_(faces), directionOf_(directionOf), projected_(projected), grids_(directions) {}
   // A face now projected along `direction` (once its grid is made, which then holds it).
   void insert(int direction, const std::array<Point2, 3>& t, int face) {
     Grid& grid = grids_[std::size_t(direction)];
-    if (grid.made) forKeys(t, [&](std::uint64_t key) { grid.added[key].push_back(face); });
+    if (grid.cells) grid.cells->forCells(t, [&](std::size_t c) { grid.added[c].push_back(face); });
   }
   // Calls f(face) for every face in the cells `t` covers in `direction`'s plane (a face may come twice).
   template <class F>
   void near(int direction, const std::array<Point2, 3>& t, F&& f) {
     Grid& grid = grids_[std::size_t(direction)];
-    if (!grid.made) {
+    if (!grid.cells) {
+      std::vector<int> faces;
       for (const int face : faces_)
-        if (directionOf_[std::size_t(face)] == direction)
-          forKeys(projected_[std::size_t(face)], [&](std::uint64_t key) { grid.pairs.emplace_back(key, face); });
-      std::sort(grid.pairs.begin(), grid.pairs.end());
-      grid.made = true;
+        if (directionOf_[std::size_t(face)] == direction) faces.push_back(face);
+      grid.cells.emplace(faces, projected_);
     }
-    forKeys(t, [&](std::uint64_t key) {
-      auto it = std::lower_bound(grid.pairs.begin(), grid.pairs.end(), std::make_pair(key, std::numeric_limits<int>::min()));
-      for (; it != grid.pairs.end() && it->first == key; ++it) f(it->second);
-      if (const auto extra = grid.added.find(key); extra != grid.added.end())
+    grid.cells->forCells(t, [&](std::size_t c) {
+      for (const int* face = grid.cells->begin(c); face != grid.cells->end(c); ++face) f(*face);
+      if (const auto extra = grid.added.find(c); extra != grid.added.end())
         for (const int face : extra->second) f(face);
     });
   }
 
  private:
   struct Grid {
-    bool made = false;
-    std::vector<std::pair<std::uint64_t, int>> pairs;
-    std::unordered_map<std::uint64_t, std::vector<int>> added;
+    std::optional<FaceGrid> cells;
+    std::unordered_map<std::size_t, std::vector<int>> added;
   };
-  static Eigen::AlignedBox2d boxOf(const std::array<Point2, 3>& t) {
-    Eigen::AlignedBox2d b;
-    for (const Point2& p : t) b.extend(p);
-    return b;
-  }
-  template <class F>
-  void forKeys(const std::array<Point2, 3>& t, F&& f) const {
-    const Eigen::AlignedBox2d b = boxOf(t);
-    constexpr double kHalf = double(1 << 30);
-    const auto cell = [&](double x) { return std::int64_t(std::clamp(std::floor(x / cell_) + kHalf, 0.0, 2 * kHalf - 1)); };
-    const std::int64_t x0 = cell(b.min().x()), x1 = cell(b.max().x()), y0 = cell(b.min().y()), y1 = cell(b.max().y());
-    for (std::int64_t y = y0; y <= y1; ++y)
-      for (std::int64_t x = x0; x <= x1; ++x) f((std::uint64_t(x) << 32) | std::uint64_t(y));
-  }
   const std::vector<int>& faces_;
   const std::vector<int>& directionOf_;
   const FacePlanes& projected_;
-  double cell_ = 1.0;
   std::vector<Grid> grids_;
 };
 
@@ -577,7 +582,7 @@ void checkAtlasOptions(const AtlasOptions& o) {
     throw UsageError("--texels-per-unit: expected a finite number above 0");
 }
 
-Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
+Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
   checkAtlasOptions(options);
   const std::size_t faceCount = mesh.faceCount();
   Atlas atlas;
@@ -630,27 +635,42 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
   std::vector<int> chartOf(faceCount, -1);
   std::vector<int> tried(faceCount, -1);  // the last chart that tested the face and refused it
   int charts = 0;
-  std::vector<int> component, queue;
+  std::vector<int> queue;
   const bool wholeDisk = options.chartMap != ChartMap::Plane && analyzeTopology(mesh).isDisk();
   for (std::size_t seed = 0; seed < faceCount && wholeDisk; ++seed) chartOf[seed] = 0;
   charts = wholeDisk ? 1 : 0;
+  // The components first, then whether each overlaps itself (side by side: they are
+  // independent, and the answer does not depend on the threads), then the overlapping ones split.
+  std::vector<std::vector<int>> components;
   for (std::size_t seed = 0; seed < faceCount && !wholeDisk; ++seed) {
     if (degenerate[seed] || chartOf[seed] >= 0) continue;
-    component.assign(1, int(seed));
-    const int first = charts;
-    chartOf[seed] = first;
+    std::vector<int>& component = components.emplace_back(1, int(seed));
+    chartOf[seed] = int(components.size() - 1);
     for (std::size_t i = 0; i < component.size(); ++i)
       for (const int g : neighbours[std::size_t(component[i])])
         if (g >= 0 && chartOf[std::size_t(g)] < 0 && directionOf[std::size_t(g)] == directionOf[seed]) {
-          chartOf[std::size_t(g)] = first;
+          chartOf[std::size_t(g)] = chartOf[seed];
           component.push_back(g);
         }
-    ++charts;
-    if (component.size() < 3) continue;  // two faces across an edge, both facing the direction, cannot overlap
+  }
+  std::vector<char> overlapping(components.size(), 0);
+  parallelFor(int(components.size()), threads, [&](int i) {
+    const std::vector<int>& component = components[std::size_t(i)];
+    if (component.size() < 3) return;  // two faces across an edge, both facing the direction, cannot overlap
+    overlapping[std::size_t(i)] = component.size() <= 32 ? fewOverlap(component, projected)
+                                                         : overlapsItself(FaceGrid(component, projected), projected);
+  });
+  for (std::size_t k = 0; k < components.size(); ++k) {
+    const std::vector<int>& component = components[k];
+    const int first = charts;
+    if (!overlapping[k]) {
+      for (const int f : component) chartOf[std::size_t(f)] = first;
+      ++charts;
+      continue;
+    }
     const FaceGrid grid(component, projected);
-    if (!overlapsItself(grid, projected)) continue;
+    const int direction = directionOf[std::size_t(component[0])];
     for (const int f : component) chartOf[std::size_t(f)] = -1;
-    charts = first;
     for (const int start : component) {
       if (chartOf[std::size_t(start)] >= 0) continue;
       const int chart = charts++;
@@ -659,7 +679,7 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
       for (std::size_t i = 0; i < queue.size(); ++i)
         for (const int g : neighbours[std::size_t(queue[i])]) {
           if (g < 0 || chartOf[std::size_t(g)] >= 0 || tried[std::size_t(g)] == chart ||
-              directionOf[std::size_t(g)] != directionOf[seed])
+              directionOf[std::size_t(g)] != direction)
             continue;
           bool overlaps = false;
           const std::array<Point2, 3> tg = projected[std::size_t(g)];
@@ -677,6 +697,7 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
     }
     atlas.splitCharts += std::size_t(charts - first - 1);
   }
+  std::vector<std::vector<int>>().swap(components);
 
   // Merging, smallest chart first: a chart joins the neighbour it shares the most edges with when
   // every face of it lies within the angle limit of that neighbour's direction and, projected
@@ -715,7 +736,9 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
         for (const int f : faces) fits = fits && normals[std::size_t(f)].dot(d) >= cosLimit;
         if (!fits) continue;
         const FacesAlong moved{projected, direction};
-        if (faces.size() >= 3 && overlapsItself(FaceGrid(faces, moved), moved)) continue;
+        const bool selfOverlap = faces.size() >= 3 && (faces.size() <= 32 ? fewOverlap(faces, moved)
+                                                                         : overlapsItself(FaceGrid(faces, moved), moved));
+        if (selfOverlap) continue;
         for (std::size_t i = 0; i < faces.size() && fits; ++i) {
           const std::array<Point2, 3> t = moved[std::size_t(faces[i])];
           grids.near(direction, t, [&](int h) {
@@ -980,25 +1003,41 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options) {
     return std::equal_range(cells.begin(), cells.end(), std::make_pair(key, std::uint32_t(0)),
                             [](const auto& x, const auto& y) { return x.first < y.first; });
   };
-  for (std::size_t i = 0; i < cells.size();) {
-    std::size_t j = i;
-    while (j < cells.size() && cells[j].first == cells[i].first) ++j;
-    const std::uint64_t key = cells[i].first;
-    const int tile = int(key >> 42);
-    const long x = long((key >> 21) & ((1u << 21) - 1)) - 1, y = long(key & ((1u << 21) - 1)) - 1;
-    for (long dy = -1; dy <= 1; ++dy)
-      for (long dx = -1; dx <= 1; ++dx) {
-        if (x + dx < -1 || y + dy < -1) continue;
-        const auto [from, to] = range(keyOf(tile, x + dx, y + dy));
-        for (std::size_t a = i; a < j; ++a)
-          for (auto b = from; b != to; ++b) {
-            const Boundary &p = boundary[cells[a].second], &q = boundary[b->second];
-            if (p.chart >= q.chart) continue;
-            atlas.gutterTexels = std::min(atlas.gutterTexels, segmentDistance(p.a, p.b, q.a, q.b));
-          }
-      }
-    i = j;
-  }
+  std::vector<std::size_t> runs;  // where each cell's run of segments starts
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    if (i == 0 || cells[i].first != cells[i - 1].first) runs.push_back(i);
+  runs.push_back(cells.size());
+  const int chunks = int(std::min<std::size_t>(64, runs.size() - 1));
+  std::vector<double> nearest(std::size_t(std::max(chunks, 1)), kInfinity);  // per chunk: the minimum does not depend on the split
+  parallelFor(chunks, threads, [&](int chunk) {
+    double& best = nearest[std::size_t(chunk)];
+    const std::size_t runCount = runs.size() - 1;
+    for (std::size_t r = runCount * std::size_t(chunk) / std::size_t(chunks);
+         r < runCount * (std::size_t(chunk) + 1) / std::size_t(chunks); ++r) {
+      const std::size_t i = runs[r], j = runs[r + 1];
+      const std::uint64_t key = cells[i].first;
+      const int tile = int(key >> 42);
+      const long x = long((key >> 21) & ((1u << 21) - 1)) - 1, y = long(key & ((1u << 21) - 1)) - 1;
+      for (long dy = -1; dy <= 1; ++dy)
+        for (long dx = -1; dx <= 1; ++dx) {
+          if (x + dx < -1 || y + dy < -1) continue;
+          const auto [from, to] = range(keyOf(tile, x + dx, y + dy));
+          for (std::size_t a = i; a < j; ++a)
+            for (auto b = from; b != to; ++b) {
+              const Boundary &p = boundary[cells[a].second], &q = boundary[b->second];
+              if (p.chart >= q.chart) continue;
+              // the boxes' distance bounds the segments': most pairs end here
+              const double gapX = std::max({0.0, std::min(p.a.x(), p.b.x()) - std::max(q.a.x(), q.b.x()),
+                                            std::min(q.a.x(), q.b.x()) - std::max(p.a.x(), p.b.x())});
+              const double gapY = std::max({0.0, std::min(p.a.y(), p.b.y()) - std::max(q.a.y(), q.b.y()),
+                                            std::min(q.a.y(), q.b.y()) - std::max(p.a.y(), p.b.y())});
+              if (gapX * gapX + gapY * gapY >= best * best) continue;
+              best = std::min(best, segmentDistance(p.a, p.b, q.a, q.b));
+            }
+        }
+    }
+  });
+  for (const double d : nearest) atlas.gutterTexels = std::min(atlas.gutterTexels, d);
   return atlas;
 }
 

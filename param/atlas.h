@@ -80,6 +80,7 @@ struct Atlas {
 // Throws UsageError when the charts cannot fit the texture even with no area of their own (more
 // charts than margins fit: a larger texture or a smaller margin helps), or, with texelsPerUnit,
 // when one chart alone is larger than a texture.
-Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options);
+// `threads` (0: one per core) check charts side by side; the result does not depend on them.
+Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads = 0);
 
 }  // namespace uvtk::param

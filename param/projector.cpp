@@ -310,7 +310,7 @@ Evaluated evaluateAtlas(const Mesh& mesh, SurfaceKind surface, AtlasOptions opti
   Evaluated result;
   CornerField& c = result.corners;
   c.resize(mesh.triangles.size(), threads);
-  result.atlas = makeAtlas(mesh, options);
+  result.atlas = makeAtlas(mesh, options, threads);
   for (std::size_t corner = 0; corner < result.atlas->uv.size(); ++corner)
     storeCorner(c, corner, finiteVertexUv(result.atlas->uv[corner]));
   std::vector<Vec2>().swap(result.atlas->uv);
