@@ -98,15 +98,22 @@ std::vector<Vec3> projectionDirections(const std::vector<Vec3>& normals, const s
                                        const std::vector<int>& byArea, double cosLimit, double cosHalfLimit) {
   std::vector<Vec3> directions;
   std::vector<double> best(normals.size(), -kInfinity);  // the largest cosine to a direction so far
-  for (const int seed : byArea) {
-    if (best[std::size_t(seed)] >= cosLimit) continue;
+  int seed = byArea.empty() ? -1 : byArea.front();
+  while (seed >= 0) {
     const Vec3 seedNormal = normals[std::size_t(seed)];
     Vec3 sum = Vec3::Zero();
     for (const int f : byArea)
       if (normals[std::size_t(f)].dot(seedNormal) >= cosHalfLimit) sum += areas[std::size_t(f)] * normals[std::size_t(f)];
     const Vec3 direction = sum.norm() > 0.0 ? Vec3(sum.normalized()) : seedNormal;
     directions.push_back(direction);
-    for (const int f : byArea) best[std::size_t(f)] = std::max(best[std::size_t(f)], normals[std::size_t(f)].dot(direction));
+    // The next seed: the face least like every direction so far, while one is beyond the limit.
+    seed = -1;
+    double least = cosLimit;
+    for (const int f : byArea) {
+      double& b = best[std::size_t(f)];
+      b = std::max(b, normals[std::size_t(f)].dot(direction));
+      if (b < least) least = b, seed = f;
+    }
   }
   return directions;
 }
