@@ -166,7 +166,10 @@ std::string markdownTable(const std::vector<RankedMapping>& ranked, RankBy by) {
   char row[512];
   for (std::size_t i = 0; i < ranked.size(); ++i) {
     const RankedMapping& c = ranked[i];
-    const std::string why = c.judgement.reasonsText();
+    std::string why = c.judgement.reasonsText();
+    if (c.record.contains("fallback_charts"))  // LSCM or ARAP failed on some charts: say so where the row is read
+      why += std::string(why.empty() ? "" : "; ") + std::to_string(c.record["fallback_charts"].get<std::size_t>()) +
+             " charts kept their plane projection (see stderr)";
     std::snprintf(row, sizeof row, "| %zu | %s | %s | %.5g | %.5g | %.5g | %.5g | %.3g%% | %.3g%% | ", i + 1,
                   c.name.c_str(), analysis::toString(c.judgement.verdict), c.summary().l2Stretch,
                   c.summary().linfStretch, c.summary().angleDistortion.mean, c.summary().seams.length(),
@@ -218,6 +221,8 @@ Comparison rankMappings(const CompareOptions& a, const Mesh& mesh, const nlohman
 
   Comparison out;
   out.table = markdownTable(ranked, a.by);
+  for (const nlohmann::json& s : skipped)  // every mapping not ranked, with its reason, under the table
+    out.table += "\nNot ranked: " + s["name"].get<std::string>() + ": " + s["reason"].get<std::string>() + "\n";
   static const char* kRankNames[] = {"stretch_l2", "stretch_linf", "angle", "seam_length"};
   out.record = {{"tool", {{"name", "uvtk"}, {"version", UVTK_VERSION}}},
                 {"input", input},
