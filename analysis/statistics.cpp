@@ -264,16 +264,33 @@ void findPercentiles(const double* values, const double* weights, std::size_t co
       s.answer = list.front().value;
       continue;
     }
-    std::stable_sort(list.begin(), list.end(), [](const Item& a, const Item& b) { return a.key < b.key; });
+    // The least key whose items, with everything below, weigh at least the target: a weighted
+    // quickselect (expected linear; sorting the items cost a tenth of a small mesh's judgement).
+    // Three-way partitions about the middle item's key; each part's weight summed exactly.
     running = s.below;
     s.answer = list.back().value;
-    for (const Item& item : list) {
-      format.add(running.data(), item.weight);
-      format.normalise(running.data());
-      if (format.atLeast(running.data(), s.target.data())) {
-        s.answer = item.value;
+    std::size_t lo = 0, hi = list.size();
+    while (lo < hi) {
+      const std::uint64_t pivot = list[lo + (hi - lo) / 2].key;
+      const auto less = std::partition(list.begin() + std::ptrdiff_t(lo), list.begin() + std::ptrdiff_t(hi),
+                                       [pivot](const Item& item) { return item.key < pivot; });
+      const auto equal = std::partition(less, list.begin() + std::ptrdiff_t(hi),
+                                        [pivot](const Item& item) { return item.key == pivot; });
+      after = running;
+      for (auto item = list.begin() + std::ptrdiff_t(lo); item != less; ++item) format.add(after.data(), item->weight);
+      format.normalise(after.data());
+      if (less != list.begin() + std::ptrdiff_t(lo) && format.atLeast(after.data(), s.target.data())) {
+        hi = std::size_t(less - list.begin());
+        continue;
+      }
+      for (auto item = less; item != equal; ++item) format.add(after.data(), item->weight);
+      format.normalise(after.data());
+      if (format.atLeast(after.data(), s.target.data())) {
+        s.answer = less->value;
         break;
       }
+      running.swap(after);
+      lo = std::size_t(equal - list.begin());
     }
   }
   // Searches still open go on from where they are.
