@@ -848,9 +848,12 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
 
   // One density for every chart: the largest at which all fit, or the one asked for, over as
   // many tiles as it takes. Boxes go in by decreasing height, area or longer side, turned where
-  // that sits lower or never turned: the strategy that packs the densest wins (the first on a tie).
+  // that sits lower or never turned: the strategy that packs the densest wins (the first on a
+  // tie). Beyond 2000 charts, only the first.
+  // Beyond a few thousand charts each try costs tens of milliseconds: one strategy then.
   std::vector<PackingStrategy> strategies;
-  for (int key = 0; key < 3; ++key) {
+  const int keys = chartCount <= 2000 ? 3 : 1;
+  for (int key = 0; key < keys; ++key) {
     const auto measure = [&](int c) {
       const Vec2& s = size[std::size_t(c)];
       return key == 0 ? s.y() : key == 1 ? s.x() * s.y() : std::max(s.x(), s.y());
@@ -859,7 +862,7 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return measure(a) > measure(b); });
     strategies.push_back({order, true});
-    strategies.push_back({order, false});
+    if (chartCount <= 2000) strategies.push_back({order, false});
   }
   const double margin = options.marginTexels;
   const double binW = double(options.textureSize[0]) - margin, binH = double(options.textureSize[1]) - margin;
