@@ -1,6 +1,7 @@
 #include "param/atlas.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -418,6 +419,12 @@ bool pack(const std::vector<Vec2>& sizes, const PackingStrategy& strategy, doubl
     p.tile = tile;
   }
   return true;
+}
+
+std::string numberText(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
 }
 
 double segmentDistance(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
@@ -872,7 +879,7 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
     density = *options.texelsPerUnit;
     for (std::size_t c = 0; c < chartCount; ++c)
       if (size[c].x() * density + margin > binW || size[c].y() * density + margin > binH)
-        throw UsageError("--texels-per-unit " + std::to_string(density) + ": a chart of " +
+        throw UsageError("--texels-per-unit " + numberText(density) + ": a chart of " +
                          std::to_string(atlas.charts[c].faces) + " faces needs " +
                          std::to_string(int(std::ceil(size[c].x() * density))) + " x " +
                          std::to_string(int(std::ceil(size[c].y() * density))) +
@@ -880,7 +887,7 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
     pack(size, strategies.front(), density, margin, options.textureSize, true, placements);
   } else {
     if (!pack(size, strategies.front(), 0.0, margin, options.textureSize, false, placements))
-      throw UsageError(std::to_string(charts) + " charts with " + std::to_string(margin) +
+      throw UsageError(std::to_string(charts) + " charts with " + numberText(margin) +
                        " texels of margin each do not fit a " + std::to_string(options.textureSize[0]) + " x " +
                        std::to_string(options.textureSize[1]) +
                        " texture even at no size: give a larger --texture-size or a smaller --margin");
