@@ -165,7 +165,8 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
                 "%.1f ms; ",
                 s.vertices, s.faces, measured.seams.wrapEdges + measured.seams.cutEdges, measured.poleVertices.size(),
                 measured.poleFaces, s.invalidVertices, totalMs);
-  const std::string atlas = mapped.projection->atlas ? atlasLine(*mapped.projection->atlas) + "; " : "";
+  const std::optional<analysis::Gutters> gutters = mapped.atlasGutters();
+  const std::string atlas = gutters ? atlasLine(*mapped.projection->atlas, *gutters) + "; " : "";
   return {numbers + atlas + verdictLine(judgement), judgement.verdict};
 }
 

@@ -1,6 +1,7 @@
 #include "inspect/mapped_mesh.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <memory>
 
@@ -251,11 +252,18 @@ nlohmann::json mapSummaryJson(const MappedMesh& mapped, const analysis::Judgemen
     for (const Vec4& c : corners) homogeneous.push_back({c[0], c[1], c[3]});
     j["homogeneous_texcoords"] = std::move(homogeneous);
   }
-  if (mapped.projection && mapped.projection->atlas) j["atlas"] = atlasJson(*mapped.projection->atlas);
+  if (const std::optional<analysis::Gutters> gutters = mapped.atlasGutters())
+    j["atlas"] = atlasJson(*mapped.projection->atlas, *gutters);
   j["input"] = input;
   j["output"] = output;
   addMappingOrigin(j, mapped);
   return j;
+}
+
+std::optional<analysis::Gutters> MappedMesh::atlasGutters() const {
+  if (!projection || !projection->atlas || !projector) return std::nullopt;
+  const std::array<int, 2>& size = projector->atlas.textureSize;
+  return analysis::measureGutters(mesh, uv, projection->atlas->chartOfFace, size[0], size[1]);
 }
 
 void printMappingNotes(const std::string& inputPath, const MeshWarnings& warnings, const MappedMesh& mapped) {

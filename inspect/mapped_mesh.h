@@ -9,6 +9,7 @@
 
 #include "analysis/distortion.h"
 #include "analysis/judgement.h"
+#include "analysis/texel_layout.h"
 #include "core/mesh.h"
 #include "core/uv_map.h"
 #include "param/projector.h"
@@ -48,6 +49,9 @@ struct MappedMesh {
   // and the verdict under `thresholds`; texel densities counted in `textureSize` texels.
   analysis::Judgement judge(const analysis::Thresholds& thresholds = {}, int overlapResolution = 1024,
                             int threads = 0, analysis::TextureSize textureSize = {}) const;
+  // How far apart the atlas's charts lie in its texture (analysis::measureGutters); nothing
+  // unless an atlas (or LSCM, ARAP) made the UVs.
+  std::optional<analysis::Gutters> atlasGutters() const;
   // What the views draw: this mesh and its UVs with their judgement (null for views without
   // measures; it must outlive the result).
   views::ViewInput viewInput(const analysis::Judgement* judgement) const;

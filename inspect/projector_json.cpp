@@ -62,8 +62,31 @@ nlohmann::json projectorOptionsJson(const ProjectorOptions& o) {
   return j;
 }
 
-nlohmann::json atlasJson(const Atlas& a) {
-  const auto finiteOrNull = [](double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(); };
+namespace {
+
+nlohmann::json finiteOrNull(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(); }
+
+}  // namespace
+
+nlohmann::json texelStatisticsJson(const analysis::TexelStatistics& s) {
+  nlohmann::json levels = nlohmann::json::array();
+  for (const analysis::TexelLevel& l : s.levels)
+    levels.push_back({{"level", l.level},
+                      {"size", {l.width, l.height}},
+                      {"mapped", l.mapped},
+                      {"mapped_conservative", l.mappedConservative},
+                      {"touched", l.touched},
+                      {"overwritten", l.overwritten},
+                      {"clashes", l.clashes},
+                      {"gutter_texels", finiteOrNull(l.gutterTexels)}});
+  return {{"charts", s.charts},
+          {"gutter_texels", finiteOrNull(s.gutters.betweenCharts)},
+          {"border_texels", finiteOrNull(s.gutters.toBorder)},
+          {"first_bleed_level", s.firstBleedLevel ? nlohmann::json(*s.firstBleedLevel) : nlohmann::json()},
+          {"levels", levels}};
+}
+
+nlohmann::json atlasJson(const Atlas& a, const analysis::Gutters& gutters) {
   return {{"charts", a.charts.size()},
           {"directions", a.directions},
           {"split_charts", a.splitCharts},
@@ -72,8 +95,8 @@ nlohmann::json atlasJson(const Atlas& a) {
           {"texels_per_unit", a.texelsPerUnit},
           {"tiles", a.tiles},
           {"occupancy", a.occupancy},
-          {"gutter_texels", finiteOrNull(a.gutterTexels)},
-          {"border_texels", finiteOrNull(a.borderTexels)},
+          {"gutter_texels", finiteOrNull(gutters.betweenCharts)},
+          {"border_texels", finiteOrNull(gutters.toBorder)},
           {"seam_edges", a.seamEdges},
           {"seam_length", a.seamLength},
           {"stretch_bound", a.stretchBound},
@@ -81,10 +104,12 @@ nlohmann::json atlasJson(const Atlas& a) {
           {"fallback_reasons", a.fallbackReasons}};
 }
 
-std::string atlasLine(const Atlas& a) {
+std::string atlasLine(const Atlas& a, const analysis::Gutters& gutters) {
+  char gutter[48] = "no second chart";
+  if (std::isfinite(gutters.betweenCharts)) std::snprintf(gutter, sizeof gutter, "gutter %.3g texels", gutters.betweenCharts);
   char line[200];
-  std::snprintf(line, sizeof line, "%zu charts, occupancy %.3f, gutter %.3g texels, %.4g texels per unit%s",
-                a.charts.size(), a.occupancy, a.gutterTexels, a.texelsPerUnit,
+  std::snprintf(line, sizeof line, "%zu charts, occupancy %.3f, %s, %.4g texels per unit%s", a.charts.size(),
+                a.occupancy, gutter, a.texelsPerUnit,
                 a.tiles > 1 ? (", " + std::to_string(a.tiles) + " tiles").c_str() : "");
   return line;
 }

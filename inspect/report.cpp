@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "inspect/html_report.h"
 #include "inspect/mesh_view.h"
+#include "inspect/projector_json.h"
 #include "inspect/measures_json.h"
 #include "inspect/run_report.h"
 #include "inspect/summary_json.h"
@@ -59,6 +60,11 @@ nlohmann::json reportJson(const MappedMesh& mapped, const analysis::Judgement& j
   report["texcoords"] = mapped.source;
   if (mapped.projection) report["mapping"] = summaryJson(mapped.projection->summary, mapped.projector && param::traitsOf(mapped.projector->surface).blendsProjections);
   addMappingOrigin(report, mapped);
+  const analysis::TextureSize& size = options.textureSize;
+  if (size.width <= 8192 && size.height <= 8192)  // 4 bytes a texel: beyond, the report says why not
+    report["texels"] = texelStatisticsJson(analysis::texelStatistics(mapped.mesh, mapped.uv, size.width, size.height));
+  else
+    report["texels"] = {{"skipped", "the texels of a layout are counted for textures of at most 8192 a side"}};
   if (!options.html.empty()) {
     report["views"] = nlohmann::json::array();
     for (const views::View view : pageViews(mapped, options)) report["views"].push_back(views::toString(view));

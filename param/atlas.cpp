@@ -427,17 +427,6 @@ std::string numberText(double value) {
   return text;
 }
 
-double segmentDistance(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
-  const double o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
-  if (((o1 > 0) != (o2 > 0)) && ((o3 > 0) != (o4 > 0)) && o1 != 0 && o2 != 0 && o3 != 0 && o4 != 0) return 0.0;
-  const auto pointSegment = [](const Point2& p, const Point2& s, const Point2& t) {
-    const Vec2 st = t - s;
-    const double length2 = st.squaredNorm();
-    const double u = length2 > 0.0 ? std::clamp((p - s).dot(st) / length2, 0.0, 1.0) : 0.0;
-    return (p - (s + u * st)).norm();
-  };
-  return std::min({pointSegment(a, c, d), pointSegment(b, c, d), pointSegment(c, a, b), pointSegment(d, a, b)});
-}
 
 // The faces of each direction in a FaceGrid of its plane, made when a merge first asks about that
 // direction, so that a chart being merged meets only the faces near it; the faces merges projected
@@ -966,100 +955,18 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
   }
   atlas.occupancy = uvArea / double(atlas.tiles);
 
-  // Seams: edges between charts. Gutters: the charts' boundary edges in texels, those of two
-  // charts compared where they lie within a few margins of each other.
-  const Vec2 texels(double(options.textureSize[0]), double(options.textureSize[1]));
-  const auto texelOf = [&](std::size_t corner) {  // in the corner's tile
-    const int tile = atlas.charts[std::size_t(atlas.chartOfFace[corner / 3])].tile;
-    return Vec2((atlas.uv[corner] - Vec2(double(tile % 10), double(tile / 10))).cwiseProduct(texels));
-  };
-  struct Boundary {
-    Point2 a, b;
-    int chart, tile;
-  };
-  std::vector<Boundary> boundary;
-  const auto cornerOf = [&](int face, int vertex) {
-    const Triangle& t = mesh.triangles[std::size_t(face)];
-    return 3 * std::size_t(face) + std::size_t(t[0] == vertex ? 0 : t[1] == vertex ? 1 : 2);
-  };
+  // Seams: the edges between charts. (How far apart the charts lie is measured on the layout,
+  // analysis/texel_layout.h, as for any UVs.)
   for (std::size_t e = 0; e < edges.edgeCount(); ++e) {
     const std::size_t begin = edges.groupStart[e], end = edges.groupStart[e + 1];
     const EdgeTable::HalfEdge& first = edges.halfEdges[begin];
     bool seam = false;
     for (std::size_t i = begin + 1; i < end; ++i)
       seam |= atlas.chartOfFace[std::size_t(edges.halfEdges[i].face)] != atlas.chartOfFace[std::size_t(first.face)];
-    if (seam) {
-      ++atlas.seamEdges;
-      atlas.seamLength += (mesh.positions[std::size_t(first.high)] - mesh.positions[std::size_t(first.low)]).norm();
-    }
-    for (std::size_t i = begin; i < end; ++i) {
-      const int face = edges.halfEdges[i].face, chart = atlas.chartOfFace[std::size_t(face)];
-      bool inside = false;  // another face of the same chart across this edge
-      for (std::size_t j = begin; j < end; ++j)
-        inside |= j != i && atlas.chartOfFace[std::size_t(edges.halfEdges[j].face)] == chart;
-      if (!inside)
-        boundary.push_back({texelOf(cornerOf(face, first.low)), texelOf(cornerOf(face, first.high)), chart,
-                            atlas.charts[std::size_t(chart)].tile});
-    }
+    if (!seam) continue;
+    ++atlas.seamEdges;
+    atlas.seamLength += (mesh.positions[std::size_t(first.high)] - mesh.positions[std::size_t(first.low)]).norm();
   }
-  atlas.borderTexels = kInfinity;
-  for (std::size_t corner = 0; corner < atlas.uv.size(); ++corner) {
-    const Vec2 t = texelOf(corner);
-    atlas.borderTexels = std::min({atlas.borderTexels, t.x(), t.y(), texels.x() - t.x(), texels.y() - t.y()});
-  }
-  atlas.gutterTexels = kInfinity;
-  const double cell = std::max(4.0 * margin, 16.0);
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> cells;
-  const auto keyOf = [](int tile, long x, long y) {
-    return (std::uint64_t(std::uint32_t(tile)) << 42) | (std::uint64_t(x + 1) << 21) | std::uint64_t(y + 1);
-  };
-  for (std::size_t s = 0; s < boundary.size(); ++s) {
-    const Boundary& b = boundary[s];
-    const long x0 = long(std::floor(std::min(b.a.x(), b.b.x()) / cell)), x1 = long(std::floor(std::max(b.a.x(), b.b.x()) / cell));
-    const long y0 = long(std::floor(std::min(b.a.y(), b.b.y()) / cell)), y1 = long(std::floor(std::max(b.a.y(), b.b.y()) / cell));
-    for (long y = y0; y <= y1; ++y)
-      for (long x = x0; x <= x1; ++x) cells.emplace_back(keyOf(b.tile, x, y), std::uint32_t(s));
-  }
-  std::sort(cells.begin(), cells.end());
-  const auto range = [&](std::uint64_t key) {
-    return std::equal_range(cells.begin(), cells.end(), std::make_pair(key, std::uint32_t(0)),
-                            [](const auto& x, const auto& y) { return x.first < y.first; });
-  };
-  std::vector<std::size_t> runs;  // where each cell's run of segments starts
-  for (std::size_t i = 0; i < cells.size(); ++i)
-    if (i == 0 || cells[i].first != cells[i - 1].first) runs.push_back(i);
-  runs.push_back(cells.size());
-  const int chunks = int(std::min<std::size_t>(64, runs.size() - 1));
-  std::vector<double> nearest(std::size_t(std::max(chunks, 1)), kInfinity);  // per chunk: the minimum does not depend on the split
-  parallelFor(chunks, threads, [&](int chunk) {
-    double& best = nearest[std::size_t(chunk)];
-    const std::size_t runCount = runs.size() - 1;
-    for (std::size_t r = runCount * std::size_t(chunk) / std::size_t(chunks);
-         r < runCount * (std::size_t(chunk) + 1) / std::size_t(chunks); ++r) {
-      const std::size_t i = runs[r], j = runs[r + 1];
-      const std::uint64_t key = cells[i].first;
-      const int tile = int(key >> 42);
-      const long x = long((key >> 21) & ((1u << 21) - 1)) - 1, y = long(key & ((1u << 21) - 1)) - 1;
-      for (long dy = -1; dy <= 1; ++dy)
-        for (long dx = -1; dx <= 1; ++dx) {
-          if (x + dx < -1 || y + dy < -1) continue;
-          const auto [from, to] = range(keyOf(tile, x + dx, y + dy));
-          for (std::size_t a = i; a < j; ++a)
-            for (auto b = from; b != to; ++b) {
-              const Boundary &p = boundary[cells[a].second], &q = boundary[b->second];
-              if (p.chart >= q.chart) continue;
-              // the boxes' distance bounds the segments': most pairs end here
-              const double gapX = std::max({0.0, std::min(p.a.x(), p.b.x()) - std::max(q.a.x(), q.b.x()),
-                                            std::min(q.a.x(), q.b.x()) - std::max(p.a.x(), p.b.x())});
-              const double gapY = std::max({0.0, std::min(p.a.y(), p.b.y()) - std::max(q.a.y(), q.b.y()),
-                                            std::min(q.a.y(), q.b.y()) - std::max(p.a.y(), p.b.y())});
-              if (gapX * gapX + gapY * gapY >= best * best) continue;
-              best = std::min(best, segmentDistance(p.a, p.b, q.a, q.b));
-            }
-        }
-    }
-  });
-  for (const double d : nearest) atlas.gutterTexels = std::min(atlas.gutterTexels, d);
   return atlas;
 }
 

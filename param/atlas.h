@@ -66,10 +66,7 @@ struct Atlas {
   std::vector<std::string> fallbackReasons;
   double texelsPerUnit = 0.0;       // the density every chart has, in texels of textureSize
   int tiles = 1;
-  double occupancy = 0.0;  // the charts' UV area over the tiles' area
-  // The smallest distance between two charts, and from a chart to its tile's border, in texels;
-  // infinity where there is no second chart. Measured on the layout, not taken from the packer.
-  double gutterTexels = 0.0, borderTexels = 0.0;
+  double occupancy = 0.0;  // the charts' UV area over the tiles' area (the gutters: analysis::measureGutters)
   std::size_t seamEdges = 0;  // mesh edges whose faces lie in different charts
   double seamLength = 0.0;    // their total length in object space
   double stretchBound = 1.0;  // 1 / cos(angle limit): no chart stretches a face more

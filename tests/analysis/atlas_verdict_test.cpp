@@ -1,9 +1,11 @@
 // The atlas's verdict (issue "atlas", point 3): on every kind of mesh the judgement finds no
-// flipped face, no overlap, no invalid corner and no face collapsed in UV; it passes outright
+// flipped face, no overlap, no invalid corner, no face collapsed in UV, and the gutter met between
+// charts and at the border (measured on the layout); it passes outright
 // wherever the mesh itself has no face of zero area (which the judgement warns of, whatever the UVs).
 #include <gtest/gtest.h>
 
 #include "analysis/judgement.h"
+#include "analysis/texel_layout.h"
 #include "param/atlas_meshes.h"
 #include "param/projector.h"
 
@@ -23,6 +25,9 @@ TEST(AtlasVerdict, PassesOnMeshesOfEveryKind) {
     EXPECT_EQ(j.statusCount(FaceStatus::Flipped), 0u);
     EXPECT_EQ(j.statusCount(FaceStatus::ZeroAreaUv), 0u);
     EXPECT_EQ(j.summary.overlap.overlappedPixels, 0u);
+    const Gutters g = measureGutters(p.mesh, p.uv, p.atlas->chartOfFace, 1024, 1024);  // the gutter met
+    EXPECT_GE(g.betweenCharts, o.atlas.marginTexels - 1e-6);
+    EXPECT_GE(g.toBorder, o.atlas.marginTexels - 1e-6);
     if (p.atlas->degenerateFaces == 0) {
       EXPECT_EQ(j.verdict, Verdict::Pass) << j.reasonsText();
       passed += j.verdict == Verdict::Pass;
