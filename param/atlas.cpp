@@ -960,9 +960,18 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
   for (std::size_t e = 0; e < edges.edgeCount(); ++e) {
     const std::size_t begin = edges.groupStart[e], end = edges.groupStart[e + 1];
     const EdgeTable::HalfEdge& first = edges.halfEdges[begin];
+    // Between charts, or inside an LSCM or ARAP chart where its cut to a disk runs: the faces
+    // give an endpoint different UVs.
+    const auto uvAt = [&](int face, int vertex) {
+      const Triangle& t = mesh.triangles[std::size_t(face)];
+      return atlas.uv[3 * std::size_t(face) + std::size_t(t[0] == vertex ? 0 : t[1] == vertex ? 1 : 2)];
+    };
     bool seam = false;
-    for (std::size_t i = begin + 1; i < end; ++i)
-      seam |= atlas.chartOfFace[std::size_t(edges.halfEdges[i].face)] != atlas.chartOfFace[std::size_t(first.face)];
+    for (std::size_t i = begin + 1; i < end; ++i) {
+      const int face = edges.halfEdges[i].face;
+      seam |= atlas.chartOfFace[std::size_t(face)] != atlas.chartOfFace[std::size_t(first.face)] ||
+              uvAt(face, first.low) != uvAt(first.face, first.low) || uvAt(face, first.high) != uvAt(first.face, first.high);
+    }
     if (!seam) continue;
     ++atlas.seamEdges;
     atlas.seamLength += (mesh.positions[std::size_t(first.high)] - mesh.positions[std::size_t(first.low)]).norm();

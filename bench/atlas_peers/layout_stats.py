@@ -25,7 +25,7 @@ object:
                       point: the distance between two charts that do not overlap is the distance
                       between their outlines (chart-boundary edges, plus interior edges where the
                       faces' orientations differ, i.e. folds), found with a uniform grid whose
-                      search radius doubles until a pair is found within it; overlap of a whole
+                      search radius grows until a pair is found within it; overlap of a whole
                       chart inside another is found by a point-in-triangle test.
   overlap_fraction    ESTIMATE: of the texel centres of a R x R raster of [0,1]^2 (R = 2048 by
                       default) covered by at least one face, the fraction covered by two or more
@@ -344,7 +344,7 @@ def gutter(UVt, labels, outline_face, outline_k, tri_cell=None):
             pt = [float(x) for x in qpt[pairs_q[k]]]
             best = [0.0, (int(qchart[pairs_q[k]]), int(labels[pairs_t[k]]), pt, pt)]
             contained = np.unique(qchart[pairs_q[inside]])
-    # 2) outlines: grid with radius r doubling until a pair within r is found
+    # 2) outlines: grid with radius r growing fourfold until a pair within r is found
     r = 8.0
     n_pairs_total = 0
     while True:
