@@ -88,16 +88,15 @@ namespace {
 // The atlas at every pixel: a plane chart is linear in the point (then the UV transform); an LSCM
 // or ARAP chart is linear on each face, so the pixel's UV is its face's corners' (as written,
 // transformed) at the point's barycentric coordinates.
-render::PixelMapping atlasPixelMapping(const param::Atlas& atlas, const param::UvTransform& transform, const Mesh& mesh,
-                                       const UvMap& uv) {
+render::PixelMapping atlasPixelMapping(const std::shared_ptr<const param::Atlas>& atlas,
+                                       const param::UvTransform& transform, const Mesh& mesh, const UvMap& uv) {
   struct Charts {
-    std::vector<param::AtlasChart> charts;
-    std::vector<int> chartOfFace;
+    std::shared_ptr<const param::Atlas> atlas;  // shared, not copied: 4 bytes a face
     std::vector<Vec3> corners;  // the solved faces' corner positions, 3 per face (else empty)
     std::vector<Vec2> uv;       // and their UVs
   };
-  auto c = std::make_shared<Charts>(Charts{atlas.charts, atlas.chartOfFace, {}, {}});
-  if (std::any_of(atlas.charts.begin(), atlas.charts.end(), [](const param::AtlasChart& a) { return a.solved; })) {
+  auto c = std::make_shared<Charts>(Charts{atlas, {}, {}});
+  if (std::any_of(atlas->charts.begin(), atlas->charts.end(), [](const param::AtlasChart& a) { return a.solved; })) {
     c->uv = uv.uv;
     c->corners.resize(3 * mesh.faceCount());
     for (std::size_t f = 0; f < mesh.faceCount(); ++f)
@@ -105,7 +104,7 @@ render::PixelMapping atlasPixelMapping(const param::Atlas& atlas, const param::U
   }
   return render::PixelMapping{[c, transform](const Vec3& p, const Vec3&, std::int32_t face) {
                                 const std::size_t f = std::size_t(face);
-                                const param::AtlasChart& chart = c->charts[std::size_t(c->chartOfFace[f])];
+                                const param::AtlasChart& chart = c->atlas->charts[std::size_t(c->atlas->chartOfFace[f])];
                                 if (chart.solved) {
                                   const Vec3 &a = c->corners[3 * f], &b = c->corners[3 * f + 1], &d = c->corners[3 * f + 2];
                                   const Vec3 n = (b - a).cross(d - a);
@@ -124,7 +123,7 @@ render::PixelMapping atlasPixelMapping(const param::Atlas& atlas, const param::U
 // The projector evaluated at every pixel (docs/conventions.md §9).
 render::PixelMapping projectorPixelMapping(const param::ProjectorOptions& options, const param::Projection& projection,
                                            const Mesh& mesh, const UvMap& uv) {
-  if (projection.atlas) return atlasPixelMapping(*projection.atlas, options.uvTransform, mesh, uv);
+  if (projection.atlas) return atlasPixelMapping(projection.atlas, options.uvTransform, mesh, uv);
   const Affine3& localFromObject = projection.localFromObject;
   if (param::traitsOf(options.surface).blendsProjections) {  // three lookups blended by the pixel's normal
     render::PixelMapping blend;

@@ -596,7 +596,7 @@ Projection project(Mesh mesh, const ProjectorOptions& o, int threads) {
   out.summary = summarize(mesh, corners, seams);
   out.summary.triplanarFaces = evaluated.triplanarFaces;
   out.triplanarAxis = std::move(evaluated.triplanarAxis);
-  out.atlas = std::move(evaluated.atlas);
+  if (evaluated.atlas) out.atlas = std::make_shared<const Atlas>(std::move(*evaluated.atlas));
   if (!o.uvTransform.isIdentity()) {
     bool overflowed = false;
     for (std::size_t i = 0; i < corners.uv.size(); ++i) {

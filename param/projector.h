@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -117,7 +118,8 @@ struct Projection {
   MappingSummary summary;
   Affine3 localFromObject = Affine3::Identity();
   std::vector<std::uint8_t> triplanarAxis;  // triplanar: the projection (0: x, 1: y, 2: z) each face carries
-  std::optional<Atlas> atlas;               // atlas: its charts and measures (its uv moved into `uv`)
+  // atlas: its charts and measures (its uv moved into `uv`), shared with what evaluates it per pixel
+  std::shared_ptr<const Atlas> atlas;
   struct {
     double map = 0.0;    // the placement fit and every corner through both stages
     double seams = 0.0;  // seam and pole repair, the summary, the UV transform
