@@ -20,21 +20,46 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 struct RuleEntry {
   const char* name;
   double warn, fail;
-  bool isCount;  // a count of corners or faces (printed as an integer)
+  bool isCount;        // a count of corners or faces (printed as an integer)
+  const char* advice;  // what would address it (issue "newcomer": a verdict that says what to do next)
 };
 constexpr RuleEntry kRules[kRuleCount] = {
-    {"invalid_corners", kNever, 0.0, true},        // any invalid corner fails
-    {"out_of_range_corners", kNever, 0.0, true},   // any corner beyond the sensible range fails
-    {"flipped_area", 0.0, 1e-3, false},             // any flip warns, more than 0.1 % of the area fails
-    {"zero_area_uv_area", 0.0, 1e-3, false},        // likewise for faces collapsed in UV
-    {"zero_area_3d_faces", 0.01, 0.5, false},        // 1 % of the faces unmeasurable warns, half of them fails
-    {"overlap", 1e-3, 1e-2, false},                 // 0.1 % of the covered texels warns, 1 % fails
-    {"unrepaired_seam_faces", kNever, 0.0, true},   // a face still across the seam fails
-    {"stretch_p99", 3.0, kNever, false},            // 1 % of the area stretched 3 times the mean warns
-    {"pole_area", 0.02, kNever, false},             // pole fans over 2 % of the area warn
-    {"backfacing_area", 0.0, kNever, false},        // a planar projection's back faces warn
-    {"density_spread", 2.0, kNever, false},         // the best-resolved tenth with twice the texels per unit of the worst warns
-    {"mip_line", 0.0, kNever, false},               // any pixel of a GPU's seam mip line warns
+    // any invalid corner fails
+    {"invalid_corners", kNever, 0.0, true,
+     "rays that miss the surface: another --omap (isn never misses a plane) or --fit; --projector atlas maps every face"},
+    // any corner beyond the sensible range fails
+    {"out_of_range_corners", kNever, 0.0, true,
+     "rays nearly parallel to the surface: --omap isn or another --fit; --projector atlas maps every face"},
+    // any flip warns, more than 0.1 % of the area fails
+    {"flipped_area", 0.0, 1e-3, false,
+     "one projection mirrors the faces it sees from behind: --projector atlas keeps every face's winding; "
+     "uvtk compare ranks every option"},
+    // likewise for faces collapsed in UV
+    {"zero_area_uv_area", 0.0, 1e-3, false,
+     "faces seen edge-on collapse: another --fit or --projector, or --projector atlas"},
+    // 1 % of the faces unmeasurable warns, half of them fails
+    {"zero_area_3d_faces", 0.01, 0.5, false, "the mesh itself has faces of no area: merge or remove them"},
+    // 0.1 % of the covered texels warns, 1 % fails
+    {"overlap", 1e-3, 1e-2, false,
+     "one projection cannot cover a closed or curved shape without folding: --projector atlas lays out charts "
+     "that do not overlap; uvtk compare ranks every option"},
+    // a face still across the seam fails
+    {"unrepaired_seam_faces", kNever, 0.0, true, "--seam shift or --seam cut repairs the faces across the seam"},
+    // 1 % of the area stretched 3 times the mean warns
+    {"stretch_p99", 3.0, kNever, false,
+     "faces at grazing angles stretch: another --fit, --projector atlas, or lscm / arap for the least stretch"},
+    // pole fans over 2 % of the area warn
+    {"pole_area", 0.02, kNever, false,
+     "the poles cover dense faces: --fit pca or obb turns them away; --projector atlas has none"},
+    // a planar projection's back faces warn
+    {"backfacing_area", 0.0, kNever, false,
+     "a planar projection maps the back faces mirrored onto the front: --projector atlas or cube"},
+    // the best-resolved tenth with twice the texels per unit of the worst warns
+    {"density_spread", 2.0, kNever, false,
+     "texels per unit differ across the mesh: --projector atlas, lscm or arap keep one density"},
+    // any pixel of a GPU's seam mip line warns
+    {"mip_line", 0.0, kNever, false,
+     "a shader's derivatives jump at the seam: --seam-fix tarini or grad, or a mapping cut at the seam (--seam cut)"},
 };
 
 const RuleEntry& entry(Rule rule) { return kRules[static_cast<std::size_t>(rule)]; }
@@ -143,6 +168,8 @@ std::string Reason::text() const {
   return std::string(toString(rule)) + " " + formatValue(rule, value) + " > " + formatValue(rule, threshold) +
          faceText;
 }
+
+const char* adviceOf(Rule rule) { return entry(rule).advice; }
 
 std::string Judgement::firstReason() const { return reasons.empty() ? "no rule triggered" : reasons.front().text(); }
 

@@ -40,6 +40,8 @@ enum class Rule : std::uint8_t {
 };
 constexpr int kRuleCount = 12;
 const char* toString(Rule rule);  // "invalid_corners", "out_of_range_corners", ...
+// One line of what would address a rule's trigger (the option, projector or command).
+const char* adviceOf(Rule rule);
 std::optional<Rule> parseRule(std::string_view name);
 
 // A threshold per rule and severity: the rule triggers when its value exceeds the threshold

@@ -167,7 +167,13 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
                 measured.poleFaces, s.invalidVertices, totalMs);
   const std::optional<analysis::Gutters> gutters = mapped.atlasGutters();
   const std::string atlas = gutters ? atlasLine(*mapped.projection->atlas, *gutters) + "; " : "";
-  return {numbers + atlas + verdictLine(judgement), judgement.verdict};
+  MeshResult result{numbers + atlas + verdictLine(judgement), judgement.verdict, {}};
+  for (const analysis::Reason& reason : judgement.reasons) {
+    const std::string advice = analysis::adviceOf(reason.rule);
+    if (std::find(result.advice.begin(), result.advice.end(), advice) == result.advice.end())
+      result.advice.push_back(advice);
+  }
+  return result;
 }
 
 std::vector<std::string> meshesInFolder(const std::string& folder) {
@@ -324,7 +330,7 @@ BatchResult mapBatch(const std::vector<std::string>& inputs, const std::string& 
   for (const MeshOutcome& o : outcomes) {
     result.status = std::max(result.status, o.status);
     result.failed += o.status != 0;
-    if (o.status == 0) result.worst = std::max(result.worst, o.verdict);
+    if (o.status == 0) result.worst = std::max(result.worst, o.verdict), ++result.verdicts[std::size_t(o.verdict)];
   }
   result.mapped = paths.size() - result.failed;
   if (!json.empty())

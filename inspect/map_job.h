@@ -3,6 +3,7 @@
 // folder (docs/scale-out.md).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,6 +49,7 @@ struct MeshPaths {
 struct MeshResult {
   std::string numbers;
   analysis::Verdict verdict = analysis::Verdict::Pass;
+  std::vector<std::string> advice;  // what would address the reasons, each once (analysis::adviceOf)
 };
 
 // Reads, maps, judges and writes one mesh (and its JSON summary, published together with it),
@@ -66,6 +68,7 @@ std::vector<std::string> meshesInList(const std::string& list);
 struct BatchResult {
   int status = 0;  // the highest exit status of the failed meshes (0: none failed)
   std::size_t mapped = 0, failed = 0;
+  std::array<std::size_t, 3> verdicts{};  // the meshes mapped, by verdict (pass, warn, fail)
   analysis::Verdict worst = analysis::Verdict::Pass;  // of the meshes mapped
 };
 

@@ -41,7 +41,8 @@ nlohmann::json reasonJson(const analysis::Reason& r) {
           {"value", r.value},
           {"threshold", r.threshold},
           {"faces", r.faces},
-          {"text", r.text()}};
+          {"text", r.text()},
+          {"advice", analysis::adviceOf(r.rule)}};
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #include "inspect/report.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <optional>
 
 #include "core/error.h"
@@ -10,13 +12,13 @@
 #include "inspect/measures_json.h"
 #include "inspect/run_report.h"
 #include "inspect/summary_json.h"
+#include "inspect/verdict.h"
 #include "io/atomic_file.h"
 #include "render/procedural.h"
 
 namespace uvtk::inspect {
 
 void ReportOptions::check() const {
-  if (json.empty() && html.empty()) throw UsageError("expected --json OUT.json, --html OUT.html or both");
   if (overlapResolution < 1 || overlapResolution > 16384)
     throw UsageError("--overlap-resolution: expected 1 to 16384 pixels");
   if (textureSize.width < 1 || textureSize.height < 1 || textureSize.width > 16384 || textureSize.height > 16384)
@@ -70,6 +72,41 @@ nlohmann::json reportJson(const MappedMesh& mapped, const analysis::Judgement& j
     for (const views::View view : pageViews(mapped, options)) report["views"].push_back(views::toString(view));
   }
   return report;
+}
+
+std::string reportSummaryText(const std::string& input, const MappedMesh& mapped, const analysis::Judgement& j,
+                              const ReportOptions& options) {
+  const analysis::Summary& s = j.summary;
+  std::string text;
+  char line[512];
+  std::snprintf(line, sizeof line, "%s: %zu vertices, %zu faces; UVs from the %s\n", input.c_str(),
+                mapped.mesh.vertexCount(), mapped.mesh.faceCount(), mapped.source.c_str());
+  text += line;
+  text += verdictLine(j).substr(0, verdictLine(j).find(':')) + "\n";
+  for (const analysis::Reason& r : j.reasons)
+    text += "  " + std::string(analysis::toString(r.severity)) + ": " + r.text() + "\n    advice: " +
+            analysis::adviceOf(r.rule) + "\n";
+  std::snprintf(line, sizeof line,
+                "stretch: L2 %.4g, Linf %.4g (1: isometric up to scale); angle distortion mean %.4g\n"
+                "seams: %zu edges (%zu wrap, %zu cut), length %.4g; poles: %zu vertices\n"
+                "overlap: %.3g %% of the covered raster; flipped faces: %zu; invalid faces: %zu\n",
+                s.l2Stretch, s.linfStretch, s.angleDistortion.mean, s.seams.wrapEdges + s.seams.cutEdges,
+                s.seams.wrapEdges, s.seams.cutEdges, s.seams.length(), s.poleVertices.size(),
+                100.0 * s.overlap.fraction(), j.statusCount(analysis::FaceStatus::Flipped), j.invalidFaces);
+  text += line;
+  const analysis::TextureSize& size = options.textureSize;
+  if (size.width <= 8192 && size.height <= 8192) {
+    const analysis::TexelStatistics t = analysis::texelStatistics(mapped.mesh, mapped.uv, size.width, size.height);
+    char gutter[64] = "no second chart";
+    if (std::isfinite(t.gutters.betweenCharts)) std::snprintf(gutter, sizeof gutter, "gutter %.3g texels", t.gutters.betweenCharts);
+    char bleed[64] = "charts never mix";
+    if (t.firstBleedLevel) std::snprintf(bleed, sizeof bleed, "charts first mix at mip level %d", *t.firstBleedLevel);
+    std::snprintf(line, sizeof line, "texels at %d x %d: %zu charts, %zu texels mapped, %s, %s\n", size.width,
+                  size.height, t.charts, t.levels.front().mapped, gutter, bleed);
+    text += line;
+  }
+  text += "(--json OUT.json or --html OUT.html for every measure)\n";
+  return text;
 }
 
 nlohmann::json writeReport(io::OutputSet& outputs, const ReportOptions& o, const MappedMesh& mapped,

@@ -35,6 +35,11 @@ struct ReportOptions {
 nlohmann::json reportJson(const MappedMesh& mapped, const analysis::Judgement& judgement, const ReportOptions& options,
                           const nlohmann::json& input);
 
+// The report in a few lines for a terminal (`uvtk report FILE` without --json or --html): the
+// mesh, the verdict with each reason and its advice, the key measures and the layout's texels.
+std::string reportSummaryText(const std::string& input, const MappedMesh& mapped, const analysis::Judgement& judgement,
+                              const ReportOptions& options);
+
 // Writes the report to options.json and the page to options.html, published together;
 // `milliseconds` are the times of the stages before (none when null). Returns the report. A page
 // with the mipline view measures the mapping's mip line (per pixel when it has an exact form) and

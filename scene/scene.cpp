@@ -346,7 +346,10 @@ class SceneReader {
       parseOptions(*o.parser, j, {"kind", "mapping"}, pointer);
       o.report.json = output(o.report.json, pointer + "/json");
       o.report.html = output(o.report.html, pointer + "/html");
-      at(pointer, [&] { o.report.check(); });
+      at(pointer, [&] {
+        o.report.check();
+        if (o.report.json.empty() && o.report.html.empty()) throw UsageError("expected json, html or both");
+      });
     } else if (kind == "compare") {
       o.kind = SceneOutput::Kind::Compare;
       addCompareOptions(*o.parser, o.compare);

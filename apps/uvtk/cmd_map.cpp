@@ -62,15 +62,20 @@ void runMap(const MapArguments& a) {
     const inspect::BatchResult batch =
         inspect::mapBatch(a.list.empty() ? inspect::meshesInFolder(a.input) : inspect::meshesInList(a.list), a.output,
                           a.json, a.jobs, a.quiet, job);
-    const std::string line = "uvtk map: " + std::to_string(batch.mapped) + " meshes mapped, " +
-                             std::to_string(batch.failed) + " failed";
+    const std::string line = "uvtk map: " + std::to_string(batch.mapped) + " meshes mapped (" +
+                             std::to_string(batch.verdicts[0]) + " pass, " + std::to_string(batch.verdicts[1]) +
+                             " warn, " + std::to_string(batch.verdicts[2]) + " fail), " + std::to_string(batch.failed) +
+                             " failed";
     if (batch.status != 0) throwWithStatus(batch.status, line);  // main prints the line
     std::fprintf(stderr, "%s\n", line.c_str());  // the last line, even with -q
     return enforceVerdict(a.verdict, batch.worst, "uvtk map");
   }
   io::checkMeshOutput(a.output, a.write);
   const inspect::MeshResult result = inspect::mapMesh({a.input, a.output, a.json}, job, true);
-  if (!a.quiet) std::fprintf(stderr, "uvtk map: %s\n", result.numbers.c_str());
+  if (!a.quiet) {
+    std::fprintf(stderr, "uvtk map: %s\n", result.numbers.c_str());
+    for (const std::string& advice : result.advice) std::fprintf(stderr, "uvtk map: advice: %s\n", advice.c_str());
+  }
   if (!a.quiet && io::isGltf(*io::outputFormatOf(a.output)))
     std::fprintf(stderr, "uvtk map: %s: glTF stores positions, normals and UVs as float32 (v as 1 - v)\n",
                  a.output.c_str());

@@ -55,8 +55,14 @@ void runReport(const ReportCommandArguments& a) {
                                                      a.report.options().textureSize);
   const double measureMs = clock.stop();
 
-  clock.start("writing", a.report.html.empty() ? a.report.json : a.report.html);
   inspect::ReportOptions reportOptions = a.report.options();
+  if (reportOptions.json.empty() && reportOptions.html.empty()) {  // no file asked for: a summary on the terminal
+    printMappingNotes(a.input, input.warnings, mapped);
+    std::fputs(reportSummaryText(a.input, mapped, judgement, reportOptions).c_str(), stdout);
+    enforceVerdict(a.verdict, judgement.verdict, "uvtk report");
+    return;
+  }
+  clock.start("writing", a.report.html.empty() ? a.report.json : a.report.html);
   // A triplanar page shows its blend too, unless --views says what to show.
   if (projectorGiven && param::traitsOf(projector.options.surface).blendsProjections && !reportOptions.html.empty() &&
       !given(a.projector.app, "--views"))

@@ -92,6 +92,10 @@ int main(int argc, char** argv) {
           },
           "No progress and no summary lines; errors are still printed");
   uvtk::cli::addHelpExamples(app);
+  if (argc == 1) {  // no command: what there is to do, rather than "A subcommand is required"
+    std::fputs(app.help().c_str(), stderr);
+    return 2;
+  }
   uvtk::setProgressEnabled(true);  // a command with --quiet turns it off
   uvtk::io::installInterruptHandlers();
   uvtk::io::divertStdoutForOutputs();  // `-o -`: stdout carries the output, summaries go to stderr

@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -102,7 +104,7 @@ TEST_F(CliManners, AMistypedOptionGetsTheNearestNameOfItsCommand) {
   const CliRun missing = uvtk("map x.obj");
   EXPECT_EQ(missing.status, 2);
   EXPECT_EQ(missing.err, "uvtk: error: --output is required\n");
-  EXPECT_EQ(uvtk("").err, "uvtk: error: A subcommand is required\n");
+  EXPECT_EQ(uvtk("").status, 2);  // uvtk alone prints its usage (FirstMinutes below)
 }
 
 TEST_F(CliManners, ABadChoiceListsTheNames) {
@@ -212,6 +214,66 @@ TEST_F(CliManners, EveryCommandTakesQ) {
   const CliRun map = uvtk("map " + sphereMesh() + " -q -o " + path("m.obj"));
   EXPECT_EQ(map.status, 0);
   EXPECT_EQ(map.err, "");
+}
+
+}  // namespace
+}  // namespace uvtk
+
+namespace uvtk {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The first ten minutes (issue "newcomer", point 3): a command line that says what to do next.
+class FirstMinutes : public CliTest {
+ protected:
+  static std::string bundled(const std::string& name) { return std::string(UVTK_SOURCE_DIR) + "/meshes/" + name; }
+};
+
+TEST_F(FirstMinutes, UvtkAlonePrintsItsUsage) {
+  const CliRun r = uvtk("");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("Subcommands:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("map"), std::string::npos) << r.err;
+}
+
+TEST_F(FirstMinutes, AFailingVerdictSaysWhatWouldAddressIt) {
+  // A cylinder seen along its axis folds a torus over itself: flipped and overlapping faces.
+  const CliRun r = uvtk("map " + bundled("torus.obj") + " -o " + path("t.obj") + " --projector cylinder --json " +
+                        path("t.json"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("verdict fail"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("uvtk map: advice: one projection cannot cover a closed or curved shape without folding: "
+                       "--projector atlas"),
+            std::string::npos)
+      << r.err;
+  std::ifstream in(path("t.json"));
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_FALSE(j["reasons"].empty());
+  for (const nlohmann::json& reason : j["reasons"]) EXPECT_FALSE(reason["advice"].get<std::string>().empty()) << reason;
+  // The advice taken: the atlas passes.
+  const CliRun atlas = uvtk("map " + bundled("torus.obj") + " -o " + path("a.obj") + " --projector atlas");
+  EXPECT_NE(atlas.err.find("verdict pass"), std::string::npos) << atlas.err;
+  EXPECT_EQ(atlas.err.find("advice"), std::string::npos) << atlas.err;
+}
+
+TEST_F(FirstMinutes, AReportWithoutOutputsPrintsASummary) {
+  const CliRun r = shell(std::string(UVTK_BINARY) + " report " + bundled("torus.obj") +
+                         " --projector cylinder > " + path("out.txt"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  std::ifstream in(path("out.txt"));
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const char* expected : {"1152 vertices, 2304 faces; UVs from the projector", "verdict fail", "  fail: overlap",
+                               "    advice: ", "stretch: L2 ", "seams: ", "overlap: ", "texels at 1024 x 1024: "})
+    EXPECT_NE(text.find(expected), std::string::npos) << expected << "\n" << text;
+}
+
+TEST_F(FirstMinutes, ABatchCountsItsVerdicts) {
+  fs::create_directories(path("in"));
+  for (const char* name : {"sphere_latlong.obj", "torus.obj", "cube.obj"}) fs::copy_file(bundled(name), path(std::string("in/") + name));
+  const CliRun r = uvtk("map " + path("in") + " -o " + path("out") + " --projector atlas -q");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "uvtk map: 3 meshes mapped (3 pass, 0 warn, 0 fail), 0 failed\n");
 }
 
 }  // namespace

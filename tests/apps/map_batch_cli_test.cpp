@@ -46,7 +46,7 @@ TEST_F(MapBatchCli, AFolderWithAMalformedMeshMapsTheOthersAndExitsThree) {
   EXPECT_EQ(filesIn("out"), (std::vector<std::string>{"cube.obj", "sphere.obj", "torus.obj"}));
   EXPECT_NE(r.err.find(path("in/bad.obj") + ":3: error: expected a number, found 'x'\n"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("uvtk map: " + path("in/sphere.obj") + ": 482 vertices, 960 faces"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("uvtk map: 3 meshes mapped, 1 failed\n"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("uvtk map: 3 meshes mapped (1 pass, 1 warn, 1 fail), 1 failed\n"), std::string::npos) << r.err;
 
   EXPECT_EQ(filesIn("reports"), (std::vector<std::string>{"batch.json", "cube.json", "sphere.json", "torus.json"}));
   const nlohmann::json batch = nlohmann::json::parse(readText(path("reports/batch.json")));
@@ -86,7 +86,7 @@ TEST_F(MapBatchCli, AListSkipsCommentsAndReportsAMissingMeshAsAFailure) {
   EXPECT_EQ(r.status, 3) << r.err;
   EXPECT_EQ(filesIn("out"), (std::vector<std::string>{"sphere.obj", "torus.obj"}));
   EXPECT_NE(r.err.find(path("meshes/missing.obj") + ": error: cannot open"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("uvtk map: 2 meshes mapped, 1 failed"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("uvtk map: 2 meshes mapped (1 pass, 0 warn, 1 fail), 1 failed"), std::string::npos) << r.err;
 
   const CliRun noList = uvtk("map --list " + path("no-list.txt") + " -o " + path("out2"));
   EXPECT_EQ(noList.status, 3);
@@ -125,7 +125,7 @@ TEST_F(MapBatchCli, AnOutputFailureWinsOverAnInputFailureAndTheOthersStillRun) {
   EXPECT_EQ(r.status, 4) << r.err;
   EXPECT_NE(r.err.find("bad.obj:3: error:"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("torus.obj"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("uvtk map: 2 meshes mapped, 2 failed"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("uvtk map: 2 meshes mapped (1 pass, 1 warn, 0 fail), 2 failed"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::is_regular_file(path("out/sphere.obj")));
   EXPECT_TRUE(fs::is_regular_file(path("out/cube.obj")));
 }
@@ -135,7 +135,7 @@ TEST_F(MapBatchCli, QuietPrintsNoProgressAndNoSummaryLinesButTheLastLine) {
   fs::remove(path("in/bad.obj"));
   const CliRun r = uvtk("map " + path("in") + " -o " + path("out") + " --quiet");
   EXPECT_EQ(r.status, 0);
-  EXPECT_EQ(r.err, "uvtk map: 3 meshes mapped, 0 failed\n");
+  EXPECT_EQ(r.err, "uvtk map: 3 meshes mapped (1 pass, 1 warn, 1 fail), 0 failed\n");
 
   // On a terminal (script(1) gives the program one) the bar is drawn once the work has lasted
   // 0.1 s, which a mesh of 260000 faces after the others makes sure of; unless --quiet.
