@@ -47,8 +47,12 @@ std::pair<int, int> parseImageSize(const std::string& text, const std::string& o
   int w = 0, h = 0;
   char x = 0, extra = 0;
   std::istringstream in(text);
-  if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || (in >> extra) || w < 1 || h < 1 || w > 16384 || h > 16384)
-    throw UsageError(option + ": expected WxH with 1 <= W, H <= 16384, found '" + text + "'");
+  const bool square = text.find_first_of("xX") == std::string::npos;  // N: N x N, as --texture-size N
+  if (square ? !(in >> w) || (in >> extra) || (h = w, false)
+             : !(in >> w >> x >> h) || (x != 'x' && x != 'X') || bool(in >> extra))
+    w = 0;
+  if (w < 1 || h < 1 || w > 16384 || h > 16384)
+    throw UsageError(option + ": expected WxH or N (NxN) with 1 <= W, H <= 16384, found '" + text + "'");
   return {w, h};
 }
 

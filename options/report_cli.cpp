@@ -41,7 +41,7 @@ inspect::ReportOptions ReportArguments::options() const {
   o.threads = threads;
   o.view3dFaces = view3dFaces;
   o.check();
-  if (!html.empty()) o.views = views::parseViewList(views);  // the page's views: read only for a page
+  if (!html.empty()) o.views = views::parseViewList(views, "--views");  // the page's views: read only for a page
   std::tie(o.width, o.height) = parseImageSize(size, "--size");
   o.camera = camera.resolve();
   return o;

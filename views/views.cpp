@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/names.h"
 #include "views/draw.h"
 
 namespace uvtk::views {
@@ -12,9 +13,9 @@ namespace {
 constexpr View kViews[] = {View::Checker, View::Uvgrid, View::Stretch, View::Linf,    View::Angle,    View::Area,
                            View::Seams,   View::UvError, View::Layout, View::Density, View::Weights, View::BlendZone, View::MipLine};
 
-std::string validNames() {
-  std::string names;
-  for (View v : kViews) names += std::string(names.empty() ? "" : ", ") + toString(v);
+std::vector<std::string> viewNames() {
+  std::vector<std::string> names;
+  for (View v : kViews) names.push_back(toString(v));
   return names;
 }
 
@@ -45,13 +46,13 @@ std::optional<View> parseView(std::string_view name) {
   return std::nullopt;
 }
 
-std::vector<View> parseViewList(const std::string& commaList) {
+std::vector<View> parseViewList(const std::string& commaList, const std::string& option) {
   std::vector<View> views;
   for (std::size_t start = 0;;) {  // every entry, the empty ones too ("", "a,", "a,,b")
     const std::size_t end = commaList.find(',', start);
     const std::string name = commaList.substr(start, end - start);
     const std::optional<View> view = parseView(name);
-    if (!view) throw UsageError("views: expected one of " + validNames() + ", found '" + name + "'");
+    if (!view) throw UsageError(option + ": " + notOneOf(name, viewNames()));
     views.push_back(*view);
     if (end == std::string::npos) return views;
     start = end + 1;

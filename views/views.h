@@ -29,7 +29,8 @@ const char* toString(View view);
 std::optional<View> parseView(std::string_view name);
 // "stretch,seams" -> {Stretch, Seams}, in the given order. Throws UsageError naming the bad entry
 // and the valid names.
-std::vector<View> parseViewList(const std::string& commaList);
+// Throws UsageError naming `option` for an unknown name, with the nearest one.
+std::vector<View> parseViewList(const std::string& commaList, const std::string& option = "--view");
 // Whether the view reads the mapping evaluated per pixel (ViewInput::exact): UvError, and Weights
 // and BlendZone, which read a triplanar mapping's blend weights (PixelMapping::blendAt).
 bool needsExactMapping(View view);

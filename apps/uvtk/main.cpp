@@ -64,6 +64,16 @@ std::string unplacedArgument(const CLI::App& app) {
   return "";
 }
 
+// CLI11's "Could not convert: --scale = abc" as uvtk words every refusal: the option, what it
+// expects, what it found. Empty for other messages.
+std::string conversionMessage(const std::string& what) {
+  const std::string prefix = "Could not convert: ";
+  const std::size_t equals = what.find(" = ");
+  if (what.rfind(prefix, 0) != 0 || equals == std::string::npos) return "";
+  const std::string option = what.substr(prefix.size(), equals - prefix.size());
+  return option + ": expected a number, found '" + what.substr(equals + 3) + "'";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -112,6 +122,7 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
     // One line, as every refusal (docs/robustness.md).
     std::string message = unplacedArgument(app);
+    if (message.empty()) message = conversionMessage(e.what());
     if (message.empty()) message = e.what();
     std::fprintf(stderr, "uvtk: error: %s\n", message.c_str());
     return 2;

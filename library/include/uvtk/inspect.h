@@ -94,7 +94,7 @@ struct CompareOptions {
   int tileSize = 256;             // --tile-size: pixels across each picture of the contact sheet
   Vector3 viewDir{1, -1.5, 0.8};  // --view-dir: the sheet's camera
   Vector3 up{0, 0, 1};            // --up
-  int overlapResolution = 512;    // --overlap-resolution: pixels across the overlap raster
+  int overlapResolution = 1024;   // --overlap-resolution: pixels across the overlap raster (as map)
   bool seamPlaceAuto = false;     // --seam-place-auto: every wrapping projector with its seam placed
   int baselineMaxFaces = 200000;  // --baseline-max-faces: LSCM and ARAP only up to this many faces
   std::vector<std::string> failOn, warnOn;  // --fail-on, --warn-on: the verdict's thresholds
