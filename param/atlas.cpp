@@ -732,7 +732,8 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
         if (!counted.empty() && counted.back().second == b) --counted.back().first;
         else counted.emplace_back(-1, b);
       std::sort(counted.begin(), counted.end());  // the most shared edges first, then the lower chart
-      for (const auto& [negativeCount, b] : counted) {
+      for (const std::pair<int, int>& candidate : counted) {
+        const int b = candidate.second;  // a named variable, not a binding: lambdas capture it (C++17)
         const int direction = directionOfChart[std::size_t(b)];
         const Vec3& d = directions[std::size_t(direction)];
         bool fits = true;
