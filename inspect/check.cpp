@@ -20,6 +20,7 @@
 #include "render/camera.h"
 #include "views/corner_error.h"
 #include "views/legend.h"
+#include "io/json_text.h"
 
 namespace uvtk::inspect {
 
@@ -324,7 +325,7 @@ CheckRun checkStoredUvs(const CheckOptions& a) {
                               {"status", status},
                               {"stored_uvs_verdict", analysis::toString(judgement.verdict)},
                               {"stored_uvs_reasons", reasonsJson(judgement)}};
-    outputs.writeText(a.json, j.dump(2) + "\n");
+    outputs.writeText(a.json, io::jsonText(j, 2) + "\n");
   }
 
   if (!a.view.empty()) {

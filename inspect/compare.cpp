@@ -20,6 +20,7 @@
 #include "render/camera.h"
 #include "inspect/run_report.h"
 #include "views/views.h"
+#include "io/json_text.h"
 
 namespace uvtk::inspect {
 
@@ -281,7 +282,7 @@ Comparison compareMappings(io::OutputSet& outputs, const CompareOptions& a, cons
                           {"verdict", analysis::toString(best.judgement.verdict)},
                           {"map_options", best.mapped.projector ? mapOptionsOf(*best.mapped.projector) : ""}};
   }
-  if (!a.json.empty()) outputs.writeText(a.json, out.record.dump(2) + "\n");
+  if (!a.json.empty()) outputs.writeText(a.json, io::jsonText(out.record, 2) + "\n");
   return out;
 }
 

@@ -11,6 +11,7 @@
 #include "inspect/html_page.h"
 #include "inspect/mesh_view.h"
 #include "io/image_io.h"
+#include "io/json_text.h"
 
 namespace uvtk::inspect {
 
@@ -21,7 +22,7 @@ std::string cell(const nlohmann::json& value) {
   if (value.is_number_float()) return number(value.get<double>());
   if (value.is_string()) return xmlEscaped(value.get<std::string>());
   if (value.is_array() && value.size() > 8) return std::to_string(value.size()) + " entries (see the JSON report)";
-  return xmlEscaped(value.dump());
+  return xmlEscaped(io::jsonText(value));
 }
 
 // A bar chart of a histogram record of statisticsJson: bar heights are the weight fractions.
@@ -235,7 +236,7 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath,
       if (!src || !isPicture(*src)) continue;
       std::string caption =
           kind(o) == "compare" ? "ranking of " + o.value("mesh", std::string()) : o.value("mapping", std::string());
-      if (o.contains("views")) caption += ": " + o.at("views").dump();
+      if (o.contains("views")) caption += ": " + io::jsonText(o.at("views"));
       std::string verdict;  // each mapping's picture says how its mapping was judged
       if (o.contains("verdict")) verdict = badge(o) + " " + xmlEscaped(o.value("first_reason", std::string())) + "<br>";
       html << "<figure><a href=\"" << xmlEscaped(*src) << "\"><img alt=\"" << xmlEscaped(caption) << "\" src=\""

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/image_io.h"
+#include "io/json_text.h"
 
 namespace uvtk::inspect {
 
@@ -84,7 +85,7 @@ ImageCheckRun checkImageShot(const ImageCheckOptions& a, const MappedMesh& mappe
         {"first_invalid", invalid},
         {"error_mask", a.errorMask.empty() ? nlohmann::json() : nlohmann::json(a.errorMask)},
         {"status", result.pass ? "pass" : "fail"}};
-    outputs.writeText(a.json, record.dump(2) + "\n");
+    outputs.writeText(a.json, io::jsonText(record, 2) + "\n");
   }
   outputs.publish();
   return run;

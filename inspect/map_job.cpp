@@ -26,6 +26,7 @@
 #include "io/mesh_writer.h"
 #include "inspect/projector_json.h"
 #include "param/projector_names.h"
+#include "io/json_text.h"
 
 namespace uvtk::inspect {
 
@@ -133,7 +134,7 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
     const double seamsMs = mapped.projection->milliseconds.seams;
     summary["milliseconds"] = {{"read", readMs},   {"map", mapMs - seamsMs}, {"seams", seamsMs},
                                {"judge", judgeMs}, {"write", writeMs},       {"total", millisecondsSince(start)}};
-    outputs.writeText(paths.json, summary.dump(2) + "\n");
+    outputs.writeText(paths.json, io::jsonText(summary, 2) + "\n");
   }
   outputs.publish();
   const double totalMs = millisecondsSince(start);  // what the user waited for, read to published output
@@ -335,7 +336,7 @@ BatchResult mapBatch(const std::vector<std::string>& inputs, const std::string& 
   result.mapped = paths.size() - result.failed;
   if (!json.empty())
     io::writeFileAtomically((fs::path(json) / "batch.json").string(),
-                            batchJson(paths, outcomes, job.settings.projector.options, threads, millisecondsSince(start)).dump(2) + "\n");
+                            io::jsonText(batchJson(paths, outcomes, job.settings.projector.options, threads, millisecondsSince(start)), 2) + "\n");
   return result;
 }
 

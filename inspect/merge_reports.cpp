@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "io/json_text.h"
 
 namespace uvtk::inspect {
 
@@ -68,7 +69,14 @@ Json readReport(const std::string& path) {
   try {
     report = Json::parse(content);
   } catch (const Json::parse_error& e) {
-    throw jsonError(path, content, e.byte, e.what());
+    // Names that are not UTF-8 are written as \udcXX (io/json_text.h): read them back as bytes.
+    std::string marked = content;
+    if (!io::markLoneByteEscapes(marked)) throw jsonError(path, content, e.byte, e.what());
+    try {
+      report = io::restoredDocument(Json::parse(marked));
+    } catch (const Json::parse_error& again) {
+      throw jsonError(path, content, again.byte, again.what());
+    }
   }
   if (!report.is_object()) throw InputError(path + ":1:1: error: expected a JSON object, found " + report.type_name());
   return report;
@@ -122,7 +130,7 @@ void mergeReports(const std::vector<std::string>& inputs, const std::string& out
   const Json merged = {{"tool", {{"name", "uvtk"}, {"version", UVTK_VERSION}}},
                        {"reports", std::move(list)},
                        {"totals", std::move(totals)}};
-  io::writeFileAtomically(output, merged.dump(2) + "\n");
+  io::writeFileAtomically(output, io::jsonText(merged, 2) + "\n");
 }
 
 }  // namespace uvtk::inspect

@@ -20,6 +20,7 @@
 #include "views/measure.h"
 #include "views/palette.h"
 #include "views/seam_marks.h"
+#include "io/json_text.h"
 
 namespace uvtk::inspect {
 
@@ -387,7 +388,7 @@ std::string meshViewHtml(const MappedMesh& mapped, const analysis::Judgement& ju
             "below are of the whole mesh.";
   else
     html << "All " << faceCount << " faces.";
-  std::string json = data.dump();
+  std::string json = io::jsonText(data);
   for (std::size_t at = json.find("</"); at != std::string::npos; at = json.find("</", at)) json.replace(at, 2, "<\\/");
   html << "</p>\n<script type=\"application/json\" class=\"view3d-data\">" << json << "</script>\n</div>\n";
   return html.str();

@@ -15,6 +15,7 @@
 #include "inspect/verdict.h"
 #include "io/atomic_file.h"
 #include "render/procedural.h"
+#include "io/json_text.h"
 
 namespace uvtk::inspect {
 
@@ -145,7 +146,7 @@ nlohmann::json writeReport(io::OutputSet& outputs, const ReportOptions& o, const
     }
   }
   if (!milliseconds.is_null()) report["milliseconds"] = milliseconds;
-  if (!o.json.empty()) outputs.writeText(o.json, report.dump(2) + "\n");
+  if (!o.json.empty()) outputs.writeText(o.json, io::jsonText(report, 2) + "\n");
   if (!o.html.empty()) {
     std::string view3d;
     if (o.view3dFaces > 0) {

@@ -10,6 +10,7 @@
 #include "io/mesh_writer.h"
 #include "inspect/projector_json.h"
 #include "param/projector_names.h"
+#include "io/json_text.h"
 
 namespace uvtk::inspect {
 
@@ -99,7 +100,7 @@ TexgenRun texgenMesh(const std::string& inputPath, const std::string& output, co
   if (!json.empty()) {
     nlohmann::json j = texgenSummaryJson(result, divided, options, input.mesh, inputJson(inputPath, input), output);
     j["milliseconds"] = {{"read", readMs}, {"texgen", texgenMs}, {"write", writeMs}};
-    outputs.writeText(json, j.dump(2) + "\n");
+    outputs.writeText(json, io::jsonText(j, 2) + "\n");
   }
   outputs.publish();
   TexgenRun run;

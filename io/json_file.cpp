@@ -12,6 +12,7 @@
 #include "io/json_file.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
@@ -24,6 +25,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/json_text.h"
 
 namespace uvtk::io {
 namespace {
@@ -189,7 +191,10 @@ class StrictParser {
  public:
   using Json = nlohmann::json;
 
-  StrictParser(std::string_view text, const std::string& name) : text_(text), name_(name), reached_(text.data()) {}
+  // `escapedBytes`: the text's lone \udcXX escapes were turned into \uf7XX (see parseJsonText): each
+  // U+F780..U+F7FF of a string or key is the byte 0xXX again.
+  StrictParser(std::string_view text, const std::string& name, bool escapedBytes = false)
+      : text_(text), name_(name), reached_(text.data()), escapedBytes_(escapedBytes) {}
 
   Json parse() {
     Json::sax_parse(TrackingIterator(text_.data(), &reached_), TrackingIterator(text_.data() + text_.size(), &reached_),
@@ -208,14 +213,15 @@ class StrictParser {
   bool number_integer(Json::number_integer_t value) { return add(value); }
   bool number_unsigned(Json::number_unsigned_t value) { return add(value); }
   bool number_float(Json::number_float_t value, const std::string& /*text*/) { return add(value); }
-  bool string(std::string& value) { return add(std::move(value)); }
+  bool string(std::string& value) { return add(restoredBytes(std::move(value))); }
   bool binary(Json::binary_t& value) { return add(Json::binary(std::move(value))); }  // only binary formats
   bool start_object(std::size_t /*unknown size*/) { return open(Json::object()); }
   bool start_array(std::size_t /*unknown size*/) { return open(Json::array()); }
   bool end_object() { return close(); }
   bool end_array() { return close(); }
 
-  bool key(std::string& key) {
+  bool key(std::string& name) {
+    const std::string key = restoredBytes(std::move(name));
     Json& object = *open_.back();
     if (object.contains(key))
       throw errorAt(name_, text_, stringStart(text_, readCount() - 1),
@@ -331,9 +337,12 @@ class StrictParser {
     return "valid JSON";
   }
 
+  std::string restoredBytes(std::string value) const { return escapedBytes_ ? restoreEscapedBytes(std::move(value)) : value; }
+
   std::string_view text_;
   const std::string& name_;
   const char* reached_;  // one past the last byte the parser has read
+  bool escapedBytes_;
   Json root_;
   std::vector<Json*> open_;  // the open arrays and objects, innermost last
   Json* member_ = nullptr;   // where the value of the last key goes
@@ -347,7 +356,16 @@ nlohmann::json parseJsonText(const std::string& text, const std::string& name) {
   for (const std::string_view mark : kUtf16ByteOrderMarks)
     if (body.substr(0, mark.size()) == mark)
       throw errorAt(name, body, 0, "expected UTF-8 text, found a UTF-16 byte-order mark");
-  return StrictParser(body, name).parse();
+  try {
+    return StrictParser(body, name).parse();
+  } catch (const InputError&) {
+    // A byte that is not UTF-8 in a name is written as \udcXX (io/json_text.h); read back, each
+    // such lone escape is that byte again. The text is tried as it is first, so a document without
+    // one reads exactly as before; the replacement keeps every offset, so messages stay exact.
+    std::string escaped(body);
+    if (!markLoneByteEscapes(escaped)) throw;
+    return StrictParser(escaped, name, true).parse();
+  }
 }
 
 nlohmann::json readJsonFile(const std::string& path) {

@@ -11,6 +11,7 @@
 #include "options/render_cli.h"
 #include "options/report_cli.h"
 #include "options/verdict_cli.h"
+#include "io/json_text.h"
 
 namespace uvtk::api {
 
@@ -183,7 +184,7 @@ std::string report(const Mapping& mapping, const ReportOptions& options) {
     const nlohmann::json& input = mapping.detail->input;
     const nlohmann::json record = o.json.empty() && o.html.empty() ? inspect::reportJson(mapped, judgement, o, input)
                                                                     : inspect::writeReport(o, mapped, judgement, input);
-    return record.dump(2);
+    return io::jsonText(record, 2);
   });
 }
 
@@ -231,7 +232,7 @@ Comparison compare(const Mesh& mesh, const CompareOptions& options) {
     const bool writes = !o.json.empty() || !o.markdown.empty() || !o.sheet.empty();
     const inspect::Comparison ranked =
         writes ? inspect::compareMappings(o, engine, input) : inspect::rankMappings(o, engine, input);
-    return Comparison{ranked.record.dump(2), ranked.table, ranked.best};
+    return Comparison{io::jsonText(ranked.record, 2), ranked.table, ranked.best};
   });
 }
 

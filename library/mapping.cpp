@@ -16,6 +16,7 @@
 #include "options/projector_cli.h"
 #include "options/texgen_cli.h"
 #include "options/verdict_cli.h"
+#include "io/json_text.h"
 
 namespace uvtk::api {
 
@@ -235,7 +236,7 @@ Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thre
   for (const analysis::Reason& reason : judgement.reasons) mapping.verdict.reasons.push_back(reasonOf(reason));
   nlohmann::json summary = inspect::mapSummaryJson(m, judgement, detail->input, "");
   summary.erase("output");
-  mapping.summaryJson = summary.dump();
+  mapping.summaryJson = io::jsonText(summary);
   mapping.detail = std::move(detail);
   return mapping;
 }

@@ -12,6 +12,7 @@
 #include "options/arithmetic_cli.h"
 #include "options/cli_values.h"
 #include "render/procedural.h"
+#include "io/json_text.h"
 
 namespace uvtk::cli {
 
@@ -371,7 +372,7 @@ RenderResult renderMeshFile(RenderJob a) {
   j["milliseconds"]["read"] = readMs;
   j["milliseconds"]["texcoords"] = uvMs;
   j["milliseconds"]["texture"] = textureMs;
-  if (!a.json.empty()) outputs.writeText(a.json, j.dump(2) + "\n");
+  if (!a.json.empty()) outputs.writeText(a.json, io::jsonText(j, 2) + "\n");
   outputs.publish();
   printMappingNotes(a.input, input.warnings, mapped);
   if (a.frame.view.empty()) {

@@ -22,6 +22,7 @@
 #include "inspect/mesh_view.h"
 #include "render/shading.h"
 #include "inspect/run_report.h"
+#include "io/json_text.h"
 
 namespace uvtk::scene {
 
@@ -357,7 +358,7 @@ class SceneRunner {
     io::writeMesh(outputs, o.path, mapped.mesh, &mapped.uv, write);
     const analysis::Judgement& judgement = work.judgements.at({*o.mapping, kViewsOverlapResolution});
     const json summary = mapSummaryJson(mapped, judgement, work.inputSummary, o.path);  // as `uvtk map --json`
-    if (!o.json.empty()) outputs.writeText(o.json, summary.dump(2) + "\n");
+    if (!o.json.empty()) outputs.writeText(o.json, io::jsonText(summary, 2) + "\n");
     outputs_[index] = {{"mapping", scene_.mappings[*o.mapping].name}, {"summary", summary}};
     addVerdict(outputs_[index], judgement);
   }
@@ -384,7 +385,7 @@ class SceneRunner {
     if (work.judgements.count({*o.mapping, kViewsOverlapResolution})) addVerdict(record, judgement());
     record["mapping"] = scene_.mappings[*o.mapping].name;
     record["mesh"] = scene_.meshes[scene_.mappings[*o.mapping].mesh].name;
-    if (!o.json.empty()) outputs.writeText(o.json, record.dump(2) + "\n");
+    if (!o.json.empty()) outputs.writeText(o.json, io::jsonText(record, 2) + "\n");
     outputs_[index] = record;
   }
 

@@ -38,6 +38,7 @@
 #include "peers/assimp_peer.h"
 #include "views/pareto.h"
 #include "views/pareto_svg.h"
+#include "io/json_text.h"
 
 namespace uvtk::timing {
 
@@ -685,7 +686,7 @@ void writeBenchOutputs(io::OutputSet& outputs, const BenchOptions& a, const Benc
                               {"texture_width", a.textureWidth},
                               {"fast_math_isa", param::fastMathInstructionSet()},
                               {"records", result.records}};
-    outputs.writeText(a.json, j.dump(2) + "\n");
+    outputs.writeText(a.json, io::jsonText(j, 2) + "\n");
   }
   if (!a.plot.empty()) {
     const auto png = [](const BenchChart& c) { return views::paretoChart(c.points, c.options); };

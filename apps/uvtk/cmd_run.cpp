@@ -10,6 +10,7 @@
 #include "io/atomic_file.h"
 #include "scene/scene.h"
 #include "scene/scene_run.h"
+#include "io/json_text.h"
 
 namespace uvtk::cli {
 
@@ -30,11 +31,11 @@ void runRun(const RunArguments& a) {
   const std::vector<Stage> plan = planScene(scene);
   if (a.plan) {
     std::fputs(planText(scene, plan).c_str(), stdout);
-    if (!a.json.empty()) io::writeFileAtomically(a.json, planJson(scene, plan).dump(2) + "\n");
+    if (!a.json.empty()) io::writeFileAtomically(a.json, io::jsonText(planJson(scene, plan), 2) + "\n");
     return;
   }
   const RunResult result = runScene(scene, plan, {a.jobs});
-  if (!a.json.empty()) io::writeFileAtomically(a.json, result.report.dump(2) + "\n");
+  if (!a.json.empty()) io::writeFileAtomically(a.json, io::jsonText(result.report, 2) + "\n");
   const std::size_t failed = result.report["failures"].size();
   if (!a.quiet || failed)
     std::fprintf(stderr, "uvtk run: %zu stages, %zu outputs, %zu failed, %.1f ms\n", plan.size(), scene.outputs.size(),
