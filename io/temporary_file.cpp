@@ -158,9 +158,16 @@ std::string linkToUnusedName(const std::string& from, const std::string& prefix,
   return "";
 }
 
-std::string hiddenPrefix(const std::string& place, const char* tag) {
+// The start of a hidden name beside `place`: "FOLDER/.NAME" + tag, NAME cut so that the whole name,
+// with six random letters and `suffix` after it, fits in a folder entry (NAME_MAX bytes): any name
+// the user may give has a temporary. A suffix too long to leave room is left out (`suffix` becomes "").
+std::string hiddenPrefix(const std::string& place, const std::string& tag, std::string& suffix) {
   const fs::path p(place);
-  return (p.parent_path() / ("." + p.filename().string() + tag)).string();
+  const std::string name = p.filename().string();
+  constexpr std::size_t kRandomLetters = 6, kShortestName = 8;
+  if (1 + kShortestName + tag.size() + kRandomLetters + suffix.size() > NAME_MAX) suffix.clear();
+  const std::size_t room = NAME_MAX - 1 - tag.size() - kRandomLetters - suffix.size();
+  return (p.parent_path() / ("." + name.substr(0, room) + tag)).string();
 }
 
 }  // namespace
@@ -217,8 +224,8 @@ void TemporaryFile::createUnnamed(const std::string& folder) {
 }
 
 void TemporaryFile::createNamed(const std::string& folder, const std::string& name) {
-  const std::string extension = fs::path(name).extension().string();
-  const std::string pattern = (fs::path(folder) / ("." + name + ".tmp.XXXXXX" + extension)).string();
+  std::string extension = fs::path(name).extension().string();
+  const std::string pattern = hiddenPrefix((fs::path(folder) / name).string(), ".tmp.", extension) + "XXXXXX" + extension;
   const mode_t mode = newFileMode();
   slot_ = publish(pattern);
   std::vector<char> unpublished;
@@ -237,7 +244,9 @@ void TemporaryFile::createNamed(const std::string& folder, const std::string& na
 }
 
 void TemporaryFile::giveHiddenName() {
-  named_ = linkToUnusedName(path_, hiddenPrefix(place_, ".tmp."), fs::path(place_).extension().string(), slot_);
+  std::string extension = fs::path(place_).extension().string();
+  const std::string prefix = hiddenPrefix(place_, ".tmp.", extension);
+  named_ = linkToUnusedName(path_, prefix, extension, slot_);
   if (named_.empty()) throw writeError(shownName(), "cannot link the temporary file into its folder", errno);
   ::close(fd_);
   fd_ = -1;
@@ -324,7 +333,8 @@ void publishTogether(const std::vector<TemporaryFile*>& files) {
       // Only a regular file has a previous version to keep; anything else (a folder made there
       // since) makes the rename fail.
       if (!backups || ::lstat(s.file->place_.c_str(), &status) != 0 || !S_ISREG(status.st_mode)) continue;
-      const std::string prefix = hiddenPrefix(s.file->place_, ".bak.");
+      std::string noSuffix;
+      const std::string prefix = hiddenPrefix(s.file->place_, ".bak.", noSuffix);
       s.backup = linkToUnusedName(s.file->place_, prefix, "", s.backupSlot);
       if (!s.backup.empty()) continue;
       // A file system without hard links (FAT): the previous version moves aside instead, so the
