@@ -1,5 +1,7 @@
 #include "io/mesh_writer.h"
 
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <sstream>
 
@@ -10,8 +12,28 @@
 #include "io/obj_writer.h"
 #include "io/ply_writer.h"
 #include "io/stl_writer.h"
+#include "io/temporary_file.h"
 
 namespace uvtk::io {
+
+namespace {
+
+// A .gltf's buffer goes to a name the user did not give: a FIFO there would hang the write, a
+// device would take the bytes and leave a glTF that cannot be read back. Only a regular file (or
+// a new name) may be written; links are followed as outputs follow them.
+void checkGltfBuffer(const std::string& path) {
+  const std::string buffer = gltfBufferPath(path);
+  struct stat status {};
+  if (::stat(buffer.c_str(), &status) != 0 || S_ISREG(status.st_mode) || S_ISDIR(status.st_mode)) return;
+  const char* kind = S_ISFIFO(status.st_mode)  ? "a FIFO"
+                     : S_ISSOCK(status.st_mode) ? "a socket"
+                     : S_ISCHR(status.st_mode)  ? "a character device"
+                                                : "a block device";
+  throw writeError(path, std::string("its buffer goes to ") + buffer + ", which is " + kind +
+                             ", not a file (a .glb output holds its buffer inside)");
+}
+
+}  // namespace
 
 void checkMeshOutput(const std::string& path, const MeshWriteOptions& options, const std::string& what, bool uvs) {
   const std::optional<MeshFormat> format = outputFormatOf(path);
@@ -24,6 +46,7 @@ void checkMeshOutput(const std::string& path, const MeshWriteOptions& options, c
     throw UsageError("--write-w: only an OBJ holds a third UV component; " + path + " is not one");
   if (options.ascii && *format != MeshFormat::ply && *format != MeshFormat::stl)
     throw UsageError("--ascii: only for a .ply or .stl output; " + path + " is neither");
+  if (*format == MeshFormat::gltf) checkGltfBuffer(path);
 }
 
 void writeMesh(OutputSet& outputs, const std::string& path, const Mesh& mesh, const UvMap* uvs,

@@ -24,7 +24,8 @@ struct MeshWriteOptions {
 
 // Throws UsageError when `path` is not an extension writeMesh writes (with `uvs`: one that holds
 // them), or `options` ask what its format cannot hold (--write-w beyond OBJ, --ascii beyond PLY and
-// STL). `what` names the option ("-o").
+// STL). `what` names the option ("-o"). Throws OutputError when a .gltf's buffer (the .bin beside
+// it, which the user did not name) would go to a FIFO, socket or device.
 void checkMeshOutput(const std::string& path, const MeshWriteOptions& options, const std::string& what = "-o",
                      bool uvs = true);
 
