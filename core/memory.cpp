@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace uvtk {
 namespace {
@@ -23,7 +26,95 @@ std::optional<std::uint64_t> procKilobytes(const char* file, const std::string& 
   return std::nullopt;
 }
 
+// The first line of a file as an unsigned number ("max" and anything else: nothing).
+std::optional<std::uint64_t> fileNumber(const std::string& path) {
+  std::ifstream in(path);
+  std::string word;
+  if (!(in >> word) || word.empty() || word.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+  try {
+    return std::stoull(word);
+  } catch (const std::out_of_range&) {
+    return std::nullopt;
+  }
+}
+
+// The value of `key` in a memory.stat file of "key value" lines.
+std::optional<std::uint64_t> statValue(const std::string& file, const std::string& key) {
+  std::ifstream in(file);
+  std::string word;
+  std::uint64_t value = 0;
+  while (in >> word >> value)
+    if (word == key) return value;
+  return std::nullopt;
+}
+
+// Where the hierarchy of a control group is mounted, from /proc/self/mountinfo: fields 4 (the
+// mount's root within the hierarchy) and 5 (the mount point); after " - ", the type and, for v1,
+// the controllers among the super options.
+struct CgroupMount {
+  std::string root, point;
+};
+
+std::optional<CgroupMount> cgroupMount(const std::string& mountinfo, bool v2) {
+  std::ifstream in(mountinfo);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string id, parent, device, root, point, word;
+    if (!(fields >> id >> parent >> device >> root >> point)) continue;
+    while (fields >> word && word != "-") {
+    }
+    std::string type, source, options;
+    if (!(fields >> type >> source >> options)) continue;
+    const bool memoryV1 = type == "cgroup" && ("," + options + ",").find(",memory,") != std::string::npos;
+    if (v2 ? type == "cgroup2" : memoryV1) return CgroupMount{root, point};
+  }
+  return std::nullopt;
+}
+
 }  // namespace
+
+std::optional<std::uint64_t> cgroupMemoryLeft(const std::string& root) {
+  std::ifstream groups(root + "/proc/self/cgroup");
+  std::optional<std::uint64_t> left;
+  std::string line;
+  while (std::getline(groups, line)) {
+    // "ID:CONTROLLERS:PATH": v2 is "0::PATH"; v1's memory controller is listed by name.
+    const std::size_t first = line.find(':'), second = line.find(':', first + 1);
+    if (first == std::string::npos || second == std::string::npos) continue;
+    const std::string controllers = line.substr(first + 1, second - first - 1), path = line.substr(second + 1);
+    const bool v2 = line.compare(0, first, "0") == 0 && controllers.empty();
+    if (!v2 && ("," + controllers + ",").find(",memory,") == std::string::npos) continue;
+    const std::optional<CgroupMount> mount = cgroupMount(root + "/proc/self/mountinfo", v2);
+    if (!mount) continue;
+    // The group's folder under the mount point; in a container the mount's root is the group itself.
+    std::string relative = path;
+    if (mount->root != "/" && relative.compare(0, mount->root.size(), mount->root) == 0)
+      relative = relative.substr(mount->root.size());
+    const std::string limitFile = v2 ? "memory.max" : "memory.limit_in_bytes";
+    const std::string usageFile = v2 ? "memory.current" : "memory.usage_in_bytes";
+    // The group and each one above it, up to the mount point: every limit on the way applies.
+    for (std::string folder = relative;;) {
+      const std::string place = root + mount->point + folder;
+      const std::optional<std::uint64_t> limit = fileNumber(place + "/" + limitFile);
+      const std::optional<std::uint64_t> usage = fileNumber(place + "/" + usageFile);
+      // v1 writes "no limit" as a huge page-aligned number: anything beyond 2^62 is none.
+      if (limit && usage && *limit < (std::uint64_t(1) << 62)) {
+        // Usage counts the page cache, which the kernel drops before it fails an allocation: as
+        // container tools do, the inactive file pages are not counted as used.
+        const std::uint64_t inactive =
+            statValue(place + "/memory.stat", v2 ? "inactive_file" : "total_inactive_file").value_or(0);
+        const std::uint64_t used = *usage > inactive ? *usage - inactive : 0;
+        const std::uint64_t room = *limit > used ? *limit - used : 0;
+        left = std::min(left.value_or(room), room);
+      }
+      if (folder.empty() || folder == "/") break;
+      const std::size_t slash = folder.find_last_of('/');
+      folder = slash == std::string::npos ? "" : folder.substr(0, slash);
+    }
+  }
+  return left;
+}
 
 std::optional<std::uint64_t> availableMemory() {
   std::optional<std::uint64_t> available = procKilobytes("/proc/meminfo", "MemAvailable:");
@@ -31,6 +122,8 @@ std::optional<std::uint64_t> availableMemory() {
     const long pages = ::sysconf(_SC_AVPHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
     if (pages > 0 && pageSize > 0) available = std::uint64_t(pages) * std::uint64_t(pageSize);
   }
+  if (const std::optional<std::uint64_t> group = cgroupMemoryLeft())
+    available = std::min(available.value_or(*group), *group);
   rlimit limit{};
   if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
     const std::uint64_t used = procKilobytes("/proc/self/status", "VmSize:").value_or(0);
