@@ -89,6 +89,8 @@ Mesh readMesh(const std::string& path, MeshWarnings* warnings) {
 // What checkMesh checks in the public mesh itself, before the engine sees it.
 static void checkIndicesAndNumbers(const Mesh& mesh) {
   const std::size_t triangles = mesh.triangles.size();
+  // As every reader refuses a file without faces: there is nothing to map, judge or write.
+  if (triangles == 0) throw std::invalid_argument("mesh: expected at least one face, found none");
   checkFinite(mesh.positions, "position");
   checkFinite(mesh.texcoords, "texcoord");
   checkFinite(mesh.normals, "normal");

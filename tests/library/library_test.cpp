@@ -296,6 +296,24 @@ TEST(FileUvs, AMeshWithoutTexcoordsIsRefused) {
   EXPECT_EQ(m.invalidReason[2], InvalidReason::NoTexcoord);
 }
 
+TEST(CheckMesh, AMeshWithoutFacesIsRefusedAsAReaderRefusesTheFile) {
+  // A Mesh{} mapped with verdict pass, reported and rendered; writeMesh wrote a 0-byte OBJ that
+  // uvtk map refuses, and compare of one vertex ranked a winner.
+  const std::string refusal = "mesh: expected at least one face, found none";
+  Mesh oneVertex;
+  oneVertex.positions = {{0, 0, 0}};
+  for (const Mesh& mesh : {Mesh{}, oneVertex}) {
+    EXPECT_EQ(messageOf([&] { checkMesh(mesh); }), refusal);
+    EXPECT_EQ(messageOf([&] { map(mesh); }), refusal);
+    EXPECT_EQ(messageOf([&] { texgen(mesh, TexgenOptions{}); }), refusal);
+    EXPECT_EQ(messageOf([&] { compare(mesh); }), refusal);
+    EXPECT_EQ(messageOf([&] { writeMesh("never.glb", mesh); }), refusal);
+    EXPECT_THROW(writeMesh("never.obj", mesh), std::invalid_argument);
+  }
+  EXPECT_FALSE(std::filesystem::exists("never.obj"));
+  EXPECT_FALSE(std::filesystem::exists("never.glb"));
+}
+
 TEST(CheckMesh, NamesTheFirstProblem) {
   Mesh mesh = triangle();
   mesh.triangles[0][2] = 7;
