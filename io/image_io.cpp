@@ -14,10 +14,12 @@
 #include <fstream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <vector>
 
 #include "core/error.h"
+#include "core/memory.h"
 #include "io/page_bytes.h"
 #include "io/atomic_file.h"
 #include "io/image_backend.h"
@@ -167,6 +169,13 @@ ImageFile readLimited(const std::string& path, std::int64_t maxValues, std::int6
             << double(maxValues) * sizeof(float) / double(1 << 30) << " GiB limit";
     throw readFailure(path, message.str());
   }
+  // Within the limit, a small compressed file may still decode to more than this process may take.
+  const std::uint64_t bytes = std::uint64_t(values) * sizeof(float);
+  const std::optional<std::uint64_t> available = availableMemory();
+  if (available && bytes > *available)
+    throw readFailure(path, "image is " + std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " +
+                                std::to_string(channels) + " channels, " + formatBytes(bytes) +
+                                " as float, more than the " + formatBytes(*available) + " of memory available");
 
   ImageFile file;
   file.image = Image(spec.width, spec.height, channels);

@@ -23,7 +23,8 @@ constexpr std::int64_t kMaxImageValues = std::int64_t(1) << 29;
 // EXR is R, G, B, A, then the rest alphabetically: EXR files do not record the order channels
 // were written in, so find channels by name. Throws InputError "PATH: error: ..." for a missing,
 // unreadable or undecodable file, an empty image, and one wider or taller than 16384 pixels or of
-// more than `maxValues` values or `maxPixels` pixels (refused from its header, never allocated).
+// more than `maxValues` values or `maxPixels` pixels, or whose floats need more memory than is
+// available (core/memory.h): each refused from its header, never allocated.
 ImageFile readImage(const std::string& path, std::int64_t maxValues = kMaxImageValues,
                     std::int64_t maxPixels = kMaxImageValues);
 

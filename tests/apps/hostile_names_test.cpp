@@ -1,9 +1,11 @@
 // Names and files the user never named, as the hostile-input audit of issue 48 met them: paths that
 // are not UTF-8 in every JSON uvtk writes (and read back by merge-reports), output names up to the
 // 255 bytes a folder entry holds, a .gltf whose .bin is a FIFO or a device, a glTF naming a huge
-// buffer file, and a small GLB whose primitives share one accessor until the mesh would not fit.
+// buffer file, a small GLB whose primitives share one accessor until the mesh would not fit, and a
+// small PNG that decodes to more memory than there is.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <zlib.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -154,6 +156,45 @@ TEST_F(HostileNames, PrimitivesSharingOneAccessorAreCountedExpandedAgainstTheMem
       << run.err;
   EXPECT_EQ(lines(run.err), 1u);
   EXPECT_FALSE(fs::exists(path("out.obj")));
+}
+
+TEST_F(HostileNames, ATextureThatDecodesToMoreThanTheMemoryAvailableIsRefusedFromItsHeader) {
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+  GTEST_SKIP() << "the sanitizers reserve terabytes of address space, which ulimit -v forbids";
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "the sanitizers reserve terabytes of address space, which ulimit -v forbids";
+#endif
+  // 11000 x 11000 black RGB in a 350 KB PNG: within the 2^27-pixel limit, 1.4 GiB as float.
+  const std::uint32_t side = 11000;
+  const std::string row = std::string(1 + 3 * side, '\0');  // filter byte 0, then the pixels
+  std::string raw;
+  for (std::uint32_t y = 0; y < side; ++y) raw += row;
+  uLongf packedSize = compressBound(uLong(raw.size()));
+  std::string packed(packedSize, '\0');
+  ASSERT_EQ(compress2(reinterpret_cast<Bytef*>(packed.data()), &packedSize, reinterpret_cast<const Bytef*>(raw.data()),
+                      uLong(raw.size()), 9),
+            Z_OK);
+  packed.resize(packedSize);
+  const auto be32 = [](std::uint32_t v) {
+    return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+  };
+  const auto chunk = [&](const std::string& type, const std::string& data) {
+    const std::string body = type + data;
+    return be32(std::uint32_t(data.size())) + body +
+           be32(std::uint32_t(crc32(0, reinterpret_cast<const Bytef*>(body.data()), uInt(body.size()))));
+  };
+  const std::string header = be32(side) + be32(side) + std::string{8, 2, 0, 0, 0};
+  writeText("bomb.png", "\x89PNG\r\n\x1a\n" + chunk("IHDR", header) + chunk("IDAT", packed) + chunk("IEND", ""));
+  const CliRun run = shell("ulimit -v 1500000; " + std::string(UVTK_BINARY) + " render " + cube() +
+                           " --projector sphere --texture " + path("bomb.png") + " -o " + path("r.png") + " --quiet");
+  EXPECT_EQ(run.status, 3) << run.err;
+  EXPECT_EQ(run.err.find(path("bomb.png") + ": error: image is 11000 x 11000 x 3 channels, 1.4 GiB as float, more than the "), 0u)
+      << run.err;
+  EXPECT_EQ(lines(run.err), 1u);
+  EXPECT_FALSE(fs::exists(path("r.png")));
 }
 
 }  // namespace
