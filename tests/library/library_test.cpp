@@ -413,6 +413,15 @@ TEST_F(LibraryTest, TheReportIsTheJsonItWritesAndCarriesTheVerdict) {
   EXPECT_EQ(text, written + "\n");
   EXPECT_EQ(written, inMemory);
   EXPECT_THROW(report(m, ReportOptions::parse("--views checker,nonsense --html x.html")), std::invalid_argument);
+  // The page of a mesh in memory (nlohmann's out_of_range "key 'path' not found" escaped here).
+  options.json.clear();
+  options.html = path("r.html");
+  options.size = "64x64";
+  report(m, options);
+  std::ifstream page(options.html);
+  const std::string html((std::istreambuf_iterator<char>(page)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(html.find("a mesh in memory"), std::string::npos);
 }
 
 TEST(Render, AViewIsTheSizeAskedForAndDrawsTheMesh) {
