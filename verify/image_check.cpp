@@ -7,6 +7,8 @@
 #include <string>
 
 #include "core/error.h"
+#include "render/raster.h"
+#include "render/texture.h"
 
 namespace uvtk::verify {
 
@@ -236,7 +238,13 @@ Reference drawReference(const Mesh& mesh, const render::TexcoordSource& texcoord
   render::RenderOptions o = options;
   o.aovs = true;
   o.derivatives = render::Derivatives::Analytic;
-  Reference reference{render::render(mesh, texcoords, o), {}};
+  Reference reference{render::render(mesh, texcoords, o), {}, {}, {}, {}};
+  if (!texcoords.pixelMapping) {
+    render::clipPositions(mesh, o.camera.clipFromView * o.camera.viewFromWorld * o.worldFromObject, o.raster.threads,
+                          reference.clip);
+    reference.triangles = mesh.triangles;
+    reference.corners = texcoords.corners;
+  }
   o.seamFix = texcoords.pixelMapping && texcoords.pixelMapping->wrapsS ? render::SeamFix::Tarini : render::SeamFix::None;
   o.derivatives = render::Derivatives::QuadFine;
   reference.quadAovs.push_back(render::render(mesh, texcoords, o).aovs);
@@ -305,13 +313,49 @@ ImageCheckResult checkImage(const Image& shot, const Reference& reference, const
       for (int nx = std::max(0, x - 1); nx <= std::min(width - 1, x + 1); ++nx)
         face(nx, ny) == f ? widen(aovs.at(nx, ny, 4)) : void(edge = true);
     for (const Image& quad : reference.quadAovs)
-      if (edge && quad.at(x, row, 3) == f) widen(quad.at(x, row, 4));
+      if (quad.at(x, row, 3) == f) widen(quad.at(x, row, 4));
     low += rhoApproximation(aovs, x, row, options.texture->width(), options.texture->height());
     return lookupBoxes(*options.texture, options.sampler, aovs.at(x, row, 0), aovs.at(x, row, 1), low - tol.lodEps,
                        high + tol.lodEps, tol);
   };
   const auto matches = [&](const std::vector<Box>& boxes, const Vec3& colour) {
     return std::any_of(boxes.begin(), boxes.end(), [&](const Box& b) { return b.contains(colour, tol.colourEps); });
+  };
+  // The colours pixel (x, row) may show if face g, not the reference's face there, is drawn at it
+  // (an edge a GPU places elsewhere, by its own snapping and depth precision: at grazing angles and
+  // silhouettes that may be a face the reference shows only diagonally beside it): g's coordinates
+  // extrapolated to the pixel's centre, its lambda over the pixel's 3 x 3 neighbourhood extrapolated
+  // likewise (dEQP widens the level-of-detail bounds over the +-1 pixel neighbourhood), lowered by
+  // GL's approximation of rho (at most 1/2) and widened by 2^-lodBits.
+  const Texture& texture = *options.texture;
+  const auto extrapolatedBoxes = [&](int g, int x, int row) {
+    std::vector<Box> boxes;
+    const Triangle& t = reference.triangles[std::size_t(g)];
+    const render::TriangleInterpolator triangle(reference.clip[std::size_t(t[0])], reference.clip[std::size_t(t[1])],
+                                                reference.clip[std::size_t(t[2])], width, height);
+    if (!triangle.valid()) return boxes;
+    const Vec4* corners = &reference.corners[3 * std::size_t(g)];
+    const auto at = [&](double wx, double wy, Vec2& st) {  // as the renderer interpolates them
+      const render::TriangleInterpolator::Barycentrics b = triangle.at(wx, wy);
+      Vec4 tc = Vec4::Zero(), dx = Vec4::Zero(), dy = Vec4::Zero();
+      for (int k = 0; k < 3; ++k) tc += b.b[k] * corners[k], dx += b.dbdx[k] * corners[k], dy += b.dbdy[k] * corners[k];
+      const double q = tc.w();
+      st = tc.head<2>() / q;
+      const Vec2 dstDx = (dx.head<2>() * q - tc.head<2>() * dx.w()) / (q * q);
+      const Vec2 dstDy = (dy.head<2>() * q - tc.head<2>() * dy.w()) / (q * q);
+      return render::levelOfDetail(texture.width(), texture.height(), dstDx, dstDy) + options.lodBias;
+    };
+    const double cx = x + 0.5, cy = height - row - 0.5;  // window coordinates, y up
+    Vec2 st;
+    double low = at(cx, cy, st), high = low;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        Vec2 ignored;
+        const double lambda = at(cx + dx, cy + dy, ignored);
+        if (!std::isnan(lambda)) low = std::min(low, lambda), high = std::max(high, lambda);
+      }
+    if (!st.allFinite() || std::isnan(low) || std::isnan(high)) return boxes;
+    return lookupBoxes(texture, options.sampler, st.x(), st.y(), low - 0.5 - tol.lodEps, high + tol.lodEps, tol);
   };
 
   result.errorMask = Image(width, height, 3);
@@ -321,14 +365,16 @@ ImageCheckResult checkImage(const Image& shot, const Reference& reference, const
       const std::vector<Box> own = ownBoxes(x, row);
       bool valid = matches(own, colour);
       // Next to another face or the background a GPU may place the edge elsewhere (dEQP allows
-      // 1/16 pixel): the pixel may show what its 4-neighbour across the edge shows.
-      constexpr std::array<std::array<int, 2>, 4> kNeighbours{{{-1, 0}, {1, 0}, {0, -1}, {0, 1}}};
-      for (const auto& [dx, dy] : kNeighbours) {
-        if (valid) break;
-        const int nx = x + dx, ny = row + dy;
-        if (nx < 0 || ny < 0 || nx >= width || ny >= height || face(nx, ny) == face(x, row)) continue;
-        valid = matches(ownBoxes(nx, ny), colour);
-      }
+      // 1/16 pixel): the pixel may show the background or any face of its 3 x 3 neighbourhood,
+      // extrapolated to it; for a per-pixel mapping (no corners to extrapolate), what its
+      // 4-neighbour across the edge shows.
+      const bool extrapolate = !reference.corners.empty();
+      for (int ny = std::max(0, row - 1); !valid && ny <= std::min(height - 1, row + 1); ++ny)
+        for (int nx = std::max(0, x - 1); !valid && nx <= std::min(width - 1, x + 1); ++nx) {
+          const int g = face(nx, ny);
+          if (g == face(x, row) || (!extrapolate && std::abs(nx - x) + std::abs(ny - row) != 1)) continue;
+          valid = extrapolate && g >= 0 ? matches(extrapolatedBoxes(g, x, row), colour) : matches(ownBoxes(nx, ny), colour);
+        }
       const Vec3 shown = valid ? Vec3(colour / 3.0) : Vec3(1, 0, 0);
       for (int c = 0; c < 3; ++c) result.errorMask.at(x, row, c) = float(shown[c]);
       if (valid) continue;

@@ -61,6 +61,13 @@ struct Reference {
   render::Rendering analytic;
   // The AOVs drawn with quad derivatives, in the analytic image's orientation; may be empty.
   std::vector<Image> quadAovs;
+  // For coordinates interpolated from corners, what it takes to extrapolate any face to any
+  // pixel (a pixel at an edge may show a face the reference shows only beside it): the vertices in
+  // clip space as the renderer computes them, the triangles and their corners' (s, t, r, q). Empty
+  // for a per-pixel mapping.
+  std::vector<Vec4> clip;
+  std::vector<Triangle> triangles;
+  std::vector<Vec4> corners;
 };
 
 // The renderings of `mesh` with `options` (aovs set, derivatives replaced): analytic; fine quad
