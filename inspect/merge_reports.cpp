@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -97,24 +98,50 @@ std::size_t failedRuns(const Json& report) {
       std::count_if(meshes->begin(), meshes->end(), [](const Json& mesh) { return mesh.is_object() && failed(mesh); }));
 }
 
+// The time a report's run took as a whole: its "wall" (a batch), else its "total" (one mesh).
+std::optional<double> runMilliseconds(const Json& milliseconds) {
+  for (const char* key : {"wall", "total"}) {
+    const auto value = milliseconds.find(key);
+    if (value != milliseconds.end() && value->is_number()) return value->get<double>();
+  }
+  return std::nullopt;
+}
+
 Json totalsOf(const std::vector<Report>& reports) {
   std::size_t failedCount = 0;
-  std::map<std::string, double> milliseconds;  // sorted keys
+  std::map<std::string, std::size_t> verdicts{{"pass", 0}, {"warn", 0}, {"fail", 0}};
+  std::map<std::string, double> stages;  // sorted keys
+  double runSum = 0.0, longest = -1.0;
+  std::string longestReport;
   for (const Report& r : reports) {
     failedCount += failedRuns(r.report);
+    const auto verdict = r.report.find("verdict");
+    if (verdict != r.report.end() && verdict->is_string() && verdicts.count(verdict->get<std::string>()))
+      ++verdicts[verdict->get<std::string>()];
     const auto ms = r.report.find("milliseconds");
     if (ms == r.report.end() || !ms->is_object()) continue;
+    // A run's whole time is not a stage: runs in parallel overlap, so their sum is work, not time.
     for (const auto& [stage, value] : ms->items())
-      if (value.is_number()) milliseconds[stage] += value.get<double>();
+      if (value.is_number() && stage != "total" && stage != "wall") stages[stage] += value.get<double>();
+    if (const std::optional<double> run = runMilliseconds(*ms)) {
+      runSum += *run;
+      if (*run > longest) longest = *run, longestReport = r.path;
+    }
   }
   Json sums = Json::object();
-  for (const auto& [stage, value] : milliseconds) sums[stage] = value;
-  return {{"reports", reports.size()}, {"failed", failedCount}, {"milliseconds", std::move(sums)}};
+  for (const auto& [stage, value] : stages) sums[stage] = value;
+  Json runs = {{"sum", runSum}};
+  if (longest >= 0) runs["longest"] = longest, runs["longest_report"] = longestReport;
+  return {{"reports", reports.size()},
+          {"failed", failedCount},
+          {"verdicts", {{"pass", verdicts["pass"]}, {"warn", verdicts["warn"]}, {"fail", verdicts["fail"]}}},
+          {"milliseconds", std::move(sums)},
+          {"run_milliseconds", std::move(runs)}};
 }
 
 }  // namespace
 
-void mergeReports(const std::vector<std::string>& inputs, const std::string& output) {
+std::string mergeReports(const std::vector<std::string>& inputs, const std::string& output) {
   // A merged file written into a folder it merges must not be merged into itself on the next run,
   // and a file named twice (itself and within a folder) is merged once.
   std::error_code ignored;
@@ -125,12 +152,19 @@ void mergeReports(const std::vector<std::string>& inputs, const std::string& out
       if (seen.insert(fs::weakly_canonical(file, ignored)).second) reports.push_back({file, readReport(file)});
 
   Json totals = totalsOf(reports);
+  const Json& verdicts = totals["verdicts"];
+  const std::string line = std::to_string(reports.size()) + (reports.size() == 1 ? " report" : " reports") + " merged (" +
+                           std::to_string(verdicts["pass"].get<std::size_t>()) + " pass, " +
+                           std::to_string(verdicts["warn"].get<std::size_t>()) + " warn, " +
+                           std::to_string(verdicts["fail"].get<std::size_t>()) + " fail), " +
+                           std::to_string(totals["failed"].get<std::size_t>()) + " failed";
   Json list = Json::array();
   for (Report& r : reports) list.push_back({{"path", r.path}, {"report", std::move(r.report)}});
   const Json merged = {{"tool", {{"name", "uvtk"}, {"version", UVTK_VERSION}}},
                        {"reports", std::move(list)},
                        {"totals", std::move(totals)}};
   io::writeFileAtomically(output, io::jsonText(merged, 2) + "\n");
+  return line;
 }
 
 }  // namespace uvtk::inspect

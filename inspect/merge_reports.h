@@ -18,7 +18,13 @@ namespace uvtk::inspect {
 // counts one; a `uvtk map DIR --json` batch.json (a report with a "meshes" array) counts each of
 // its failed meshes, which have no summary file of their own (its meshes that succeeded are
 // counted by their summaries, so merging that folder whole counts every mesh once).
-// totals.milliseconds sums, per key, the numbers of every report's top-level "milliseconds".
-void mergeReports(const std::vector<std::string>& inputs, const std::string& output);
+// totals.verdicts counts the reports whose top-level "verdict" is "pass", "warn" or "fail" (map
+// summaries, reports; a batch's meshes are counted by their own summaries).
+// totals.milliseconds sums, per stage, the numbers of every report's top-level "milliseconds" but
+// "total" and "wall", a run's whole time: runs in parallel overlap, so those go to
+// totals.run_milliseconds, their "sum" (work) and the "longest" with its "longest_report" (a lower
+// bound of the time all took). Returns the line `uvtk merge-reports` prints: "N reports merged (a
+// pass, b warn, c fail), k failed".
+std::string mergeReports(const std::vector<std::string>& inputs, const std::string& output);
 
 }  // namespace uvtk::inspect

@@ -1,10 +1,12 @@
 // `uvtk merge-reports`: the JSON reports of many independent runs merged into one file with
 // totals (inspect/merge_reports.h, docs/scale-out.md).
+#include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "commands.h"
+#include "core/progress.h"
 #include "inspect/merge_reports.h"
 
 namespace uvtk::cli {
@@ -25,7 +27,10 @@ void addMergeReportsCommand(CLI::App& root) {
   merge->add_option("inputs", arguments->inputs, "Report files, or folders whose *.json files (recursively) are merged")
       ->required();
   merge->add_option("-o,--output", arguments->output, "The merged JSON report")->required();
-  merge->callback([arguments] { inspect::mergeReports(arguments->inputs, arguments->output); });
+  merge->callback([arguments] {
+    const std::string line = inspect::mergeReports(arguments->inputs, arguments->output);
+    if (!quiet()) std::cout << "uvtk merge-reports: " << line << "\n";
+  });
 }
 
 }  // namespace uvtk::cli

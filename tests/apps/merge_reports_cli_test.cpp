@@ -2,7 +2,9 @@
 // invalid report as an input error that writes nothing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "apps/cli_test.h"
@@ -49,10 +51,31 @@ TEST_F(MergeReportsCli, MergesMapSummariesAndAFolderWithTotals) {
   }
   EXPECT_EQ(merged["totals"]["reports"], 5);
   EXPECT_EQ(merged["totals"]["failed"], 1);  // bad.off, in batch.json
+  // The sphere and the torus, twice each (a.json, b.json and the batch's summaries): verdicts recounted.
+  std::map<std::string, int> verdicts{{"pass", 0}, {"warn", 0}, {"fail", 0}};
+  for (const std::string& file : {"a.json", "b.json", "batch/sphere.json", "batch/torus.json"})
+    ++verdicts[readJson(path(file))["verdict"].get<std::string>()];
+  EXPECT_EQ(merged["totals"]["verdicts"], nlohmann::json(verdicts));
   EXPECT_DOUBLE_EQ(merged["totals"]["milliseconds"]["read"].get<double>(), read);
-  EXPECT_DOUBLE_EQ(merged["totals"]["milliseconds"]["wall"].get<double>(), wall);
+  // A run's whole time is not summed as a stage (runs in parallel overlap): its sum and longest.
+  EXPECT_FALSE(merged["totals"]["milliseconds"].contains("wall"));
+  EXPECT_FALSE(merged["totals"]["milliseconds"].contains("total"));
+  double runs = 0.0, longest = 0.0;
+  for (const std::string& file : files) {
+    const nlohmann::json ms = readJson(path(file))["milliseconds"];
+    const double run = ms.contains("wall") ? ms["wall"].get<double>() : ms["total"].get<double>();
+    runs += run, longest = std::max(longest, run);
+  }
+  EXPECT_DOUBLE_EQ(merged["totals"]["run_milliseconds"]["sum"].get<double>(), runs);
+  EXPECT_DOUBLE_EQ(merged["totals"]["run_milliseconds"]["longest"].get<double>(), longest);
   EXPECT_GT(read, 0.0);
   EXPECT_GT(wall, 0.0);
+  const CliRun line = shell(std::string(UVTK_BINARY) + " merge-reports -o " + path("merged.json") + " " + path("a.json") +
+                            " " + path("b.json") + " " + path("batch") + " > " + path("line.txt"));
+  ASSERT_EQ(line.status, 0);
+  EXPECT_EQ(readText(path("line.txt")), "uvtk merge-reports: 5 reports merged (" + std::to_string(verdicts["pass"]) +
+                                            " pass, " + std::to_string(verdicts["warn"]) + " warn, " +
+                                            std::to_string(verdicts["fail"]) + " fail), 1 failed\n");
 }
 
 TEST_F(MergeReportsCli, CountsFailedReportsAndSumsMillisecondsPerKey) {
@@ -71,7 +94,10 @@ TEST_F(MergeReportsCli, CountsFailedReportsAndSumsMillisecondsPerKey) {
     const nlohmann::json totals = readJson(path("reports/merged.json"))["totals"];
     EXPECT_EQ(totals["reports"], 4) << run;
     EXPECT_EQ(totals["failed"], 4) << run;  // 1.json, 3.json and the two failed meshes of batch.json
-    EXPECT_EQ(totals["milliseconds"], nlohmann::json({{"render", 4.0}, {"total", 2.0}, {"wall", 4.0}})) << run;
+    EXPECT_EQ(totals["milliseconds"], nlohmann::json({{"render", 4.0}})) << run;
+    EXPECT_EQ(totals["run_milliseconds"],
+              nlohmann::json({{"sum", 6.0}, {"longest", 4.0}, {"longest_report", path("batch.json")}})) << run;
+    EXPECT_EQ(totals["verdicts"], nlohmann::json({{"pass", 0}, {"warn", 0}, {"fail", 0}})) << run;
   }
 }
 
