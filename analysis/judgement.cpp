@@ -22,6 +22,8 @@ struct RuleEntry {
   double warn, fail;
   bool isCount;        // a count of corners or faces (printed as an integer)
   const char* advice;  // what would address it (issue "newcomer": a verdict that says what to do next)
+  bool below = false;          // triggers below its threshold
+  bool separateOnly = false;   // its defaults hold for charts that must stay apart only (Thresholds)
 };
 constexpr RuleEntry kRules[kRuleCount] = {
     // any invalid corner fails
@@ -60,6 +62,26 @@ constexpr RuleEntry kRules[kRuleCount] = {
     // any pixel of a GPU's seam mip line warns
     {"mip_line", 0.0, kNever, false,
      "a shader's derivatives jump at the seam: --seam-fix tarini or grad, or a mapping cut at the seam (--seam cut)"},
+    // a layout covering under 64 texels of the texture (8 x 8) warns, under 16 (4 x 4) fails
+    {"layout_texels", 64.0, 16.0, false,
+     "the layout covers a handful of texels: --fit bbox, --uv-scale or --density scale it up; --texture-size "
+     "names the texture it is for",
+     true},
+    // faces under 1/16 texel each on average warn, under 1/256 fail
+    {"texels_per_face", 1.0 / 16.0, 1.0 / 256.0, false,
+     "the faces are far below a texel: a larger --texture-size, or a layout that uses more of it (--projector "
+     "atlas packs it)",
+     true},
+    // an atlas: any texel whose bilinear footprint mixes two charts fails
+    {"texel_clashes", kNever, 0.0, true,
+     "charts sit closer than a texel and bilinear filtering mixes them: a larger --margin, or a larger "
+     "--texture-size",
+     false, true},
+    // an atlas: charts under 2 texels apart warn (Unity's lightmap rule), under half a texel fail
+    {"gutter", 2.0, 0.5, false,
+     "charts bleed into each other at the first mip levels: a larger --margin (a gutter of 2^L texels lasts "
+     "to level L)",
+     true, true},
 };
 
 const RuleEntry& entry(Rule rule) { return kRules[static_cast<std::size_t>(rule)]; }
@@ -128,9 +150,29 @@ std::optional<Rule> parseRule(std::string_view name) {
   return std::nullopt;
 }
 
+namespace {
+
+// A threshold that never triggers the rule.
+double never(Rule rule) { return triggersBelow(rule) ? -kNever : kNever; }
+
+}  // namespace
+
 Thresholds::Thresholds() {
   for (int k = 0; k < kRuleCount; ++k) warn[std::size_t(k)] = kRules[k].warn, fail[std::size_t(k)] = kRules[k].fail;
 }
+
+Thresholds Thresholds::forLayout(bool separateCharts) const {
+  Thresholds out = *this;
+  if (separateCharts) return out;
+  for (std::size_t k = 0; k < std::size_t(kRuleCount); ++k) {
+    if (!kRules[k].separateOnly) continue;
+    if (!warnGiven[k]) out.warn[k] = never(Rule(k));
+    if (!failGiven[k]) out.fail[k] = never(Rule(k));
+  }
+  return out;
+}
+
+bool triggersBelow(Rule rule) { return entry(rule).below; }
 
 double& Thresholds::of(Rule rule, Verdict severity) {
   UVTK_CHECK(severity != Verdict::Pass);
@@ -154,19 +196,20 @@ void Thresholds::set(std::string_view assignment, Verdict severity, std::string_
   const std::string_view text = assignment.substr(equals + 1);
   double value = 0.0;
   if (text == "off" || text == "inf") {
-    value = kNever;
+    value = never(*rule);
   } else {
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (error != std::errc() || end != text.data() + text.size() || !(value >= 0.0)) refuse("bad value");
   }
   of(*rule, severity) = value;
+  (severity == Verdict::Fail ? failGiven : warnGiven)[static_cast<std::size_t>(*rule)] = true;
 }
 
 std::string Reason::text() const {
   char faceText[64] = "";
   if (faces > 0) std::snprintf(faceText, sizeof faceText, " (%zu face%s)", faces, faces == 1 ? "" : "s");
-  return std::string(toString(rule)) + " " + formatValue(rule, value) + " > " + formatValue(rule, threshold) +
-         faceText;
+  return std::string(toString(rule)) + " " + formatValue(rule, value) + (triggersBelow(rule) ? " < " : " > ") +
+         formatValue(rule, threshold) + faceText;
 }
 
 const char* adviceOf(Rule rule) { return entry(rule).advice; }
@@ -192,10 +235,11 @@ void applyThresholds(Judgement& j, const Thresholds& thresholds) {
     for (int k = 0; k < kRuleCount; ++k) {
       const Rule rule = Rule(k);
       const double value = j.values[std::size_t(k)];
+      const auto beyond = [&](double threshold) { return triggersBelow(rule) ? value < threshold : value > threshold; };
       const double threshold = thresholds.of(rule, severity);
-      if (!(value > threshold)) continue;
+      if (!beyond(threshold)) continue;
       // A rule that fails is not listed again as a warning.
-      if (severity == Verdict::Warn && value > thresholds.of(rule, Verdict::Fail)) continue;
+      if (severity == Verdict::Warn && beyond(thresholds.of(rule, Verdict::Fail))) continue;
       j.reasons.push_back({rule, severity, value, threshold, j.ruleFaces[std::size_t(k)]});
       j.verdict = std::max(j.verdict, severity);
     }
@@ -308,7 +352,33 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
   set(Rule::BackfacingArea, share(statusArea[std::size_t(FaceStatus::Backfacing)]),
       j.statusCount(FaceStatus::Backfacing));
   set(Rule::DensitySpread, density.spread, spread);
-  applyThresholds(j, options.thresholds);
+
+  // The layout in the texture: the texels the ok faces cover, in all and per face; and where its
+  // charts must stay apart, how they meet at level 0 (docs/conventions.md, "Texels of a layout").
+  const TextureSize& texture = options.textureSize;
+  const std::size_t okFaces = j.statusCount(FaceStatus::Ok);
+  // Auv is measured at unit scale (times measureUvScale squared, a power of two): undone here.
+  const double layoutTexels = std::ldexp(j.summary.okTotals.uv * double(texture.width) * double(texture.height),
+                                         -2 * std::ilogb(measureUvScale(j.summary.uvBounds)));
+  // No ok face: nothing to measure (the rules of the faces' status say why): never below.
+  set(Rule::LayoutTexels, okFaces > 0 ? layoutTexels : kNever, okFaces);
+  set(Rule::TexelsPerFace, okFaces > 0 ? layoutTexels / double(okFaces) : kNever, okFaces);
+  const Thresholds thresholds = options.thresholds.forLayout(options.separateCharts);
+  const auto on = [&](Rule rule) {
+    return thresholds.of(rule, Verdict::Warn) != never(rule) || thresholds.of(rule, Verdict::Fail) != never(rule);
+  };
+  if ((on(Rule::TexelClashes) || on(Rule::Gutter)) && texture.width <= kMaxTexelSide && texture.height <= kMaxTexelSide) {
+    j.texels = texelStatistics(mesh, uv, texture.width, texture.height);
+    set(Rule::TexelClashes, double(j.texels->levels.front().clashes), 0);
+    set(Rule::Gutter, j.texels->gutters.betweenCharts, 0);
+  } else if (on(Rule::Gutter)) {  // a texture too large to raster: the gutter alone, measured exactly
+    set(Rule::TexelClashes, 0.0, 0);
+    set(Rule::Gutter, measureGutters(mesh, uv, uvCharts(mesh, uv), texture.width, texture.height).betweenCharts, 0);
+  } else {
+    set(Rule::TexelClashes, 0.0, 0);
+    set(Rule::Gutter, kNever, 0);
+  }
+  applyThresholds(j, thresholds);
   return j;
 }
 

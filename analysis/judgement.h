@@ -14,6 +14,7 @@
 
 #include "analysis/distortion.h"
 #include "analysis/summary.h"
+#include "analysis/texel_layout.h"
 #include "core/mesh.h"
 #include "core/uv_map.h"
 
@@ -37,24 +38,39 @@ enum class Rule : std::uint8_t {
   BackfacingArea,       // backfacing faces' share of the 3D area (planar projections)
   DensitySpread,        // p90 / p10 of the ok faces' texel density
   MipLine,              // the share of a view's covered pixels on a GPU's seam mip line (set where one is drawn)
+  LayoutTexels,         // the texels the ok faces cover in the texture (sum of Auv W H): below is worse
+  TexelsPerFace,        // LayoutTexels per ok face: below is worse
+  TexelClashes,         // level-0 texels whose bilinear footprint mixes two charts (count; separate charts only)
+  Gutter,               // the smallest gutter between charts, in level-0 texels: below is worse (separate charts only)
 };
-constexpr int kRuleCount = 12;
+constexpr int kRuleCount = 16;
 const char* toString(Rule rule);  // "invalid_corners", "out_of_range_corners", ...
 // One line of what would address a rule's trigger (the option, projector or command).
 const char* adviceOf(Rule rule);
 std::optional<Rule> parseRule(std::string_view name);
+// Whether the rule triggers when its value falls below a threshold (LayoutTexels, TexelsPerFace,
+// Gutter) rather than exceeds it.
+bool triggersBelow(Rule rule);
 
-// A threshold per rule and severity: the rule triggers when its value exceeds the threshold
-// (infinity: never). Defaults: docs/conventions.md §11.
+// A threshold per rule and severity: the rule triggers when its value exceeds the threshold, or
+// for the rules that trigger below, falls below it (infinity, minus infinity for those: never).
+// Defaults: docs/conventions.md §11. TexelClashes and Gutter have their defaults only for a layout
+// whose charts must stay apart (an atlas: JudgementOptions::separateCharts); elsewhere (charts meant
+// to tile across their seams) they are off unless set.
 struct Thresholds {
   std::array<double, kRuleCount> warn, fail;
+  std::array<bool, kRuleCount> warnGiven{}, failGiven{};  // set by set(): kept whatever the layout
   Thresholds();  // the defaults
   double& of(Rule rule, Verdict severity);
   double of(Rule rule, Verdict severity) const;
   // "RULE=VALUE" (VALUE a number >= 0, or "off"/"inf": never) for the given severity. Throws
   // UsageError naming `option`, the bad text and the rule names.
   void set(std::string_view assignment, Verdict severity, std::string_view option);
-  bool operator==(const Thresholds& other) const { return warn == other.warn && fail == other.fail; }
+  // The thresholds in force for a layout whose charts must stay apart or not.
+  Thresholds forLayout(bool separateCharts) const;
+  bool operator==(const Thresholds& other) const {
+    return warn == other.warn && fail == other.fail && warnGiven == other.warnGiven && failGiven == other.failGiven;
+  }
 };
 
 // One reason of a verdict: the rule, how bad (Warn or Fail), its value, the threshold it exceeded,
@@ -75,7 +91,10 @@ struct JudgementOptions {
   bool wrapsU = false;                       // u has period uPeriod (cylinder, sphere): seams are expected, not failed
   double uPeriod = 1.0;                      // 1, or what `uvtk map --density` scaled the UVs by
   int overlapResolution = 1024;              // pixels across the raster that measures overlap
-  TextureSize textureSize;                   // the texels a texel density counts
+  TextureSize textureSize;                   // the texels a texel density counts, and the texel rules
+  // The charts are meant to stay apart in the texture (an atlas): the texel clash and gutter rules
+  // are on by default. Elsewhere charts are meant to tile across their seams.
+  bool separateCharts = false;
   Thresholds thresholds;
   int threads = 0;                           // 0: one per core; the judgement does not depend on it
 };
@@ -96,6 +115,8 @@ struct Judgement {
   std::array<double, kRuleCount> values{};
   std::array<std::size_t, kRuleCount> ruleFaces{};
   Thresholds thresholds;  // those the verdict was taken under
+  // The layout's texels, where the texel clash or gutter rule was on (JudgementOptions::separateCharts).
+  std::optional<TexelStatistics> texels;
   Verdict verdict = Verdict::Pass;
   std::vector<Reason> reasons;  // fail reasons first, then warn reasons, each in Rule order
 

@@ -215,7 +215,7 @@ Gutters measureGutters(const Mesh& mesh, const UvMap& uv, const std::vector<int>
 }
 
 TexelStatistics texelStatistics(const Mesh& mesh, const UvMap& uv, int width, int height) {
-  if (width < 1 || height < 1 || width > 8192 || height > 8192)
+  if (width < 1 || height < 1 || width > kMaxTexelSide || height > kMaxTexelSide)
     throw UsageError("--texture-size: the texels of a layout are counted for 1 to 8192 texels a side");
   TexelStatistics out;
   const std::vector<int> chart = uvCharts(mesh, uv);

@@ -50,6 +50,9 @@ struct TexelStatistics {
   std::optional<int> firstBleedLevel;  // the first level with a clash; none when the charts never mix
 };
 
+// The largest side texelStatistics rasters.
+constexpr int kMaxTexelSide = 8192;
+
 // The statistics of `uv` (3 corners per face) in a width x height texture (1 to 8192 each;
 // UsageError beyond). Faces with an invalid corner are left out. Cost: the faces' texels at level
 // 0 plus 4/3 W H for the pyramid, 4 bytes a texel.

@@ -10,6 +10,7 @@
 #include "inspect/projector_json.h"
 #include "param/projector_names.h"
 #include "param/projector.h"
+#include "param/surface_traits.h"
 #include "inspect/measures_json.h"
 #include "inspect/run_report.h"
 #include "inspect/summary_json.h"
@@ -42,6 +43,8 @@ analysis::Judgement MappedMesh::judge(const analysis::Thresholds& thresholds, in
   options.thresholds = thresholds;
   options.threads = threads;
   options.textureSize = textureSize;
+  // An atlas's charts must stay apart in the texture; a single projection's charts tile.
+  options.separateCharts = projector && param::traitsOf(projector->surface).chartsFromMesh;
   return analysis::judge(mesh, uv, options);
 }
 

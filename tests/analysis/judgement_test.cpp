@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <tuple>
 
 #include "core/error.h"
 #include "meshes/generators.h"
@@ -40,6 +41,92 @@ Layout grid(int n) {
       l.add(a, c, d, uv(a), uv(c), uv(d));
     }
   return l;
+}
+
+// A square of side `side` (UV units) at `corner`, mapped from a square of the same side in z = 0:
+// two triangles sharing their diagonal's vertices, one chart.
+void addSquare(Layout& l, const Vec2& corner, double side) {
+  const int base = int(l.mesh.positions.size());
+  const Vec2 uv[4] = {corner, corner + Vec2(side, 0), corner + Vec2(side, side), corner + Vec2(0, side)};
+  for (const Vec2& p : uv) l.mesh.positions.emplace_back(p.x(), p.y(), 0.0);
+  for (const Triangle& t : {Triangle{base, base + 1, base + 2}, Triangle{base, base + 2, base + 3}}) {
+    l.mesh.triangles.push_back(t);
+    for (int k = 0; k < 3; ++k) l.uv.uv.push_back(uv[t[k] - base]);
+    l.uv.faceFlags.push_back(kFaceOk);
+    l.uv.cornerInvalid.insert(l.uv.cornerInvalid.end(), 3, 0);
+  }
+}
+
+// The layout's size in the texture (issue 47, point 3: a layout shrunk into a 1e-6 square passed):
+// a square of side s covers s^2 1024^2 texels; under 64 warns, under 16 fails.
+TEST(Judgement, ALayoutOfAHandfulOfTexelsDoesNotPass) {
+  for (const auto& [side, verdict, text] :
+       std::vector<std::tuple<double, Verdict, std::string>>{{1.0 / 128, Verdict::Pass, ""},
+                                                              {1.0 / 160, Verdict::Warn, "layout_texels 41 < 64 (2 faces)"},
+                                                              {1.0 / 512, Verdict::Fail, "layout_texels 4 < 16 (2 faces)"},
+                                                              {1e-6, Verdict::Fail, "layout_texels 1.05e-06 < 16 (2 faces)"}}) {
+    Layout l;
+    addSquare(l, Vec2(0.25, 0.25), side);
+    const Judgement j = judge(l.mesh, l.uv);
+    const double texels = side * side * 1024 * 1024;
+    EXPECT_NEAR(j.values[std::size_t(Rule::LayoutTexels)], texels, 1e-9 * texels) << side;
+    EXPECT_EQ(j.verdict, verdict) << side;
+    if (!text.empty()) EXPECT_EQ(j.reasonsText().substr(0, text.size()), text) << side;
+  }
+}
+
+// Faces far below a texel: n x n cells (2 n^2 faces) over the unit square of a 16 x 16 texture,
+// 128 / n^2 texels a face: under 1/16 warns, under 1/256 fails.
+TEST(Judgement, FacesFarBelowATexelDoNotPass) {
+  JudgementOptions o;
+  o.textureSize = {16, 16};
+  const std::tuple<int, Verdict, std::string> cases[] = {
+      {16, Verdict::Pass, ""},  // half a texel a face
+      {64, Verdict::Warn, "texels_per_face 0.0312 < 0.0625 (8192 faces)"},
+      {256, Verdict::Fail, "texels_per_face 0.00195 < 0.00391 (131072 faces)"}};
+  for (const auto& [n, verdict, text] : cases) {
+    const Layout l = grid(n);
+    const Judgement j = judge(l.mesh, l.uv, o);
+    EXPECT_DOUBLE_EQ(j.values[std::size_t(Rule::TexelsPerFace)], 128.0 / (n * n)) << n;
+    EXPECT_EQ(j.verdict, verdict) << n << ": " << j.reasonsText();
+    if (!text.empty()) EXPECT_EQ(j.reasonsText(), text) << n;
+  }
+}
+
+// Charts that must stay apart (an atlas): two 8-texel squares `gap` texels apart at 64 x 64. A gap
+// of 8 passes; 1 warns (Unity's two texels); 0 (touching) clashes under bilinear filtering and
+// fails. Charts meant to tile (separateCharts false) are not held to it unless a threshold is set.
+TEST(Judgement, AnAtlasesChartsMustKeepAGutterAndNotClash) {
+  const auto layout = [](double gap) {
+    Layout l;
+    addSquare(l, Vec2(8, 8) / 64, 8.0 / 64);
+    addSquare(l, Vec2(16 + gap, 8) / 64, 8.0 / 64);
+    return l;
+  };
+  JudgementOptions atlas;
+  atlas.textureSize = {64, 64};
+  atlas.separateCharts = true;
+  const Layout apart = layout(8), near = layout(1), touching = layout(0);
+  EXPECT_EQ(judge(apart.mesh, apart.uv, atlas).verdict, Verdict::Pass);
+  const Judgement n = judge(near.mesh, near.uv, atlas);
+  EXPECT_EQ(n.reasonsText(), "gutter 1 < 2");
+  EXPECT_EQ(n.values[std::size_t(Rule::TexelClashes)], 0.0);
+  const Judgement t = judge(touching.mesh, touching.uv, atlas);
+  EXPECT_EQ(t.verdict, Verdict::Fail);
+  // The two columns of texels either side of the shared edge, 8 rows: each reads the other chart.
+  EXPECT_EQ(t.values[std::size_t(Rule::TexelClashes)], 16.0);
+  EXPECT_EQ(t.reasonsText(), "texel_clashes 16 > 0; gutter 0 < 0.5");
+  ASSERT_TRUE(t.texels);
+  EXPECT_EQ(t.texels->levels.front().clashes, 16u);
+
+  JudgementOptions tiling = atlas;
+  tiling.separateCharts = false;
+  EXPECT_EQ(judge(touching.mesh, touching.uv, tiling).verdict, Verdict::Pass);
+  EXPECT_FALSE(judge(touching.mesh, touching.uv, tiling).texels);
+  tiling.thresholds.set("gutter=4", Verdict::Fail, "--fail-on");  // asked for: in force everywhere
+  EXPECT_EQ(judge(near.mesh, near.uv, tiling).reasonsText(), "gutter 1 < 4");
+  tiling.thresholds.set("gutter=off", Verdict::Fail, "--fail-on");
+  EXPECT_EQ(judge(near.mesh, near.uv, tiling).verdict, Verdict::Pass);
 }
 
 TEST(Judgement, AnIsometricLayoutPassesWithNoReason) {
