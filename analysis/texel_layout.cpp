@@ -14,7 +14,7 @@ namespace uvtk::analysis {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr std::int32_t kEmpty = -1, kMixed = -2;
+constexpr std::int32_t kEmpty = kTexelEmpty, kMixed = kTexelMixed;
 
 bool faceValid(const UvMap& uv, std::size_t f) {
   if (uv.faceHas(f, kFaceInvalid)) return false;
@@ -75,24 +75,84 @@ std::int32_t merge(std::int32_t a, std::int32_t b) {
 }
 
 // Counts of one level from its texels' charts.
-void countLevel(const std::vector<std::int32_t>& owner, int w, int h, TexelLevel& out) {
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const std::int32_t own = owner[std::size_t(y) * std::size_t(w) + std::size_t(x)];
+void countLevel(const TexelOwners& texels, TexelLevel& out) {
+  for (int y = 0; y < texels.height; ++y)
+    for (int x = 0; x < texels.width; ++x) {
+      const std::int32_t own = texels.at(x, y);
       out.mapped += own != kEmpty;
       out.overwritten += own == kMixed;
-      bool near = own != kEmpty, clash = own == kMixed;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int nx = x + dx, ny = y + dy;
-          if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
-          const std::int32_t other = owner[std::size_t(ny) * std::size_t(w) + std::size_t(nx)];
-          near = near || other != kEmpty;
-          clash = clash || (own >= 0 && other != kEmpty && other != own);
-        }
-      out.touched += near;
-      out.clashes += clash;
+      out.touched += own != kEmpty || texels.touchedOnly(x, y);
+      out.clashes += texels.clashes(x, y);
     }
+}
+
+// Level 0: each face's texel centres (a centre on an edge shared by two faces goes to one of them:
+// the edge's side that runs up, or left along a row), and the count of texels its area meets.
+TexelOwners levelZero(const Mesh& mesh, const UvMap& uv, const std::vector<int>& chart, int width, int height,
+                      std::size_t* conservative) {
+  TexelOwners texels{0, width, height, std::vector<std::int32_t>(std::size_t(width) * std::size_t(height), kEmpty)};
+  std::vector<std::uint8_t> met(conservative ? texels.owner.size() : 0, 0);
+  const Vec2 size = Vec2(width, height);
+  for (std::size_t f = 0; f < mesh.faceCount(); ++f) {
+    if (!faceValid(uv, f)) continue;
+    std::array<Vec2, 3> p = {uv.uv[3 * f].cwiseProduct(size), uv.uv[3 * f + 1].cwiseProduct(size),
+                             uv.uv[3 * f + 2].cwiseProduct(size)};
+    const double area = orient(p[0], p[1], p[2]);
+    if (!std::isfinite(area)) continue;
+    if (area < 0.0) std::swap(p[1], p[2]);
+    Eigen::AlignedBox2d box;
+    for (const Vec2& q : p) box.extend(q);
+    const int x0 = std::max(0, int(std::floor(box.min().x()))), x1 = std::min(width - 1, int(std::floor(box.max().x())));
+    const int y0 = std::max(0, int(std::floor(box.min().y()))), y1 = std::min(height - 1, int(std::floor(box.max().y())));
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) {
+        const std::size_t t = std::size_t(y) * std::size_t(width) + std::size_t(x);
+        if (conservative) {
+          // The texel's square meets the triangle: no edge of the triangle has the whole square
+          // strictly outside (the boxes already meet).
+          bool meets = area != 0.0;
+          for (int i = 0; i < 3 && meets; ++i) {
+            const Vec2 &a = p[std::size_t(i)], &b = p[std::size_t((i + 1) % 3)];
+            double inside = -kInfinity;
+            for (const Vec2& corner : {Vec2(x, y), Vec2(x + 1, y), Vec2(x, y + 1), Vec2(x + 1, y + 1)})
+              inside = std::max(inside, orient(a, b, corner));
+            meets = inside > 0.0;
+          }
+          if (meets) met[t] = 1;
+        }
+        if (area == 0.0) continue;
+        const Vec2 centre(x + 0.5, y + 0.5);
+        bool in = true;
+        for (int i = 0; i < 3 && in; ++i) {
+          const Vec2 &a = p[std::size_t(i)], &b = p[std::size_t((i + 1) % 3)];
+          const double e = orient(a, b, centre);
+          const Vec2 d = b - a;
+          in = e > 0.0 || (e == 0.0 && (d.y() > 0.0 || (d.y() == 0.0 && d.x() < 0.0)));
+        }
+        if (in) texels.owner[t] = merge(texels.owner[t], chart[f]);
+      }
+  }
+  if (conservative) *conservative = std::size_t(std::count(met.begin(), met.end(), std::uint8_t(1)));
+  return texels;
+}
+
+// The next level: each texel holds every chart its 2 x 2 children hold (GL's box filter).
+TexelOwners coarser(const TexelOwners& finer) {
+  const int w = finer.width, h = finer.height, nw = std::max(1, w >> 1), nh = std::max(1, h >> 1);
+  TexelOwners out{finer.level + 1, nw, nh, std::vector<std::int32_t>(std::size_t(nw) * std::size_t(nh), kEmpty)};
+  for (int y = 0; y < nh; ++y)
+    for (int x = 0; x < nw; ++x) {
+      std::int32_t o = kEmpty;
+      for (int cy = 2 * y; cy < std::min(h, 2 * y + 2); ++cy)
+        for (int cx = 2 * x; cx < std::min(w, 2 * x + 2); ++cx) o = merge(o, finer.at(cx, cy));
+      out.owner[std::size_t(y) * std::size_t(nw) + std::size_t(x)] = o;
+    }
+  return out;
+}
+
+void checkTextureSize(int width, int height) {
+  if (width < 1 || height < 1 || width > kMaxTexelSide || height > kMaxTexelSide)
+    throw UsageError("--texture-size: the texels of a layout are counted for 1 to 8192 texels a side");
 }
 
 }  // namespace
@@ -214,82 +274,54 @@ Gutters measureGutters(const Mesh& mesh, const UvMap& uv, const std::vector<int>
   return g;
 }
 
+bool TexelOwners::clashes(int x, int y) const {
+  const std::int32_t own = at(x, y);
+  if (own == kMixed) return true;
+  if (own == kEmpty) return false;
+  for (int ny = std::max(0, y - 1); ny <= std::min(height - 1, y + 1); ++ny)
+    for (int nx = std::max(0, x - 1); nx <= std::min(width - 1, x + 1); ++nx) {
+      const std::int32_t other = at(nx, ny);
+      if (other != kEmpty && other != own) return true;
+    }
+  return false;
+}
+
+bool TexelOwners::touchedOnly(int x, int y) const {
+  if (at(x, y) != kEmpty) return false;
+  for (int ny = std::max(0, y - 1); ny <= std::min(height - 1, y + 1); ++ny)
+    for (int nx = std::max(0, x - 1); nx <= std::min(width - 1, x + 1); ++nx)
+      if (at(nx, ny) != kEmpty) return true;
+  return false;
+}
+
 TexelStatistics texelStatistics(const Mesh& mesh, const UvMap& uv, int width, int height) {
-  if (width < 1 || height < 1 || width > kMaxTexelSide || height > kMaxTexelSide)
-    throw UsageError("--texture-size: the texels of a layout are counted for 1 to 8192 texels a side");
+  checkTextureSize(width, height);
   TexelStatistics out;
   const std::vector<int> chart = uvCharts(mesh, uv);
   out.charts = chart.empty() ? 0 : std::size_t(*std::max_element(chart.begin(), chart.end()) + 1);
   out.gutters = measureGutters(mesh, uv, chart, width, height);
 
-  // Level 0: each face's texel centres (a centre on an edge shared by two faces goes to one of them:
-  // the edge's side that runs up, or left along a row), and the texels its area meets.
-  std::vector<std::int32_t> owner(std::size_t(width) * std::size_t(height), kEmpty);
-  std::vector<std::uint8_t> met(owner.size(), 0);
-  const Vec2 texels = Vec2(width, height);
-  for (std::size_t f = 0; f < mesh.faceCount(); ++f) {
-    if (!faceValid(uv, f)) continue;
-    std::array<Vec2, 3> p = {uv.uv[3 * f].cwiseProduct(texels), uv.uv[3 * f + 1].cwiseProduct(texels),
-                             uv.uv[3 * f + 2].cwiseProduct(texels)};
-    const double area = orient(p[0], p[1], p[2]);
-    if (!std::isfinite(area)) continue;
-    if (area < 0.0) std::swap(p[1], p[2]);
-    Eigen::AlignedBox2d box;
-    for (const Vec2& q : p) box.extend(q);
-    const int x0 = std::max(0, int(std::floor(box.min().x()))), x1 = std::min(width - 1, int(std::floor(box.max().x())));
-    const int y0 = std::max(0, int(std::floor(box.min().y()))), y1 = std::min(height - 1, int(std::floor(box.max().y())));
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) {
-        const std::size_t t = std::size_t(y) * std::size_t(width) + std::size_t(x);
-        // The texel's square meets the triangle: no edge of the triangle has the whole square
-        // strictly outside (the boxes already meet).
-        bool meets = area != 0.0;
-        for (int i = 0; i < 3 && meets; ++i) {
-          const Vec2 &a = p[std::size_t(i)], &b = p[std::size_t((i + 1) % 3)];
-          double inside = -kInfinity;
-          for (const Vec2& corner : {Vec2(x, y), Vec2(x + 1, y), Vec2(x, y + 1), Vec2(x + 1, y + 1)})
-            inside = std::max(inside, orient(a, b, corner));
-          meets = inside > 0.0;
-        }
-        if (meets) met[t] = 1;
-        if (area == 0.0) continue;
-        const Vec2 centre(x + 0.5, y + 0.5);
-        bool in = true;
-        for (int i = 0; i < 3 && in; ++i) {
-          const Vec2 &a = p[std::size_t(i)], &b = p[std::size_t((i + 1) % 3)];
-          const double e = orient(a, b, centre);
-          const Vec2 d = b - a;
-          in = e > 0.0 || (e == 0.0 && (d.y() > 0.0 || (d.y() == 0.0 && d.x() < 0.0)));
-        }
-        if (in) owner[t] = merge(owner[t], chart[f]);
-      }
-  }
-
-  std::vector<std::int32_t> finer;
-  int w = width, h = height;
-  for (int level = 0;; ++level) {
+  std::size_t conservative = 0;
+  TexelOwners texels = levelZero(mesh, uv, chart, width, height, &conservative);
+  for (;;) {
     TexelLevel l;
-    l.level = level, l.width = w, l.height = h;
-    countLevel(owner, w, h, l);
-    l.mappedConservative = level == 0 ? std::size_t(std::count(met.begin(), met.end(), std::uint8_t(1))) : l.mapped;
-    l.gutterTexels = std::ldexp(out.gutters.betweenCharts, -level);
-    if (!out.firstBleedLevel && l.clashes > 0) out.firstBleedLevel = level;
+    l.level = texels.level, l.width = texels.width, l.height = texels.height;
+    countLevel(texels, l);
+    l.mappedConservative = texels.level == 0 ? conservative : l.mapped;
+    l.gutterTexels = std::ldexp(out.gutters.betweenCharts, -texels.level);
+    if (!out.firstBleedLevel && l.clashes > 0) out.firstBleedLevel = texels.level;
     out.levels.push_back(l);
-    if (w == 1 && h == 1) break;
-    const int nw = std::max(1, w >> 1), nh = std::max(1, h >> 1);
-    finer.swap(owner);
-    owner.assign(std::size_t(nw) * std::size_t(nh), kEmpty);
-    for (int y = 0; y < nh; ++y)
-      for (int x = 0; x < nw; ++x) {
-        std::int32_t o = kEmpty;
-        for (int cy = 2 * y; cy < std::min(h, 2 * y + 2); ++cy)
-          for (int cx = 2 * x; cx < std::min(w, 2 * x + 2); ++cx)
-            o = merge(o, finer[std::size_t(cy) * std::size_t(w) + std::size_t(cx)]);
-        owner[std::size_t(y) * std::size_t(nw) + std::size_t(x)] = o;
-      }
-    w = nw, h = nh;
+    if (texels.width == 1 && texels.height == 1) break;
+    texels = coarser(texels);
   }
   return out;
+}
+
+TexelOwners texelOwners(const Mesh& mesh, const UvMap& uv, int width, int height, int level) {
+  checkTextureSize(width, height);
+  TexelOwners texels = levelZero(mesh, uv, uvCharts(mesh, uv), width, height, nullptr);
+  while (texels.level < level && (texels.width > 1 || texels.height > 1)) texels = coarser(texels);
+  return texels;
 }
 
 }  // namespace uvtk::analysis

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -50,6 +51,20 @@ struct TexelStatistics {
   std::optional<int> firstBleedLevel;  // the first level with a clash; none when the charts never mix
 };
 
+// The charts each texel of one level holds: a chart id, kTexelEmpty or kTexelMixed (two or more),
+// row-major from v = 0 (index y * width + x).
+constexpr std::int32_t kTexelEmpty = -1, kTexelMixed = -2;
+struct TexelOwners {
+  int level = 0, width = 0, height = 0;
+  std::vector<std::int32_t> owner;
+  std::int32_t at(int x, int y) const { return owner[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+  // Texel (x, y) holds one chart and its bilinear footprint (3 x 3 neighbourhood) another, or it
+  // holds two: a lookup there mixes charts.
+  bool clashes(int x, int y) const;
+  // Texel (x, y) is empty but a bilinear lookup of a mapped neighbour reads it: the gutter's reach.
+  bool touchedOnly(int x, int y) const;
+};
+
 // The largest side texelStatistics rasters.
 constexpr int kMaxTexelSide = 8192;
 
@@ -57,5 +72,8 @@ constexpr int kMaxTexelSide = 8192;
 // UsageError beyond). Faces with an invalid corner are left out. Cost: the faces' texels at level
 // 0 plus 4/3 W H for the pyramid, 4 bytes a texel.
 TexelStatistics texelStatistics(const Mesh& mesh, const UvMap& uv, int width, int height);
+
+// The texels of `level` (clamped to the coarsest), as texelStatistics counts them.
+TexelOwners texelOwners(const Mesh& mesh, const UvMap& uv, int width, int height, int level);
 
 }  // namespace uvtk::analysis

@@ -56,6 +56,7 @@ DrawnFrame drawViews(const FrameOptions& frame, const MappedMesh& mapped, const 
   options.render = renderOptions;
   options.layoutFill = frame.layoutFill;
   options.layoutSize = frame.layoutSize;
+  options.bleedLevel = frame.bleedLevel;
   options.checks = frame.checks;
   options.perPixel = frame.perPixel;
 

@@ -61,6 +61,7 @@ struct FrameOptions {
   std::vector<views::View> views;              // inspection views instead of the textured picture
   views::View layoutFill = views::View::Stretch;  // the measure that fills the layout view
   int layoutSize = 512;                        // pixels across the layout view's UV square
+  std::optional<int> bleedLevel;               // the bleed view's mip level (unset: where charts first mix)
   int checks = 16;                             // the checker view's checks across the unit square
 
   bool showsMeasures() const;  // a view draws distortion measures

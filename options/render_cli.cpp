@@ -241,6 +241,8 @@ void addFrameOptions(CLI::App& app, FrameArguments& a) {
                  "Texels W,H (or N: N,N) of the texture the density view counts texel density in")
       ->capture_default_str();
   app.add_option("--layout-size", a.layoutSize, "Pixels across the layout view's UV square")->capture_default_str();
+  app.add_option("--bleed-level", a.bleedLevel,
+                 "The bleed view's mip level (0: the whole --texture-size; default: the first level where charts mix)");
   app.add_option("--checks", a.checks, "Checks across the unit square in the checker view (1 to 1024)")
       ->capture_default_str();
 }
@@ -296,6 +298,7 @@ inspect::FrameOptions FrameArguments::options() const {
   o.views = views();
   o.layoutFill = layoutFill;
   o.layoutSize = layoutSize;
+  o.bleedLevel = bleedLevel;
   o.checks = checks;
   return o;
 }

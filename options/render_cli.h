@@ -92,6 +92,7 @@ struct FrameArguments {
   std::string view;  // inspection views instead of the textured picture
   views::View layoutFill = views::View::Stretch;
   int layoutSize = 512;
+  std::optional<int> bleedLevel;  // the bleed view's mip level
   int checks = 16;  // the checker view's checks across the unit square
   std::string textureSize = "1024,1024";  // W,H or N: the texture the density view counts texels of
 

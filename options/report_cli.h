@@ -12,7 +12,7 @@ namespace uvtk::cli {
 
 struct ReportArguments {
   std::string json, html;
-  std::string views = "checker,uvgrid,stretch,linf,angle,area,seams,layout";
+  std::string views = "checker,uvgrid,stretch,linf,angle,area,seams,layout,bleed";
   std::string size = "384x384";
   ViewCameraArguments camera;
   std::string textureSize = "1024,1024";  // W,H or N

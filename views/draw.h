@@ -16,5 +16,6 @@ DrawnView drawLayout(const ViewInput& in, const ViewOptions& options);
 DrawnView drawWeights(const ViewInput& in, const ViewOptions& options);    // triplanar weights
 DrawnView drawBlendZone(const ViewInput& in, const ViewOptions& options);  // triplanar blend zone
 DrawnView drawMipLine(const ViewInput& in, const ViewOptions& options);    // the GPU's seam mip line
+DrawnView drawBleed(const ViewInput& in, const ViewOptions& options);      // the layout's texels at a mip level
 
 }  // namespace uvtk::views

@@ -11,7 +11,8 @@ namespace uvtk::views {
 namespace {
 
 constexpr View kViews[] = {View::Checker, View::Uvgrid, View::Stretch, View::Linf,    View::Angle,    View::Area,
-                           View::Seams,   View::UvError, View::Layout, View::Density, View::Weights, View::BlendZone, View::MipLine};
+                           View::Seams,   View::UvError, View::Layout, View::Density, View::Weights, View::BlendZone, View::MipLine,
+                           View::Bleed};
 
 std::vector<std::string> viewNames() {
   std::vector<std::string> names;
@@ -36,6 +37,7 @@ const char* toString(View view) {
     case View::Weights: return "weights";
     case View::BlendZone: return "blendzone";
     case View::MipLine: return "mipline";
+    case View::Bleed: return "bleed";
   }
   return "checker";
 }
@@ -82,6 +84,7 @@ DrawnView drawViewAndLegend(View view, const ViewInput& in, const ViewOptions& o
     case View::Weights: return drawWeights(in, options);
     case View::BlendZone: return drawBlendZone(in, options);
     case View::MipLine: return drawMipLine(in, options);
+    case View::Bleed: return drawBleed(in, options);
   }
   checkFailed("a known view", __FILE__, __LINE__);
 }

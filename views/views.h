@@ -21,10 +21,10 @@
 
 namespace uvtk::views {
 
-enum class View { Checker, Uvgrid, Stretch, Linf, Angle, Area, Seams, UvError, Layout, Density, Weights, BlendZone, MipLine };
+enum class View { Checker, Uvgrid, Stretch, Linf, Angle, Area, Seams, UvError, Layout, Density, Weights, BlendZone, MipLine, Bleed };
 
 // "checker", "uvgrid", "stretch", "linf", "angle", "area", "seams", "uverror", "layout", "density",
-// "weights", "blendzone", "mipline".
+// "weights", "blendzone", "mipline", "bleed".
 const char* toString(View view);
 std::optional<View> parseView(std::string_view name);
 // "stretch,seams" -> {Stretch, Seams}, in the given order. Throws UsageError naming the bad entry
@@ -52,7 +52,9 @@ struct ViewOptions {
   // (uverror measures in its texels; checker and uvgrid bind their own).
   render::RenderOptions render;
   View layoutFill = View::Stretch;  // measure that fills triangles in the layout view: Stretch, Linf, Angle, Area or Density
-  int layoutSize = 512;             // layout image is layoutSize x layoutSize (+ legend)
+  int layoutSize = 512;             // layout image is layoutSize x layoutSize (+ legend); the bleed view's too
+  // bleed: the mip level shown (0 the full texture); unset: the first level where charts mix, else 0.
+  std::optional<int> bleedLevel;
   int checks = 16;                  // checker view: checks across the unit square, 1..1024 (UsageError outside)
   // weights and blendzone: a covered pixel is in the triplanar blend zone when every weight is
   // below this, i.e. no single projection dominates it; in (0, 1] (UsageError outside).

@@ -18,7 +18,7 @@ namespace uvtk::api {
 struct ReportOptions {
   std::string json;  // --json: also write the report as JSON here ("" none)
   std::string html;  // --html: also write the self-contained page with the views here ("" none)
-  std::string views = "checker,uvgrid,stretch,linf,angle,area,seams,layout";  // --views: the page's views
+  std::string views = "checker,uvgrid,stretch,linf,angle,area,seams,layout,bleed";  // --views: the page's views
   std::string size = "384x384";  // --size: each view's pixels, WxH
   Vector3 viewDir{1, -1.5, 0.8};  // --view-dir: the direction from the mesh to the views' camera
   Vector3 up{0, 0, 1};            // --up: the views' camera's up
