@@ -1,22 +1,26 @@
 // The Python module uvtk (docs/python.md): a thin face over the public C++ libraries, uvtk/uvtk.h
-// and uvtk/point.h, and nothing else. Options arrive as keywords and become the command line's
-// words, so every option of the CLI works here, parsed and rejected with the CLI's messages.
+// and uvtk/point.h, and the process's cancellation request (core/cancel.h) for Ctrl-C. Options
+// arrive as keywords and become the command line's words, so every option of the CLI works here,
+// parsed and rejected with the CLI's messages.
 // Arrays go out as read-only numpy views of the C++ object's vectors, which the view keeps alive.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
-#include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <filesystem>
+#include <future>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
+#include <system_error>
 #include <utility>
 #include <vector>
 
+#include "core/cancel.h"
 #include "uvtk/point.h"
 #include "uvtk/uvtk.h"
 
@@ -72,6 +76,42 @@ py::array owning(std::vector<T>&& values, const Shape& shape) {
 }
 
 py::ssize_t count(std::size_t n) { return py::ssize_t(n); }
+
+// ---- arguments ----
+
+// The type of `object` as Python spells it: int, numpy.ndarray, uvtk.Mesh.
+std::string typeName(py::handle object) {
+  const py::handle type = py::type::handle_of(object);
+  const std::string module = py::str(type.attr("__module__")), name = py::str(type.attr("__qualname__"));
+  return module == "builtins" ? name : module + "." + name;
+}
+
+// "FUNCTION(): ARGUMENT: expected EXPECTED, found TYPE", in place of pybind11's "Unable to cast".
+py::type_error argumentTypeError(const char* function, const char* argument, const std::string& expected,
+                                 py::handle found) {
+  return py::type_error(std::string(function) + "(): " + argument + ": expected " + expected + ", found " +
+                        typeName(found));
+}
+
+template <class T>
+const T& argumentOf(const char* function, const char* argument, const char* expected, py::handle object) {
+  if (!py::isinstance<T>(object)) throw argumentTypeError(function, argument, expected, object);
+  return object.cast<const T&>();
+}
+
+const api::Mesh& meshOf(const char* function, py::handle object) {
+  return argumentOf<api::Mesh>(function, "mesh", "a uvtk.Mesh", object);
+}
+
+// A path as the system takes it: a str, bytes or os.PathLike, encoded as os.fsencode encodes it.
+std::string pathOf(const char* function, py::handle object) {
+  if (!py::isinstance<py::str>(object) && !py::isinstance<py::bytes>(object) && !py::hasattr(object, "__fspath__"))
+    throw argumentTypeError(function, "path", "a str, bytes or os.PathLike", object);
+  const std::string path = py::bytes(py::module_::import("os").attr("fsencode")(object));
+  if (path.find('\0') != std::string::npos)
+    throw py::value_error(std::string(function) + "(): path: holds a NUL character");
+  return path;
+}
 
 // ---- keywords -> the command line's words ----
 
@@ -190,20 +230,53 @@ api::Parameters keywordParameters(const py::kwargs& kwargs) {
 
 // The options from either an options object or keywords (not both: which would win is unclear).
 template <class Options>
-Options optionsFrom(const py::object& options, const py::kwargs& kwargs) {
+Options optionsFrom(const char* function, const char* expected, const py::object& options, const py::kwargs& kwargs) {
   if (!options.is_none() && kwargs.size() > 0)
     throw py::type_error("give the options either as an options object or as keywords, not both");
-  if (!options.is_none()) return options.cast<Options>();
+  if (!options.is_none()) return argumentOf<Options>(function, "options", expected, options);
   return Options::parse(commandLine(kwargs));
 }
 
-// ---- meshes ----
+// ---- long calls ----
 
-const api::Mesh& meshOf(py::handle object) {
-  if (!py::isinstance<api::Mesh>(object))
-    throw py::type_error("expected a uvtk.Mesh, got " + py::repr(py::type::handle_of(object)).cast<std::string>());
-  return object.cast<const api::Mesh&>();
+// How often a call waiting for the library looks for Ctrl-C.
+constexpr std::chrono::milliseconds kSignalCheckInterval{50};
+
+// Runs `work` on a thread of its own with the GIL released, and waits for it in slices, running
+// Python's signal handlers between them: on Ctrl-C (or any exception a handler raises) the library
+// is asked to stop (its loops throw uvtk::Cancelled), the thread is joined, and the handler's
+// exception is raised. What `work` throws is rethrown here, where the module's translation applies.
+// `work` must not touch Python objects.
+template <class Work>
+auto interruptible(Work&& work) -> decltype(work()) {
+  std::future<decltype(work())> done;
+  try {
+    done = std::async(std::launch::async, [&work] { return work(); });
+  } catch (const std::system_error&) {
+    // The system has no thread to give (memory, limits): the work runs here, beyond Ctrl-C's reach.
+    py::gil_scoped_release release;
+    return work();
+  }
+  for (;;) {
+    {
+      py::gil_scoped_release release;
+      if (done.wait_for(kSignalCheckInterval) == std::future_status::ready) break;
+    }
+    if (PyErr_CheckSignals() != 0) {
+      py::error_already_set interrupt;
+      {
+        py::gil_scoped_release release;
+        uvtk::requestCancel();
+        done.wait();
+        uvtk::clearCancel();
+      }
+      throw interrupt;
+    }
+  }
+  return done.get();
 }
+
+// ---- meshes ----
 
 std::string shapeText(const py::array& array) {
   std::string text = "(";
@@ -217,16 +290,42 @@ void requireShape(const char* what, const py::array& array, const Shape& shape, 
   if (!ok) throw py::value_error(std::string(what) + ": expected an array of shape " + expected + ", got " + shapeText(array));
 }
 
+// Arrays are converted by these types' constructors, which raise numpy's error (MemoryError when
+// the copy does not fit); their ensure() clears it and returns null.
 using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using Indices = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
+
+py::array asArray(const py::object& object) { return py::module_::import("numpy").attr("asarray")(object); }
+
+// A mesh holds at most this many vertices, faces and corners: its indices are int32.
+constexpr py::ssize_t kMaxMeshCount = std::numeric_limits<int>::max();
+
+// Refused before any copy is made: ValueError "WHAT: N UNIT, more than ...".
+void requireMeshCount(const char* what, py::ssize_t n, const char* unit) {
+  if (n > kMaxMeshCount)
+    throw py::value_error(std::string(what) + ": " + std::to_string(n) + " " + unit + ", more than the " +
+                          std::to_string(kMaxMeshCount) + " a mesh holds (its indices are int32)");
+}
+
+// TypeError naming `what` unless `array` holds real numbers: floating or integer (bool, complex,
+// object and text arrays are refused; forcecast would drop an imaginary part or parse text).
+void requireRealNumbers(const char* what, const py::array& array) {
+  const char kind = array.dtype().kind();
+  if (kind != 'f' && kind != 'i' && kind != 'u')
+    throw py::type_error(std::string(what) + ": expected real numbers (a floating or integer array), found dtype " +
+                         py::str(array.dtype()).cast<std::string>());
+}
 
 // Triangles of any integer dtype, as int32 (an index that does not fit is a ValueError).
 std::vector<api::Triangle> trianglesFrom(const py::object& object) {
-  const py::array any = py::module_::import("numpy").attr("asarray")(object);
+  const py::array any = asArray(object);
   const char kind = any.dtype().kind();
   if (kind != 'i' && kind != 'u')
-    throw py::type_error("triangles: expected an integer array, got dtype " + py::str(any.dtype()).cast<std::string>());
+    throw py::type_error("triangles: expected an integer array, found dtype " +
+                         py::str(any.dtype()).cast<std::string>());
   requireShape("triangles", any, {-1, 3}, "(F, 3)");
-  const auto indices = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(any);
+  requireMeshCount("triangles", any.shape(0), "faces");
+  const Indices indices(any);
   std::vector<api::Triangle> triangles(std::size_t(indices.shape(0)));
   const std::int64_t* data = indices.data();
   for (std::size_t i = 0; i < triangles.size() * 3; ++i) {
@@ -239,17 +338,24 @@ std::vector<api::Triangle> trianglesFrom(const py::object& object) {
   return triangles;
 }
 
-api::Mesh meshFrom(const Doubles& positions, const py::object& triangles, const py::object& uv, const py::object& normals) {
-  requireShape("positions", positions, {-1, 3}, "(N, 3)");
+api::Mesh meshFrom(const py::object& positionsObject, const py::object& triangles, const py::object& uv,
+                   const py::object& normals) {
+  const py::array positionsGiven = asArray(positionsObject);
+  requireRealNumbers("positions", positionsGiven);
+  requireShape("positions", positionsGiven, {-1, 3}, "(N, 3)");
+  requireMeshCount("positions", positionsGiven.shape(0), "vertices");
+  const Doubles positions(positionsGiven);
   api::Mesh mesh;
   mesh.positions.resize(std::size_t(positions.shape(0)));
   std::copy_n(positions.data(), mesh.positions.size() * 3, mesh.positions.data()->data());
   mesh.triangles = trianglesFrom(triangles);
   const py::ssize_t faces = count(mesh.triangles.size());
   if (!uv.is_none()) {
-    const auto corners = Doubles::ensure(uv);
-    if (!corners) throw py::type_error("uv: expected an array of numbers");
-    requireShape("uv", corners, {faces, 3, 2}, "(F, 3, 2)");
+    const py::array cornersGiven = asArray(uv);
+    requireRealNumbers("uv", cornersGiven);
+    requireShape("uv", cornersGiven, {faces, 3, 2}, "(F, 3, 2)");
+    requireMeshCount("uv", 3 * faces, "corners");
+    const Doubles corners(cornersGiven);
     mesh.cornerTexcoords.assign(mesh.triangles.size(), {-1, -1, -1});
     for (std::size_t c = 0; c < mesh.triangles.size() * 3; ++c) {
       const double u = corners.data()[2 * c], v = corners.data()[2 * c + 1];
@@ -259,14 +365,20 @@ api::Mesh meshFrom(const Doubles& positions, const py::object& triangles, const 
     }
   }
   if (!normals.is_none()) {
-    const auto given = Doubles::ensure(normals);
-    if (!given) throw py::type_error("normals: expected an array of numbers");
-    if (given.ndim() == 2) {  // per vertex
-      requireShape("normals", given, {count(mesh.positions.size()), 3}, "(N, 3) or (F, 3, 3)");
+    const py::array normalsGiven = asArray(normals);
+    requireRealNumbers("normals", normalsGiven);
+    const bool perVertex = normalsGiven.ndim() == 2;
+    if (perVertex) {
+      requireShape("normals", normalsGiven, {count(mesh.positions.size()), 3}, "(N, 3) or (F, 3, 3)");
+    } else {
+      requireShape("normals", normalsGiven, {faces, 3, 3}, "(N, 3) or (F, 3, 3)");
+      requireMeshCount("normals", 3 * faces, "corners");
+    }
+    const Doubles given(normalsGiven);
+    if (perVertex) {
       mesh.normals.resize(mesh.positions.size());
       mesh.cornerNormals = mesh.triangles;
-    } else {  // per corner
-      requireShape("normals", given, {faces, 3, 3}, "(N, 3) or (F, 3, 3)");
+    } else {
       mesh.normals.resize(mesh.triangles.size() * 3);
       mesh.cornerNormals.resize(mesh.triangles.size());
       for (std::size_t c = 0; c < mesh.normals.size(); ++c) mesh.cornerNormals[c / 3][c % 3] = int(c);
@@ -333,11 +445,12 @@ std::unique_ptr<PyMapping> wrap(api::Mapping&& mapping, py::object input) {
 
 // The mapping, after checking that `mesh` is what it maps: the mesh it was made from, its own
 // mesh, or a mesh of as many faces.
-const api::Mapping& mappingFor(const char* what, py::handle mesh, const PyMapping& m) {
+const api::Mapping& mappingFor(const char* function, py::handle mesh, py::handle mapping) {
+  const PyMapping& m = argumentOf<PyMapping>(function, "m", "a uvtk.Mapping", mapping);
   if (mesh.is(m.input) || mesh.is_none()) return m.mapping;
-  const api::Mesh& given = meshOf(mesh);
+  const api::Mesh& given = meshOf(function, mesh);
   if (&given != &m.mapping.mesh && given.triangles.size() != m.mapping.mesh.triangles.size())
-    throw py::value_error(std::string(what) + ": the mesh has " + std::to_string(given.triangles.size()) +
+    throw py::value_error(std::string(function) + ": the mesh has " + std::to_string(given.triangles.size()) +
                           " faces and the mapping's " + std::to_string(m.mapping.mesh.triangles.size()) +
                           ": pass the mesh the mapping was made from");
   return m.mapping;
@@ -353,21 +466,30 @@ api::WriteOptions writeOptions(const std::string& uvDigits, bool writeW, bool as
 
 // ---- single points ----
 
-EvalResult evaluate(const Doubles& points, const py::object& normals, const py::object& mesh, const py::kwargs& kwargs) {
-  if (points.ndim() < 1 || points.shape(points.ndim() - 1) != 3)
-    throw py::value_error("points: expected an array of shape (..., 3), got " + shapeText(points));
+// eval's points between two looks for a cancellation: a few milliseconds of work.
+constexpr std::size_t kPointsBetweenCancelChecks = 1 << 16;
+
+EvalResult evaluate(const py::object& pointsObject, const py::object& normals, const py::object& mesh,
+                    const py::kwargs& kwargs) {
+  const py::array pointsGiven = asArray(pointsObject);
+  requireRealNumbers("points", pointsGiven);
+  if (pointsGiven.ndim() < 1 || pointsGiven.shape(pointsGiven.ndim() - 1) != 3)
+    throw py::value_error("points: expected an array of shape (..., 3), got " + shapeText(pointsGiven));
+  const Doubles points(pointsGiven);
   Shape shape(points.shape(), points.shape() + points.ndim() - 1);
   const std::size_t n = std::size_t(points.size() / 3);
-  Doubles normalArray;
+  // One normal for every point (step 0) or one per point (step 3); without any, (0, 0, 0).
+  std::optional<Doubles> normalArray;
   if (!normals.is_none()) {
-    normalArray = Doubles::ensure(normals);
-    if (!normalArray) throw py::type_error("normals: expected an array of numbers");
-    if (normalArray.size() != 3 && normalArray.size() != points.size())
+    const py::array normalsGiven = asArray(normals);
+    requireRealNumbers("normals", normalsGiven);
+    if (normalsGiven.size() != 3 && normalsGiven.size() != points.size())
       throw py::value_error("normals: expected one normal (3,) or one per point " + shapeText(points) + ", got " +
-                            shapeText(normalArray));
+                            shapeText(normalsGiven));
+    normalArray.emplace(normalsGiven);
   }
   std::vector<uvtk::point::Vector3> positions;
-  if (!mesh.is_none()) positions = meshOf(mesh).positions;
+  if (!mesh.is_none()) positions = meshOf("eval", mesh).positions;
   const std::string options = commandLine(kwargs);
 
   py::array_t<double> u(shape), v(shape), w(shape), q(shape);
@@ -377,18 +499,16 @@ EvalResult evaluate(const Doubles& points, const py::object& normals, const py::
   weightShape.push_back(3);
   py::array_t<double> triplanarUv(uvShape), triplanarWeights(weightShape);
   std::vector<const char*> reasons(n);
-  std::string mappingText;
-  {
-    py::gil_scoped_release release;
+  const double* p = points.data();
+  const double* normal = normalArray ? normalArray->data() : nullptr;
+  const std::size_t normalStep = normalArray && normalArray->size() != 3 ? 3 : 0;
+  double *uOut = u.mutable_data(), *vOut = v.mutable_data(), *wOut = w.mutable_data(), *qOut = q.mutable_data();
+  std::uint8_t* statusOut = status.mutable_data();
+  double *uvOut = triplanarUv.mutable_data(), *weightOut = triplanarWeights.mutable_data();
+  const std::string mappingText = interruptible([&] {
     const uvtk::point::Mapping mapping(options, positions);
-    mappingText = mapping.options();
-    const double* p = points.data();
-    const double* normal = normalArray ? normalArray.data() : nullptr;
-    const std::size_t normalStep = normalArray && normalArray.size() != 3 ? 3 : 0;
-    double *uOut = u.mutable_data(), *vOut = v.mutable_data(), *wOut = w.mutable_data(), *qOut = q.mutable_data();
-    std::uint8_t* statusOut = status.mutable_data();
-    double *uvOut = triplanarUv.mutable_data(), *weightOut = triplanarWeights.mutable_data();
     for (std::size_t i = 0; i < n; ++i) {
+      if (i % kPointsBetweenCancelChecks == 0) uvtk::throwIfCancelled();
       const uvtk::point::Vector3 at{p[3 * i], p[3 * i + 1], p[3 * i + 2]};
       const uvtk::point::Vector3 nAt = normal ? uvtk::point::Vector3{normal[normalStep * i], normal[normalStep * i + 1],
                                                                      normal[normalStep * i + 2]}
@@ -403,7 +523,8 @@ EvalResult evaluate(const Doubles& points, const py::object& normals, const py::
         weightOut[3 * i + axis] = r.triplanarWeights[axis];
       }
     }
-  }
+    return mapping.options();
+  });
   const bool triplanar = kwargs.contains("projector") && py::str(kwargs["projector"]).cast<std::string>() == "triplanar";
   EvalResult result{u, v, w, q, status, py::list(), mappingText, triplanar ? py::object(triplanarUv) : py::none(),
                     triplanar ? py::object(triplanarWeights) : py::none()};
@@ -427,6 +548,9 @@ line, bit for bit. Options are keywords named as the command line's options (cap
       if (error) std::rethrow_exception(error);
     } catch (const api::ParameterTypeError& e) {
       PyErr_SetString(PyExc_TypeError, e.what());
+    } catch (const uvtk::Cancelled&) {
+      // Ctrl-C in another thread's call: the request to stop is the whole process's.
+      PyErr_SetNone(PyExc_KeyboardInterrupt);
     }
   });
   py::register_exception<api::OutputError>(m, "OutputError", PyExc_OSError)
@@ -490,20 +614,18 @@ first problem. The arrays are copied in; the properties are read-only views.)")
 
   m.def(
       "read_mesh",
-      [](const std::filesystem::path& path, bool withWarnings) -> py::object {
+      [](py::object path, bool withWarnings) -> py::object {
+        const std::string file = pathOf("read_mesh", path);
         api::MeshWarnings warnings;
-        api::Mesh mesh;
-        {
-          py::gil_scoped_release release;
-          mesh = api::readMesh(path.string(), &warnings);
-        }
+        api::Mesh mesh = interruptible([&] { return api::readMesh(file, &warnings); });
         py::object result = py::cast(std::move(mesh));
         return withWarnings ? py::make_tuple(result, warningsDict(warnings)) : result;
       },
       py::arg("path"), py::arg("with_warnings") = false,
       R"(Reads an OBJ or OFF file as `uvtk map` does: strictly, polygons ear-clipped into triangles.
 Raises uvtk.InputError "PATH:LINE: error: ...". with_warnings=True returns (mesh, warnings dict).)");
-  m.def("check_mesh", [](const api::Mesh& mesh) { return warningsDict(api::checkMesh(mesh)); }, py::arg("mesh"),
+  m.def("check_mesh", [](py::object mesh) { return warningsDict(api::checkMesh(meshOf("check_mesh", mesh))); },
+        py::arg("mesh"),
         "What a reader would accept with a warning (degenerate faces, unreferenced vertices, ...), as a dict.");
 
   // ---- Options objects: the structs' fields, snake_case ----
@@ -653,14 +775,11 @@ along the seam (more vertices and faces than the input).)")
         if (!options.is_none() && kwargs.size() > 0)
           throw py::type_error("give the options either as an options object or as keywords, not both");
         const api::Parameters parameters =
-            options.is_none() ? keywordParameters(kwargs) : options.cast<api::MapOptions>().parameters();
-        const api::Mesh& input = meshOf(mesh);
-        api::Mapping mapping;
-        {
-          py::gil_scoped_release release;
-          mapping = api::map(input, parameters);
-        }
-        return wrap(std::move(mapping), mesh);
+            options.is_none()
+                ? keywordParameters(kwargs)
+                : argumentOf<api::MapOptions>("map", "options", "a uvtk.MapOptions", options).parameters();
+        const api::Mesh& input = meshOf("map", mesh);
+        return wrap(interruptible([&] { return api::map(input, parameters); }), mesh);
       },
       py::arg("mesh"), py::arg("options") = py::none(),
       R"(Maps `mesh` by a projector, as `uvtk map` does (the same numbers, bit for bit).
@@ -674,14 +793,10 @@ wrong value or an unknown keyword ValueError, naming the keyword.)");
   m.def(
       "texgen",
       [](py::object mesh, py::object options, py::kwargs kwargs) {
-        const api::TexgenOptions resolved = optionsFrom<api::TexgenOptions>(options, kwargs);
-        const api::Mesh& input = meshOf(mesh);
-        api::Mapping mapping;
-        {
-          py::gil_scoped_release release;
-          mapping = api::texgen(input, resolved);
-        }
-        return wrap(std::move(mapping), mesh);
+        const api::TexgenOptions resolved =
+            optionsFrom<api::TexgenOptions>("texgen", "a uvtk.TexgenOptions", options, kwargs);
+        const api::Mesh& input = meshOf("texgen", mesh);
+        return wrap(interruptible([&] { return api::texgen(input, resolved); }), mesh);
       },
       py::arg("mesh"), py::arg("options") = py::none(),
       R"(OpenGL texgen's (s, t, r, q) on `mesh`, as `uvtk texgen` computes them.
@@ -691,31 +806,24 @@ mode="sphere_map", eye=(0, 0, 5), no_normalize=True, ... Returns a uvtk.Mapping 
   m.def(
       "file_uvs",
       [](py::object mesh) {
-        const api::Mesh& input = meshOf(mesh);
-        api::Mapping mapping;
-        {
-          py::gil_scoped_release release;
-          mapping = api::fileUvs(input);
-        }
-        return wrap(std::move(mapping), mesh);
+        const api::Mesh& input = meshOf("file_uvs", mesh);
+        return wrap(interruptible([&] { return api::fileUvs(input); }), mesh);
       },
       py::arg("mesh"), "The mesh's own texture coordinates, judged. ValueError when it has none.");
 
   m.def(
       "write_mesh",
-      [](const std::filesystem::path& path, py::object mesh, py::object mapping, const std::string& uvDigits, bool writeW,
-         bool ascii) {
+      [](py::object path, py::object mesh, py::object mapping, const std::string& uvDigits, bool writeW, bool ascii) {
+        const std::string file = pathOf("write_mesh", path);
         if (mapping.is_none() && py::isinstance<PyMapping>(mesh)) std::swap(mesh, mapping);
         if (mapping.is_none()) {
-          const api::Mesh& own = meshOf(mesh);
-          py::gil_scoped_release release;
-          api::writeMesh(path.string(), own);
+          const api::Mesh& own = meshOf("write_mesh", mesh);
+          interruptible([&] { api::writeMesh(file, own); });
           return;
         }
-        const api::Mapping& mapped = mappingFor("write_mesh", mesh, mapping.cast<const PyMapping&>());
+        const api::Mapping& mapped = mappingFor("write_mesh", mesh, mapping);
         const api::WriteOptions options = writeOptions(uvDigits, writeW, ascii);
-        py::gil_scoped_release release;
-        api::writeMesh(path.string(), mapped, options);
+        interruptible([&] { api::writeMesh(file, mapped, options); });
       },
       py::arg("path"), py::arg("mesh"), py::arg("m") = py::none(), py::arg("uv_digits") = "double",
       py::arg("write_w") = false, py::arg("ascii") = false,
@@ -730,14 +838,9 @@ write_mesh(path, mesh): the mesh with its own texture coordinates and normals.)"
   m.def(
       "report",
       [](py::object mesh, py::object mapping, py::kwargs kwargs) {
-        const api::Mapping& mapped = mappingFor("report", mesh, mapping.cast<const PyMapping&>());
+        const api::Mapping& mapped = mappingFor("report", mesh, mapping);
         const api::ReportOptions options = api::ReportOptions::parse(commandLine(kwargs));
-        std::string json;
-        {
-          py::gil_scoped_release release;
-          json = api::report(mapped, options);
-        }
-        return jsonLoads(json);
+        return jsonLoads(interruptible([&] { return api::report(mapped, options); }));
       },
       py::arg("mesh"), py::arg("m"),
       R"(The report of mapping `m` as a dict: the document `uvtk report --json` writes, verdict first.
@@ -749,15 +852,14 @@ views=, size=(w, h), texture_size=, threads=.)");
       [](py::object mesh, py::object mapping, const std::string& dtype, py::kwargs kwargs) {
         if (dtype != "uint8" && dtype != "float32")
           throw py::value_error("render: dtype is '" + dtype + "', expected uint8 or float32");
-        const api::Mapping& mapped = mappingFor("render", mesh, mapping.cast<const PyMapping&>());
+        const api::Mapping& mapped = mappingFor("render", mesh, mapping);
         const api::RenderOptions options = api::RenderOptions::parse(commandLine(kwargs));
         api::Image image;
         std::vector<std::uint8_t> bytes;
-        {
-          py::gil_scoped_release release;
+        interruptible([&] {
           image = api::render(mapped, options);
           if (dtype == "uint8") bytes = image.bytes();
-        }
+        });
         const Shape shape{image.height, image.width, image.channels};
         return dtype == "uint8" ? owning(std::move(bytes), shape) : owning(std::move(image.pixels), shape);
       },
@@ -771,13 +873,9 @@ the PNG's 8-bit values, dtype="float32" the values in [0, 1].)");
   m.def(
       "compare",
       [](py::object mesh, py::kwargs kwargs) {
-        const api::Mesh& input = meshOf(mesh);
+        const api::Mesh& input = meshOf("compare", mesh);
         const api::CompareOptions options = api::CompareOptions::parse(commandLine(kwargs));
-        api::Comparison comparison;
-        {
-          py::gil_scoped_release release;
-          comparison = api::compare(input, options);
-        }
+        const api::Comparison comparison = interruptible([&] { return api::compare(input, options); });
         py::dict result;
         result["json"] = jsonLoads(comparison.json);
         result["table"] = comparison.table;
