@@ -10,6 +10,20 @@
 
 namespace uvtk {
 
+// Whether this build runs under AddressSanitizer, which reserves terabytes of address space: a
+// child under `ulimit -v` cannot start there.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitized = true;
+#else
+constexpr bool kAddressSanitized = false;
+#endif
+#else
+constexpr bool kAddressSanitized = false;
+#endif
+
 struct CliRun {
   int status;       // the exit status, or -1 when the program did not exit normally
   std::string err;  // what it printed on stderr

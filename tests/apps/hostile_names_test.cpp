@@ -116,14 +116,7 @@ TEST_F(HostileNames, ABufferFileLargerThanItsByteLengthIsRefusedUnread) {
 }
 
 TEST_F(HostileNames, PrimitivesSharingOneAccessorAreCountedExpandedAgainstTheMemoryAvailable) {
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-  GTEST_SKIP() << "the sanitizers reserve terabytes of address space, which ulimit -v forbids";
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "the sanitizers reserve terabytes of address space, which ulimit -v forbids";
-#endif
+  if (kAddressSanitized) GTEST_SKIP() << "the sanitizers reserve terabytes of address space, which ulimit -v forbids";
   // A 40 KB GLB: 3300 positions read by 3000 primitives, 9.9 million vertices once expanded (1.2 GiB
   // to map), under a 800 MB address space.
   std::string bin;
@@ -159,14 +152,7 @@ TEST_F(HostileNames, PrimitivesSharingOneAccessorAreCountedExpandedAgainstTheMem
 }
 
 TEST_F(HostileNames, ATextureThatDecodesToMoreThanTheMemoryAvailableIsRefusedFromItsHeader) {
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-  GTEST_SKIP() << "the sanitizers reserve terabytes of address space, which ulimit -v forbids";
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "the sanitizers reserve terabytes of address space, which ulimit -v forbids";
-#endif
+  if (kAddressSanitized) GTEST_SKIP() << "the sanitizers reserve terabytes of address space, which ulimit -v forbids";
   // 11000 x 11000 black RGB in a 350 KB PNG: within the 2^27-pixel limit, 1.4 GiB as float.
   const std::uint32_t side = 11000;
   const std::string row = std::string(1 + 3 * side, '\0');  // filter byte 0, then the pixels

@@ -154,14 +154,7 @@ TEST_F(HostilePaths, AReportOnAFullDiskLeavesNeitherOfItsOutputs) {
 }
 
 TEST_F(HostilePaths, AMeshTooLargeToMapIsRefusedBeforeItIsRead) {
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-  GTEST_SKIP() << "the sanitizers reserve terabytes of address space, which ulimit -v forbids";
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "the sanitizers reserve terabytes of address space, which ulimit -v forbids";
-#endif
+  if (kAddressSanitized) GTEST_SKIP() << "the sanitizers reserve terabytes of address space, which ulimit -v forbids";
   // A sparse 4 GiB file: a map of it would take about 12 GiB, more than 3 GB of address space.
   const std::string big = path("big.obj");
   { std::ofstream(big, std::ios::binary) << "v 0 0 0\n"; }

@@ -271,13 +271,7 @@ TEST_F(SceneCli, DemoSceneWritesAGalleryThatRefersOnlyToFilesThatExist) {
 // Memory before work: the render stage refuses a frame the process cannot hold, naming the
 // estimate, before allocating it (a 16384 x 16384 frame took 5.4 GB and 70 s with no word before).
 TEST_F(SceneCli, ARenderTheProcessCannotHoldIsRefusedBeforeItsBuffersAreAllocated) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "the sanitizers reserve terabytes of address space, which ulimit -v forbids";
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-  GTEST_SKIP() << "the sanitizers reserve terabytes of address space, which ulimit -v forbids";
-#endif
-#endif
+  if (kAddressSanitized) GTEST_SKIP() << "the sanitizers reserve terabytes of address space, which ulimit -v forbids";
   const json scene = {{"meshes", {sphereMesh({{{"kind", "projector"}, {"name", "s"}, {"projector", "sphere"}}})}},
                       {"outputs",
                        {{{"kind", "render"}, {"mapping", "s"}, {"path", "big.png"}, {"size", "16384x16384"}}}}};
