@@ -1020,10 +1020,11 @@ struct ReadBuffer {
   // Makes room for `count` more bytes after the first `size`.
   char* extend(std::size_t count) {
     if (size + count > capacity) {
-      capacity = std::max(size + count, 2 * capacity);
-      std::unique_ptr<char[]> larger(new char[capacity]);  // not value-initialised: read into
+      const std::size_t grown = std::max(size + count, 2 * capacity);
+      std::unique_ptr<char[]> larger(new char[grown]);  // not value-initialised: read into
       if (size > 0) std::memcpy(larger.get(), data.get(), size);
       data = std::move(larger);
+      capacity = grown;  // only once it is there: after a bad_alloc a pooled buffer keeps its true room
     }
     return data.get() + size;
   }
