@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/disjoint_sets.h"
+#include "core/cancel.h"
 #include "core/error.h"
 
 namespace uvtk::analysis {
@@ -155,11 +156,9 @@ void checkTextureSize(int width, int height) {
     throw UsageError("--texture-size: the texels of a layout are counted for 1 to 8192 texels a side");
 }
 
-}  // namespace
-
-std::vector<int> uvCharts(const Mesh& mesh, const UvMap& uv) {
+// uvCharts and measureGutters on the mesh's sorted edges, made once by texelStatistics for both.
+std::vector<int> chartsAlong(const Mesh& mesh, const UvMap& uv, const std::vector<EdgeUse>& uses) {
   DisjointSets sets(mesh.faceCount());
-  const std::vector<EdgeUse> uses = edgeUses(mesh);
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
     while (j < uses.size() && uses[j].low == uses[i].low && uses[j].high == uses[i].high) ++j;
@@ -184,7 +183,8 @@ std::vector<int> uvCharts(const Mesh& mesh, const UvMap& uv) {
   return chart;
 }
 
-Gutters measureGutters(const Mesh& mesh, const UvMap& uv, const std::vector<int>& chartOfFace, int width, int height) {
+Gutters guttersAlong(const Mesh& mesh, const UvMap& uv, const std::vector<int>& chartOfFace, int width, int height,
+                     const std::vector<EdgeUse>& uses) {
   Gutters g{kInfinity, kInfinity};
   const Vec2 texels = Vec2(width, height);
   // Corners to their tile's border.
@@ -203,7 +203,6 @@ Gutters measureGutters(const Mesh& mesh, const UvMap& uv, const std::vector<int>
     int chart;
   };
   std::vector<Boundary> boundary;
-  const std::vector<EdgeUse> uses = edgeUses(mesh);
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
     while (j < uses.size() && uses[j].low == uses[i].low && uses[j].high == uses[i].high) ++j;
@@ -274,6 +273,14 @@ Gutters measureGutters(const Mesh& mesh, const UvMap& uv, const std::vector<int>
   return g;
 }
 
+}  // namespace
+
+std::vector<int> uvCharts(const Mesh& mesh, const UvMap& uv) { return chartsAlong(mesh, uv, edgeUses(mesh)); }
+
+Gutters measureGutters(const Mesh& mesh, const UvMap& uv, const std::vector<int>& chartOfFace, int width, int height) {
+  return guttersAlong(mesh, uv, chartOfFace, width, height, edgeUses(mesh));
+}
+
 bool TexelOwners::clashes(int x, int y) const {
   const std::int32_t own = at(x, y);
   if (own == kMixed) return true;
@@ -297,9 +304,14 @@ bool TexelOwners::touchedOnly(int x, int y) const {
 TexelStatistics texelStatistics(const Mesh& mesh, const UvMap& uv, int width, int height) {
   checkTextureSize(width, height);
   TexelStatistics out;
-  const std::vector<int> chart = uvCharts(mesh, uv);
+  // Each phase is long on a large mesh and single-threaded: a cancellation is seen between them.
+  const std::vector<EdgeUse> uses = edgeUses(mesh);
+  throwIfCancelled();
+  const std::vector<int> chart = chartsAlong(mesh, uv, uses);
   out.charts = chart.empty() ? 0 : std::size_t(*std::max_element(chart.begin(), chart.end()) + 1);
-  out.gutters = measureGutters(mesh, uv, chart, width, height);
+  throwIfCancelled();
+  out.gutters = guttersAlong(mesh, uv, chart, width, height, uses);
+  throwIfCancelled();
 
   std::size_t conservative = 0;
   TexelOwners texels = levelZero(mesh, uv, chart, width, height, &conservative);
