@@ -171,10 +171,17 @@ std::string markdownTable(const std::vector<RankedMapping>& ranked, RankBy by) {
     if (c.record.contains("fallback_charts"))  // LSCM or ARAP failed on some charts: say so where the row is read
       why += std::string(why.empty() ? "" : "; ") + std::to_string(c.record["fallback_charts"].get<std::size_t>()) +
              " charts kept their plane projection (see stderr)";
-    std::snprintf(row, sizeof row, "| %zu | %s | %s | %.5g | %.5g | %.5g | %.5g | %.3g%% | %.3g%% | ", i + 1,
-                  c.name.c_str(), analysis::toString(c.judgement.verdict), c.summary().l2Stretch,
-                  c.summary().linfStretch, c.summary().angleDistortion.mean, c.summary().seams.length(),
-                  100.0 * c.judgement.values[std::size_t(analysis::Rule::FlippedArea)],
+    // A mapping without an ok face has no stretch or angle to show: "—", as its JSON's null.
+    const bool measured = c.summary().statusCounts[analysis::FaceStatus::Ok] > 0;
+    const auto shown = [&](double value) {
+      char text[32] = "—";
+      if (measured) std::snprintf(text, sizeof text, "%.5g", value);
+      return std::string(text);
+    };
+    std::snprintf(row, sizeof row, "| %zu | %s | %s | %s | %s | %s | %.5g | %.3g%% | %.3g%% | ", i + 1, c.name.c_str(),
+                  analysis::toString(c.judgement.verdict), shown(c.summary().l2Stretch).c_str(),
+                  shown(c.summary().linfStretch).c_str(), shown(c.summary().angleDistortion.mean).c_str(),
+                  c.summary().seams.length(), 100.0 * c.judgement.values[std::size_t(analysis::Rule::FlippedArea)],
                   100.0 * c.summary().overlap.fraction());
     table += row + (why.empty() ? std::string("-") : why) + " |\n";
   }

@@ -19,6 +19,7 @@ namespace {
 
 // A JSON leaf as table text.
 std::string cell(const nlohmann::json& value) {
+  if (value.is_null()) return "—";  // not measured
   if (value.is_number_float()) return number(value.get<double>());
   if (value.is_string()) return xmlEscaped(value.get<std::string>());
   if (value.is_array() && value.size() > 8) return std::to_string(value.size()) + " entries (see the JSON report)";
@@ -86,13 +87,12 @@ std::string keyMeasures(const nlohmann::json& report) {
   };
   const auto three = [&](const char* key) {
     const nlohmann::json& s = report.at(key);
-    return number(s.at("mean").get<double>()) + " / " + number(s.at("p99").get<double>()) + " / " +
-           number(s.at("max").get<double>());
+    return cell(s.at("mean")) + " / " + cell(s.at("p99")) + " / " + cell(s.at("max"));
   };
   const nlohmann::json& counts = report.at("status_counts");
   const nlohmann::json& seams = report.at("seams");
   const std::vector<Row> rows{
-      {"L2 stretch, whole mesh", number(report.at("stretch_l2").get<double>()),
+      {"L2 stretch, whole mesh", cell(report.at("stretch_l2")),
        "Sander's root-mean-square stretch, normalised: 1 is isometric (no texel stretched)"},
       {"L2 stretch per face: mean / p99 / max", three("stretch_l2_faces"), "the same per face, area-weighted over ok faces"},
       {"L∞ stretch per face: mean / p99 / max", three("stretch_linf_faces"), "the largest stretch in any direction"},

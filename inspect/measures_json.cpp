@@ -8,13 +8,15 @@ nlohmann::json statisticsJson(const analysis::Statistics& s) {
   const analysis::Histogram& h = s.histogram;
   nlohmann::json edges = nlohmann::json::array();
   for (int i = 0; i <= int(h.weightFraction.size()); ++i) edges.push_back(h.edge(i));
-  return {{"mean", s.mean},
-          {"p10", s.p10},
-          {"p50", s.p50},
-          {"p90", s.p90},
-          {"p99", s.p99},
-          {"min", s.min},
-          {"max", s.max},
+  // Nothing measured (no ok face carries weight): no value rather than a 0 that reads as one.
+  const auto measured = [&](double value) { return s.totalWeight > 0.0 ? nlohmann::json(value) : nlohmann::json(nullptr); };
+  return {{"mean", measured(s.mean)},
+          {"p10", measured(s.p10)},
+          {"p50", measured(s.p50)},
+          {"p90", measured(s.p90)},
+          {"p99", measured(s.p99)},
+          {"min", measured(s.min)},
+          {"max", measured(s.max)},
           {"histogram",
            {{"spacing", h.spacing == analysis::BinSpacing::Log2 ? "log2" : "linear"},
             {"edges", edges},
@@ -69,6 +71,7 @@ nlohmann::json judgementJson(const MappedMesh& mapped, const analysis::Judgement
   for (int k = 0; k < analysis::kFaceStatusCount; ++k)
     counts[analysis::toString(FaceStatus(k))] = s.statusCounts.faces[std::size_t(k)];
   nlohmann::json values, warn, fail, corners;
+  const std::size_t okFaces = j.statusCount(FaceStatus::Ok);  // none: the stretches are not measured
   for (int k = 0; k < analysis::kRuleCount; ++k) {
     const auto rule = analysis::Rule(k);
     values[analysis::toString(rule)] = j.values[std::size_t(k)];
@@ -87,8 +90,8 @@ nlohmann::json judgementJson(const MappedMesh& mapped, const analysis::Judgement
           {"thresholds", {{"warn", warn}, {"fail", fail}}},
           {"vertices", mapped.mesh.vertexCount()},
           {"faces", mapped.mesh.faceCount()},
-          {"stretch_l2", s.l2Stretch},
-          {"stretch_linf", s.linfStretch},
+          {"stretch_l2", okFaces > 0 ? nlohmann::json(s.l2Stretch) : nlohmann::json(nullptr)},
+          {"stretch_linf", okFaces > 0 ? nlohmann::json(s.linfStretch) : nlohmann::json(nullptr)},
           {"angle", statisticsJson(s.angleDistortion)},
           {"area", statisticsJson(s.areaDistortion)},
           {"stretch_l2_faces", statisticsJson(s.l2Stretches)},

@@ -72,6 +72,23 @@ TEST_F(MapCli, WritesTheSummaryAsJson) {
   EXPECT_EQ(j["reasons"][0]["faces"], 32);
 }
 
+// Where nothing can be measured (no face has an area), no number is shown: null in the JSON,
+// "—" in compare's table (they were 0, which reads as a perfect stretch).
+TEST_F(MapCli, AValueNothingMeasuresIsNullNotZero) {
+  writeText("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 3 2\n");
+  ASSERT_EQ(uvtk("map " + path("flat.obj") + " -o " + path("out.obj") + " --json " + path("s.json") + " -q").status, 0);
+  const nlohmann::json j = nlohmann::json::parse(readText(path("s.json")))["judgement"];
+  EXPECT_TRUE(j["stretch_l2"].is_null());
+  EXPECT_TRUE(j["stretch_linf"].is_null());
+  for (const char* key : {"angle", "area", "stretch_l2_faces", "texel_density"})
+    for (const char* value : {"mean", "p50", "max"}) EXPECT_TRUE(j[key][value].is_null()) << key << " " << value;
+  EXPECT_TRUE(j["rule_values"]["layout_texels"].is_null());
+  const CliRun compare = shell(std::string(UVTK_BINARY) + " compare " + path("flat.obj") + " --no-baselines > " +
+                               path("table.md"));
+  ASSERT_EQ(compare.status, 0) << compare.err;
+  EXPECT_NE(readText(path("table.md")).find("| fail | — | — | — | 0 |"), std::string::npos) << readText(path("table.md"));
+}
+
 // A mesh large enough for several reader chunks (4 MB) and judgement chunks (65,536 faces): one
 // thread and two write the same bytes and judge alike; the stages are timed in the JSON.
 TEST_F(MapCli, ThreadsChangeNothingButTheTime) {
