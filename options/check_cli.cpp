@@ -62,7 +62,7 @@ void addImageCheckOptions(CLI::App& app, CheckArguments& a) {
   app.add_option("--weight-bits", a.precision.weightBits, "--image: each filter weight may be off by 2^-N")
       ->capture_default_str();
   app.add_option("--lod-bits", a.precision.lodBits,
-                 "--image: lambda may be off by 2^-N beyond its neighbours' (default 8, 6 for projective coordinates)");
+                 "--image: lambda may be off by 2^-N beyond its neighbours' (default 6)");
   app.add_option("--color-bits", a.precision.colorBits,
                  "--image: each colour channel may be off by 2^-N (default 7, 6 for the *_mipmap_linear filters)");
   // `uvtk render`'s camera, texture and frame options that check has not under the same name

@@ -21,7 +21,8 @@ struct ImagePrecision {
   int coordBits = 20;
   // Each filter weight (LINEAR's alpha and beta, the mipmap blend's frac(lambda)) by 2^-weightBits.
   int weightBits = 16;
-  // Lambda by 2^-lodBits beyond its neighbours' range; unset: 8, or 6 for a projective mapping.
+  // Lambda by 2^-lodBits beyond its neighbours' range; unset: 6 (dEQP's GLES 3 filtering tests:
+  // llvmpipe's approximate log2 at a grazing angle went 2^-7 beyond 8 bits).
   std::optional<int> lodBits;
   // Each colour channel by 2^-colorBits; unset: the 8-bit format's bits less 1 (7), less 2 (6)
   // for the *_MIPMAP_LINEAR filters.

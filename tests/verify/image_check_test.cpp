@@ -115,14 +115,14 @@ TEST(ImageCheck, TrilinearIsLinearInTheLevelWeightWithinTheLodTolerance) {
   const render::Texture texture = greyTexture();
   const auto o = optionsFor(texture, Filter::LinearMipmapLinear);
   // (0.25, 0.25) is texel (0, 0)'s centre: level 0 gives 0, level 1 (1 x 1) 0.55. lambda = 0.5:
-  // f = 0.5 -+ (2^-8 lod + 2^-16 weight), 0.275 -+ 0.55 (2^-8 + 2^-16) = -+ 0.0021568, and the
-  // colour threshold 8 - 2 bits: 2^-6. Bound 0.275 + 0.0177818 (the level-0 taps add < 1e-5).
+  // f = 0.5 -+ (2^-6 lod + 2^-16 weight), 0.275 -+ 0.55 (2^-6 + 2^-16) = -+ 0.0086021, and the
+  // colour threshold 8 - 2 bits: 2^-6. Bound 0.275 + 0.0242271 (the level-0 taps add < 1e-5).
   EXPECT_EQ(*checkOne(o, 0.25, 0.25, 0.5, 0.275).result.precision.colorBits, 6);
   EXPECT_TRUE(checkOne(o, 0.25, 0.25, 0.5, 0.275).pass);
-  EXPECT_TRUE(checkOne(o, 0.25, 0.25, 0.5, 0.275 + 0.0177).pass);
-  EXPECT_FALSE(checkOne(o, 0.25, 0.25, 0.5, 0.275 + 0.0179).pass);
-  EXPECT_TRUE(checkOne(o, 0.25, 0.25, 0.5, 0.275 - 0.0177).pass);
-  EXPECT_FALSE(checkOne(o, 0.25, 0.25, 0.5, 0.275 - 0.0179).pass);
+  EXPECT_TRUE(checkOne(o, 0.25, 0.25, 0.5, 0.275 + 0.0242).pass);
+  EXPECT_FALSE(checkOne(o, 0.25, 0.25, 0.5, 0.275 + 0.0243).pass);
+  EXPECT_TRUE(checkOne(o, 0.25, 0.25, 0.5, 0.275 - 0.0242).pass);
+  EXPECT_FALSE(checkOne(o, 0.25, 0.25, 0.5, 0.275 - 0.0243).pass);
   // lambda + 1 reads level 1 alone: 0.55, invalid at lambda 0.5.
   EXPECT_TRUE(checkOne(o, 0.25, 0.25, 1.5, 0.55).pass);
   EXPECT_FALSE(checkOne(o, 0.25, 0.25, 0.5, 0.55).pass);
@@ -227,7 +227,7 @@ TEST(ImageCheck, PixelsAtAnEdgeMayShowTheirFourNeighboursSurfaces) {
 TEST(ImageCheck, DefaultsFollowTheFilterAndTheMappingAndBadBitsAreUsageErrors) {
   const auto nearest = render::samplerFor(Filter::Nearest, Wrap::Repeat);
   const auto trilinear = render::samplerFor(Filter::NearestMipmapLinear, Wrap::Repeat);
-  EXPECT_EQ(*resolvePrecision({}, nearest, false).lodBits, 8);
+  EXPECT_EQ(*resolvePrecision({}, nearest, false).lodBits, 6);
   EXPECT_EQ(*resolvePrecision({}, nearest, true).lodBits, 6);
   EXPECT_EQ(*resolvePrecision({}, nearest, false).colorBits, 7);
   EXPECT_EQ(*resolvePrecision({}, trilinear, false).colorBits, 6);
