@@ -109,8 +109,11 @@ TEST_F(HostileNames, ABufferFileLargerThanItsByteLengthIsRefusedUnread) {
   writeText("big.gltf", R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"big.bin"}]})");
   { std::ofstream(path("big.bin"), std::ios::binary) << "x"; }
   fs::resize_file(path("big.bin"), std::uintmax_t(2) << 30);
-  const CliRun run = shell(leakCheckOff() + "ulimit -v 1000000; " + std::string(UVTK_BINARY) + " map " + path("big.gltf") +
-                           " -o " + path("out.obj") + " --quiet");
+  // Under 1 GB of address space, so that reading the file first would fail (not under the
+  // sanitizers, which reserve terabytes: there the message alone is checked).
+  const std::string limit = kAddressSanitized ? "" : "ulimit -v 1000000; ";
+  const CliRun run = shell(leakCheckOff() + limit + std::string(UVTK_BINARY) + " map " + path("big.gltf") + " -o " +
+                           path("out.obj") + " --quiet");
   EXPECT_EQ(run.status, 3) << run.err;
   EXPECT_EQ(run.err, path("big.gltf") + ": /buffers/0: error: expected 36 bytes (its byteLength) in 'big.bin', found 2147483648\n");
 }
