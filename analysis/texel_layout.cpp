@@ -301,7 +301,8 @@ bool TexelOwners::touchedOnly(int x, int y) const {
   return false;
 }
 
-TexelStatistics texelStatistics(const Mesh& mesh, const UvMap& uv, int width, int height) {
+TexelStatistics texelStatistics(const Mesh& mesh, const UvMap& uv, int width, int height,
+                                std::vector<TexelOwners>* levels) {
   checkTextureSize(width, height);
   TexelStatistics out;
   // Each phase is long on a large mesh and single-threaded: a cancellation is seen between them.
@@ -323,17 +324,13 @@ TexelStatistics texelStatistics(const Mesh& mesh, const UvMap& uv, int width, in
     l.gutterTexels = std::ldexp(out.gutters.betweenCharts, -texels.level);
     if (!out.firstBleedLevel && l.clashes > 0) out.firstBleedLevel = texels.level;
     out.levels.push_back(l);
-    if (texels.width == 1 && texels.height == 1) break;
-    texels = coarser(texels);
+    const bool last = texels.width == 1 && texels.height == 1;
+    TexelOwners next = last ? TexelOwners{} : coarser(texels);
+    if (levels) levels->push_back(std::move(texels));
+    if (last) break;
+    texels = std::move(next);
   }
   return out;
-}
-
-TexelOwners texelOwners(const Mesh& mesh, const UvMap& uv, int width, int height, int level) {
-  checkTextureSize(width, height);
-  TexelOwners texels = levelZero(mesh, uv, uvCharts(mesh, uv), width, height, nullptr);
-  while (texels.level < level && (texels.width > 1 || texels.height > 1)) texels = coarser(texels);
-  return texels;
 }
 
 }  // namespace uvtk::analysis

@@ -71,9 +71,8 @@ constexpr int kMaxTexelSide = 8192;
 // The statistics of `uv` (3 corners per face) in a width x height texture (1 to 8192 each;
 // UsageError beyond). Faces with an invalid corner are left out. Cost: the faces' texels at level
 // 0 plus 4/3 W H for the pyramid, 4 bytes a texel.
-TexelStatistics texelStatistics(const Mesh& mesh, const UvMap& uv, int width, int height);
-
-// The texels of `level` (clamped to the coarsest), as texelStatistics counts them.
-TexelOwners texelOwners(const Mesh& mesh, const UvMap& uv, int width, int height, int level);
+// `levels`, when given, receives every level's texels (4/3 W H of them, 4 bytes each), as counted.
+TexelStatistics texelStatistics(const Mesh& mesh, const UvMap& uv, int width, int height,
+                                std::vector<TexelOwners>* levels = nullptr);
 
 }  // namespace uvtk::analysis

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "analysis/texel_layout.h"
 #include "core/error.h"
@@ -43,14 +44,16 @@ DrawnView drawBleed(const ViewInput& in, const ViewOptions& options) {
     throw UsageError("bleed: expected a size in " + std::to_string(kMinSize) + ".." + std::to_string(kMaxSize) +
                      ", found " + std::to_string(options.layoutSize));
   const analysis::TextureSize texture = in.judgement->summary.density.textureSize;
-  const analysis::TexelStatistics statistics = analysis::texelStatistics(*in.mesh, *in.uv, texture.width, texture.height);
+  std::vector<analysis::TexelOwners> owners;
+  const analysis::TexelStatistics statistics =
+      analysis::texelStatistics(*in.mesh, *in.uv, texture.width, texture.height, &owners);
   const int levels = int(statistics.levels.size());
   if (options.bleedLevel && (*options.bleedLevel < 0 || *options.bleedLevel >= levels))
     throw UsageError("--bleed-level: expected 0 to " + std::to_string(levels - 1) + " (the levels of a " +
                      std::to_string(texture.width) + " x " + std::to_string(texture.height) + " texture), found " +
                      std::to_string(*options.bleedLevel));
   const int level = options.bleedLevel.value_or(statistics.firstBleedLevel.value_or(0));
-  const analysis::TexelOwners texels = analysis::texelOwners(*in.mesh, *in.uv, texture.width, texture.height, level);
+  const analysis::TexelOwners& texels = owners[std::size_t(level)];
   const analysis::TexelLevel& figures = statistics.levels[std::size_t(level)];
 
   // The unit square, v up: each pixel shows the texel under its centre.
