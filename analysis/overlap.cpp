@@ -8,6 +8,7 @@
 
 #include <Eigen/Geometry>
 
+#include "core/cancel.h"
 #include "core/error.h"
 
 namespace uvtk::analysis {
@@ -259,6 +260,7 @@ Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces
   std::vector<std::int32_t> difference(std::size_t(bandRows) * stride), overlappedBefore(std::size_t(bandRows) * stride);
   std::vector<std::uint8_t> overlapped(faces.size(), 0);
   for (std::size_t band = 0; band < bands; ++band) {
+    throwIfCancelled();  // a band of a big mesh's faces can take a second
     const std::int64_t from = std::int64_t(band) * bandRows, to = std::min(n - 1, from + bandRows - 1);
     const std::uint32_t* first = bandFaces.data() + bandStart[band];
     const std::uint32_t* last = bandFaces.data() + bandStart[band + 1];

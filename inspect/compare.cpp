@@ -203,9 +203,12 @@ void CompareOptions::check() const {
 
 Comparison rankMappings(const CompareOptions& a, const Mesh& mesh, const nlohmann::json& input) {
   StageClock clock("uvtk compare");
-  std::vector<RankedMapping> ranked;
   nlohmann::json skipped = nlohmann::json::array();
   const auto all = configurations(mesh, a);
+  // Room for all at once: a RankedMapping is copied, not moved, when the vector grows (its
+  // judgement's Eigen box has no noexcept move), and copying mapped meshes took seconds.
+  std::vector<RankedMapping> ranked;
+  ranked.reserve(all.size() + 2);
   for (std::size_t i = 0; i < all.size(); ++i) {
     const auto& [name, options] = all[i];
     clock.start("mapping", name + " (" + std::to_string(i + 1) + "/" + std::to_string(all.size()) + ")");
@@ -221,6 +224,7 @@ Comparison rankMappings(const CompareOptions& a, const Mesh& mesh, const nlohman
   if (a.baselines) {
     clock.start("baselines", "LSCM, ARAP");
     std::vector<RankedMapping> baselines;
+    baselines.reserve(2);
     addBaselines(mesh, a, baselines, skipped);
     for (RankedMapping& b : baselines) ranked.push_back(std::move(b));
     std::stable_sort(ranked.begin(), ranked.end(), ranksBefore);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <set>
 
+#include "core/cancel.h"
 #include "core/error.h"
 #include "meshes/generators.h"
 
@@ -309,6 +310,21 @@ TEST(Project, PcaAndObbFitsFindTheLongAxisOfARotatedCylinder) {
     EXPECT_NEAR(vMin, 0.0, 1e-9);
     EXPECT_NEAR(vMax, 1.0, 1e-9);
   }
+}
+
+// A lat-long ellipsoid of 3, 2, 1 whose every vertex (about 180 k) is on the convex hull: the oriented
+// box is searched on at most 2048 of the hull's vertices (placement_cgal.cpp), and still finds the
+// rotated axes; once searched on all of them it took 19 s. A cancellation request stops it.
+TEST(Placement, ObbOfAMeshWithAHugeHullFindsItsAxes) {
+  Mesh mesh = meshes::latLongSphere(600, 300);
+  const Mat3 rotation = Eigen::AngleAxisd(0.7, Vec3(1, 2, -0.5).normalized()).toRotationMatrix();
+  for (Vec3& p : mesh.positions) p = rotation * Vec3(3 * p.x(), 2 * p.y(), p.z()) + Vec3(4, 5, 6);
+  const Mat3 axes = orientedBoxAxes(mesh.positions);
+  for (int r = 0; r < 3; ++r)  // rows by decreasing extent: the 3, the 2, the 1 axis
+    EXPECT_NEAR(std::fabs(axes.row(r).dot(rotation.col(r))), 1.0, 1e-3) << r;
+  requestCancel();
+  EXPECT_THROW(orientedBoxAxes(mesh.positions), Cancelled);
+  clearCancel();
 }
 
 TEST(Project, ExplicitFrameSetsCenterAxisReferenceAndScale) {

@@ -293,6 +293,22 @@ def test_ctrl_c_interrupts_a_long_map_within_a_second_or_so():
     assert seconds < 3.0
 
 
+def test_ctrl_c_interrupts_compare_within_a_second_or_so():
+    # 360 k faces whose every vertex is on the convex hull: compare began with 17 s in one
+    # uninterruptible oriented-box search (now bounded, with a cancellation check around it), and
+    # ranked about 25 s in all; the signal comes while the first fits and mappings run.
+    out, err, status, seconds = interrupt('''
+        P, T = lat_long_sphere(600, 300)
+        mesh = uvtk.Mesh(P, T)
+        print("comparing", flush=True)
+        uvtk.compare(mesh)
+        print("finished", flush=True)
+    ''', after=1.0)
+    assert "finished" not in out, "the compare ended before the signal: make it longer"
+    assert status != 0 and err.rstrip().endswith("KeyboardInterrupt"), err[-2000:]
+    assert seconds < 2.0
+
+
 def test_ctrl_c_while_writing_leaves_the_whole_file_or_none(tmp_path):
     out_path = tmp_path / "out.obj"
     out, err, status, seconds = interrupt(f'''
