@@ -23,6 +23,7 @@ nlohmann::json projectorOptionsJson(const ProjectorOptions& o) {
                       {"cube_layout", nameOf(kCubeLayoutNames, o.cubeLayout)},
                       {"caps", o.cylinderCaps},
                       {"cap_angle", o.capAngleDegrees},
+                      {"cap_layout", nameOf(kCapLayoutNames, o.capLayout)},
                       {"plane_u", {o.planeU[0], o.planeU[1], o.planeU[2], o.planeU[3]}},
                       {"plane_v", {o.planeV[0], o.planeV[1], o.planeV[2], o.planeV[3]}},
                       {"uv_scale", {o.uvTransform.scale.x(), o.uvTransform.scale.y()}},

@@ -69,6 +69,7 @@ const std::vector<Field<MapOptions>>& mapFields() {
       arrayField("--plane-v", &O::planeV),
       flagField("--caps", &O::caps),
       numberField("--cap-angle", &O::capAngle),
+      textField("--cap-layout", &O::capLayout),
       textField("--sphere-preset", &O::spherePreset),
       textField("--cube-convention", &O::cubeConvention),
       textField("--cube-layout", &O::cubeLayout),

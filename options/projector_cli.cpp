@@ -47,6 +47,10 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEy
   app.add_flag("--caps", o.cylinderCaps, "cylinder: planar caps on faces facing along the axis");
   app.add_option("--cap-angle", o.capAngleDegrees, "cylinder: degrees between a cap face's normal and the axis")
       ->default_str("45");
+  addChoice<CapLayout>(app, "--cap-layout", o.capLayout, kCapLayoutNames,
+                       "cylinder caps: beside (side band below, caps side by side above) or stacked (all over the "
+                       "unit square)")
+      ->default_str("beside");
   addChoice<SpherePreset>(app, "--sphere-preset", o.spherePreset, kSpherePresetNames,
                           "sphere: default (u from +x, v = 1 at +z), glu (gluSphere), seed004")
       ->default_str("default");
@@ -158,6 +162,7 @@ ParameterDictionary ProjectorArguments::parameters() const {
   numbers("plane-v", planeV, 4);
   flag("caps", o.cylinderCaps);
   number("cap-angle", o.capAngleDegrees);
+  choice("cap-layout", kCapLayoutNames, o.capLayout);
   choice("sphere-preset", kSpherePresetNames, o.spherePreset);
   choice("cube-convention", kCubeConventionNames, o.cubeConvention);
   choice("cube-layout", kCubeLayoutNames, o.cubeLayout);

@@ -57,7 +57,7 @@ const char* const kConventionOwned[] = {"fit",        "axis",      "axis-dir",  
                                         "sphere-preset", "uv-scale", "uv-offset", "uv-rotate", "flip-u", "flip-v"};
 
 // The surface projectors' own parameters, which neither the camera nor triplanar takes.
-const char* const kSurfaceOnly[] = {"omap",           "plane-u",     "plane-v",     "caps",   "cap-angle",
+const char* const kSurfaceOnly[] = {"omap",           "plane-u",     "plane-v",     "caps",   "cap-angle", "cap-layout",
                                     "sphere-preset",  "cube-convention", "cube-layout", "at-infinity", "seam",
                                     "pole",           "pole-eps",    "seam-place",  "convention"};
 
@@ -111,6 +111,7 @@ Projector makeProjector(const ParameterDictionary& p, const ProjectorContext& c)
   o.placement.axis = p.getChoice("axis", kAxisNames, 2);
   o.cylinderCaps = p.getBool("caps", false);
   o.capAngleDegrees = p.getNumber("cap-angle", 45.0);
+  o.capLayout = p.getChoice("cap-layout", kCapLayoutNames, CapLayout::Beside);
   o.spherePreset = p.getChoice("sphere-preset", kSpherePresetNames, SpherePreset::Default);
   o.cubeConvention = p.getChoice("cube-convention", kCubeConventionNames, CubeConvention::Gl);
   o.cubeLayout = p.getChoice("cube-layout", kCubeLayoutNames, CubeLayout::Faces);
@@ -192,7 +193,7 @@ Projector makeProjector(const ParameterDictionary& p, const ProjectorContext& c)
                          p.spelledWith("projector", "triplanar"));
     if (!p.given("fit")) o.placement.fit = Fit::None;  // object space, as the engines project
   }
-  for (const char* name : {"caps", "cap-angle"})
+  for (const char* name : {"caps", "cap-angle", "cap-layout"})
     if (o.surface != SurfaceKind::Cylinder && p.given(name))
       throw UsageError(p.spelled(name) + " goes with " + p.spelledWith("projector", "cylinder") + " only");
   if (convention != Convention::Uvtk) {

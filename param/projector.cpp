@@ -159,24 +159,40 @@ Evaluated evaluateCorners(const S& surface, const M& mapping, const Mesh& mesh, 
   return result;
 }
 
-// The cylinder cap projection of a local point: orthographic along the axis, (x+1)/2 and (y+1)/2,
-// mirrored on the bottom cap (`top` false) so that both read unmirrored seen from outside.
-template <class T>
-Vec2 capUv(const Vec3T<T>& local, bool top) {
-  return Vec2T<T>(((top ? T(1) : T(-1)) * local.x() + T(1)) * T(0.5), (local.y() + T(1)) * T(0.5)).template cast<double>();
+// The side of a capped cylinder where CapLayout puts it (§5): beside the caps, v in [0, 1/2].
+Vec2 capSideUv(const Vec2& uv, CapLayout layout) {
+  return layout == CapLayout::Beside ? Vec2(uv.x(), 0.5 * uv.y()) : uv;
 }
 
-// Cylinder caps: the faces CylinderCaps takes are mapped by capUv, whatever the mapping said.
+// The cylinder cap projection of a local point: orthographic along the axis, (x+1)/2 and (y+1)/2,
+// mirrored on the bottom cap (`top` false) so that both read unmirrored seen from outside; then
+// where CapLayout puts that cap: beside, the top cap's square [0, 1/2] x [1/2, 1], the bottom's
+// [1/2, 1] x [1/2, 1].
 template <class T>
-void applyCaps(const Mesh& mesh, const LocalFrameT<T>& frame, const CylinderCaps& caps, CornerField& c) {
+Vec2 capUv(const Vec3T<T>& local, bool top, CapLayout layout) {
+  const Vec2 square =
+      Vec2T<T>(((top ? T(1) : T(-1)) * local.x() + T(1)) * T(0.5), (local.y() + T(1)) * T(0.5)).template cast<double>();
+  if (layout == CapLayout::Stacked) return square;
+  return Vec2((top ? 0.0 : 0.5) + 0.5 * square.x(), 0.5 + 0.5 * square.y());
+}
+
+// Cylinder caps: the faces CylinderCaps takes are mapped by capUv, whatever the mapping said; the
+// others are the side, placed by capSideUv.
+template <class T>
+void applyCaps(const Mesh& mesh, const LocalFrameT<T>& frame, const CylinderCaps& caps, CapLayout layout,
+               CornerField& c) {
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const Triangle& t = mesh.triangles[f];
     const Vec3 normal = triangleAreaNormal(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
-    if (!caps.isCap(normal)) continue;
+    if (!caps.isCap(normal)) {
+      for (std::size_t corner = 3 * f; corner < 3 * f + 3; ++corner)
+        if (c.state[corner] != CornerState::Invalid) c.uv[corner] = capSideUv(c.uv[corner], layout);
+      continue;
+    }
     c.faceFlags[f] = static_cast<std::uint8_t>((c.faceFlags[f] & ~(kFacePole | kFaceInvalid)) | kFaceCap);
     for (int k = 0; k < 3; ++k) {
       const std::size_t corner = 3 * f + k;
-      const Vec2 uv = capUv(frame.point(mesh.positions[t[k]]), caps.isTop(normal));
+      const Vec2 uv = capUv(frame.point(mesh.positions[t[k]]), caps.isTop(normal), layout);
       if (!uv.allFinite()) {
         c.invalidate(corner, kCornerNotFinite);
         continue;
@@ -333,8 +349,15 @@ Evaluated evaluateMesh(const Mesh& mesh, const Affine3& localFromObject, const P
   Evaluated evaluated = visitProjector<T>(o, frame, [&](const auto& s, const auto& m) {
     return evaluateCorners<T>(s, m, mesh, localFromObject, o, sensible, threads);
   });
-  if (o.surface == SurfaceKind::Cylinder && o.cylinderCaps)
-    applyCaps(mesh, frame, CylinderCaps(localFromObject, o.capAngleDegrees), evaluated.corners);
+  if (o.surface == SurfaceKind::Cylinder && o.cylinderCaps) {
+    applyCaps(mesh, frame, CylinderCaps(localFromObject, o.capAngleDegrees), o.capLayout, evaluated.corners);
+    // Points on the seam that --seam cut adds lie on the side.
+    evaluated.evaluateAt = [side = std::move(evaluated.evaluateAt), layout = o.capLayout](const Vec3& p, const Vec3& n) {
+      VertexUv out = side(p, n);
+      if (out.state != CornerState::Invalid) out.uv = capSideUv(out.uv, layout);
+      return out;
+    };
+  }
   return evaluated;
 }
 
@@ -520,9 +543,9 @@ PointMapping::PointMapping(const ProjectorOptions& o, const Affine3& localFromOb
       }
     });
     if (o.surface == SurfaceKind::Cylinder && o.cylinderCaps)
-      cap_ = [frame, caps = CylinderCaps(localFromObject, o.capAngleDegrees)](const Vec3& position, const Vec3& normal) {
-        return capUv(frame.point(position), caps.isTop(normal));
-      };
+      cap_ = [frame, caps = CylinderCaps(localFromObject, o.capAngleDegrees), layout = o.capLayout](
+                 const Vec3& position, const Vec3& normal) { return capUv(frame.point(position), caps.isTop(normal), layout); };
+    capLayout_ = o.capLayout;
   });
 }
 
@@ -536,6 +559,7 @@ VertexUv PointMapping::at(const Vec3& position, const Vec3& normal, bool capFace
     if (!finite) out.uv = Vec2::Zero();
   } else {
     out = evaluate_(position, normal);
+    if (cap_ && out.state != CornerState::Invalid) out.uv = capSideUv(out.uv, capLayout_);
   }
   if (out.state == CornerState::Invalid) return out;
   if (!uvTransform_.isIdentity()) out.uv = uvTransform_.apply(out.uv);

@@ -29,6 +29,12 @@ enum class SeamMode {
   Cut,    // also cut straddling triangles along the seam: u in [0, 1], CLAMP works
 };
 
+// Where a capped cylinder's side and caps lie in the unit square (§5).
+enum class CapLayout {
+  Beside,   // the side band in v [0, 1/2]; the top cap in [0, 1/2] x [1/2, 1], the bottom one beside it
+  Stacked,  // side and both caps each over the whole unit square (they overlap)
+};
+
 enum class PoleMode {
   None,  // pole vertices get u = 0
   Fan,   // each face's pole corner gets the mean u of its other corners
@@ -55,6 +61,7 @@ struct ProjectorOptions {
   // cylinder: planar caps on faces whose normal is within capAngleDegrees of the axis
   bool cylinderCaps = false;
   double capAngleDegrees = 45.0;
+  CapLayout capLayout = CapLayout::Beside;
   SpherePreset spherePreset = SpherePreset::Default;
   CubeConvention cubeConvention = CubeConvention::Gl;
   CubeLayout cubeLayout = CubeLayout::Faces;
@@ -193,6 +200,7 @@ class PointMapping {
  private:
   std::function<VertexUv(const Vec3&, const Vec3&)> evaluate_;
   std::function<Vec2(const Vec3&, const Vec3&)> cap_;
+  CapLayout capLayout_ = CapLayout::Beside;  // where cap_ puts the caps and the side
   std::function<std::optional<CubeFace>(const Vec3&, const Vec3&)> cubeFace_;
   UvTransform uvTransform_;
   bool wrapsU_ = false, needsNormal_ = false;

@@ -23,6 +23,7 @@ const ChoiceNames<SpherePreset> kSpherePresetNames = {
 const ChoiceNames<CubeConvention> kCubeConventionNames = {{"gl", CubeConvention::Gl}, {"direct", CubeConvention::Direct}};
 const ChoiceNames<CubeLayout> kCubeLayoutNames = {
     {"faces", CubeLayout::Faces}, {"cross", CubeLayout::Cross}, {"strip", CubeLayout::Strip}, {"3x2", CubeLayout::ThreeByTwo}};
+const ChoiceNames<CapLayout> kCapLayoutNames = {{"beside", CapLayout::Beside}, {"stacked", CapLayout::Stacked}};
 const ChoiceNames<SeamMode> kSeamNames = {{"none", SeamMode::None}, {"shift", SeamMode::Shift}, {"cut", SeamMode::Cut}};
 const ChoiceNames<PoleMode> kPoleNames = {{"none", PoleMode::None}, {"fan", PoleMode::Fan}};
 const ChoiceNames<Precision> kPrecisionNames = {{"double", Precision::Double}, {"float", Precision::Float}};

@@ -23,6 +23,7 @@ extern const ChoiceNames<int> kAxisNames;
 extern const ChoiceNames<SpherePreset> kSpherePresetNames;
 extern const ChoiceNames<CubeConvention> kCubeConventionNames;
 extern const ChoiceNames<CubeLayout> kCubeLayoutNames;
+extern const ChoiceNames<CapLayout> kCapLayoutNames;
 extern const ChoiceNames<SeamMode> kSeamNames;
 extern const ChoiceNames<PoleMode> kPoleNames;
 extern const ChoiceNames<TriplanarPreset> kTriplanarPresetNames;

@@ -647,6 +647,7 @@ Raises uvtk.InputError "PATH:LINE: error: ...". with_warnings=True returns (mesh
       .def_readwrite("plane_v", &api::MapOptions::planeV)
       .def_readwrite("caps", &api::MapOptions::caps)
       .def_readwrite("cap_angle", &api::MapOptions::capAngle)
+      .def_readwrite("cap_layout", &api::MapOptions::capLayout)
       .def_readwrite("sphere_preset", &api::MapOptions::spherePreset)
       .def_readwrite("cube_convention", &api::MapOptions::cubeConvention)
       .def_readwrite("cube_layout", &api::MapOptions::cubeLayout)

@@ -55,11 +55,19 @@ TEST(PointMapping, ACapFaceMapsByTheCapProjectionMirroredOnTheBottom) {
   o.surface = SurfaceKind::Cylinder;
   o.cylinderCaps = true;
   o.placement.fit = Fit::None;
-  const PointMapping mapping(o, Affine3::Identity());
-  EXPECT_LT((mapping.at(Vec3(0.5, -0.5, 1), Vec3::UnitZ(), true).uv - Vec2(0.75, 0.25)).norm(), 1e-15);
-  EXPECT_LT((mapping.at(Vec3(0.5, -0.5, 0), -Vec3::UnitZ(), true).uv - Vec2(0.25, 0.25)).norm(), 1e-15);
-  // Not a cap face: the cylinder, u from the azimuth of (0.5, -0.5): 7/8.
-  EXPECT_NEAR(mapping.at(Vec3(0.5, -0.5, 0.3), Vec3::Zero(), false).uv.x(), 0.875, 1e-15);
+  o.capLayout = CapLayout::Stacked;
+  const PointMapping stacked(o, Affine3::Identity());
+  EXPECT_LT((stacked.at(Vec3(0.5, -0.5, 1), Vec3::UnitZ(), true).uv - Vec2(0.75, 0.25)).norm(), 1e-15);
+  EXPECT_LT((stacked.at(Vec3(0.5, -0.5, 0), -Vec3::UnitZ(), true).uv - Vec2(0.25, 0.25)).norm(), 1e-15);
+  // Not a cap face: the cylinder, u from the azimuth of (0.5, -0.5): 7/8, v = z.
+  EXPECT_LT((stacked.at(Vec3(0.5, -0.5, 0.3), Vec3::Zero(), false).uv - Vec2(0.875, 0.3)).norm(), 1e-15);
+  // Beside (the default): the top cap's square is [0, 1/2] x [1/2, 1], the bottom's [1/2, 1] x [1/2, 1],
+  // the side band v in [0, 1/2].
+  o.capLayout = CapLayout::Beside;
+  const PointMapping beside(o, Affine3::Identity());
+  EXPECT_LT((beside.at(Vec3(0.5, -0.5, 1), Vec3::UnitZ(), true).uv - Vec2(0.375, 0.625)).norm(), 1e-15);
+  EXPECT_LT((beside.at(Vec3(0.5, -0.5, 0), -Vec3::UnitZ(), true).uv - Vec2(0.625, 0.625)).norm(), 1e-15);
+  EXPECT_LT((beside.at(Vec3(0.5, -0.5, 0.3), Vec3::Zero(), false).uv - Vec2(0.875, 0.15)).norm(), 1e-15);
 }
 
 }  // namespace

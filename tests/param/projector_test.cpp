@@ -215,21 +215,34 @@ TEST(Project, PoleFacesIncludeFacesEnclosingTheAxisWithoutAPoleVertex) {
 }
 
 TEST(Project, CylinderCapsAreMappedPlanarAndFlagged) {
-  const Mesh mesh = meshes::cylinder(16, 2, 1.0, 2.0, true);
+  const Mesh mesh = meshes::cylinder(16, 2, 1.0, 2.0, true);  // radius 1, z in [0, 2]: the fit moves z to [0, 1]
   ProjectorOptions o = optionsFor(SurfaceKind::Cylinder);
   o.cylinderCaps = true;
-  const Projection p = project(mesh, o);
-  EXPECT_EQ(p.summary.capFaces, 32u);
-  EXPECT_EQ(p.summary.poleFaces, 0u);
-  for (std::size_t f = 0; f < p.mesh.faceCount(); ++f) {
-    if (!p.uv.faceHas(f, kFaceCap)) continue;
+  const Projection beside = project(mesh, o);
+  o.capLayout = CapLayout::Stacked;
+  const Projection stacked = project(mesh, o);
+  for (const Projection* p : {&beside, &stacked}) {
+    EXPECT_EQ(p->summary.capFaces, 32u);
+    EXPECT_EQ(p->summary.poleFaces, 0u);
+  }
+  for (std::size_t f = 0; f < mesh.faceCount(); ++f)
     for (int k = 0; k < 3; ++k) {
       const Vec3& q = mesh.positions[mesh.triangles[f][k]];
-      const double mirror = q.z() > 1.0 ? 1.0 : -1.0;  // the bottom cap reads unmirrored from below
-      EXPECT_NEAR(p.uv.uv[3 * f + k].x(), (mirror * q.x() + 1) / 2, 1e-15);
-      EXPECT_NEAR(p.uv.uv[3 * f + k].y(), (q.y() + 1) / 2, 1e-15);
+      const Vec2 b = beside.uv.uv[3 * f + k], s = stacked.uv.uv[3 * f + k];
+      if (!beside.uv.faceHas(f, kFaceCap)) {  // the side: v = z / 2 beside the caps, z stacked
+        EXPECT_NEAR(s.y(), q.z() / 2, 1e-15);
+        EXPECT_NEAR(b.y(), q.z() / 4, 1e-15);
+        EXPECT_EQ(b.x(), s.x());
+        continue;
+      }
+      const bool top = q.z() > 1.0;
+      const double mirror = top ? 1.0 : -1.0;  // the bottom cap reads unmirrored from below
+      EXPECT_NEAR(s.x(), (mirror * q.x() + 1) / 2, 1e-15);
+      EXPECT_NEAR(s.y(), (q.y() + 1) / 2, 1e-15);
+      // Beside: the top cap in [0, 1/2] x [1/2, 1], the bottom cap in [1/2, 1] x [1/2, 1].
+      EXPECT_NEAR(b.x(), (top ? 0.0 : 0.5) + (mirror * q.x() + 1) / 4, 1e-15);
+      EXPECT_NEAR(b.y(), 0.5 + (q.y() + 1) / 4, 1e-15);
     }
-  }
   // Without caps the cap centres are poles.
   EXPECT_EQ(project(mesh, optionsFor(SurfaceKind::Cylinder)).summary.poleVertices, 2u);
 }

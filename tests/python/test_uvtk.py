@@ -608,11 +608,17 @@ def test_eval_cylinder_with_caps_reads_the_normals():
     points = np.array([[0, 2, 0.5], [-1, 0, 0.25], [0.5, 0, 1]])
     side = uvtk.eval(points[:2], projector="cylinder")
     np.testing.assert_allclose(np.stack([side.u, side.v], 1), [[0.25, 0.5], [0.5, 0.25]], rtol=0, atol=1e-15)
-    # the top cap maps (x, y) to ((x + 1) / 2, (y + 1) / 2); one normal serves every point
-    top = uvtk.eval(points[2], normals=[0, 0, 1], projector="cylinder", caps=True)
+    # the top cap maps (x, y) to ((x + 1) / 2, (y + 1) / 2) stacked, to ((x + 1) / 4, 1/2 + (y + 1) / 4)
+    # beside (the default: its square is [0, 1/2] x [1/2, 1]); one normal serves every point
+    top = uvtk.eval(points[2], normals=[0, 0, 1], projector="cylinder", caps=True, cap_layout="stacked")
     assert top.u.shape == () and (float(top.u), float(top.v)) == (0.75, 0.5)
+    top = uvtk.eval(points[2], normals=[0, 0, 1], projector="cylinder", caps=True)
+    assert (float(top.u), float(top.v)) == (0.375, 0.75)
     per_point = uvtk.eval(points, normals=np.tile([0, 0, 1.0], (3, 1)), projector="cylinder", caps=True)
-    assert (per_point.u[2], per_point.v[2]) == (0.75, 0.5)
+    assert (per_point.u[2], per_point.v[2]) == (0.375, 0.75)
+    # beside, a point whose normal is not a cap's lies on the side band, v / 2
+    side = uvtk.eval(points[:2], normals=[[0, 1, 0], [-1, 0, 0]], projector="cylinder", caps=True)
+    np.testing.assert_allclose(np.stack([side.u, side.v], 1), [[0.25, 0.25], [0.5, 0.125]], rtol=0, atol=1e-15)
 
 
 def test_eval_keeps_the_points_shape():

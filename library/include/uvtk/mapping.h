@@ -52,6 +52,7 @@ struct MapOptions {
   std::array<double, 4> planeV{0, 1, 0, 0};  // --plane-v: two-plane, the plane whose signed distance is v
   bool caps = false;                 // --caps: cylinder, planar caps on faces facing along the axis
   double capAngle = 45.0;            // --cap-angle: degrees between a cap face's normal and the axis
+  std::string capLayout = "beside";  // --cap-layout: beside (side band below, caps above), stacked
   std::string spherePreset = "default";  // --sphere-preset: default, glu, seed004
   std::string cubeConvention = "gl";     // --cube-convention: gl, direct
   std::string cubeLayout = "faces";      // --cube-layout: faces, cross, strip, 3x2
