@@ -58,8 +58,9 @@ void addProjectorOptions(CLI::App& app, ProjectorArguments& a, bool cameraOwnsEy
                             "cube: gl (OpenGL face table) or direct")
       ->default_str("gl");
   addChoice<CubeLayout>(app, "--cube-layout", o.cubeLayout, kCubeLayoutNames,
-                        "cube: faces (face id as w), cross, strip, 3x2")
-      ->default_str("faces");
+                        "cube: cross (a 4x3 cross, no overlap), strip, 3x2, or faces (each face over the unit "
+                        "square, its id as w: for cube-map textures)")
+      ->default_str("cross");
   if (!cameraOwnsEye)
     app.add_option("--eye", a.eye, "reflection: eye position in object space (required); camera: gluLookAt eye (required)")
         ->type_name("X,Y,Z");

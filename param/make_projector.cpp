@@ -114,7 +114,7 @@ Projector makeProjector(const ParameterDictionary& p, const ProjectorContext& c)
   o.capLayout = p.getChoice("cap-layout", kCapLayoutNames, CapLayout::Beside);
   o.spherePreset = p.getChoice("sphere-preset", kSpherePresetNames, SpherePreset::Default);
   o.cubeConvention = p.getChoice("cube-convention", kCubeConventionNames, CubeConvention::Gl);
-  o.cubeLayout = p.getChoice("cube-layout", kCubeLayoutNames, CubeLayout::Faces);
+  o.cubeLayout = p.getChoice("cube-layout", kCubeLayoutNames, CubeLayout::Cross);
   o.atInfinity = p.getBool("at-infinity", false);
   o.seam = p.getChoice("seam", kSeamNames, SeamMode::Shift);
   o.pole = p.getChoice("pole", kPoleNames, PoleMode::Fan);
@@ -248,6 +248,8 @@ Projector makeProjector(const ParameterDictionary& p, const ProjectorContext& c)
   // The notes' vector is a direction from the origin (the cube's worked example selects its face
   // by it): the centroid ray, unless another O-mapping (e.g. reflection) is asked for.
   if (convention == Convention::Notes && !p.given("omap")) o.ray = RayKind::Centroid;
+  // Its worked examples give each face's own (s, t): the faces layout, unless another is asked for.
+  if (convention == Convention::Notes && !p.given("cube-layout")) o.cubeLayout = CubeLayout::Faces;
   if (convention == Convention::Blender && center) {
     ExplicitFrame pivot;  // the pivot Blender's 3D view used (Median Point: the mean of the face centroids)
     pivot.center = *center;

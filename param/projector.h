@@ -64,7 +64,7 @@ struct ProjectorOptions {
   CapLayout capLayout = CapLayout::Beside;
   SpherePreset spherePreset = SpherePreset::Default;
   CubeConvention cubeConvention = CubeConvention::Gl;
-  CubeLayout cubeLayout = CubeLayout::Faces;
+  CubeLayout cubeLayout = CubeLayout::Cross;  // faces keeps each face over the unit square, for cube maps
   // reflection: the eye in object space (required), and lookup by direction only
   std::optional<Vec3> eye;
   bool atInfinity = false;

@@ -585,6 +585,8 @@ BenchOptions BenchArguments::resolve() const {
                             : cli::parseNameList(filters, cli::kFilterNames, "--filters");
     o.filter = filterGiven ? texture.filter : render::Filter::LinearMipmapLinear;
     o.renderProjector = {renderProjector, cli::projectorNamed(renderProjector, "isn")};
+    // A cube map is looked up per face: the cube projector's faces layout (its map default is the cross).
+    if (texture.cubeMap()) o.renderProjector.options.cubeLayout = CubeLayout::Faces;
     // What `uvtk render` refuses, in its order, before any work.
     o.frame = frame.options();
     camera.check();

@@ -173,7 +173,7 @@ TEST_F(EvalCli, ExplicitPlacementMovesAndScalesThePoint) {
 TEST_F(EvalCli, CubeDirectConventionGivesTheNotesExample) {
   // The English notes: (-0.2, 0.5, -0.84) selects -Z (face id 5) and maps to (0.38, 0.80). With the
   // centroid O-mapping the point is projected centrally onto the face z = -1: s = (x/|z| + 1)/2.
-  const Table t = csv("--projector cube --omap centroid --cube-convention direct --point=-0.2,0.5,-0.84");
+  const Table t = csv("--projector cube --omap centroid --cube-convention direct --cube-layout faces --point=-0.2,0.5,-0.84");
   ASSERT_EQ(t.rows.size(), 1u) << out;
   EXPECT_EQ(t.number(0, "w"), 5.0);
   EXPECT_NEAR(t.number(0, "u"), (-0.2 / 0.84 + 1) / 2, 1e-15);
@@ -183,7 +183,7 @@ TEST_F(EvalCli, CubeDirectConventionGivesTheNotesExample) {
   EXPECT_EQ(t.text(0, "status"), "ok");
   // Each face's id is the third column.
   const Table faces =
-      csv("--projector cube --omap centroid --point 2,0,0 --point=-2,0.5,0 --point 0,3,0 "
+      csv("--projector cube --omap centroid --cube-layout faces --point 2,0,0 --point=-2,0.5,0 --point 0,3,0 "
           "--point=0,-3,0 --point 0,0,4 --point=0,0,-4");
   ASSERT_EQ(faces.rows.size(), 6u) << out;
   for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(faces.number(i, "w"), double(i)) << i;

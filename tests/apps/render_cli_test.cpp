@@ -299,8 +299,8 @@ TEST_F(RenderCli, TheCubeProjectorsFacesLayoutLooksUpEachFace) {
   for (const char* uv : {"per-vertex", "per-pixel"}) {
     std::set<int> blues;
     for (const char* viewDir : {"1,1,1", "-1,-1,-1"}) {
-      const CliRun r = uvtk("render " + path("cube.obj") + " --projector cube --texture cubeindex:16 --uv " + uv +
-                            " --view-dir " + viewDir + " --size 48x48 -o " + path("out.png"));
+      const CliRun r = uvtk("render " + path("cube.obj") + " --projector cube --cube-layout faces --texture cubeindex:16 --uv " +
+                            uv + " --view-dir " + viewDir + " --size 48x48 -o " + path("out.png"));
       ASSERT_EQ(r.status, 0) << r.err;
       const Image image = io::readImage(path("out.png")).image;
       for (int y = 0; y < 48; ++y)

@@ -374,6 +374,7 @@ TEST_P(CubeExtremes, FaceAndCornersAsDocumented) {
     const CubeOutcome& want = precision == Precision::Double ? row.inDouble : row.inFloat;
     ProjectorOptions o;
     o.surface = kCube;
+    o.cubeLayout = CubeLayout::Faces;  // each face's own (s, t), the face id as w
     o.ray = row.ray;
     o.eye = kEye;
     o.placement.fit = Fit::None;

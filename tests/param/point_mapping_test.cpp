@@ -38,6 +38,7 @@ TEST(PointMapping, EqualsMapVerticesThenTheUvTransformForEveryWrappingOrPlanarSu
 TEST(PointMapping, TheCubeTakesTheFaceOfEachPointsOwnProbe) {
   ProjectorOptions o;
   o.surface = SurfaceKind::Cube;
+  o.cubeLayout = CubeLayout::Faces;  // each face's own (s, t)
   o.ray = RayKind::Centroid;  // a central projection: GL's cube-map lookup of the direction
   o.placement.fit = Fit::None;
   const PointMapping mapping(o, Affine3::Identity());

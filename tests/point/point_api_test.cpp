@@ -107,7 +107,7 @@ TEST(PointApi, CylinderUIsTheTurnAndVTheHeight) {
 
 TEST(PointApi, CubeFaceIdIsW) {
   // +X: sc = -z, tc = -y. The isn O-mapping is the box mapping, s = (sc + 1)/2, t = (tc + 1)/2 of p.
-  const Mapping cube("--projector cube");
+  const Mapping cube("--projector cube --cube-layout faces");
   const Result px = cube.at({2, 0.5, -0.4});
   EXPECT_UV_STATUS(px, Status::Ok);
   EXPECT_EQ(px.w, 0.0);
@@ -117,7 +117,7 @@ TEST(PointApi, CubeFaceIdIsW) {
 
   // The central ray divides by the major component: the direct convention's example of
   // docs/conventions.md §3, -Z with (s, t) from (x, y).
-  const Mapping direct("--projector cube --cube-convention direct --omap centroid");
+  const Mapping direct("--projector cube --cube-convention direct --omap centroid --cube-layout faces");
   const Result nz = direct.at({-0.2, 0.5, -0.84});
   EXPECT_EQ(nz.w, 5.0);
   EXPECT_NEAR(nz.u, (-0.2 / 0.84 + 1) / 2, kTight);

@@ -55,7 +55,7 @@ struct MapOptions {
   std::string capLayout = "beside";  // --cap-layout: beside (side band below, caps above), stacked
   std::string spherePreset = "default";  // --sphere-preset: default, glu, seed004
   std::string cubeConvention = "gl";     // --cube-convention: gl, direct
-  std::string cubeLayout = "faces";      // --cube-layout: faces, cross, strip, 3x2
+  std::string cubeLayout = "cross";      // --cube-layout: cross, strip, 3x2, faces (face id as w, for cube maps)
   std::optional<Vector3> eye;        // --eye: the reflection O-mapping's eye in object space; camera: gluLookAt eye
   std::optional<Vector3> up;         // --up: camera, gluLookAt up (0, 1, 0 when unset); --center is its centre
   double fovy = 45.0;                // --fovy: camera, gluPerspective field of view in y, degrees
