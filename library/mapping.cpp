@@ -39,7 +39,7 @@ Field<MapOptions> seamPlaceField() {
             if (o.seamPlace) return std::vector<std::string>{"--seam-place", number(*o.seamPlace)};
             return std::vector<std::string>{};
           },
-          given};
+          given, "float|auto", true};
 }
 
 // --texture-size W,H (or N).
@@ -51,7 +51,7 @@ Field<MapOptions> textureSizeField() {
         o.textureSize = {size.width, size.height};
       },
       [](const std::array<int, 2>& v) { return std::to_string(v[0]) + "," + std::to_string(v[1]); },
-      [](const std::array<int, 2>& v) { return std::vector<double>{double(v[0]), double(v[1])}; });
+      [](const std::array<int, 2>& v) { return std::vector<double>{double(v[0]), double(v[1])}; }, "int|int[2]");
 }
 
 const std::vector<Field<MapOptions>>& mapFields() {
@@ -130,16 +130,14 @@ struct MapCommand {
   cli::ProjectorArguments projector;
   cli::VerdictArguments verdict;
   int overlapResolution = 1024, threads = 0;
-  std::string textureSize;
+  std::string textureSize = "1024,1024";
   std::optional<double> density;
 
   explicit MapCommand(const std::vector<std::string>& words) {
+    cli::addMapThreadsOption(app, threads);
     cli::addProjectorOptions(app, projector);
     cli::addVerdictOptions(app, verdict);
-    app.add_option("--overlap-resolution", overlapResolution);
-    app.add_option("--texture-size", textureSize);
-    app.add_option("--density", density);
-    app.add_option("--threads", threads);
+    cli::addMapJudgementOptions(app, overlapResolution, textureSize, density);
     parseWords(app, words);
     verdict.check();
   }
@@ -152,10 +150,7 @@ struct TexgenCommand {
 
   explicit TexgenCommand(const std::vector<std::string>& words) {
     cli::addTexgenOptions(app, texgen, "--mode");
-    app.add_option("--eye", eye);
-    app.add_option("--center", center);
-    app.add_option("--up", up);
-    app.add_option("--model", model);
+    cli::addTexgenViewOptions(app, eye, center, up, model);
     parseWords(app, words);
   }
 
@@ -165,6 +160,29 @@ struct TexgenCommand {
     return texgen.resolve(view, modelMatrix);
   }
 };
+
+// Each field as the command's --help shows its option: the help's sentence, default and choices
+// (a choice's names are its type name, "a|b|c"), and the field's kind.
+template <class Options>
+std::vector<OptionDescription> describeFields(const CLI::App& app, const std::vector<Field<Options>>& fields) {
+  std::vector<OptionDescription> out;
+  for (const Field<Options>& field : fields) {
+    OptionDescription d;
+    d.name = field.name + 2;
+    d.kind = field.kind;
+    d.optional = field.optional;
+    if (const CLI::Option* option = app.get_option_no_throw(field.name)) {
+      d.help = option->get_description();
+      d.defaultText = option->get_default_str();
+      const std::string type = option->get_type_name();
+      if (d.kind == "str" && type.find('|') != std::string::npos &&
+          type.find_first_of("ABCDEFGHIJKLMNOPQRSTUVWXYZ[") == std::string::npos)
+        d.choices = CLI::detail::split(type, '|');
+    }
+    out.push_back(std::move(d));
+  }
+  return out;
+}
 
 Reason reasonOf(const analysis::Reason& reason) {
   return {analysis::toString(reason.rule), analysis::toString(reason.severity), reason.value, reason.threshold,
@@ -183,6 +201,14 @@ MapOptions MapOptions::parse(const std::string& commandLine) {
     inspect::readMapSettings(toEngine(parameters));  // the engine's checks of the combination
     return options;
   });
+}
+
+std::vector<OptionDescription> MapOptions::describe() {
+  return describeFields(MapCommand({}).app, mapFields());
+}
+
+std::vector<OptionDescription> TexgenOptions::describe() {
+  return describeFields(TexgenCommand({}).app, texgenFields());
 }
 
 std::string MapOptions::commandLine() const { return joinCommandLine(wordsOf(*this, mapFields())); }
@@ -300,6 +326,7 @@ void writeMesh(const std::string& path, const Mapping& mapping, const WriteOptio
     write.writeW = options.writeW;
     write.floatDigits = options.uvDigits == "float";
     write.ascii = options.ascii;
+    write.header = options.header;
     if (!detail.texgen) return io::writeMesh(path, mapped.mesh, &mapped.uv, write);
     // As `uvtk texgen -o`: r when generated (in an OBJ), and (s, t, r) divided by q where q is not 1.
     const bool obj = io::outputFormatOf(path) == io::MeshFormat::obj;

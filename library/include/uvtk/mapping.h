@@ -36,6 +36,17 @@ struct Parameters {
   std::vector<Parameter> values;
 };
 
+// One option as the command line's --help shows it: what Python's signatures and stubs are made of.
+struct OptionDescription {
+  std::string name;                  // as the command line spells it without the dashes: "cap-angle"
+  std::string kind;                  // bool, int, float, str, float[N] (N numbers), str[] (repeatable),
+                                     // float|auto (--seam-place), int|int[2] (--texture-size)
+  bool optional = false;             // may be left unset (Python's None: not given)
+  std::string defaultText;           // the default as --help shows it ("45", "0,0,1"); "" none
+  std::vector<std::string> choices;  // a choice's names, in --help's order; empty for other options
+  std::string help;                  // the one-line meaning --help shows
+};
+
 // The options of `uvtk map` (docs/conventions.md): each field is the option of that name, with
 // its default; a choice is spelled as on the command line.
 struct MapOptions {
@@ -92,6 +103,8 @@ struct MapOptions {
   UVTK_API std::string commandLine() const;
   // The options that differ from the defaults, as typed parameters (no text).
   UVTK_API Parameters parameters() const;
+  // Every field's option as `uvtk map --help` shows it, in the struct's order.
+  UVTK_API static std::vector<OptionDescription> describe();
 };
 
 // The options of `uvtk texgen`: OpenGL's glTexGen for s, t, r and q under a gluLookAt view.
@@ -111,6 +124,8 @@ struct TexgenOptions {
   // From `uvtk texgen`'s syntax, e.g. "--s object_linear:1,0,0,0 --t eye_linear:0,1,0,0".
   UVTK_API static TexgenOptions parse(const std::string& commandLine);
   UVTK_API std::string commandLine() const;
+  // Every field's option as `uvtk texgen --help` shows it.
+  UVTK_API static std::vector<OptionDescription> describe();
 };
 
 enum class CornerState : std::uint8_t {
@@ -177,6 +192,7 @@ struct WriteOptions {
   std::string uvDigits = "double";  // "double": UV text that round-trips a double; "float": up to 9 digits
   bool writeW = false;              // OBJ: write the third component (the cube face id, texgen's r)
   bool ascii = false;               // PLY: ASCII text instead of binary little endian
+  std::string header;               // OBJ and PLY: comment lines at the top ("uvtk map IN" as the program writes)
 };
 
 // Writes the mapping's mesh with per-corner texture coordinates, by the path's extension (.obj,

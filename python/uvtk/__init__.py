@@ -1,0 +1,122 @@
+"""uvtk: texture coordinates for triangle meshes, and proof that they are right.
+
+The Python face of the C++ library (docs/python.md): the numbers are those of the `uvtk` command
+line, bit for bit. Options are keywords named as the command line's options (cap_angle=30 is
+--cap-angle 30). map's and texgen's signatures list every keyword with its type, default, choices
+and the meaning `uvtk map --help` shows: they are built here from the library's one option table
+(uvtk._uvtk._map_options()), and __init__.pyi is generated from the same table (uvtk._stubgen).
+"""
+import collections.abc as _abc
+import inspect as _inspect
+import typing as _typing
+
+from . import _uvtk
+from ._uvtk import *  # noqa: F401,F403  (every public name of the extension)
+from ._uvtk import __version__  # noqa: F401
+
+# The extension's classes, exceptions and functions are uvtk's: their names in messages, reprs and
+# pickles are uvtk.Mesh, not uvtk._uvtk.Mesh.
+for _name in dir(_uvtk):
+    _object = getattr(_uvtk, _name)
+    if not _name.startswith("_") and getattr(_object, "__module__", None) == _uvtk.__name__:
+        try:
+            _object.__module__ = __name__
+        except (AttributeError, TypeError):
+            pass
+
+
+# ---- signatures from the option table ----
+
+def _annotation(option):
+    """The Python type of an option of the table (kind, choices, optional)."""
+    kind = option["kind"]
+    if option["choices"]:
+        annotation = _typing.Literal[tuple(option["choices"])]
+    elif kind == "bool":
+        annotation = bool
+    elif kind == "int":
+        annotation = int
+    elif kind == "float":
+        annotation = float
+    elif kind.startswith("float["):
+        annotation = _abc.Sequence[float]
+    elif kind == "str[]":
+        annotation = _abc.Sequence[str]
+    elif kind == "float|auto":
+        annotation = _typing.Union[float, _typing.Literal["auto"]]
+    elif kind == "int|int[2]":
+        annotation = _typing.Union[int, _abc.Sequence[int]]
+    else:
+        annotation = str
+    return _typing.Optional[annotation] if _none_allowed(option) else annotation
+
+
+def _none_allowed(option):
+    """None means "not given" for the optional options but a choice (fit: None is a TypeError; its
+    default is --help's, 'bbox'), and for a choice without a default (texgen's mode)."""
+    return (option["optional"] and not option["choices"]) or (bool(option["choices"]) and not option["default"])
+
+
+def _default(option):
+    """The option's default as a Python value (None where it may be left unset)."""
+    if _none_allowed(option):
+        return None
+    kind, text = option["kind"], option["default"]
+    if kind == "bool":
+        return False
+    if kind == "str[]":
+        return ()
+    if kind == "int":
+        return int(text)
+    if kind == "float":
+        return float(text)
+    if kind.startswith("float["):
+        return tuple(float(x) for x in text.split(","))
+    if kind == "int|int[2]":
+        values = tuple(int(x) for x in text.split(","))
+        return values[0] if len(set(values)) == 1 else values
+    return text
+
+
+def _keyword_doc(option):
+    """One keyword's entry: 'cap_angle: float = 45.0' and its meaning, indented."""
+    annotation = _inspect.formatannotation(_annotation(option))
+    text = f"{option['keyword']}: {annotation} = {_default(option)!r}\n    {option['help']}"
+    if option["choices"]:
+        text += f" (one of: {', '.join(option['choices'])})"
+    return text
+
+
+def _signed(function, table, doc, first):
+    """`function` with a signature (first positional parameters, then the table's keywords) and a
+    docstring listing every keyword."""
+    parameters = [_inspect.Parameter(name, _inspect.Parameter.POSITIONAL_OR_KEYWORD, default=default, annotation=kind)
+                  for name, default, kind in first]
+    parameters += [_inspect.Parameter(o["keyword"], _inspect.Parameter.KEYWORD_ONLY, default=_default(o),
+                                      annotation=_annotation(o)) for o in table]
+    function.__signature__ = _inspect.Signature(parameters, return_annotation=Mapping)
+    function.__doc__ = doc + "\n\nKeywords (as `uvtk " + function.__name__ + " --help` shows them):\n\n" + \
+        "\n".join(_keyword_doc(o) for o in table)
+    function.__module__ = __name__
+    return function
+
+
+MAP_OPTIONS = tuple(_uvtk._map_options())
+TEXGEN_OPTIONS = tuple(_uvtk._texgen_options())
+
+
+def map(mesh, options=None, **keywords):  # noqa: A001 (uvtk.map, as `uvtk map`)
+    return _uvtk.map(mesh, options, **keywords)
+
+
+def texgen(mesh, options=None, **keywords):
+    return _uvtk.texgen(mesh, options, **keywords)
+
+
+_signed(map, MAP_OPTIONS, _uvtk.map.__doc__.split("\n", 2)[-1].strip(),
+        [("mesh", _inspect.Parameter.empty, Mesh), ("options", None, _typing.Optional[MapOptions])])
+_signed(texgen, TEXGEN_OPTIONS, _uvtk.texgen.__doc__.split("\n", 2)[-1].strip(),
+        [("mesh", _inspect.Parameter.empty, Mesh), ("options", None, _typing.Optional[TexgenOptions])])
+
+from ._layouts import *  # noqa: E402,F401,F403
+from ._batch import *  # noqa: E402,F401,F403
