@@ -448,6 +448,10 @@ std::unique_ptr<PyMapping> wrap(api::Mapping&& mapping, py::object input) {
 // mesh, or a mesh of as many faces.
 const api::Mapping& mappingFor(const char* function, py::handle mesh, py::handle mapping) {
   const PyMapping& m = argumentOf<PyMapping>(function, "m", "a uvtk.Mapping", mapping);
+  if (!m.mapping.detail)  // only unpickling makes one: what the engine keeps of a mapping does not travel
+    throw py::value_error(std::string(function) +
+                          "(): m: an unpickled mapping holds its data, not the engine's state this needs: call " +
+                          function + " where it was mapped, or map the mesh again");
   if (mesh.is(m.input) || mesh.is_none()) return m.mapping;
   const api::Mesh& given = meshOf(function, mesh);
   if (&given != &m.mapping.mesh && given.triangles.size() != m.mapping.mesh.triangles.size())

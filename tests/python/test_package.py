@@ -239,6 +239,11 @@ def test_a_mapping_pickles_as_its_data_not_mapped_again():
         assert back.source == m.source and back.verdict == m.verdict and back.summary == m.summary
         assert repr(back) == repr(m)
         assert [a.tolist() for a in back.split()] == [a.tolist() for a in m.split()]
+    # what report, render and write_mesh need of the engine does not travel: a clear error
+    for call in (lambda: uvtk.report(mesh, back), lambda: uvtk.render(mesh, back),
+                 lambda: uvtk.write_mesh(os.devnull + ".obj", mesh, back)):
+        with pytest.raises(ValueError, match=r"\(\): m: an unpickled mapping holds its data"):
+            call()
     t = uvtk.texgen(mesh, s="object_linear:1,0,0,0", t="eye_linear:0,1,0,0")
     back = pickle.loads(pickle.dumps(t))
     np.testing.assert_array_equal(back.q, t.q)
