@@ -166,6 +166,10 @@ CompareOptions CompareOptions::parse(const std::string& commandLine) {
   });
 }
 
+std::vector<OptionDescription> ReportOptions::describe() { return describeFields(ReportCommand({}).app, reportFields()); }
+std::vector<OptionDescription> RenderOptions::describe() { return describeFields(RenderCommand({}).app, renderFields()); }
+std::vector<OptionDescription> CompareOptions::describe() { return describeFields(CompareCommand({}).app, compareFields()); }
+
 std::string ReportOptions::commandLine() const { return joinCommandLine(wordsOf(*this, reportFields())); }
 std::string RenderOptions::commandLine() const { return joinCommandLine(wordsOf(*this, renderFields())); }
 std::string CompareOptions::commandLine() const { return joinCommandLine(wordsOf(*this, compareFields())); }

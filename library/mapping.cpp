@@ -161,29 +161,6 @@ struct TexgenCommand {
   }
 };
 
-// Each field as the command's --help shows its option: the help's sentence, default and choices
-// (a choice's names are its type name, "a|b|c"), and the field's kind.
-template <class Options>
-std::vector<OptionDescription> describeFields(const CLI::App& app, const std::vector<Field<Options>>& fields) {
-  std::vector<OptionDescription> out;
-  for (const Field<Options>& field : fields) {
-    OptionDescription d;
-    d.name = field.name + 2;
-    d.kind = field.kind;
-    d.optional = field.optional;
-    if (const CLI::Option* option = app.get_option_no_throw(field.name)) {
-      d.help = option->get_description();
-      d.defaultText = option->get_default_str();
-      const std::string type = option->get_type_name();
-      if (d.kind == "str" && type.find('|') != std::string::npos &&
-          type.find_first_of("ABCDEFGHIJKLMNOPQRSTUVWXYZ[") == std::string::npos)
-        d.choices = CLI::detail::split(type, '|');
-    }
-    out.push_back(std::move(d));
-  }
-  return out;
-}
-
 Reason reasonOf(const analysis::Reason& reason) {
   return {analysis::toString(reason.rule), analysis::toString(reason.severity), reason.value, reason.threshold,
           reason.faces, reason.text()};

@@ -553,6 +553,7 @@ py::list optionTable(const std::vector<api::OptionDescription>& options) {
     d["default"] = o.defaultText;
     d["choices"] = py::cast(o.choices);
     d["help"] = o.help;
+    d["type_name"] = o.typeName;
     out.append(d);
   }
   return out;
@@ -683,6 +684,12 @@ line, bit for bit. Options are keywords named as the command line's options (cap
         "map's keywords as `uvtk map --help` shows them: name, keyword, kind, optional, default, choices, help.");
   m.def("_texgen_options", [] { return optionTable(api::TexgenOptions::describe()); },
         "texgen's keywords as `uvtk texgen --help` shows them.");
+  m.def("_report_options", [] { return optionTable(api::ReportOptions::describe()); },
+        "report's keywords as `uvtk report --help` shows them.");
+  m.def("_render_options", [] { return optionTable(api::RenderOptions::describe()); },
+        "render's keywords as `uvtk render --help` shows them.");
+  m.def("_compare_options", [] { return optionTable(api::CompareOptions::describe()); },
+        "compare's keywords as `uvtk compare --help` shows them.");
   m.def("version", &api::version, "The library's version, as `uvtk --version` prints it.");
 
   // Corner states (Mapping.state), face flags (Mapping.face_flags), invalid reasons, point statuses.

@@ -8,7 +8,11 @@ and the meaning `uvtk map --help` shows: they are built here from the library's 
 """
 import collections.abc as _abc
 import inspect as _inspect
+import os as _os
+import re as _re
 import typing as _typing
+
+import numpy as _np  # a dependency (the wheel's Requires-Dist): missing, `import uvtk` says so at once
 
 from . import _uvtk
 from ._uvtk import *  # noqa: F401,F403  (every public name of the extension)
@@ -26,6 +30,12 @@ for _name in dir(_uvtk):
 
 
 # ---- signatures from the option table ----
+
+# The keywords that name a file to write (report's and compare's json=, html=, ...): a str or a path.
+_FILE_KEYWORDS = ("json", "html", "markdown", "sheet")
+_NUMBERS_PLACEHOLDER = _re.compile(r"^[A-Z](,[A-Z])+(\|\w+)?$|^[A-Z]x[A-Z]$")
+_NUMBERS_TEXT = _re.compile(r"^-?[0-9.]+([,x]-?[0-9.]+)+$")
+
 
 def _annotation(option):
     """The Python type of an option of the table (kind, choices, optional)."""
@@ -46,6 +56,13 @@ def _annotation(option):
         annotation = _typing.Union[float, _typing.Literal["auto"]]
     elif kind == "int|int[2]":
         annotation = _typing.Union[int, _abc.Sequence[int]]
+    elif option["keyword"] in _FILE_KEYWORDS:
+        annotation = _typing.Union[str, _os.PathLike]
+    elif option["keyword"] == "size":  # size=(w, h) is written "WxH" (the extension's commandLine)
+        annotation = _typing.Union[str, _abc.Sequence[int]]
+    elif _NUMBERS_PLACEHOLDER.match(option.get("type_name", "")) or _NUMBERS_TEXT.match(option["default"]):
+        # a value the command line spells as numbers in text ("1024,1024", L,R,B,T|auto): text or the numbers
+        annotation = _typing.Union[str, _abc.Sequence[float]]
     else:
         annotation = str
     return _typing.Optional[annotation] if _none_allowed(option) else annotation
@@ -54,11 +71,15 @@ def _annotation(option):
 def _none_allowed(option):
     """None means "not given" for the optional options but a choice (fit: None is a TypeError; its
     default is --help's, 'bbox'), and for a choice without a default (texgen's mode)."""
-    return (option["optional"] and not option["choices"]) or (bool(option["choices"]) and not option["default"])
+    if option["optional"] and not option["choices"]:
+        return True
+    if option["choices"]:
+        return not option["default"]
+    return not option["default"] and option["kind"] not in ("str", "bool", "str[]")
 
 
 def _default(option):
-    """The option's default as a Python value (None where it may be left unset)."""
+    """The option's default as --help shows it, as a Python value (None where it may be left unset)."""
     if _none_allowed(option):
         return None
     kind, text = option["kind"], option["default"]
@@ -66,8 +87,9 @@ def _default(option):
         return False
     if kind == "str[]":
         return ()
-    if kind == "int":
-        return int(text)
+    if kind == "int":  # report's texture_size shows "1024,1024" and takes N
+        values = {int(x) for x in text.split(",")}
+        return values.pop() if len(values) == 1 else text
     if kind == "float":
         return float(text)
     if kind.startswith("float["):
@@ -87,14 +109,14 @@ def _keyword_doc(option):
     return text
 
 
-def _signed(function, table, doc, first):
+def _signed(function, table, doc, first, returns=None):
     """`function` with a signature (first positional parameters, then the table's keywords) and a
     docstring listing every keyword."""
     parameters = [_inspect.Parameter(name, _inspect.Parameter.POSITIONAL_OR_KEYWORD, default=default, annotation=kind)
                   for name, default, kind in first]
     parameters += [_inspect.Parameter(o["keyword"], _inspect.Parameter.KEYWORD_ONLY, default=_default(o),
                                       annotation=_annotation(o)) for o in table]
-    function.__signature__ = _inspect.Signature(parameters, return_annotation=Mapping)
+    function.__signature__ = _inspect.Signature(parameters, return_annotation=returns or Mapping)
     function.__doc__ = doc + "\n\nKeywords (as `uvtk " + function.__name__ + " --help` shows them):\n\n" + \
         "\n".join(_keyword_doc(o) for o in table)
     function.__module__ = __name__
@@ -103,6 +125,9 @@ def _signed(function, table, doc, first):
 
 MAP_OPTIONS = tuple(_uvtk._map_options())
 TEXGEN_OPTIONS = tuple(_uvtk._texgen_options())
+REPORT_OPTIONS = tuple(_uvtk._report_options())
+RENDER_OPTIONS = tuple(_uvtk._render_options())
+COMPARE_OPTIONS = tuple(_uvtk._compare_options())
 
 
 def map(mesh, options=None, **keywords):  # noqa: A001 (uvtk.map, as `uvtk map`)
@@ -113,6 +138,29 @@ def texgen(mesh, options=None, **keywords):
     return _uvtk.texgen(mesh, options, **keywords)
 
 
+def report(mesh, m, **keywords):
+    return _uvtk.report(mesh, m, **keywords)
+
+
+def render(mesh, m, dtype="uint8", **keywords):
+    return _uvtk.render(mesh, m, dtype, **keywords)
+
+
+def compare(mesh, **keywords):
+    return _uvtk.compare(mesh, **keywords)
+
+
+def _doc(function):
+    """The extension's docstring without its first line (pybind11's signature)."""
+    return function.__doc__.split("\n", 2)[-1].strip()
+
+
+_MESH = ("mesh", _inspect.Parameter.empty, _typing.Optional[Mesh])
+_MAPPING = ("m", _inspect.Parameter.empty, Mapping)
+_signed(report, REPORT_OPTIONS, _doc(_uvtk.report), [_MESH, _MAPPING], dict)
+_signed(render, RENDER_OPTIONS, _doc(_uvtk.render),
+        [_MESH, _MAPPING, ("dtype", "uint8", _typing.Literal["uint8", "float32"])], _np.ndarray)
+_signed(compare, COMPARE_OPTIONS, _doc(_uvtk.compare), [("mesh", _inspect.Parameter.empty, Mesh)], dict)
 _signed(map, MAP_OPTIONS, _uvtk.map.__doc__.split("\n", 2)[-1].strip(),
         [("mesh", _inspect.Parameter.empty, Mesh), ("options", None, _typing.Optional[MapOptions])])
 _signed(texgen, TEXGEN_OPTIONS, _uvtk.texgen.__doc__.split("\n", 2)[-1].strip(),

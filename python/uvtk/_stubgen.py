@@ -108,9 +108,6 @@ def check_mesh(mesh: Mesh) -> dict[str, int]: ...
 def file_uvs(mesh: Mesh) -> Mapping: ...
 def write_mesh(path: _Path, mesh: Union[Mesh, Mapping], m: Optional[Mapping] = None, uv_digits: Literal["double", "float"] = "double",
                write_w: bool = False, ascii: bool = False, header: str = "") -> None: ...
-def report(mesh: Optional[Mesh], m: Mapping, **keywords: Any) -> dict[str, Any]: ...
-def render(mesh: Optional[Mesh], m: Mapping, dtype: Literal["uint8", "float32"] = "uint8", **keywords: Any) -> npt.NDArray[Any]: ...
-def compare(mesh: Mesh, **keywords: Any) -> dict[str, Any]: ...
 def eval(points: npt.ArrayLike, normals: Optional[npt.ArrayLike] = None, mesh: Optional[Mesh] = None,
          **keywords: Any) -> EvalResult: ...
 def from_meshio(mesh: Any) -> Mesh: ...
@@ -119,20 +116,25 @@ def map_many(paths: collections.abc.Iterable[_Path], out_dir: _Path, client: Any
 
 MAP_OPTIONS: tuple[dict[str, Any], ...]
 TEXGEN_OPTIONS: tuple[dict[str, Any], ...]
+REPORT_OPTIONS: tuple[dict[str, Any], ...]
+RENDER_OPTIONS: tuple[dict[str, Any], ...]
+COMPARE_OPTIONS: tuple[dict[str, Any], ...]
 '''
 
 
 def _annotation_text(option):
-    return inspect.formatannotation(uvtk._annotation(option)).replace("NoneType", "None")
+    text = inspect.formatannotation(uvtk._annotation(option)).replace("NoneType", "None")
+    return text.replace("os.PathLike", "os.PathLike[str]")
 
 
-def _function(name, first):
+def _function(name, first, table, returns):
+    """The stub of uvtk.NAME: `first` parameters, then the table's keywords, typed, with --help's
+    defaults, and the function's docstring."""
     function = getattr(uvtk, name)
-    table = uvtk.MAP_OPTIONS if name == "map" else uvtk.TEXGEN_OPTIONS
     lines = [f"def {name}({first}, *,"]
     for option in table:
         lines.append(f"    {option['keyword']}: {_annotation_text(option)} = {uvtk._default(option)!r},")
-    lines.append(") -> Mapping:")
+    lines.append(f") -> {returns}:")
     doc = function.__doc__.replace('"""', "'''").replace("\\", "\\\\")
     lines.append('    """' + doc + '\n    """')
     return "\n".join(lines) + "\n"
@@ -149,8 +151,13 @@ def stub_text():
         elif isinstance(value, tuple):
             constants.append(f"{name}: tuple[str, ...]")
     return (HEADER + "\n__version__: str\n" + "\n".join(constants) + "\n" + CLASSES + "\n" +
-            _function("map", "mesh: Mesh, options: Optional[MapOptions] = None") + "\n" +
-            _function("texgen", "mesh: Mesh, options: Optional[TexgenOptions] = None"))
+            _function("map", "mesh: Mesh, options: Optional[MapOptions] = None", uvtk.MAP_OPTIONS, "Mapping") + "\n" +
+            _function("texgen", "mesh: Mesh, options: Optional[TexgenOptions] = None", uvtk.TEXGEN_OPTIONS,
+                      "Mapping") + "\n" +
+            _function("report", "mesh: Optional[Mesh], m: Mapping", uvtk.REPORT_OPTIONS, "dict[str, Any]") + "\n" +
+            _function("render", 'mesh: Optional[Mesh], m: Mapping, dtype: Literal["uint8", "float32"] = "uint8"',
+                      uvtk.RENDER_OPTIONS, "npt.NDArray[Any]") + "\n" +
+            _function("compare", "mesh: Mesh", uvtk.COMPARE_OPTIONS, "dict[str, Any]"))
 
 
 if __name__ == "__main__":

@@ -101,6 +101,24 @@ def test_texgen_signature_is_the_option_table(cli):
     assert keywords["eye"].default == (0.0, 0.0, 0.0) and keywords["center"].default == (0.0, 0.0, -1.0)
 
 
+@pytest.mark.parametrize("command", ["report", "render", "compare"])
+def test_report_render_and_compare_have_signatures_from_their_tables(cli, command):
+    function = getattr(uvtk, command)
+    table = getattr(uvtk, command.upper() + "_OPTIONS")
+    keywords = {n: p for n, p in inspect.signature(function).parameters.items()
+                if p.kind is inspect.Parameter.KEYWORD_ONLY}
+    assert list(keywords) == [o["keyword"] for o in table] and "threads" in keywords
+    shown = help_options(cli(command, "--help").stdout)
+    for option in table:
+        assert option["help"] and option["help"] in shown[option["name"]], (command, option["name"])
+    page = pydoc.render_doc(function, renderer=pydoc.plaintext)
+    assert "threads: int = 0" in page
+    if command == "render":
+        assert typing.get_args(keywords["cull"].annotation) == ("back", "front", "none")
+        assert keywords["near"].default is None and keywords["fovy"].default == 45.0
+        assert inspect.signature(function).return_annotation is np.ndarray
+
+
 def test_each_default_given_explicitly_is_the_default():
     mesh = uvtk.Mesh(*torus())
     plain = uvtk.map(mesh)
@@ -144,6 +162,9 @@ def test_the_stubs_are_generated_from_the_built_module():
 
 
 SAMPLE = '''
+import pathlib
+from typing import Any
+
 import numpy as np
 import numpy.typing as npt
 import uvtk
@@ -157,6 +178,9 @@ vmapping, indices, uvs = m.split()
 V, F, TC, FTC = m.to_arrays()
 again: uvtk.Mesh = uvtk.Mesh.from_arrays(V, F, TC, FTC)
 t = uvtk.texgen(mesh, s="object_linear:1,0,0,0", no_normalize=True)
+rep: dict[str, object] = uvtk.report(mesh, m, html=pathlib.Path("r.html"), size=(64, 64), threads=1)
+img: npt.NDArray[Any] = uvtk.render(mesh, m, view="checker", size=(32, 32), cull="none", near=0.1, threads=2)
+ranked = uvtk.compare(mesh, by="angle", top=3, no_baselines=True, threads=1)
 '''
 
 WRONG = '''
@@ -168,6 +192,8 @@ uvtk.map(mesh, projector="cylindre")
 uvtk.map(mesh, caps="yes")
 uvtk.map(mesh, cap_angel=30)
 n: int = uvtk.map(mesh).uv
+uvtk.render(mesh, uvtk.map(mesh), cull="sideways")
+uvtk.report(mesh, uvtk.map(mesh), threads="2")
 '''
 
 
@@ -191,6 +217,8 @@ def test_mypy_checks_scripts_against_the_stubs(tmp_path):
     assert 'bad.py:7: error: Argument "caps" to "map" has incompatible type' in out, out
     assert 'bad.py:8: error: Unexpected keyword argument "cap_angel" for "map"' in out, out
     assert "bad.py:9: error: Incompatible types in assignment" in out, out
+    assert 'bad.py:10: error: Argument "cull" to "render" has incompatible type' in out, out
+    assert 'bad.py:11: error: Argument "threads" to "report" has incompatible type' in out, out
 
 
 def test_unknown_keywords_and_choices_are_errors_naming_them():

@@ -45,6 +45,7 @@ struct OptionDescription {
   std::string defaultText;           // the default as --help shows it ("45", "0,0,1"); "" none
   std::vector<std::string> choices;  // a choice's names, in --help's order; empty for other options
   std::string help;                  // the one-line meaning --help shows
+  std::string typeName;              // --help's placeholder of the value: "FLOAT", "X,Y,Z", "WxH", "a|b|c"; "" for a flag
 };
 
 // The options of `uvtk map` (docs/conventions.md): each field is the option of that name, with
