@@ -388,3 +388,20 @@ def test_map_many_on_a_local_cluster_writes_what_the_program_writes(tmp_path, cl
     # Dask's default scheduler, the same bytes
     local = uvtk.map_many([meshes / "m1.obj"], tmp_path / "bag", projector="cylinder")
     assert local["mapped"] == 1 and (tmp_path / "bag" / "m1.obj").read_bytes() == (expected / "m1.obj").read_bytes()
+
+
+# ---- the README ----
+
+def test_the_readmes_python_lines_run(tmp_path, meshes_dir, monkeypatch):
+    readme = pathlib.Path(__file__).resolve().parents[2] / "README.md"
+    block = re.search(r"```python\n(.*?)```", readme.read_text(encoding="utf-8"), re.S).group(1)
+    assert "uvtk.map_many(" in block and "m.split()" in block
+    (tmp_path / "meshes").mkdir()
+    for name in ("torus.obj", "cube.obj"):
+        (tmp_path / "meshes" / name).write_bytes((meshes_dir / name).read_bytes())
+    (tmp_path / "mesh.obj").write_bytes((meshes_dir / "torus.obj").read_bytes())
+    monkeypatch.chdir(tmp_path)
+    scope = {}
+    exec(compile(block, str(readme), "exec"), scope)  # noqa: S102 (the README's own lines)
+    assert scope["img"].shape == (384, 512, 3) and scope["m"].uv.shape[1:] == (3, 2)
+    assert scope["batch"]["mapped"] == 2 and (tmp_path / "out" / "torus.obj").exists()
