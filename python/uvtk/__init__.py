@@ -7,6 +7,7 @@ and the meaning `uvtk map --help` shows: they are built here from the library's 
 (uvtk._uvtk._map_options()), and __init__.pyi is generated from the same table (uvtk._stubgen).
 """
 import collections.abc as _abc
+import difflib as _difflib
 import inspect as _inspect
 import os as _os
 import re as _re
@@ -134,19 +135,34 @@ def map(mesh, options=None, **keywords):  # noqa: A001 (uvtk.map, as `uvtk map`)
     return _uvtk.map(mesh, options, **keywords)
 
 
+def _nearest(keywords, table):
+    """A mistyped keyword is a ValueError naming the nearest one, as map's are ("cap_angel: not a
+    parameter here; did you mean cap_angle?"); others go on to the command line's parser."""
+    known = [o["keyword"] for o in table]
+    for keyword in keywords:
+        if keyword not in known:
+            near = _difflib.get_close_matches(keyword, known, n=1, cutoff=0.6)
+            if near:
+                raise ValueError(f"{keyword}: not a parameter here; did you mean {near[0]}?")
+
+
 def texgen(mesh, options=None, **keywords):
+    _nearest(keywords, TEXGEN_OPTIONS)
     return _uvtk.texgen(mesh, options, **keywords)
 
 
 def report(mesh, m, **keywords):
+    _nearest(keywords, REPORT_OPTIONS)
     return _uvtk.report(mesh, m, **keywords)
 
 
 def render(mesh, m, dtype="uint8", **keywords):
+    _nearest(keywords, RENDER_OPTIONS)
     return _uvtk.render(mesh, m, dtype, **keywords)
 
 
 def compare(mesh, **keywords):
+    _nearest(keywords, COMPARE_OPTIONS)
     return _uvtk.compare(mesh, **keywords)
 
 

@@ -227,6 +227,15 @@ def test_unknown_keywords_and_choices_are_errors_naming_them():
         uvtk.map(mesh, cap_angel=30)
     with pytest.raises(ValueError, match="cylindre"):
         uvtk.map(mesh, projector="cylindre")
+    m = uvtk.map(mesh)
+    with pytest.raises(ValueError, match=r"^threadz: not a parameter here; did you mean threads\?$"):
+        uvtk.report(mesh, m, threadz=1)
+    with pytest.raises(ValueError, match=r"^tpo: not a parameter here; did you mean top\?$"):
+        uvtk.compare(mesh, tpo=3)
+    with pytest.raises(ValueError, match=r"^mdoe: not a parameter here; did you mean mode\?$"):
+        uvtk.texgen(mesh, mdoe="sphere_map")
+    with pytest.raises(ValueError, match=r"^--cull: 'sideways' is not one of: back, front, none$"):
+        uvtk.render(mesh, m, cull="sideways")
 
 
 def test_names_are_uvtks():
