@@ -3,7 +3,8 @@ meshes on Dask"): the wall time of each, the outputs compared byte for byte.
 
     PYTHONPATH=build/python python3 bench/map_many_dask.py [--meshes 200] [--workers 2] [--projector sphere]
 
-The meshes are lat-long spheres of 24 to 64 segments from build/meshes/uvtk_meshgen (or --folder).
+The meshes are lat-long spheres of 24 to 64 segments (--segments) from build/meshes/uvtk_meshgen
+(or --folder).
 """
 import argparse
 import os
@@ -22,6 +23,8 @@ def main():
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--projector", default="sphere")
     parser.add_argument("--folder", help="map these meshes instead of generated ones")
+    parser.add_argument("--segments", type=int, nargs=2, default=(24, 64), metavar=("MIN", "MAX"),
+                        help="the generated spheres' segments (rings: half)")
     parser.add_argument("--uvtk", default="build/apps/uvtk/uvtk")
     parser.add_argument("--meshgen", default="build/meshes/uvtk_meshgen")
     args = parser.parse_args()
@@ -31,7 +34,8 @@ def main():
         if not args.folder:
             folder.mkdir()
             for i in range(args.meshes):
-                segments = 24 + (i * 7) % 41
+                low, high = args.segments
+                segments = low + (i * 7) % (high - low + 1)
                 subprocess.run([args.meshgen, "--sphere", str(segments), str(segments // 2), str(folder / f"s{i:03}.obj")],
                                check=True, capture_output=True)
         count = len(list(folder.iterdir()))

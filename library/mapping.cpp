@@ -304,6 +304,7 @@ void writeMesh(const std::string& path, const Mapping& mapping, const WriteOptio
     write.floatDigits = options.uvDigits == "float";
     write.ascii = options.ascii;
     write.header = options.header;
+    write.threads = options.threads;
     if (!detail.texgen) return io::writeMesh(path, mapped.mesh, &mapped.uv, write);
     // As `uvtk texgen -o`: r when generated (in an OBJ), and (s, t, r) divided by q where q is not 1.
     const bool obj = io::outputFormatOf(path) == io::MeshFormat::obj;

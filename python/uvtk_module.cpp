@@ -461,9 +461,12 @@ const api::Mapping& mappingFor(const char* function, py::handle mesh, py::handle
   return m.mapping;
 }
 
-api::WriteOptions writeOptions(const std::string& uvDigits, bool writeW, bool ascii, const std::string& header) {
+api::WriteOptions writeOptions(const std::string& uvDigits, bool writeW, bool ascii, const std::string& header,
+                               int threads) {
+  if (threads < 0 || threads > 1024) throw py::value_error("write_mesh(): threads: expected 0 to 1024, got " + std::to_string(threads));
   api::WriteOptions options;
   options.header = header;
+  options.threads = threads;
   options.uvDigits = uvDigits;
   options.writeW = writeW;
   options.ascii = ascii;
@@ -957,7 +960,7 @@ mode="sphere_map", eye=(0, 0, 5), no_normalize=True, ... Returns a uvtk.Mapping 
   m.def(
       "write_mesh",
       [](py::object path, py::object mesh, py::object mapping, const std::string& uvDigits, bool writeW, bool ascii,
-         const std::string& header) {
+         const std::string& header, int threads) {
         const std::string file = pathOf("write_mesh", path);
         if (mapping.is_none() && py::isinstance<PyMapping>(mesh)) std::swap(mesh, mapping);
         if (mapping.is_none()) {
@@ -966,18 +969,19 @@ mode="sphere_map", eye=(0, 0, 5), no_normalize=True, ... Returns a uvtk.Mapping 
           return;
         }
         const api::Mapping& mapped = mappingFor("write_mesh", mesh, mapping);
-        const api::WriteOptions options = writeOptions(uvDigits, writeW, ascii, header);
+        const api::WriteOptions options = writeOptions(uvDigits, writeW, ascii, header, threads);
         interruptible([&] { api::writeMesh(file, mapped, options); });
       },
       py::arg("path"), py::arg("mesh"), py::arg("m") = py::none(), py::arg("uv_digits") = "double",
-      py::arg("write_w") = false, py::arg("ascii") = false, py::arg("header") = "",
+      py::arg("write_w") = false, py::arg("ascii") = false, py::arg("header") = "", py::arg("threads") = 0,
       R"(Writes a mesh by the path's extension (.obj, .ply, .glb, .gltf + .bin), whole or not at all
 (uvtk.OutputError).
 
 write_mesh(path, mesh, m): the mapping's mesh with its per-corner UVs, as `uvtk map -o` writes it
 (uv_digits='double' round-trips every double, 'float' every float, in an OBJ; write_w=True writes
 vt u v w in an OBJ; ascii=True writes a .ply as text; header="uvtk map IN" writes the comment
-lines `uvtk map` writes at the top of an OBJ or PLY, so that the bytes are the program's).
+lines `uvtk map` writes at the top of an OBJ or PLY, so that the bytes are the program's; threads:
+those formatting an OBJ, 0 one per hardware thread, the same bytes).
 write_mesh(path, mesh): the mesh with its own texture coordinates and normals.)");
 
   m.def(

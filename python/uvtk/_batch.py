@@ -32,7 +32,8 @@ def _map_one(path, out_dir, extension, options):
     try:
         mesh = uvtk.read_mesh(path)
         m = uvtk.map(mesh, **options)
-        uvtk.write_mesh(output, mesh, m, header="uvtk map " + path)  # the program's comment line
+        # the program's comment line, and its threads (one a mesh in a batch)
+        uvtk.write_mesh(output, mesh, m, header="uvtk map " + path, threads=options.get("threads", 1))
     except Exception as error:  # one mesh's failure is the batch's record, as `uvtk map DIR` counts it
         return {"input": path, "output": None, "status": "failed", "error": f"{type(error).__name__}: {error}"}
     return {"input": path, "output": output, "status": m.verdict["status"], "summary": m.summary}

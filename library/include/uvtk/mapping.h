@@ -194,6 +194,7 @@ struct WriteOptions {
   bool writeW = false;              // OBJ: write the third component (the cube face id, texgen's r)
   bool ascii = false;               // PLY: ASCII text instead of binary little endian
   std::string header;               // OBJ and PLY: comment lines at the top ("uvtk map IN" as the program writes)
+  int threads = 0;                  // OBJ: threads formatting the text (0: one per hardware thread); same bytes
 };
 
 // Writes the mapping's mesh with per-corner texture coordinates, by the path's extension (.obj,
