@@ -361,6 +361,18 @@ def test_meshio_round_trip_through_ply(tmp_path):
     np.testing.assert_array_equal(own.uv, m.uv)
 
 
+def test_write_mesh_threads_give_the_same_bytes(tmp_path):
+    mesh = uvtk.Mesh(*torus(64, 32))
+    m = uvtk.map(mesh, projector="cylinder")
+    for threads in (0, 1, 2):
+        uvtk.write_mesh(tmp_path / f"t{threads}.obj", mesh, m, threads=threads, header="uvtk map in.obj")
+    first = (tmp_path / "t0.obj").read_bytes()
+    assert first.startswith(b"# uvtk map in.obj\n")
+    assert first == (tmp_path / "t1.obj").read_bytes() == (tmp_path / "t2.obj").read_bytes()
+    with pytest.raises(ValueError, match="threads"):
+        uvtk.write_mesh(tmp_path / "t.obj", mesh, m, threads=-1)
+
+
 # ---- report(html=) ----
 
 def test_report_writes_html_for_file_and_numpy_meshes(tmp_path, meshes_dir):
@@ -390,6 +402,11 @@ def test_map_many_on_a_local_cluster_writes_what_the_program_writes(tmp_path, cl
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
             distributed.Client(cluster) as client:
         batch = uvtk.map_many(meshes, tmp_path / "dask", client=client, projector="cylinder")
+        # a scheduler's address is all it takes
+        by_address = uvtk.map_many([meshes / "m0.obj"], tmp_path / "address", client=cluster.scheduler_address,
+                                   projector="cylinder")
+    assert by_address["mapped"] == 1
+    assert (tmp_path / "address" / "m0.obj").read_bytes() == (expected / "m0.obj").read_bytes()
     assert batch["mapped"] == 3 and batch["failed"] == 1 and sum(batch["verdicts"].values()) == 3
     assert [pathlib.Path(r["input"]).name for r in batch["meshes"]] == ["broken.off", "m0.obj", "m1.obj", "m2.obj"]
     for name in ("m0.obj", "m1.obj", "m2.obj"):
