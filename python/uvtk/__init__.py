@@ -28,6 +28,7 @@ for _name in dir(_uvtk):
             _object.__module__ = __name__
         except (AttributeError, TypeError):
             pass
+del _name, _object
 
 
 # ---- signatures from the option table ----
