@@ -25,8 +25,11 @@ def _meshes(paths):
 
 def _map_one(path, out_dir, extension, options):
     """One task: read, map, write OUT_DIR/STEM.EXT; returns the mesh's record (never raises)."""
+    import time
+
     import uvtk
 
+    start = time.perf_counter()
     stem = _os.path.splitext(_os.path.basename(path))[0]
     output = _os.path.join(out_dir, stem + extension)
     try:
@@ -35,16 +38,24 @@ def _map_one(path, out_dir, extension, options):
         # the program's comment line, and its threads (one a mesh in a batch)
         uvtk.write_mesh(output, mesh, m, header="uvtk map " + path, threads=options.get("threads", 1))
     except Exception as error:  # one mesh's failure is the batch's record, as `uvtk map DIR` counts it
-        return {"input": path, "output": None, "status": "failed", "error": f"{type(error).__name__}: {error}"}
-    return {"input": path, "output": output, "status": m.verdict["status"], "summary": m.summary}
+        return {"error": f"{type(error).__name__}: {error}", "input": path,
+                "milliseconds": (time.perf_counter() - start) * 1e3, "status": "failed"}
+    return {"input": path, "milliseconds": (time.perf_counter() - start) * 1e3, "output": output, "status": "ok",
+            "summary": m.summary, "verdict": m.verdict["status"]}
 
 
 def map_many(paths, out_dir, client=None, format="obj", **options):  # noqa: A002 (as --format)
     """Maps every mesh of `paths` (a list of files, or a folder: its meshes as `uvtk map DIR` finds
     them) into `out_dir`, one Dask task a mesh; the keywords are uvtk.map's (threads=1 unless
     given). client: None (Dask's default scheduler over a dask.bag), a distributed.Client, or a
-    scheduler's address. Returns {"mapped", "failed", "verdicts": {"pass", "warn", "fail"},
-    "meshes": [{"input", "output", "status", "summary" or "error"}, ...]} in the order of the paths."""
+    scheduler's address. Returns the batch as `uvtk map DIR --json` writes batch.json: "mapped",
+    "failed", "meshes" [{"input", "status" ("ok" or "failed"), "verdict", "output", "summary" (the
+    record itself, as a dict), "error", "milliseconds"}, ...] in the order of the paths,
+    "milliseconds" {"wall"}, "options" (the mapping's, as the summaries give them), "tool"; and
+    "verdicts" {"pass", "warn", "fail"}."""
+    import time
+
+    start = time.perf_counter()
     meshes = _meshes(paths)
     out_dir = _os.fsdecode(out_dir)
     _os.makedirs(out_dir, exist_ok=True)
@@ -54,7 +65,7 @@ def map_many(paths, out_dir, client=None, format="obj", **options):  # noqa: A00
     options.setdefault("threads", 1)
     import uvtk
 
-    uvtk.MapOptions.parse("")  # fail here, not in every task, when Dask is missing a piece below
+    jobs = None
     if client is None:
         import dask.bag
 
@@ -67,14 +78,20 @@ def map_many(paths, out_dir, client=None, format="obj", **options):  # noqa: A00
 
             client = own = distributed.Client(client)
         try:
+            jobs = sum(client.nthreads().values())
             futures = client.map(_map_one, meshes, out_dir=out_dir, extension=extension, options=options, pure=False)
             records = client.gather(futures)
         finally:
             if own is not None:
                 own.close()
+    records = list(records)
     verdicts = {"pass": 0, "warn": 0, "fail": 0}
     for record in records:
-        if record["status"] in verdicts:
-            verdicts[record["status"]] += 1
+        if record["status"] == "ok":
+            verdicts[record["verdict"]] += 1
     failed = sum(1 for r in records if r["status"] == "failed")
-    return {"mapped": len(records) - failed, "failed": failed, "verdicts": verdicts, "meshes": list(records)}
+    mapped = [r for r in records if r["status"] == "ok"]
+    return {"failed": failed, "jobs": jobs, "mapped": len(records) - failed, "meshes": records,
+            "milliseconds": {"wall": (time.perf_counter() - start) * 1e3},
+            "options": mapped[0]["summary"].get("options") if mapped else None,
+            "tool": {"name": "uvtk", "version": uvtk.__version__}, "verdicts": verdicts}

@@ -408,6 +408,23 @@ def test_map_many_on_a_local_cluster_writes_what_the_program_writes(tmp_path, cl
     assert by_address["mapped"] == 1
     assert (tmp_path / "address" / "m0.obj").read_bytes() == (expected / "m0.obj").read_bytes()
     assert batch["mapped"] == 3 and batch["failed"] == 1 and sum(batch["verdicts"].values()) == 3
+    assert batch["jobs"] == 2 and batch["tool"] == {"name": "uvtk", "version": uvtk.__version__}
+    assert batch["meshes"][0]["status"] == "failed" and "broken.off" in batch["meshes"][0]["error"]
+    # the batch as `uvtk map DIR --json` writes batch.json: the same keys, each mesh's summary the same record
+    run = cli("map", meshes, "-o", tmp_path / "again", "--json", tmp_path / "json", "--projector", "cylinder", "-q")
+    import json
+    program = json.loads((tmp_path / "json" / "batch.json").read_text())
+    assert set(batch) - {"verdicts"} == set(program)
+    assert batch["options"] == program["options"]
+    for ours, theirs in zip(batch["meshes"], program["meshes"]):
+        assert set(ours) - {"summary"} <= set(theirs) | {"error"} and ours["status"] == theirs["status"]
+        if ours["status"] == "ok":
+            assert ours["verdict"] == theirs["verdict"]
+            record = json.loads(pathlib.Path(theirs["summary"]).read_text())
+            for volatile in ("milliseconds", "output", "input"):
+                record.pop(volatile, None)
+                ours["summary"].pop(volatile, None)
+            assert ours["summary"] == record
     assert [pathlib.Path(r["input"]).name for r in batch["meshes"]] == ["broken.off", "m0.obj", "m1.obj", "m2.obj"]
     for name in ("m0.obj", "m1.obj", "m2.obj"):
         assert (tmp_path / "dask" / name).read_bytes() == (expected / name).read_bytes(), name
