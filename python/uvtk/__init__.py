@@ -13,7 +13,15 @@ import os as _os
 import re as _re
 import typing as _typing
 
-import numpy as _np  # a dependency (the wheel's Requires-Dist): missing, `import uvtk` says so at once
+try:  # a dependency (the wheel's Requires-Dist): missing, `import uvtk` says so at once
+    import numpy as _np
+except ModuleNotFoundError as _error:
+    # The stubs are made at build time by an interpreter that may have no numpy (pip's build
+    # isolation with an index): python/CMakeLists.txt sets UVTK_STUBGEN for it.
+    if not _os.environ.get("UVTK_STUBGEN"):
+        raise ModuleNotFoundError("uvtk needs numpy (a dependency of the package): pip install numpy",
+                                  name="numpy") from _error
+    _np = None
 
 from . import _uvtk
 from ._uvtk import *  # noqa: F401,F403  (every public name of the extension)
@@ -176,7 +184,8 @@ _MESH = ("mesh", _inspect.Parameter.empty, _typing.Optional[Mesh])
 _MAPPING = ("m", _inspect.Parameter.empty, Mapping)
 _signed(report, REPORT_OPTIONS, _doc(_uvtk.report), [_MESH, _MAPPING], dict)
 _signed(render, RENDER_OPTIONS, _doc(_uvtk.render),
-        [_MESH, _MAPPING, ("dtype", "uint8", _typing.Literal["uint8", "float32"])], _np.ndarray)
+        [_MESH, _MAPPING, ("dtype", "uint8", _typing.Literal["uint8", "float32"])],
+        _np.ndarray if _np else "numpy.ndarray")
 _signed(compare, COMPARE_OPTIONS, _doc(_uvtk.compare), [("mesh", _inspect.Parameter.empty, Mesh)], dict)
 _signed(map, MAP_OPTIONS, _uvtk.map.__doc__.split("\n", 2)[-1].strip(),
         [("mesh", _inspect.Parameter.empty, Mesh), ("options", None, _typing.Optional[MapOptions])])

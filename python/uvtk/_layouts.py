@@ -9,7 +9,10 @@ uvtk keeps UVs per corner, (F, 3, 2). Other tools want:
   point_data "s" and "t", the vertex properties uvtk's own PLY files hold (meshio's PLY writer
   skips an (N, 2) array).
 """
-import numpy as _np
+try:
+    import numpy as _np
+except ModuleNotFoundError:  # only while the stubs are made without numpy (uvtk/__init__.py)
+    _np = None
 
 from . import _uvtk
 

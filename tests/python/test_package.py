@@ -238,6 +238,17 @@ def test_unknown_keywords_and_choices_are_errors_naming_them():
         uvtk.render(mesh, m, cull="sideways")
 
 
+def test_without_numpy_import_says_so(tmp_path):
+    # numpy is a dependency: under an interpreter without it, `import uvtk` fails at once (it
+    # imported, and m.uv raised later)
+    (tmp_path / "numpy").mkdir()
+    (tmp_path / "numpy" / "__init__.py").write_text('raise ModuleNotFoundError("No module named \'numpy\'", name="numpy")')
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(tmp_path), str(PACKAGE.parent)]))
+    env.pop("UVTK_STUBGEN", None)
+    run = subprocess.run([sys.executable, "-c", "import uvtk"], capture_output=True, text=True, env=env)
+    assert run.returncode == 1 and "ModuleNotFoundError: uvtk needs numpy" in run.stderr, run.stderr
+
+
 def test_names_are_uvtks():
     assert uvtk.Mesh.__module__ == "uvtk" and uvtk.Mapping.__module__ == "uvtk"
     assert uvtk.InputError.__module__ == "uvtk" and uvtk.map.__module__ == "uvtk"
