@@ -358,7 +358,7 @@ def test_split_of_a_projector_mapping_rebuilds_every_corner():
 
 
 def test_meshio_round_trip_through_ply(tmp_path):
-    meshio = pytest.importorskip("meshio")
+    import meshio  # python3-meshio (scripts/setup.sh)
     mesh = uvtk.Mesh(*torus())
     m = uvtk.map(mesh, projector="cylinder")
     out = uvtk.to_meshio(m)
@@ -401,7 +401,7 @@ def test_report_writes_html_for_file_and_numpy_meshes(tmp_path, meshes_dir):
 # ---- Dask ----
 
 def test_map_many_on_a_local_cluster_writes_what_the_program_writes(tmp_path, cli):
-    distributed = pytest.importorskip("distributed")
+    import distributed  # python3-distributed (scripts/setup.sh)
     meshes = tmp_path / "in"
     meshes.mkdir()
     for i, (p, t) in enumerate((torus(12, 8), torus(16, 6), quad_with_seam()[:2])):
