@@ -133,7 +133,7 @@ Field<Options> flagField(const char* name, bool Options::*member, bool whenGiven
             if (o.*member != whenGiven) return std::nullopt;
             return ParameterValue(true);
           },
-          "bool"};
+          "bool", false};
 }
 
 template <class Options, std::size_t N>
@@ -168,7 +168,7 @@ Field<Options> listField(const char* name, std::vector<std::string> Options::*me
             if ((o.*member).empty()) return std::nullopt;
             return ParameterValue(o.*member);
           },
-          "str[]"};
+          "str[]", false};
 }
 
 // The fields that differ from their defaults as typed parameters, named without the dashes.
