@@ -175,7 +175,7 @@ std::string RenderOptions::commandLine() const { return joinCommandLine(wordsOf(
 std::string CompareOptions::commandLine() const { return joinCommandLine(wordsOf(*this, compareFields())); }
 
 std::string report(const Mapping& mapping, const ReportOptions& options) {
-  detailOf(mapping, "report");
+  judgedDetailOf(mapping, "report");
   return translatingErrors([&] {
     const ReportCommand command(wordsOf(options, reportFields()));
     const inspect::ReportOptions o = command.options();
@@ -199,7 +199,7 @@ std::vector<std::uint8_t> Image::bytes() const {
 }
 
 Image render(const Mapping& mapping, const RenderOptions& options) {
-  detailOf(mapping, "render");
+  judgedDetailOf(mapping, "render");
   return translatingErrors([&] {
     const RenderCommand command(wordsOf(options, renderFields()));
     const inspect::MappedMesh& mapped = mapping.detail->mapped;

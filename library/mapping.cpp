@@ -251,6 +251,42 @@ const MappingDetail& detailOf(const Mapping& mapping, const char* function) {
   return *mapping.detail;
 }
 
+const MappingDetail& judgedDetailOf(const Mapping& mapping, const char* function) {
+  const MappingDetail& detail = detailOf(mapping, function);
+  if (detail.restored)
+    throw std::invalid_argument(std::string(function) +
+                                ": the mapping was restored from its data (unpickled), which holds no judgement "
+                                "nor a projector's per-pixel evaluation: call it where the mapping was made, or map again");
+  return detail;
+}
+
+Mapping restoreMapping(Mapping data) {
+  const std::size_t faces = data.mesh.triangles.size(), corners = 3 * faces;
+  if (data.uv.size() != corners || data.invalidReason.size() != corners || data.state.size() != corners ||
+      data.faceFlags.size() != faces || (!data.w.empty() && data.w.size() != corners) ||
+      (!data.q.empty() && data.q.size() != corners))
+    throw std::invalid_argument("restoreMapping: the per-corner and per-face arrays do not match the mesh's " +
+                                std::to_string(faces) + " faces");
+  if (data.source != "projector" && data.source != "texgen" && data.source != "file")
+    throw std::invalid_argument("restoreMapping: source '" + data.source + "' is not projector, texgen or file");
+  CheckedMesh in = checked(data.mesh);
+  auto detail = std::make_shared<MappingDetail>();
+  detail->restored = true;
+  detail->input = std::move(in.input);
+  inspect::MappedMesh& mapped = detail->mapped;
+  mapped.mesh = std::move(in.engine);
+  mapped.uv.uv.resize(corners);
+  for (std::size_t c = 0; c < corners; ++c) mapped.uv.uv[c] = Vec2(data.uv[c][0], data.uv[c][1]);
+  mapped.uv.w = data.w;
+  mapped.uv.faceFlags = data.faceFlags;
+  mapped.uv.cornerInvalid.resize(corners);
+  for (std::size_t c = 0; c < corners; ++c) mapped.uv.cornerInvalid[c] = std::uint8_t(data.invalidReason[c]);
+  mapped.q = data.q;
+  mapped.source = data.source;
+  data.detail = std::move(detail);
+  return data;
+}
+
 param::ParameterDictionary toEngine(const Parameters& parameters) {
   param::ParameterDictionary dictionary(parameters.face == Parameters::Face::Keyword       ? param::ParameterFace::Keyword
                                         : parameters.face == Parameters::Face::CommandLine ? param::ParameterFace::CommandLine
@@ -297,6 +333,9 @@ void writeMesh(const std::string& path, const Mapping& mapping, const WriteOptio
   if (options.uvDigits != "double" && options.uvDigits != "float")
     throw std::invalid_argument("writeMesh: uvDigits is '" + options.uvDigits + "', expected double or float");
   const MappingDetail& detail = detailOf(mapping, "writeMesh");
+  if (detail.restored && detail.mapped.source == "texgen")  // which of r and q its OBJ holds is in the options
+    throw std::invalid_argument("writeMesh: a texgen mapping restored from its data (unpickled) does not carry "
+                                "its texgen options, which decide what its file holds: write it where it was made");
   translatingErrors([&] {
     const inspect::MappedMesh& mapped = detail.mapped;
     io::MeshWriteOptions write;

@@ -448,10 +448,6 @@ std::unique_ptr<PyMapping> wrap(api::Mapping&& mapping, py::object input) {
 // mesh, or a mesh of as many faces.
 const api::Mapping& mappingFor(const char* function, py::handle mesh, py::handle mapping) {
   const PyMapping& m = argumentOf<PyMapping>(function, "m", "a uvtk.Mapping", mapping);
-  if (!m.mapping.detail)  // only unpickling makes one: what the engine keeps of a mapping does not travel
-    throw py::value_error(std::string(function) +
-                          "(): m: an unpickled mapping holds its data, not the engine's state this needs: call " +
-                          function + " where it was mapped, or map the mesh again");
   if (mesh.is(m.input) || mesh.is_none()) return m.mapping;
   const api::Mesh& given = meshOf(function, mesh);
   if (&given != &m.mapping.mesh && given.triangles.size() != m.mapping.mesh.triangles.size())
@@ -601,8 +597,8 @@ api::Mesh meshFromState(const py::tuple& state) {
 
 // A mapping's state: its mesh, every per-corner and per-face array, its source, verdict and
 // summary, and the mesh it was made from (None when that was its own mesh). Unpickled, it is the
-// same data, not mapped again; what report, render and write_mesh need of the engine
-// (api::Mapping::detail) does not travel (docs/python.md, "Pickling").
+// same data, not mapped nor judged again (api::restoreMapping): write_mesh writes it, report and
+// render refuse it (docs/python.md, "Pickling").
 py::tuple mappingState(const py::object& self) {
   const PyMapping& m = self.cast<const PyMapping&>();
   const api::Mapping& mapping = m.mapping;
@@ -650,12 +646,9 @@ std::unique_ptr<PyMapping> mappingFromState(const py::tuple& t) {
                                        reason[3].cast<double>(), reason[4].cast<std::size_t>(), reason[5].cast<std::string>()});
   }
   mapping.summaryJson = t[11].cast<std::string>();
-  const std::size_t corners = mapping.mesh.triangles.size() * 3;
-  if (mapping.uv.size() != corners || mapping.state.size() != corners || mapping.invalidReason.size() != corners ||
-      mapping.faceFlags.size() != mapping.mesh.triangles.size() || (!mapping.w.empty() && mapping.w.size() != corners) ||
-      (!mapping.q.empty() && mapping.q.size() != corners))
-    throw py::value_error("unpickling: a uvtk.Mapping's arrays do not match its mesh");
-  return std::make_unique<PyMapping>(PyMapping{std::move(mapping), py::reinterpret_borrow<py::object>(t[12])});
+  // What writeMesh needs (the engine's mesh and UVs), made from the data: not mapped nor judged again.
+  return std::make_unique<PyMapping>(
+      PyMapping{api::restoreMapping(std::move(mapping)), py::reinterpret_borrow<py::object>(t[12])});
 }
 
 }  // namespace

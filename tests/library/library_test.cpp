@@ -402,6 +402,29 @@ TEST(MapOptions, DescribeGivesEveryFieldsOptionAsTheHelpShowsIt) {
   EXPECT_TRUE(noNormalize);
 }
 
+TEST_F(LibraryTest, ARestoredMappingWritesTheSameBytesAndRefusesReports) {
+  MapOptions o;
+  o.projector = "cylinder";
+  o.seam = "cut";
+  const Mapping m = map(octahedron(), o);
+  Mapping data = m;
+  data.detail = nullptr;  // what a pickle carries: the public fields
+  const Mapping restored = restoreMapping(data);
+  EXPECT_EQ(restored.uv, m.uv);
+  EXPECT_EQ(restored.verdict.status, m.verdict.status);
+  writeMesh(path("a.obj"), m);
+  writeMesh(path("b.obj"), restored);
+  const auto bytes = [](const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(bytes(path("a.obj")), bytes(path("b.obj")));
+  EXPECT_THROW(report(restored), std::invalid_argument);
+  EXPECT_THROW(render(restored), std::invalid_argument);
+  data.uv.pop_back();
+  EXPECT_THROW(restoreMapping(data), std::invalid_argument);
+}
+
 TEST_F(LibraryTest, AHeaderIsTheCommentLineAtTheTopOfAnObj) {
   WriteOptions options;
   options.header = "uvtk map in.obj";

@@ -287,15 +287,38 @@ def test_a_mapping_pickles_as_its_data_not_mapped_again():
         assert back.source == m.source and back.verdict == m.verdict and back.summary == m.summary
         assert repr(back) == repr(m)
         assert [a.tolist() for a in back.split()] == [a.tolist() for a in m.split()]
-    # what report, render and write_mesh need of the engine does not travel: a clear error
-    for call in (lambda: uvtk.report(mesh, back), lambda: uvtk.render(mesh, back),
-                 lambda: uvtk.write_mesh(os.devnull + ".obj", mesh, back)):
-        with pytest.raises(ValueError, match=r"\(\): m: an unpickled mapping holds its data"):
+    # report and render read what the engine keeps of a mapping (the judgement's per-face
+    # measures, a projector's per-pixel evaluation): it does not travel, and they say so
+    for call in (lambda: uvtk.report(mesh, back), lambda: uvtk.render(mesh, back)):
+        with pytest.raises(ValueError, match=r"the mapping was restored from its data \(unpickled\)"):
             call()
     t = uvtk.texgen(mesh, s="object_linear:1,0,0,0", t="eye_linear:0,1,0,0")
     back = pickle.loads(pickle.dumps(t))
     np.testing.assert_array_equal(back.q, t.q)
     assert back.source == "texgen"
+    with pytest.raises(ValueError, match="a texgen mapping restored from its data"):
+        uvtk.write_mesh(os.devnull + ".obj", mesh, back)
+
+
+def test_an_unpickled_mapping_writes_the_same_bytes(tmp_path):
+    # map in one process, write in another: write_mesh of the unpickled mapping is the original's
+    mesh = uvtk.Mesh(*torus())
+    positions, triangles, uv = quad_with_seam()
+    cases = [(mesh, {"projector": "cylinder", "caps": True}), (mesh, {"projector": "sphere", "seam": "cut"}),
+             (mesh, {"projector": "cube"}), (mesh, {"projector": "atlas"}),
+             (mesh, {"projector": "camera", "eye": (0, 0, 9)})]
+    for i, (source, keywords) in enumerate(cases):
+        m = uvtk.map(source, **keywords)
+        back = pickle.loads(pickle.dumps(m))
+        for extension in ("obj", "ply", "glb"):
+            uvtk.write_mesh(tmp_path / f"a{i}.{extension}", source, m, write_w=extension == "obj")
+            uvtk.write_mesh(tmp_path / f"b{i}.{extension}", source, back, write_w=extension == "obj")
+            assert (tmp_path / f"a{i}.{extension}").read_bytes() == (tmp_path / f"b{i}.{extension}").read_bytes(), \
+                (keywords, extension)
+    own = uvtk.file_uvs(uvtk.Mesh(positions, triangles, uv=uv))
+    uvtk.write_mesh(tmp_path / "own.obj", None, own)
+    uvtk.write_mesh(tmp_path / "own_back.obj", None, pickle.loads(pickle.dumps(own)))
+    assert (tmp_path / "own.obj").read_bytes() == (tmp_path / "own_back.obj").read_bytes()
 
 
 def test_the_options_objects_pickle():

@@ -184,6 +184,13 @@ UVTK_API Mapping map(const Mesh& mesh, const MapOptions& options = {});
 // The same from typed parameters (Python's keywords): every name `uvtk map` takes but its outputs;
 // a name it does not take is std::invalid_argument with the nearest one.
 UVTK_API Mapping map(const Mesh& mesh, const Parameters& parameters);
+// A mapping's data made a mapping again (Python's unpickling): `data`'s mesh, uv, w, q, state,
+// invalidReason, faceFlags, source, verdict and summaryJson as map(), texgen() or fileUvs() gave
+// them (its detail is ignored). Not mapped nor judged again: writeMesh writes it as the mapping
+// it came from (the same bytes; not a texgen mapping's, whose options decide its file), report()
+// and render() refuse it (std::invalid_argument), for what they read of the engine is not in the
+// data. Throws std::invalid_argument when the arrays do not match the mesh.
+UVTK_API Mapping restoreMapping(Mapping data);
 // `mesh` with OpenGL texgen's (s, t, r, q), as `uvtk texgen` computes them.
 UVTK_API Mapping texgen(const Mesh& mesh, const TexgenOptions& options);
 // The mesh's own texture coordinates, judged. Throws std::invalid_argument when it has none.
