@@ -26,6 +26,7 @@ struct MappingDetail {
   int overlapResolution = 1024;  // the judgement's
   nlohmann::json input;          // the summaries' "input" record: the input mesh's counts
   std::optional<texgen::TexgenOptions> texgen;  // the options of a texgen mapping: its OBJ's r and q
+  bool restored = false;  // made by restoreMapping(): `mapped` holds the mesh and the UVs, nothing judged
 };
 
 uvtk::Mesh toEngine(const Mesh& mesh);
@@ -44,6 +45,9 @@ CheckedMesh checked(const Mesh& mesh);
 Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thresholds, int overlapResolution,
                     nlohmann::json input, std::optional<texgen::TexgenOptions> texgen = std::nullopt,
                     analysis::TextureSize textureSize = {}, int threads = 0);
+
+// What report() and render() need of a mapping: its detail, judged (not a restored one's).
+const MappingDetail& judgedDetailOf(const Mapping& mapping, const char* function);
 
 // What `function` needs of a mapping: its detail, which only map(), texgen() and fileUvs() make;
 // a default Mapping{} is std::invalid_argument.

@@ -166,12 +166,16 @@ CompareOptions CompareOptions::parse(const std::string& commandLine) {
   });
 }
 
+std::vector<OptionDescription> ReportOptions::describe() { return describeFields(ReportCommand({}).app, reportFields()); }
+std::vector<OptionDescription> RenderOptions::describe() { return describeFields(RenderCommand({}).app, renderFields()); }
+std::vector<OptionDescription> CompareOptions::describe() { return describeFields(CompareCommand({}).app, compareFields()); }
+
 std::string ReportOptions::commandLine() const { return joinCommandLine(wordsOf(*this, reportFields())); }
 std::string RenderOptions::commandLine() const { return joinCommandLine(wordsOf(*this, renderFields())); }
 std::string CompareOptions::commandLine() const { return joinCommandLine(wordsOf(*this, compareFields())); }
 
 std::string report(const Mapping& mapping, const ReportOptions& options) {
-  detailOf(mapping, "report");
+  judgedDetailOf(mapping, "report");
   return translatingErrors([&] {
     const ReportCommand command(wordsOf(options, reportFields()));
     const inspect::ReportOptions o = command.options();
@@ -195,7 +199,7 @@ std::vector<std::uint8_t> Image::bytes() const {
 }
 
 Image render(const Mapping& mapping, const RenderOptions& options) {
-  detailOf(mapping, "render");
+  judgedDetailOf(mapping, "render");
   return translatingErrors([&] {
     const RenderCommand command(wordsOf(options, renderFields()));
     const inspect::MappedMesh& mapped = mapping.detail->mapped;

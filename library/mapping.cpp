@@ -39,7 +39,7 @@ Field<MapOptions> seamPlaceField() {
             if (o.seamPlace) return std::vector<std::string>{"--seam-place", number(*o.seamPlace)};
             return std::vector<std::string>{};
           },
-          given};
+          given, "float|auto", true};
 }
 
 // --texture-size W,H (or N).
@@ -51,7 +51,7 @@ Field<MapOptions> textureSizeField() {
         o.textureSize = {size.width, size.height};
       },
       [](const std::array<int, 2>& v) { return std::to_string(v[0]) + "," + std::to_string(v[1]); },
-      [](const std::array<int, 2>& v) { return std::vector<double>{double(v[0]), double(v[1])}; });
+      [](const std::array<int, 2>& v) { return std::vector<double>{double(v[0]), double(v[1])}; }, "int|int[2]");
 }
 
 const std::vector<Field<MapOptions>>& mapFields() {
@@ -131,16 +131,14 @@ struct MapCommand {
   cli::ProjectorArguments projector;
   cli::VerdictArguments verdict;
   int overlapResolution = 1024, threads = 0;
-  std::string textureSize;
+  std::string textureSize = "1024,1024";
   std::optional<double> density;
 
   explicit MapCommand(const std::vector<std::string>& words) {
+    cli::addMapThreadsOption(app, threads);
     cli::addProjectorOptions(app, projector);
     cli::addVerdictOptions(app, verdict);
-    app.add_option("--overlap-resolution", overlapResolution);
-    app.add_option("--texture-size", textureSize);
-    app.add_option("--density", density);
-    app.add_option("--threads", threads);
+    cli::addMapJudgementOptions(app, overlapResolution, textureSize, density);
     parseWords(app, words);
     verdict.check();
   }
@@ -153,10 +151,7 @@ struct TexgenCommand {
 
   explicit TexgenCommand(const std::vector<std::string>& words) {
     cli::addTexgenOptions(app, texgen, "--mode");
-    app.add_option("--eye", eye);
-    app.add_option("--center", center);
-    app.add_option("--up", up);
-    app.add_option("--model", model);
+    cli::addTexgenViewOptions(app, eye, center, up, model);
     parseWords(app, words);
   }
 
@@ -184,6 +179,14 @@ MapOptions MapOptions::parse(const std::string& commandLine) {
     inspect::readMapSettings(toEngine(parameters));  // the engine's checks of the combination
     return options;
   });
+}
+
+std::vector<OptionDescription> MapOptions::describe() {
+  return describeFields(MapCommand({}).app, mapFields());
+}
+
+std::vector<OptionDescription> TexgenOptions::describe() {
+  return describeFields(TexgenCommand({}).app, texgenFields());
 }
 
 std::string MapOptions::commandLine() const { return joinCommandLine(wordsOf(*this, mapFields())); }
@@ -249,6 +252,42 @@ const MappingDetail& detailOf(const Mapping& mapping, const char* function) {
   return *mapping.detail;
 }
 
+const MappingDetail& judgedDetailOf(const Mapping& mapping, const char* function) {
+  const MappingDetail& detail = detailOf(mapping, function);
+  if (detail.restored)
+    throw std::invalid_argument(std::string(function) +
+                                ": the mapping was restored from its data (unpickled), which holds no judgement "
+                                "nor a projector's per-pixel evaluation: call it where the mapping was made, or map again");
+  return detail;
+}
+
+Mapping restoreMapping(Mapping data) {
+  const std::size_t faces = data.mesh.triangles.size(), corners = 3 * faces;
+  if (data.uv.size() != corners || data.invalidReason.size() != corners || data.state.size() != corners ||
+      data.faceFlags.size() != faces || (!data.w.empty() && data.w.size() != corners) ||
+      (!data.q.empty() && data.q.size() != corners))
+    throw std::invalid_argument("restoreMapping: the per-corner and per-face arrays do not match the mesh's " +
+                                std::to_string(faces) + " faces");
+  if (data.source != "projector" && data.source != "texgen" && data.source != "file")
+    throw std::invalid_argument("restoreMapping: source '" + data.source + "' is not projector, texgen or file");
+  CheckedMesh in = checked(data.mesh);
+  auto detail = std::make_shared<MappingDetail>();
+  detail->restored = true;
+  detail->input = std::move(in.input);
+  inspect::MappedMesh& mapped = detail->mapped;
+  mapped.mesh = std::move(in.engine);
+  mapped.uv.uv.resize(corners);
+  for (std::size_t c = 0; c < corners; ++c) mapped.uv.uv[c] = Vec2(data.uv[c][0], data.uv[c][1]);
+  mapped.uv.w = data.w;
+  mapped.uv.faceFlags = data.faceFlags;
+  mapped.uv.cornerInvalid.resize(corners);
+  for (std::size_t c = 0; c < corners; ++c) mapped.uv.cornerInvalid[c] = std::uint8_t(data.invalidReason[c]);
+  mapped.q = data.q;
+  mapped.source = data.source;
+  data.detail = std::move(detail);
+  return data;
+}
+
 param::ParameterDictionary toEngine(const Parameters& parameters) {
   param::ParameterDictionary dictionary(parameters.face == Parameters::Face::Keyword       ? param::ParameterFace::Keyword
                                         : parameters.face == Parameters::Face::CommandLine ? param::ParameterFace::CommandLine
@@ -295,12 +334,17 @@ void writeMesh(const std::string& path, const Mapping& mapping, const WriteOptio
   if (options.uvDigits != "double" && options.uvDigits != "float")
     throw std::invalid_argument("writeMesh: uvDigits is '" + options.uvDigits + "', expected double or float");
   const MappingDetail& detail = detailOf(mapping, "writeMesh");
+  if (detail.restored && detail.mapped.source == "texgen")  // which of r and q its OBJ holds is in the options
+    throw std::invalid_argument("writeMesh: a texgen mapping restored from its data (unpickled) does not carry "
+                                "its texgen options, which decide what its file holds: write it where it was made");
   translatingErrors([&] {
     const inspect::MappedMesh& mapped = detail.mapped;
     io::MeshWriteOptions write;
     write.writeW = options.writeW;
     write.floatDigits = options.uvDigits == "float";
     write.ascii = options.ascii;
+    write.header = options.header;
+    write.threads = options.threads;
     if (!detail.texgen) return io::writeMesh(path, mapped.mesh, &mapped.uv, write);
     // As `uvtk texgen -o`: r when generated (in an OBJ), and (s, t, r) divided by q where q is not 1.
     const bool obj = io::outputFormatOf(path) == io::MeshFormat::obj;

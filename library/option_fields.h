@@ -58,10 +58,14 @@ struct Field {
   std::function<void(Options&, const std::vector<std::string>&)> set;
   std::function<std::vector<std::string>(const Options&)> words;
   std::function<std::optional<ParameterValue>(const Options&)> value;
+  // The value's kind as OptionDescription::kind spells it, and whether it may be left unset (None).
+  std::string kind = "str";
+  bool optional = false;
 };
 
 template <class Options, class Value, class Set, class Words, class Typed>
-Field<Options> field(const char* name, Value Options::*member, Set set, Words words, Typed typed) {
+Field<Options> field(const char* name, Value Options::*member, Set set, Words words, Typed typed, std::string kind,
+                     bool optional = false) {
   return {name, std::move(set),
           [name, member, words](const Options& o) {
             return o.*member == Options{}.*member ? std::vector<std::string>{}
@@ -70,42 +74,45 @@ Field<Options> field(const char* name, Value Options::*member, Set set, Words wo
           [member, typed](const Options& o) -> std::optional<ParameterValue> {
             if (o.*member == Options{}.*member) return std::nullopt;
             return ParameterValue(typed(o.*member));
-          }};
+          },
+          std::move(kind), optional};
 }
 
 template <class Options>
 Field<Options> textField(const char* name, std::string Options::*member) {
   return field(
       name, member, [member](Options& o, const std::vector<std::string>& r) { o.*member = r.back(); },
-      [](const std::string& v) { return v; }, [](const std::string& v) { return v; });
+      [](const std::string& v) { return v; }, [](const std::string& v) { return v; }, "str");
 }
 
 template <class Options>
 Field<Options> optionalTextField(const char* name, std::optional<std::string> Options::*member) {
   return field(
       name, member, [member](Options& o, const std::vector<std::string>& r) { o.*member = r.back(); },
-      [](const std::optional<std::string>& v) { return *v; }, [](const std::optional<std::string>& v) { return *v; });
+      [](const std::optional<std::string>& v) { return *v; }, [](const std::optional<std::string>& v) { return *v; },
+      "str", true);
 }
 
 template <class Options>
 Field<Options> numberField(const char* name, double Options::*member) {
   return field(
       name, member, [member](Options& o, const std::vector<std::string>& r) { o.*member = numberFrom(r.back()); },
-      [](double v) { return number(v); }, [](double v) { return v; });
+      [](double v) { return number(v); }, [](double v) { return v; }, "float");
 }
 
 template <class Options>
 Field<Options> optionalNumberField(const char* name, std::optional<double> Options::*member) {
   return field(
       name, member, [member](Options& o, const std::vector<std::string>& r) { o.*member = numberFrom(r.back()); },
-      [](const std::optional<double>& v) { return number(*v); }, [](const std::optional<double>& v) { return *v; });
+      [](const std::optional<double>& v) { return number(*v); }, [](const std::optional<double>& v) { return *v; },
+      "float", true);
 }
 
 template <class Options>
 Field<Options> integerField(const char* name, int Options::*member) {
   return field(
       name, member, [member](Options& o, const std::vector<std::string>& r) { o.*member = int(numberFrom(r.back())); },
-      [](int v) { return std::to_string(v); }, [](int v) { return std::int64_t(v); });
+      [](int v) { return std::to_string(v); }, [](int v) { return std::int64_t(v); }, "int");
 }
 
 // A flag: the option alone sets the field to `whenGiven` (false: --no-normalize); with a value the
@@ -125,7 +132,8 @@ Field<Options> flagField(const char* name, bool Options::*member, bool whenGiven
           [member, whenGiven](const Options& o) -> std::optional<ParameterValue> {
             if (o.*member != whenGiven) return std::nullopt;
             return ParameterValue(true);
-          }};
+          },
+          "bool", false};
 }
 
 template <class Options, std::size_t N>
@@ -134,7 +142,8 @@ Field<Options> arrayField(const char* name, std::array<double, N> Options::*memb
       name, member,
       [member, name](Options& o, const std::vector<std::string>& r) { o.*member = arrayFrom<N>(r.back(), name); },
       [](const std::array<double, N>& v) { return numbers(v); },
-      [](const std::array<double, N>& v) { return std::vector<double>(v.begin(), v.end()); });
+      [](const std::array<double, N>& v) { return std::vector<double>(v.begin(), v.end()); },
+      "float[" + std::to_string(N) + "]");
 }
 
 template <class Options, std::size_t N>
@@ -143,7 +152,8 @@ Field<Options> optionalArrayField(const char* name, std::optional<std::array<dou
       name, member,
       [member, name](Options& o, const std::vector<std::string>& r) { o.*member = arrayFrom<N>(r.back(), name); },
       [](const std::optional<std::array<double, N>>& v) { return numbers(*v); },
-      [](const std::optional<std::array<double, N>>& v) { return std::vector<double>(v->begin(), v->end()); });
+      [](const std::optional<std::array<double, N>>& v) { return std::vector<double>(v->begin(), v->end()); },
+      "float[" + std::to_string(N) + "]", true);
 }
 
 template <class Options>
@@ -157,7 +167,8 @@ Field<Options> listField(const char* name, std::vector<std::string> Options::*me
           [member](const Options& o) -> std::optional<ParameterValue> {
             if ((o.*member).empty()) return std::nullopt;
             return ParameterValue(o.*member);
-          }};
+          },
+          "str[]", false};
 }
 
 // The fields that differ from their defaults as typed parameters, named without the dashes.
@@ -207,6 +218,30 @@ Options fromWords(const std::vector<std::string>& words, const std::vector<Field
     if (found != given.end()) field.set(options, found->second);
   }
   return options;
+}
+
+// Each field as the command's --help shows its option: the help's sentence, default and choices
+// (a choice's names are its type name, "a|b|c"), and the field's kind.
+template <class Options>
+std::vector<OptionDescription> describeFields(const CLI::App& app, const std::vector<Field<Options>>& fields) {
+  std::vector<OptionDescription> out;
+  for (const Field<Options>& field : fields) {
+    OptionDescription d;
+    d.name = field.name + 2;
+    d.kind = field.kind;
+    d.optional = field.optional;
+    if (const CLI::Option* option = app.get_option_no_throw(field.name)) {
+      d.help = option->get_description();
+      d.defaultText = option->get_default_str();
+      const std::string type = option->get_type_name();
+      d.typeName = type;
+      if (d.kind == "str" && type.find('|') != std::string::npos &&
+          type.find_first_of("ABCDEFGHIJKLMNOPQRSTUVWXYZ[") == std::string::npos)
+        d.choices = CLI::detail::split(type, '|');
+    }
+    out.push_back(std::move(d));
+  }
+  return out;
 }
 
 }  // namespace uvtk::api

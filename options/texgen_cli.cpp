@@ -109,4 +109,13 @@ void addTexgenOptions(CLI::App& app, TexgenArguments& a, const std::string& shor
                "by default it is renormalised, as with GL_NORMALIZE)");
 }
 
+void addTexgenViewOptions(CLI::App& app, std::string& eye, std::string& center, std::string& up, std::string& model) {
+  app.add_option("--eye", eye, "View: gluLookAt eye (x,y,z)")->capture_default_str();
+  app.add_option("--center", center, "View: gluLookAt center (x,y,z)")->capture_default_str();
+  app.add_option("--up", up, "View: gluLookAt up (x,y,z)")->capture_default_str();
+  app.add_option("--model", model,
+                 "Model matrix, 16 numbers column-major (default identity); vertices are drawn under view * model, "
+                 "eye_linear planes are given under the view alone");
+}
+
 }  // namespace uvtk::cli

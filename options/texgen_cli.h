@@ -29,5 +29,7 @@ struct TexgenArguments {
 // `shortcut` names the mode shortcut option: "--mode" in `uvtk texgen`, "--texgen" in `uvtk
 // render`, where it also takes object_linear and eye_linear (s and t with GL's default planes).
 void addTexgenOptions(CLI::App& app, TexgenArguments& arguments, const std::string& shortcut);
+// `uvtk texgen`'s view and model (--eye, --center, --up, --model), shared with the library's TexgenOptions.
+void addTexgenViewOptions(CLI::App& app, std::string& eye, std::string& center, std::string& up, std::string& model);
 
 }  // namespace uvtk::cli

@@ -37,6 +37,25 @@ void addVerdictOptions(CLI::App& app, VerdictArguments& a) {
       ->delimiter(',');
 }
 
+void addMapThreadsOption(CLI::App& app, int& threads) {
+  app.add_option("--threads", threads,
+                 "Threads each mesh is read, mapped, judged and written with; 0: one per hardware thread for one "
+                 "mesh, one per mesh of many")
+      ->check(CLI::Range(0, 1024))
+      ->default_str("0");
+}
+
+void addMapJudgementOptions(CLI::App& app, int& overlapResolution, std::string& textureSize,
+                            std::optional<double>& density) {
+  app.add_option("--overlap-resolution", overlapResolution,
+                 "Pixels across the layout raster that measures overlap for the verdict")
+      ->capture_default_str();
+  app.add_option("--texture-size", textureSize, "Texels W,H (or N: N,N) of the texture that texel density counts in")
+      ->capture_default_str();
+  app.add_option("--density", density,
+                 "Scale the UVs about (0, 0) so that the mean texel density is this many texels per object unit");
+}
+
 void enforceVerdict(const VerdictArguments& a, analysis::Verdict verdict, const std::string& what) {
   const std::optional<analysis::Verdict> from = a.exitFrom();
   if (!from || verdict < *from) return;

@@ -23,6 +23,13 @@ struct VerdictArguments {
 };
 void addVerdictOptions(CLI::App& app, VerdictArguments& arguments);
 
+// `uvtk map`'s --threads, and its judgement's --overlap-resolution, --texture-size and --density:
+// the command and the library's MapOptions (whose describe() gives Python's signatures) add the
+// same options with the same help.
+void addMapThreadsOption(CLI::App& app, int& threads);
+void addMapJudgementOptions(CLI::App& app, int& overlapResolution, std::string& textureSize,
+                            std::optional<double>& density);
+
 // Throws CheckFailure (exit 1) with `what` and the verdict's line when --fail-on names a verdict
 // that `verdict` reaches; the command has written its outputs before.
 void enforceVerdict(const VerdictArguments& arguments, analysis::Verdict verdict, const std::string& what);

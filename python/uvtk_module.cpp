@@ -204,7 +204,8 @@ api::Parameters keywordParameters(const py::kwargs& kwargs) {
       typed = value.cast<std::string>();
     } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
       const py::sequence items = value;
-      if (items.size() > 0 && py::isinstance<py::str>(items[0])) {
+      // An empty sequence is an empty list of texts: fail_on=() (the signature's default) is none.
+      if (items.size() == 0 || py::isinstance<py::str>(items[0])) {
         std::vector<std::string> texts;
         for (const py::handle item : items) {
           if (!py::isinstance<py::str>(item)) throw kindError();
@@ -456,8 +457,12 @@ const api::Mapping& mappingFor(const char* function, py::handle mesh, py::handle
   return m.mapping;
 }
 
-api::WriteOptions writeOptions(const std::string& uvDigits, bool writeW, bool ascii) {
+api::WriteOptions writeOptions(const std::string& uvDigits, bool writeW, bool ascii, const std::string& header,
+                               int threads) {
+  if (threads < 0 || threads > 1024) throw py::value_error("write_mesh(): threads: expected 0 to 1024, got " + std::to_string(threads));
   api::WriteOptions options;
+  options.header = header;
+  options.threads = threads;
   options.uvDigits = uvDigits;
   options.writeW = writeW;
   options.ascii = ascii;
@@ -532,9 +537,123 @@ EvalResult evaluate(const py::object& pointsObject, const py::object& normals, c
   return result;
 }
 
+// The options of a command as the library describes them (api::*Options::describe()): the one table
+// uvtk/__init__.py builds the functions' signatures and the stubs from.
+py::list optionTable(const std::vector<api::OptionDescription>& options) {
+  py::list out;
+  for (const api::OptionDescription& o : options) {
+    py::dict d;
+    std::string keyword = o.name;
+    for (char& c : keyword) c = c == '-' ? '_' : c;
+    d["name"] = o.name;
+    d["keyword"] = keyword;
+    d["kind"] = o.kind;
+    d["optional"] = o.optional;
+    d["default"] = o.defaultText;
+    d["choices"] = py::cast(o.choices);
+    d["help"] = o.help;
+    d["type_name"] = o.typeName;
+    out.append(d);
+  }
+  return out;
+}
+
+// ---- pickling: a mesh's own vectors as arrays, copied back as they were ----
+
+template <class T, std::size_t N>
+py::array arrayOf(const std::vector<std::array<T, N>>& values) {
+  py::array_t<T> array(Shape{count(values.size()), py::ssize_t(N)});
+  if (!values.empty()) std::copy_n(values.data()->data(), values.size() * N, array.mutable_data());
+  return std::move(array);
+}
+
+template <class T, std::size_t N>
+std::vector<std::array<T, N>> vectorOf(const char* what, const py::handle& object) {
+  const py::array_t<T, py::array::c_style | py::array::forcecast> array(py::reinterpret_borrow<py::object>(object));
+  if (array.ndim() != 2 || array.shape(1) != py::ssize_t(N))
+    throw py::value_error(std::string("unpickling: ") + what + " has the wrong shape");
+  std::vector<std::array<T, N>> values(std::size_t(array.shape(0)));
+  if (!values.empty()) std::copy_n(array.data(), values.size() * N, values.data()->data());
+  return values;
+}
+
+py::tuple meshState(const api::Mesh& mesh) {
+  return py::make_tuple(1, arrayOf(mesh.positions), arrayOf(mesh.triangles), arrayOf(mesh.texcoords),
+                        arrayOf(mesh.cornerTexcoords), arrayOf(mesh.normals), arrayOf(mesh.cornerNormals));
+}
+
+api::Mesh meshFromState(const py::tuple& state) {
+  if (state.size() != 7 || state[0].cast<int>() != 1) throw py::value_error("unpickling: not a uvtk.Mesh state");
+  api::Mesh mesh;
+  mesh.positions = vectorOf<double, 3>("positions", state[1]);
+  mesh.triangles = vectorOf<int, 3>("triangles", state[2]);
+  mesh.texcoords = vectorOf<double, 3>("texcoords", state[3]);
+  mesh.cornerTexcoords = vectorOf<int, 3>("corner texcoords", state[4]);
+  mesh.normals = vectorOf<double, 3>("normals", state[5]);
+  mesh.cornerNormals = vectorOf<int, 3>("corner normals", state[6]);
+  api::checkMesh(mesh);
+  return mesh;
+}
+
+// A mapping's state: its mesh, every per-corner and per-face array, its source, verdict and
+// summary, and the mesh it was made from (None when that was its own mesh). Unpickled, it is the
+// same data, not mapped nor judged again (api::restoreMapping): write_mesh writes it, report and
+// render refuse it (docs/python.md, "Pickling").
+py::tuple mappingState(const py::object& self) {
+  const PyMapping& m = self.cast<const PyMapping&>();
+  const api::Mapping& mapping = m.mapping;
+  py::list reasons;
+  for (const api::Reason& r : mapping.verdict.reasons)
+    reasons.append(py::make_tuple(r.rule, r.severity, r.value, r.threshold, r.faces, r.text));
+  std::vector<std::uint8_t> state(mapping.state.size()), invalid(mapping.invalidReason.size());
+  std::transform(mapping.state.begin(), mapping.state.end(), state.begin(), [](api::CornerState s) { return std::uint8_t(s); });
+  std::transform(mapping.invalidReason.begin(), mapping.invalidReason.end(), invalid.begin(),
+                 [](api::InvalidReason r) { return std::uint8_t(r); });
+  // The input travels only where it differs from the mapping's mesh (seam="cut").
+  const auto same = [&](const api::Mesh& a) {
+    const api::Mesh& b = mapping.mesh;
+    return a.positions == b.positions && a.triangles == b.triangles && a.texcoords == b.texcoords &&
+           a.cornerTexcoords == b.cornerTexcoords && a.normals == b.normals && a.cornerNormals == b.cornerNormals;
+  };
+  const bool ownMesh = m.input.is_none() || (py::isinstance<api::Mesh>(m.input) && same(m.input.cast<const api::Mesh&>()));
+  return py::make_tuple(1, meshState(mapping.mesh), arrayOf(mapping.uv), py::array(py::cast(mapping.w)),
+                        py::array(py::cast(mapping.q)), py::array(py::cast(state)), py::array(py::cast(invalid)),
+                        py::array(py::cast(mapping.faceFlags)), mapping.source, mapping.verdict.status, reasons,
+                        mapping.summaryJson, ownMesh ? py::object(py::none()) : m.input);
+}
+
+template <class T>
+std::vector<T> flatOf(const py::handle& object) {
+  const py::array_t<T, py::array::c_style | py::array::forcecast> array(py::reinterpret_borrow<py::object>(object));
+  return std::vector<T>(array.data(), array.data() + array.size());
+}
+
+std::unique_ptr<PyMapping> mappingFromState(const py::tuple& t) {
+  if (t.size() != 13 || t[0].cast<int>() != 1) throw py::value_error("unpickling: not a uvtk.Mapping state");
+  api::Mapping mapping;
+  mapping.mesh = meshFromState(t[1]);
+  mapping.uv = vectorOf<double, 2>("uv", t[2]);
+  mapping.w = flatOf<double>(t[3]);
+  mapping.q = flatOf<double>(t[4]);
+  for (const std::uint8_t s : flatOf<std::uint8_t>(t[5])) mapping.state.push_back(api::CornerState(s));
+  for (const std::uint8_t r : flatOf<std::uint8_t>(t[6])) mapping.invalidReason.push_back(api::InvalidReason(r));
+  mapping.faceFlags = flatOf<std::uint8_t>(t[7]);
+  mapping.source = t[8].cast<std::string>();
+  mapping.verdict.status = t[9].cast<std::string>();
+  for (const py::handle r : t[10].cast<py::list>()) {
+    const py::tuple reason = r.cast<py::tuple>();
+    mapping.verdict.reasons.push_back({reason[0].cast<std::string>(), reason[1].cast<std::string>(), reason[2].cast<double>(),
+                                       reason[3].cast<double>(), reason[4].cast<std::size_t>(), reason[5].cast<std::string>()});
+  }
+  mapping.summaryJson = t[11].cast<std::string>();
+  // What writeMesh needs (the engine's mesh and UVs), made from the data: not mapped nor judged again.
+  return std::make_unique<PyMapping>(
+      PyMapping{api::restoreMapping(std::move(mapping)), py::reinterpret_borrow<py::object>(t[12])});
+}
+
 }  // namespace
 
-PYBIND11_MODULE(uvtk, m) {
+PYBIND11_MODULE(_uvtk, m) {
   m.doc() = R"(uvtk: texture coordinates for triangle meshes, and proof that they are right.
 
 The Python face of the C++ library (docs/python.md): the numbers are those of the `uvtk` command
@@ -557,6 +676,16 @@ line, bit for bit. Options are keywords named as the command line's options (cap
       .doc() = "An output could not be written, and nothing was left behind: 'PATH: error: cannot write: ...'.";
 
   m.attr("__version__") = api::version();
+  m.def("_map_options", [] { return optionTable(api::MapOptions::describe()); },
+        "map's keywords as `uvtk map --help` shows them: name, keyword, kind, optional, default, choices, help.");
+  m.def("_texgen_options", [] { return optionTable(api::TexgenOptions::describe()); },
+        "texgen's keywords as `uvtk texgen --help` shows them.");
+  m.def("_report_options", [] { return optionTable(api::ReportOptions::describe()); },
+        "report's keywords as `uvtk report --help` shows them.");
+  m.def("_render_options", [] { return optionTable(api::RenderOptions::describe()); },
+        "render's keywords as `uvtk render --help` shows them.");
+  m.def("_compare_options", [] { return optionTable(api::CompareOptions::describe()); },
+        "compare's keywords as `uvtk compare --help` shows them.");
   m.def("version", &api::version, "The library's version, as `uvtk --version` prints it.");
 
   // Corner states (Mapping.state), face flags (Mapping.face_flags), invalid reasons, point statuses.
@@ -605,6 +734,8 @@ first problem. The arrays are copied in; the properties are read-only views.)")
       .def_property_readonly(
           "normals", [](const api::Mesh& mesh) { return perCorner(mesh.normals, mesh.cornerNormals, 3); },
           "(F, 3, 3) float64 per-corner normals (NaN where a corner has none), or None.")
+      .def(py::pickle([](const api::Mesh& mesh) { return meshState(mesh); },
+                      [](const py::tuple& state) { return meshFromState(state); }))
       .def_property_readonly("vertex_count", [](const api::Mesh& mesh) { return mesh.positions.size(); })
       .def_property_readonly("face_count", [](const api::Mesh& mesh) { return mesh.triangles.size(); })
       .def("__repr__", [](const api::Mesh& mesh) {
@@ -635,6 +766,9 @@ Raises uvtk.InputError "PATH:LINE: error: ...". with_warnings=True returns (mesh
                   "From `uvtk map`'s syntax, e.g. '--projector cylinder --caps'. ValueError with the CLI's message.")
       .def("command_line", &api::MapOptions::commandLine, "The options as `uvtk map` takes them (those not at their default).")
       .def("__repr__", [](const api::MapOptions& o) { return "uvtk.MapOptions.parse(" + py::repr(py::str(o.commandLine())).cast<std::string>() + ")"; })
+      .def(py::pickle([](const api::MapOptions& o) { return py::make_tuple(o.commandLine()); },
+                      [](const py::tuple& state) { return api::MapOptions::parse(state[0].cast<std::string>()); }))
+      .def("__eq__", [](const api::MapOptions& a, const api::MapOptions& b) { return a.commandLine() == b.commandLine(); })
       .def_readwrite("projector", &api::MapOptions::projector)
       .def_readwrite("omap", &api::MapOptions::omap)
       .def_readwrite("fit", &api::MapOptions::fit)
@@ -688,6 +822,9 @@ Raises uvtk.InputError "PATH:LINE: error: ...". with_warnings=True returns (mesh
                   "From `uvtk texgen`'s syntax, e.g. '--s object_linear:1,0,0,0'. ValueError with the CLI's message.")
       .def("command_line", &api::TexgenOptions::commandLine)
       .def("__repr__", [](const api::TexgenOptions& o) { return "uvtk.TexgenOptions.parse(" + py::repr(py::str(o.commandLine())).cast<std::string>() + ")"; })
+      .def(py::pickle([](const api::TexgenOptions& o) { return py::make_tuple(o.commandLine()); },
+                      [](const py::tuple& state) { return api::TexgenOptions::parse(state[0].cast<std::string>()); }))
+      .def("__eq__", [](const api::TexgenOptions& a, const api::TexgenOptions& b) { return a.commandLine() == b.commandLine(); })
       .def_readwrite("s", &api::TexgenOptions::s)
       .def_readwrite("t", &api::TexgenOptions::t)
       .def_readwrite("r", &api::TexgenOptions::r)
@@ -764,6 +901,8 @@ along the seam (more vertices and faces than the input).)")
                              "{'status': 'pass'|'warn'|'fail', 'reasons': [{rule, severity, value, threshold, faces, text}]}.")
       .def_property_readonly("summary", [](const PyMapping& self) { return jsonLoads(self.mapping.summaryJson); },
                              "The record `uvtk map --json` writes (without times and output), as a dict.")
+      .def(py::pickle([](py::object self) { return mappingState(self); },
+                      [](const py::tuple& state) { return mappingFromState(state); }))
       .def("__repr__", [](const PyMapping& self) {
         const api::Mapping& mapping = self.mapping;
         return "<uvtk.Mapping " + mapping.source + ": " + std::to_string(mapping.mesh.positions.size()) + " vertices, " +
@@ -814,7 +953,8 @@ mode="sphere_map", eye=(0, 0, 5), no_normalize=True, ... Returns a uvtk.Mapping 
 
   m.def(
       "write_mesh",
-      [](py::object path, py::object mesh, py::object mapping, const std::string& uvDigits, bool writeW, bool ascii) {
+      [](py::object path, py::object mesh, py::object mapping, const std::string& uvDigits, bool writeW, bool ascii,
+         const std::string& header, int threads) {
         const std::string file = pathOf("write_mesh", path);
         if (mapping.is_none() && py::isinstance<PyMapping>(mesh)) std::swap(mesh, mapping);
         if (mapping.is_none()) {
@@ -823,17 +963,19 @@ mode="sphere_map", eye=(0, 0, 5), no_normalize=True, ... Returns a uvtk.Mapping 
           return;
         }
         const api::Mapping& mapped = mappingFor("write_mesh", mesh, mapping);
-        const api::WriteOptions options = writeOptions(uvDigits, writeW, ascii);
+        const api::WriteOptions options = writeOptions(uvDigits, writeW, ascii, header, threads);
         interruptible([&] { api::writeMesh(file, mapped, options); });
       },
       py::arg("path"), py::arg("mesh"), py::arg("m") = py::none(), py::arg("uv_digits") = "double",
-      py::arg("write_w") = false, py::arg("ascii") = false,
+      py::arg("write_w") = false, py::arg("ascii") = false, py::arg("header") = "", py::arg("threads") = 0,
       R"(Writes a mesh by the path's extension (.obj, .ply, .glb, .gltf + .bin), whole or not at all
 (uvtk.OutputError).
 
 write_mesh(path, mesh, m): the mapping's mesh with its per-corner UVs, as `uvtk map -o` writes it
 (uv_digits='double' round-trips every double, 'float' every float, in an OBJ; write_w=True writes
-vt u v w in an OBJ; ascii=True writes a .ply as text).
+vt u v w in an OBJ; ascii=True writes a .ply as text; header="uvtk map IN" writes the comment
+lines `uvtk map` writes at the top of an OBJ or PLY, so that the bytes are the program's; threads:
+those formatting an OBJ, 0 one per hardware thread, the same bytes).
 write_mesh(path, mesh): the mesh with its own texture coordinates and normals.)");
 
   m.def(

@@ -18,7 +18,9 @@ packages=(cmake ninja-build g++ pkg-config
           libassimp-dev    # the peer `uvtk bench` times (aiProcess_GenUVCoords); optional to the build
           libosmesa6-dev   # Mesa's software OpenGL: the reference the texgen tests compare with
           libfreetype-dev fonts-dejavu-core  # the views' type: DejaVu Sans drawn by FreeType (views/type.h)
-          python3-dev pybind11-dev python3-numpy python3-pytest)  # the Python module (docs/python.md) and its tests
+          python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module (docs/python.md) and its tests
+          python3-pip python3-venv  # pip wheel . and the fresh virtual environment the wheel is tested in
+          mypy python3-meshio python3-dask python3-distributed)  # the stubs' check, meshio's layout, Dask batches
 preset=""
 build_dir=${1:-build}
 if [ "${1:-}" = "--fuzz" ]; then

@@ -4,6 +4,7 @@
 # AddressSanitizer and UndefinedBehaviorSanitizer (the fuzz preset); every fuzz target for
 # UVTK_FUZZ_SECONDS (default 45) each; the Python module's tests (pytest) against its install. Written
 # glTF files are checked by the Khronos glTF-Validator (npm), which setup.sh --validator installs.
+# The Python package is also built as a wheel (pip wheel .) and tested in a fresh virtual environment.
 # docs/robustness.md says what each part checks.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -40,8 +41,20 @@ case "$verdict" in
   *) echo "test: map_verdict built with pkg-config printed '$verdict'" >&2; exit 1 ;;
 esac
 site=$(ls -d build/install/lib/python3*/site-packages)
-ls "$site"/uvtk*.so > /dev/null  # the module must have been built and installed
+ls "$site"/uvtk/_uvtk*.so > /dev/null  # the package must have been built and installed
 PYTHONPATH="$PWD/$site" UVTK_BIN="$PWD/build/install/bin/uvtk" /usr/bin/python3 -m pytest -q -p no:cacheprovider tests/python
+
+# The wheel (docs/python.md, "Installing with pip"): `pip wheel .` through the in-tree backend,
+# offline and with pip's build isolation (pyproject.toml requires nothing), reusing the release
+# build (UVTK_BUILD_DIR: nothing is compiled twice); installed into a fresh virtual environment,
+# where the Python tests run against it and its `uvtk` program on the environment's PATH.
+stage "wheel"
+rm -rf build/wheel build/venv
+UVTK_BUILD_DIR="$PWD/build" /usr/bin/python3 -m pip wheel --no-deps --no-index -w build/wheel . >&2
+/usr/bin/python3 -m venv --system-site-packages build/venv  # numpy and pytest from Debian
+build/venv/bin/pip install --no-index build/wheel/uvtk-*.whl >&2
+(cd build && venv/bin/python -c 'import uvtk; print("test: wheel installed,", uvtk.__file__)' && venv/bin/uvtk --version) >&2
+PATH="$PWD/build/venv/bin:$PATH" UVTK_BIN="$PWD/build/venv/bin/uvtk" build/venv/bin/python -m pytest -q -p no:cacheprovider tests/python
 
 stage "sanitizer build"
 scripts/setup.sh --fuzz

@@ -101,11 +101,7 @@ void addMapCommand(CLI::App& root) {
   map->add_option("-j,--jobs", arguments->jobs, "Meshes mapped at once when there are many; 0: one per hardware thread")
       ->check(CLI::NonNegativeNumber)
       ->default_str("0");
-  map->add_option("--threads", arguments->threads,
-                  "Threads each mesh is read, mapped, judged and written with; 0: one per hardware thread for one "
-                  "mesh, one per mesh of many")
-      ->check(CLI::Range(0, 1024))
-      ->default_str("0");
+  addMapThreadsOption(*map, arguments->threads);
   map->add_flag("-q,--quiet", arguments->quiet, "No progress and no summary lines; errors are still printed");
   map->add_flag("--write-w", arguments->write.writeW, "Write the third UV component (the cube face id; OBJ only)");
   map->add_flag("--ascii", arguments->write.ascii, "Write a .ply as ASCII text, not binary little endian");
@@ -121,14 +117,7 @@ void addMapCommand(CLI::App& root) {
       ->default_str("double");
   addProjectorOptions(*map, arguments->projector);
   addVerdictOptions(*map, arguments->verdict);
-  map->add_option("--overlap-resolution", arguments->overlapResolution,
-                  "Pixels across the layout raster that measures overlap for the verdict")
-      ->capture_default_str();
-  map->add_option("--texture-size", arguments->textureSize,
-                  "Texels W,H (or N: N,N) of the texture that texel density counts in")
-      ->capture_default_str();
-  map->add_option("--density", arguments->density,
-                  "Scale the UVs about (0, 0) so that the mean texel density is this many texels per object unit");
+  addMapJudgementOptions(*map, arguments->overlapResolution, arguments->textureSize, arguments->density);
   map->callback([arguments] { runMap(*arguments); });
 }
 

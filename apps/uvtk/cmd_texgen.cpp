@@ -52,12 +52,7 @@ void addTexgenCommand(CLI::App& root) {
       ->required();
   cmd->add_flag("--ascii", arguments->write.ascii, "Write a .ply as ASCII text, not binary little endian");
   addTexgenOptions(*cmd, arguments->texgen, "--mode");
-  cmd->add_option("--eye", arguments->eye, "View: gluLookAt eye (x,y,z)")->capture_default_str();
-  cmd->add_option("--center", arguments->center, "View: gluLookAt center (x,y,z)")->capture_default_str();
-  cmd->add_option("--up", arguments->up, "View: gluLookAt up (x,y,z)")->capture_default_str();
-  cmd->add_option("--model", arguments->model,
-                  "Model matrix, 16 numbers column-major (default identity); vertices are drawn under view * model, "
-                  "eye_linear planes are given under the view alone");
+  addTexgenViewOptions(*cmd, arguments->eye, arguments->center, arguments->up, arguments->model);
   cmd->add_option("--json", arguments->json, "Also write the summary and every corner's [s, t, r, q] (undivided) as JSON");
   cmd->callback([arguments] { runTexgen(*arguments); });
 }

@@ -366,6 +366,75 @@ TEST_F(LibraryTest, AMappingWrittenAndReadBackHasTheSameTexcoords) {
   EXPECT_EQ(warnings.degenerateFaces, 0u);
 }
 
+// What Python's signatures are made of: each field's option as `uvtk map --help` shows it.
+TEST(MapOptions, DescribeGivesEveryFieldsOptionAsTheHelpShowsIt) {
+  const std::vector<OptionDescription> options = MapOptions::describe();
+  const auto named = [&](const std::string& name) {
+    for (const OptionDescription& o : options)
+      if (o.name == name) return o;
+    ADD_FAILURE() << name;
+    return OptionDescription{};
+  };
+  EXPECT_EQ(options.front().name, "projector");
+  const OptionDescription capAngle = named("cap-angle");
+  EXPECT_EQ(capAngle.kind, "float");
+  EXPECT_EQ(capAngle.defaultText, "45");
+  EXPECT_EQ(capAngle.help, "cylinder: degrees between a cap face's normal and the axis");
+  EXPECT_FALSE(capAngle.optional);
+  const OptionDescription seam = named("seam");
+  EXPECT_EQ(seam.choices, (std::vector<std::string>{"none", "shift", "cut"}));
+  EXPECT_EQ(seam.defaultText, "shift");
+  EXPECT_EQ(named("caps").kind, "bool");
+  EXPECT_EQ(named("center").kind, "float[3]");
+  EXPECT_TRUE(named("center").optional);
+  EXPECT_EQ(named("seam-place").kind, "float|auto");
+  EXPECT_EQ(named("texture-size").kind, "int|int[2]");
+  EXPECT_EQ(named("texture-size").defaultText, "1024,1024");
+  EXPECT_EQ(named("fail-on").kind, "str[]");
+  EXPECT_EQ(named("threads").kind, "int");
+  EXPECT_NE(named("threads").help.find("Threads"), std::string::npos);
+  for (const OptionDescription& o : options) EXPECT_FALSE(o.help.empty()) << o.name;
+  const std::vector<OptionDescription> texgen = TexgenOptions::describe();
+  ASSERT_FALSE(texgen.empty());
+  EXPECT_EQ(texgen.front().name, "s");
+  bool noNormalize = false;
+  for (const OptionDescription& o : texgen) noNormalize = noNormalize || (o.name == "no-normalize" && o.kind == "bool");
+  EXPECT_TRUE(noNormalize);
+}
+
+TEST_F(LibraryTest, ARestoredMappingWritesTheSameBytesAndRefusesReports) {
+  MapOptions o;
+  o.projector = "cylinder";
+  o.seam = "cut";
+  const Mapping m = map(octahedron(), o);
+  Mapping data = m;
+  data.detail = nullptr;  // what a pickle carries: the public fields
+  const Mapping restored = restoreMapping(data);
+  EXPECT_EQ(restored.uv, m.uv);
+  EXPECT_EQ(restored.verdict.status, m.verdict.status);
+  writeMesh(path("a.obj"), m);
+  writeMesh(path("b.obj"), restored);
+  const auto bytes = [](const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(bytes(path("a.obj")), bytes(path("b.obj")));
+  EXPECT_THROW(report(restored), std::invalid_argument);
+  EXPECT_THROW(render(restored), std::invalid_argument);
+  data.uv.pop_back();
+  EXPECT_THROW(restoreMapping(data), std::invalid_argument);
+}
+
+TEST_F(LibraryTest, AHeaderIsTheCommentLineAtTheTopOfAnObj) {
+  WriteOptions options;
+  options.header = "uvtk map in.obj";
+  writeMesh(path("h.obj"), map(octahedron()), options);
+  std::ifstream in(path("h.obj"));
+  std::string first;
+  std::getline(in, first);
+  EXPECT_EQ(first, "# uvtk map in.obj");
+}
+
 // OBJ -> glTF -> OBJ: the library writes what it read, by extension; glTF keeps each UV to float
 // precision (it stores float32), PLY keeps every bit, and each split vertex is one distinct UV.
 TEST_F(LibraryTest, AMappingThroughGltfAndPlyKeepsEveryCornersUv) {

@@ -14,7 +14,8 @@ import uvtk
 def _find_binary():
     if os.environ.get("UVTK_BIN"):
         return pathlib.Path(os.environ["UVTK_BIN"])
-    beside = pathlib.Path(uvtk.__file__).resolve().parents[1] / "apps" / "uvtk" / "uvtk"
+    # The build tree's: build/python/uvtk/__init__.py -> build/apps/uvtk/uvtk.
+    beside = pathlib.Path(uvtk.__file__).resolve().parents[2] / "apps" / "uvtk" / "uvtk"
     if beside.exists():
         return beside
     found = shutil.which("uvtk")

@@ -29,6 +29,8 @@ struct ReportOptions {
   // From `uvtk report`'s syntax, e.g. "--views checker,seams --size 256x256".
   UVTK_API static ReportOptions parse(const std::string& commandLine);
   UVTK_API std::string commandLine() const;  // the options that differ from the defaults
+  // Every field's option as the command's --help shows it (Python's signatures).
+  UVTK_API static std::vector<OptionDescription> describe();
 };
 
 // The report of `mapping` as JSON text: the document `uvtk report --json` writes (verdict first,
@@ -79,6 +81,8 @@ struct RenderOptions {
   // From `uvtk render`'s syntax, e.g. "--view seams --size 640x480".
   UVTK_API static RenderOptions parse(const std::string& commandLine);
   UVTK_API std::string commandLine() const;  // the options that differ from the defaults
+  // Every field's option as the command's --help shows it (Python's signatures).
+  UVTK_API static std::vector<OptionDescription> describe();
 };
 
 // A picture of `mapping`: the image `uvtk render` writes with these options and the mapping's
@@ -104,6 +108,8 @@ struct CompareOptions {
   // From `uvtk compare`'s syntax, e.g. "--by angle --no-baselines".
   UVTK_API static CompareOptions parse(const std::string& commandLine);
   UVTK_API std::string commandLine() const;  // the options that differ from the defaults
+  // Every field's option as the command's --help shows it (Python's signatures).
+  UVTK_API static std::vector<OptionDescription> describe();
 };
 
 struct Comparison {

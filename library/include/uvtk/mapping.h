@@ -36,6 +36,18 @@ struct Parameters {
   std::vector<Parameter> values;
 };
 
+// One option as the command line's --help shows it: what Python's signatures and stubs are made of.
+struct OptionDescription {
+  std::string name;                  // as the command line spells it without the dashes: "cap-angle"
+  std::string kind;                  // bool, int, float, str, float[N] (N numbers), str[] (repeatable),
+                                     // float|auto (--seam-place), int|int[2] (--texture-size)
+  bool optional = false;             // may be left unset (Python's None: not given)
+  std::string defaultText;           // the default as --help shows it ("45", "0,0,1"); "" none
+  std::vector<std::string> choices;  // a choice's names, in --help's order; empty for other options
+  std::string help;                  // the one-line meaning --help shows
+  std::string typeName;              // --help's placeholder of the value: "FLOAT", "X,Y,Z", "WxH", "a|b|c"; "" for a flag
+};
+
 // The options of `uvtk map` (docs/conventions.md): each field is the option of that name, with
 // its default; a choice is spelled as on the command line.
 struct MapOptions {
@@ -93,6 +105,8 @@ struct MapOptions {
   UVTK_API std::string commandLine() const;
   // The options that differ from the defaults, as typed parameters (no text).
   UVTK_API Parameters parameters() const;
+  // Every field's option as `uvtk map --help` shows it, in the struct's order.
+  UVTK_API static std::vector<OptionDescription> describe();
 };
 
 // The options of `uvtk texgen`: OpenGL's glTexGen for s, t, r and q under a gluLookAt view.
@@ -112,6 +126,8 @@ struct TexgenOptions {
   // From `uvtk texgen`'s syntax, e.g. "--s object_linear:1,0,0,0 --t eye_linear:0,1,0,0".
   UVTK_API static TexgenOptions parse(const std::string& commandLine);
   UVTK_API std::string commandLine() const;
+  // Every field's option as `uvtk texgen --help` shows it.
+  UVTK_API static std::vector<OptionDescription> describe();
 };
 
 enum class CornerState : std::uint8_t {
@@ -169,6 +185,13 @@ UVTK_API Mapping map(const Mesh& mesh, const MapOptions& options = {});
 // The same from typed parameters (Python's keywords): every name `uvtk map` takes but its outputs;
 // a name it does not take is std::invalid_argument with the nearest one.
 UVTK_API Mapping map(const Mesh& mesh, const Parameters& parameters);
+// A mapping's data made a mapping again (Python's unpickling): `data`'s mesh, uv, w, q, state,
+// invalidReason, faceFlags, source, verdict and summaryJson as map(), texgen() or fileUvs() gave
+// them (its detail is ignored). Not mapped nor judged again: writeMesh writes it as the mapping
+// it came from (the same bytes; not a texgen mapping's, whose options decide its file), report()
+// and render() refuse it (std::invalid_argument), for what they read of the engine is not in the
+// data. Throws std::invalid_argument when the arrays do not match the mesh.
+UVTK_API Mapping restoreMapping(Mapping data);
 // `mesh` with OpenGL texgen's (s, t, r, q), as `uvtk texgen` computes them.
 UVTK_API Mapping texgen(const Mesh& mesh, const TexgenOptions& options);
 // The mesh's own texture coordinates, judged. Throws std::invalid_argument when it has none.
@@ -178,6 +201,8 @@ struct WriteOptions {
   std::string uvDigits = "double";  // "double": UV text that round-trips a double; "float": up to 9 digits
   bool writeW = false;              // OBJ: write the third component (the cube face id, texgen's r)
   bool ascii = false;               // PLY: ASCII text instead of binary little endian
+  std::string header;               // OBJ and PLY: comment lines at the top ("uvtk map IN" as the program writes)
+  int threads = 0;                  // OBJ: threads formatting the text (0: one per hardware thread); same bytes
 };
 
 // Writes the mapping's mesh with per-corner texture coordinates, by the path's extension (.obj,
