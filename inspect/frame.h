@@ -66,6 +66,7 @@ struct FrameOptions {
 
   bool showsMeasures() const;  // a view draws distortion measures
   bool needsExact() const;     // per-pixel UVs or the uverror view
+  bool samplesTexture() const { return views.empty(); }  // the textured picture; views draw their own
 };
 
 // The renderer's options for a frame: camera, texture (which must outlive them), sampling.

@@ -211,7 +211,7 @@ Image render(const Mapping& mapping, const RenderOptions& options) {
     cli::checkTextureUse(command.frame, command.texture,
                          mapped.projector ? &*mapped.projector : nullptr);
     const render::Camera camera = command.camera.make(mapped.mesh, "the mapping's mesh", Mat4::Identity(), frame.width, frame.height);
-    const inspect::BoundTexture texture = command.texture.load();
+    const inspect::BoundTexture texture = frame.samplesTexture() ? command.texture.load() : inspect::BoundTexture{};
     const render::RenderOptions renderOptions =
         inspect::renderOptions(frame, command.texture.options(), texture, camera, Mat4::Identity());
     const analysis::Judgement& judgement = mapping.detail->judgement;

@@ -123,7 +123,7 @@ render::Camera CameraArguments::make(const Mesh& mesh, const std::string& meshFi
 
 void addTextureOptions(CLI::App& app, TextureArguments& a, const std::string& sourceOption) {
   app.add_option(sourceOption, a.source,
-                 "checker:N[:C] (N x N texels, C x C squares, white at texel 0,0), uvgrid[:N], spheremap[:N[:K]], or "
+                 "checker:N[:C] (N x N texels in squares of C x C texels, white at texel 0,0), uvgrid[:N], spheremap[:N[:K]], or "
                  "an image file (top row at v = 1); cube maps: cube[:N], cubeindex[:N], cubefaces:PX,NX,PY,NY,PZ,NZ, "
                  "cubecross:FILE, cubestrip:FILE, cube3x2:FILE (a face's top row at t = 0), looked up by direction "
                  "(texgen, a file's vt) or by --projector cube --cube-layout faces")
@@ -352,7 +352,7 @@ RenderResult renderMeshFile(RenderJob a) {
   const double uvMs = clock.stop();
 
   clock.start("texture", a.texture.source);
-  const BoundTexture texture = a.texture.load();
+  const BoundTexture texture = a.frame.options().samplesTexture() ? a.texture.load() : BoundTexture{};
   const double textureMs = clock.stop();
 
   clock.start(a.frame.view.empty() ? "rendering" : "drawing", a.frame.size);

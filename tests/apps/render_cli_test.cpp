@@ -292,6 +292,19 @@ TEST_F(RenderCli, ACubeMapClampsToEdgeUnlessWrapIsGiven) {
   EXPECT_NE(bytes("default.png"), bytes("repeat.png"));
 }
 
+// Views draw their own textures: the --texture an image would use is not read for them (it was read
+// whole and checked, so a views-only render failed on a texture it never sampled).
+TEST_F(RenderCli, ViewsDoNotReadTheTexture) {
+  io::writeObj(path("cube.obj"), meshes::cube(1), nullptr);
+  { std::ofstream(path("broken.png"), std::ios::binary) << "\x89PNG\r\n\x1a\nnot a png"; }
+  const std::string common = "render " + path("cube.obj") + " --projector cube --texture " + path("broken.png");
+  const CliRun views = uvtk(common + " --view checker,seams --size 64x64 -o " + path("views.png"));
+  EXPECT_EQ(views.status, 0) << views.err;
+  const CliRun picture = uvtk(common + " --size 64x64 -o " + path("picture.png"));
+  EXPECT_EQ(picture.status, 3) << picture.err;
+  EXPECT_NE(picture.err.find("broken.png"), std::string::npos) << picture.err;
+}
+
 // The cube projector's faces layout keeps each face's id as r: seen from two opposite corners,
 // per vertex and per pixel, every face shows its own blue of cubeindex.
 TEST_F(RenderCli, TheCubeProjectorsFacesLayoutLooksUpEachFace) {
