@@ -39,7 +39,7 @@ const std::vector<Field<RenderOptions>>& renderFields() {
       textField("--view", &O::view),
       textField("--size", &O::size),
       arrayField("--view-dir", &O::viewDir),
-      arrayField("--up", &O::up),
+      optionalArrayField("--up", &O::up),
       textField("--camera", &O::camera),
       optionalArrayField("--eye", &O::eye),
       arrayField("--center", &O::center),

@@ -16,7 +16,7 @@ namespace uvtk::cli {
 
 struct CheckArguments {
   std::string input, against, json, view;
-  std::string viewSize = "512x512", viewDir = "0,0,1", viewUp = "0,1,0";
+  std::string viewSize = "512x512", viewDir = "1,-1.5,0.8", viewUp = "0,0,1";  // report's and render's camera
   std::string wrap = "none";
   std::optional<double> tolerance;
   int textureSize = 1024;

@@ -1,6 +1,7 @@
 #include "options/render_cli.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -64,7 +65,10 @@ void addCameraOptions(CLI::App& app, CameraArguments& a, bool lookAt) {
     app.add_option("--eye", a.eye, "Camera: gluLookAt eye (x,y,z); without it the camera frames the mesh")
         ->type_name("X,Y,Z");
     app.add_option("--center", a.center, "Camera: gluLookAt center")->type_name("X,Y,Z")->capture_default_str();
-    app.add_option("--up", a.up, "Camera: gluLookAt up")->type_name("X,Y,Z")->capture_default_str();
+    app.add_option("--up", a.up,
+                   "Camera: up; default 0,0,1 along --view-dir (as report's views; 0,1,0 within 18 degrees of z), "
+                   "0,1,0 with --eye (gluLookAt's)")
+        ->type_name("X,Y,Z");
     app.add_option("--view-dir", a.viewDir, "Automatic camera: direction from the mesh to the eye")
         ->type_name("X,Y,Z")
         ->capture_default_str();
@@ -86,7 +90,7 @@ void CameraArguments::check() const {
   if (manual && eye.empty()) throw UsageError("--camera explicit: expected --eye x,y,z");
   if (manual && ortho == "auto") throw UsageError("--ortho auto goes with the automatic camera");
   if (!manual && (zNear || zFar)) throw UsageError("--near and --far go with an explicit camera (--eye)");
-  parseVec3(up, "--up");
+  if (!up.empty()) parseVec3(up, "--up");
   parseVec3(center, "--center");
   parseVec3(viewDir, "--view-dir");
   if (!eye.empty()) parseVec3(eye, "--eye");
@@ -96,15 +100,18 @@ void CameraArguments::check() const {
 render::Camera CameraArguments::make(const Mesh& mesh, const std::string& meshFile, const Mat4& worldFromObject, int width,
                                      int height) const {
   check();
-  const Vec3 upDir = parseVec3(up, "--up");
   const bool manual = explicitCamera();
+  const Vec3 direction =
+      eye.empty() ? parseVec3(viewDir, "--view-dir") : Vec3(parseVec3(eye, "--eye") - parseVec3(center, "--center"));
+  // Not given: z up along a view direction (report's camera), y up with an eye (gluLookAt's) or when
+  // looking within 18 degrees of the z axis, where z would point almost out of the picture.
+  const bool zUp = eye.empty() && std::fabs(direction.normalized().z()) < 0.95;
+  const Vec3 upDir = !up.empty() ? parseVec3(up, "--up") : zUp ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
   render::Camera camera;
   if (!manual) {
     std::vector<Vec3> world(mesh.positions.size());
     for (std::size_t v = 0; v < world.size(); ++v)
       world[v] = (worldFromObject * mesh.positions[v].homogeneous()).head<3>();
-    const Vec3 direction =
-        eye.empty() ? parseVec3(viewDir, "--view-dir") : Vec3(parseVec3(eye, "--eye") - parseVec3(center, "--center"));
     return render::frameSphere(render::boundingSphere(world), direction, upDir, {ortho == "auto", fovy}, width, height,
                                meshFile);
   }

@@ -32,7 +32,8 @@ extern const std::vector<std::pair<std::string, render::Cull>> kCullNames;
 struct CameraArguments {
   enum class Mode { Auto, Explicit };
   Mode mode = Mode::Auto;
-  std::string eye, center = "0,0,0", up = "0,1,0", viewDir = "0,0,1", ortho;
+  // up "": 0,0,1 for the automatic camera along viewDir (report's views' camera), 0,1,0 with an eye
+  std::string eye, center = "0,0,0", up, viewDir = "1,-1.5,0.8", ortho;
   double fovy = 45.0;
   std::optional<double> zNear, zFar;
   CLI::App* app = nullptr;  // where the options were parsed; none: the defaults

@@ -292,6 +292,22 @@ TEST_F(RenderCli, ACubeMapClampsToEdgeUnlessWrapIsGiven) {
   EXPECT_NE(bytes("default.png"), bytes("repeat.png"));
 }
 
+// The automatic camera looks from report's direction, z up (a mushroom under the cylinder
+// projector showed only its cap from +z); near the z axis, and with an eye, y is up.
+TEST_F(RenderCli, TheDefaultCameraIsReportsAndUpFollowsTheDirection) {
+  io::writeObj(path("knot.obj"), meshes::torus(24, 8, 1.0, 0.3), nullptr);
+  const std::string common = "render " + path("knot.obj") + " --projector sphere --size 48x48 -o ";
+  const auto picture = [&](const std::string& name, const std::string& camera) {
+    const CliRun r = uvtk(common + path(name) + camera);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return bytes(name);
+  };
+  EXPECT_EQ(picture("default.png", ""), picture("report.png", " --view-dir 1,-1.5,0.8 --up 0,0,1"));
+  EXPECT_NE(picture("default.png", ""), picture("yup.png", " --view-dir 1,-1.5,0.8 --up 0,1,0"));
+  EXPECT_EQ(picture("top.png", " --view-dir 0,0.3,1"), picture("topy.png", " --view-dir 0,0.3,1 --up 0,1,0"));
+  EXPECT_EQ(picture("eye.png", " --eye 3,-4,2"), picture("eyey.png", " --eye 3,-4,2 --up 0,1,0"));
+}
+
 // Views draw their own textures: the --texture an image would use is not read for them (it was read
 // whole and checked, so a views-only render failed on a texture it never sampled).
 TEST_F(RenderCli, ViewsDoNotReadTheTexture) {

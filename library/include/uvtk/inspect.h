@@ -46,13 +46,13 @@ struct Image {
   UVTK_API std::vector<std::uint8_t> bytes() const;
 };
 
-// The options of `uvtk render` (its defaults: the camera frames the mesh from +z).
+// The options of `uvtk render` (its defaults: the camera frames the mesh from report's direction).
 struct RenderOptions {
   std::string view;  // --view: checker, uvgrid, stretch, linf, angle, area, seams, uverror, layout, mipline, ...;
                      // several, comma-separated: a contact sheet; "" (the default): the textured picture
   std::string size = "512x512";   // --size: WxH
-  Vector3 viewDir{0, 0, 1};       // --view-dir: the direction from the mesh to the camera, which frames the mesh
-  Vector3 up{0, 1, 0};            // --up: the camera's up
+  Vector3 viewDir{1, -1.5, 0.8};  // --view-dir: the direction from the mesh to the camera, which frames the mesh
+  std::optional<Vector3> up;      // --up: the camera's up; unset: 0,0,1 along viewDir (0,1,0 looking along z), 0,1,0 with eye
   std::string camera;             // --camera: auto (frames the mesh), explicit (eye, center, up); "": explicit when eye is set
   std::optional<Vector3> eye;     // --eye: gluLookAt eye; unset: the camera frames the mesh along viewDir
   Vector3 center{0, 0, 0};        // --center: gluLookAt centre
