@@ -10,13 +10,14 @@
 #include "options/mapping_options.h"
 #include "options/render_cli.h"
 #include "options/verdict_cli.h"
+#include "options/view_camera_cli.h"
 #include "verify/image_check.h"
 
 namespace uvtk::cli {
 
 struct CheckArguments {
   std::string input, against, json, view;
-  std::string viewSize = "512x512", viewDir = "1,-1.5,0.8", viewUp = "0,0,1";  // report's and render's camera
+  std::string viewSize = "512x512", viewDir = kViewDirection, viewUp = kViewUp;
   std::string wrap = "none";
   std::optional<double> tolerance;
   int textureSize = 1024;

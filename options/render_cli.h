@@ -15,6 +15,7 @@
 #include "inspect/mapped_mesh.h"
 #include "options/projector_cli.h"
 #include "options/texgen_cli.h"
+#include "options/view_camera_cli.h"
 #include "render/camera.h"
 #include "render/renderer.h"
 #include "render/texture.h"
@@ -33,7 +34,7 @@ struct CameraArguments {
   enum class Mode { Auto, Explicit };
   Mode mode = Mode::Auto;
   // up "": 0,0,1 for the automatic camera along viewDir (report's views' camera), 0,1,0 with an eye
-  std::string eye, center = "0,0,0", up, viewDir = "1,-1.5,0.8", ortho;
+  std::string eye, center = "0,0,0", up, viewDir = kViewDirection, ortho;
   double fovy = 45.0;
   std::optional<double> zNear, zFar;
   CLI::App* app = nullptr;  // where the options were parsed; none: the defaults
