@@ -158,6 +158,34 @@ double measureUvScale(const Eigen::AlignedBox2d& validBounds) { return scaleOfEx
 
 double measureUvScale(const UvMap& uv, int threads) { return measureUvScale(validUvBounds(uv, threads)); }
 
+namespace {
+
+constexpr std::size_t kFlagChunk = std::size_t(1) << 16;  // faces a thread takes at a time
+
+// Whether a face whose (area-weighted) normal is `normal` points away from where `options` says
+// the projector looks at face f.
+bool facesAway(const Vec3& normal, const DistortionOptions& options, std::size_t f) {
+  if (!options.faceProjectionDirections.empty()) return normal.dot(options.faceProjectionDirections[f]) < 0.0;
+  return options.projectionDirection && normal.dot(*options.projectionDirection) < 0.0;
+}
+
+}  // namespace
+
+void markTurnedAwayFaces(const Mesh& mesh, const DistortionOptions& options, UvMap& uv, int threads) {
+  const std::size_t faceCount = mesh.triangles.size();
+  UVTK_CHECK(uv.faceFlags.size() == faceCount);
+  UVTK_CHECK(options.faceProjectionDirections.empty() || options.faceProjectionDirections.size() == faceCount);
+  if (!options.projectionDirection && options.faceProjectionDirections.empty()) return;
+  const double scale = measureLengthScale(mesh, threads);  // as measureFaces sees the normals
+  parallelFor(int((faceCount + kFlagChunk - 1) / kFlagChunk), threads, [&](int c) {
+    for (std::size_t f = std::size_t(c) * kFlagChunk, end = std::min(faceCount, f + kFlagChunk); f < end; ++f) {
+      const Triangle& t = mesh.triangles[f];
+      const Edges e(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], scale);
+      if (facesAway(triangleAreaNormal(Vec3(Vec3::Zero()), e.e1, e.e2), options, f)) uv.faceFlags[f] |= kFaceTurnedAway;
+    }
+  });
+}
+
 std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const DistortionOptions& options,
                                          int threads) {
   const std::size_t faceCount = mesh.triangles.size();
@@ -174,8 +202,7 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
   // Turned away from the projector: mirrored by design.
   UVTK_CHECK(options.faceProjectionDirections.empty() || options.faceProjectionDirections.size() == faceCount);
   auto turnedAway = [&](const TriangleAreas& a, std::size_t f) {
-    if (!options.faceProjectionDirections.empty()) return a.normal.dot(options.faceProjectionDirections[f]) < 0.0;
-    return options.projectionDirection && a.normal.dot(*options.projectionDirection) < 0.0;
+    return uv.faceHas(f, kFaceTurnedAway) || facesAway(a.normal, options, f);
   };
 
   // Faces in fixed chunks, so that the vote adds up in the same order whatever the thread count.

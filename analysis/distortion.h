@@ -11,9 +11,9 @@
 //   zero_area_3d  A3  <= 1e-14 (longest 3D edge)^2: the triangle is a point or a segment
 //   zero_area_uv  Auv <= 1e-14 (longest UV edge)^2
 //   pole_face     the face has kFacePole
-//   backfacing    mirrored, and its 3D normal n satisfies n . direction < 0 for the caller's
-//                 projection direction (or the face's own): planar and triplanar projections
-//                 mirror the faces turned away by design
+//   backfacing    mirrored, and turned away from the projection: kFaceTurnedAway, or its 3D
+//                 normal n satisfies n . direction < 0 for the caller's projection direction (or
+//                 the face's own): planar and triplanar projections mirror such faces by design
 //   flipped       mirrored: its UV winding is opposite to the mesh's majority winding
 //   ok
 // The zero-area thresholds are relative, so they do not depend on the units; 1e-14 lies about
@@ -114,6 +114,12 @@ double measureUvScale(const Eigen::AlignedBox2d& validBounds);
 // The bounding box of the valid corners' UVs; empty when there is none. `threads` (0: one per core)
 // share the corners; the result does not depend on them.
 Eigen::AlignedBox2d validUvBounds(const UvMap& uv, int threads = 1);
+
+// Sets kFaceTurnedAway on the faces whose 3D normal n points away from where `options` says the
+// projector looks (n . direction < 0): the faces a planar or triplanar projection mirrors by
+// design, which measureFaces counts as backfacing rather than flipped. The flag travels with the
+// UVs (a uvtk writer lists the faces, io/face_lists.h), so a written file is judged as its map was.
+void markTurnedAwayFaces(const Mesh& mesh, const DistortionOptions& options, UvMap& uv, int threads = 1);
 
 // One FaceDistortion per triangle of `mesh`. Precondition: `uv` has 3 corners per triangle.
 // `threads` (0: one per core) share the faces; the result does not depend on them.

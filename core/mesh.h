@@ -21,6 +21,9 @@ struct Mesh {
   std::vector<Triangle> cornerTexcoords;
   std::vector<Vec3> normals;
   std::vector<Triangle> cornerNormals;
+  // FaceFlag bits (core/uv_map.h) a uvtk writer listed in the file, one per triangle, or empty:
+  // kFacePole and kFaceTurnedAway (io/face_lists.h), which the file's UVs alone cannot tell.
+  std::vector<std::uint8_t> listedFaceFlags;
 
   std::size_t vertexCount() const { return positions.size(); }
   std::size_t faceCount() const { return triangles.size(); }
@@ -40,7 +43,7 @@ struct MeshWarnings {
   std::size_t parameterVertices = 0;          // OBJ `vp` lines (free-form geometry), ignored
   std::size_t weldedCorners = 0;      // STL: corners that became an earlier corner's vertex (same position, bit for bit)
   std::size_t skippedPrimitives = 0;  // glTF: primitives of points or lines, not triangles, left out
-  // Faces a uvtk writer listed as having corners without a valid UV (io/invalid_uv_faces.h): their
+  // Faces a uvtk writer listed as having corners without a valid UV (io/face_lists.h): their
   // (0, 0) corners are read as without a UV.
   std::size_t listedInvalidUvFaces = 0;
 };

@@ -20,6 +20,7 @@ enum FaceFlag : std::uint8_t {
   kFaceCubeSeam = 1 << 3,           // the corners alone would have chosen different cube faces
   kFaceCap = 1 << 4,                // mapped by a cylinder's planar cap
   kFaceSphereMapSingular = 1 << 5,  // a texgen SPHERE_MAP corner had m = 0 (written as s = t = 1/2)
+  kFaceTurnedAway = 1 << 6,         // turned away from a planar projection's direction: mirrored by design
 };
 
 // Why a corner has no valid UV: the value of UvMap::cornerInvalid (0: the corner is valid).
@@ -51,7 +52,7 @@ struct UvMap {
   bool faceHas(std::size_t f, FaceFlag flag) const { return (faceFlags[f] & flag) != 0; }
   bool cornerValid(std::size_t c) const { return cornerInvalid.empty() || cornerInvalid[c] == kCornerValid; }
   // The UV a file holds at corner c: (0, 0) where the corner has no valid UV, whatever is stored
-  // there (every writer lists such faces, io/invalid_uv_faces.h).
+  // there (every writer lists such faces, io/face_lists.h).
   Vec2 writtenUv(std::size_t c) const { return cornerValid(c) ? uv[c] : Vec2::Zero(); }
 };
 

@@ -28,7 +28,7 @@ namespace {
 
 // The file's (u, v) per corner; a corner without vt is marked in cornerInvalid. Throws InputError
 // for a face without vt unless `partial` or the file's writer listed it as having corners without
-// a valid UV (io/invalid_uv_faces.h), and for a file without any vt.
+// a valid UV (io/face_lists.h), and for a file without any vt.
 UvMap storedUvs(const io::ReadMeshResult& read, const std::string& path, bool partial) {
   const Mesh& mesh = read.mesh;
   std::vector<char> listed(mesh.faceCount(), 0);

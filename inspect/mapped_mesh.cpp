@@ -171,7 +171,10 @@ UvMap fileUvs(const Mesh& mesh, const std::string& path) {
   if (!mesh.hasTexcoords()) throw UsageError(path + " has no texture coordinates (vt): give --projector");
   UvMap uv;
   uv.uv.resize(3 * mesh.faceCount(), Vec2::Zero());
-  uv.faceFlags.assign(mesh.faceCount(), kFaceOk);
+  // What the file's UVs cannot tell (pole faces, faces turned away from a planar projection), as a
+  // uvtk writer listed it (io/face_lists.h).
+  uv.faceFlags = mesh.listedFaceFlags;
+  uv.faceFlags.resize(mesh.faceCount(), kFaceOk);
   uv.w.assign(3 * mesh.faceCount(), 0.0);
   uv.cornerInvalid.assign(3 * mesh.faceCount(), 0);
   for (std::size_t f = 0; f < mesh.faceCount(); ++f)
@@ -201,6 +204,7 @@ MappedMesh mapByProjector(Mesh mesh, param::ProjectorOptions options, bool seamP
   out.projector = options;
   out.source = "projector";
   out.exact = projectorPixelMapping(options, *out.projection, out.mesh, out.uv);
+  analysis::markTurnedAwayFaces(out.mesh, out.distortionOptions(), out.uv, threads);
   if (param::traitsOf(options.surface).isPerspective) {
     const param::CameraTransform camera(options.camera);
     out.cameraQ.assign(out.uv.uv.size(), 1.0);

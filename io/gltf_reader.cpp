@@ -51,7 +51,7 @@
 
 #include "core/error.h"
 #include "core/memory.h"
-#include "io/invalid_uv_faces.h"
+#include "io/face_lists.h"
 
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "glTF buffers are little-endian; read with memcpy");
 
@@ -653,23 +653,30 @@ std::vector<PrimitiveViews> meshViews(const ModelReader& reader, const tinygltf:
   return views;
 }
 
-// A mesh's extras.uvtk.invalid_faces (io/invalid_uv_faces.h): its faces, 0-based, in the order of
-// its triangle primitives; empty when absent or not an array of whole numbers.
-std::vector<std::size_t> listedInvalidFaces(const tinygltf::Value& extras) {
-  if (!extras.IsObject() || !extras.Has("uvtk")) return {};
+// A mesh's lists in extras.uvtk (io/face_lists.h): its faces, 0-based, in the order of its
+// triangle primitives; a list is empty when absent or not an array of whole numbers.
+ListedFaces listedFaces(const tinygltf::Value& extras) {
+  ListedFaces lists;
+  if (!extras.IsObject() || !extras.Has("uvtk")) return lists;
   const tinygltf::Value& uvtk = extras.Get("uvtk");
-  if (!uvtk.IsObject() || !uvtk.Has("invalid_faces")) return {};
-  const tinygltf::Value& list = uvtk.Get("invalid_faces");
-  if (!list.IsArray()) return {};
-  std::vector<std::size_t> faces;
-  faces.reserve(list.ArrayLen());
-  for (std::size_t i = 0; i < list.ArrayLen(); ++i) {
-    const tinygltf::Value& face = list.Get(int(i));
-    const double number = face.IsNumber() ? face.GetNumberAsDouble() : -1.0;
-    if (!(number >= 0.0 && number < 0x1p53 && number == std::floor(number))) return {};
-    faces.push_back(static_cast<std::size_t>(number));
+  for (std::size_t i = 0; i < kFaceLists.size(); ++i) {
+    const std::string key(kFaceLists[i].gltfKey);
+    if (!uvtk.IsObject() || !uvtk.Has(key)) continue;
+    const tinygltf::Value& list = uvtk.Get(key);
+    if (!list.IsArray()) continue;
+    std::vector<std::size_t>& faces = lists[i];
+    faces.reserve(list.ArrayLen());
+    for (std::size_t j = 0; j < list.ArrayLen(); ++j) {
+      const tinygltf::Value& face = list.Get(int(j));
+      const double number = face.IsNumber() ? face.GetNumberAsDouble() : -1.0;
+      if (!(number >= 0.0 && number < 0x1p53 && number == std::floor(number))) {
+        faces.clear();
+        break;
+      }
+      faces.push_back(static_cast<std::size_t>(number));
+    }
   }
-  return faces;
+  return lists;
 }
 
 ReadMeshResult readModel(const tinygltf::Model& model, const std::string& name, std::size_t inputBytes) {
@@ -711,7 +718,7 @@ ReadMeshResult readModel(const tinygltf::Model& model, const std::string& name, 
 
   Mesh mesh;
   MeshWarnings warnings;
-  std::vector<std::size_t> marked;  // faces of uvtk's lists (io/invalid_uv_faces.h)
+  std::vector<std::size_t> marked;  // faces of uvtk's lists (io/face_lists.h)
   std::vector<std::uint32_t> indices;
   for (const Instance& instance : instances) {
     const Eigen::Matrix3d linear = instance.world.topLeftCorner<3, 3>();
@@ -786,8 +793,8 @@ ReadMeshResult readModel(const tinygltf::Model& model, const std::string& name, 
         for (std::size_t i = 0; i + 2 < n; ++i) addTriangle(indices[i + 1], indices[i + 2], indices[0]);
       }
     }
-    markListedInvalidFaces(mesh, firstFace, mesh.triangles.size() - firstFace,
-                           listedInvalidFaces(model.meshes[static_cast<std::size_t>(instance.mesh)].extras), marked);
+    applyFaceLists(mesh, firstFace, mesh.triangles.size() - firstFace,
+                   listedFaces(model.meshes[static_cast<std::size_t>(instance.mesh)].extras), marked);
   }
   if (mesh.triangles.empty())
     throw fileError(name, "expected at least one triangle primitive in the scene, found none" +
@@ -799,6 +806,7 @@ ReadMeshResult readModel(const tinygltf::Model& model, const std::string& name, 
   // Corner tables created by a late primitive reach the end; those of early ones must, too.
   if (mesh.hasTexcoords()) mesh.cornerTexcoords.resize(mesh.triangles.size(), kNoCorners);
   if (mesh.hasNormals()) mesh.cornerNormals.resize(mesh.triangles.size(), kNoCorners);
+  if (!mesh.listedFaceFlags.empty()) mesh.listedFaceFlags.resize(mesh.triangles.size(), 0);
 
   ReadMeshResult result;
   const MeshWarnings checked = checkMesh(mesh);

@@ -44,7 +44,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
-#include "io/invalid_uv_faces.h"
+#include "io/face_lists.h"
 #include "io/split_vertices.h"
 
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "glTF buffers are little-endian; written with memcpy");
@@ -238,9 +238,9 @@ GltfParts buildGltf(const Mesh& mesh, const UvMap* uvs, const GltfWriteOptions& 
   primitive["indices"] = document["accessors"].size() - 1;
 
   json gltfMesh = {{"primitives", json::array({primitive})}};
-  if (uvs) {
-    const std::vector<std::size_t> invalid = invalidUvFaces(*uvs);
-    if (!invalid.empty()) gltfMesh["extras"] = {{"uvtk", {{"invalid_faces", invalid}}}};
+  for (const FaceList& list : kFaceLists) {
+    const std::vector<std::size_t> listed = facesWith(uvs, list.flag);
+    if (!listed.empty()) gltfMesh["extras"]["uvtk"][std::string(list.gltfKey)] = listed;
   }
   document["meshes"] = json::array({std::move(gltfMesh)});
   document["buffers"] = json::array({{{"byteLength", parts.bin.size()}}});

@@ -59,7 +59,7 @@
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "io/gltf_reader.h"
-#include "io/invalid_uv_faces.h"
+#include "io/face_lists.h"
 #include "io/mesh_format.h"
 #include "io/number_text.h"
 #include "io/ply_reader.h"
@@ -458,7 +458,7 @@ struct ObjChunk {
   std::size_t lines = 0;
   std::size_t lineOffset = 0;  // from the chunk's line numbers to the file's
   std::size_t vertexColours = 0, parameterVertices = 0;
-  std::vector<std::size_t> listedInvalidFaces;  // 0-based, from uvtk's comment (io/invalid_uv_faces.h)
+  ListedFaces listedFaces;  // 0-based, from uvtk's comments (io/face_lists.h)
   // Left by a read that did not know the counts before the chunk (provisional):
   std::exception_ptr error;                 // the read stopped here (syntax errors do not depend on the counts)
   bool relative = false;                    // a negative index: it depends on the counts before the chunk
@@ -510,10 +510,8 @@ class ObjChunkReader {
       if (!reader_.nextLine()) break;
       if (reader_.endsWithBackslash()) reader_.fail("end of line", "a '\\' line continuation");
       const std::string_view keyword = reader_.token();
-      if (keyword.empty()) {  // a blank line, or a comment: perhaps uvtk's list of invalid faces
-        if (!reader_.comment().empty())
-          readInvalidFaceLine(reader_.comment(), "# ", kObjInvalidFacesFirst, kObjInvalidFacesMore, 1,
-                              chunk_.listedInvalidFaces);
+      if (keyword.empty()) {  // a blank line, or a comment: perhaps a line of uvtk's lists of faces
+        if (!reader_.comment().empty()) readFaceListLine(reader_.comment(), false, chunk_.listedFaces);
         continue;
       }
       if (keyword == "v") {
@@ -840,13 +838,14 @@ ReadMeshResult joinObjChunks(std::vector<ObjChunk>& chunks, const std::string& n
     if (warnings.nonSimplePolygons == 0) warnings.firstNonSimplePolygonLine = w.firstNonSimplePolygonLine;
     warnings.nonSimplePolygons += w.nonSimplePolygons;
   }
-  std::vector<std::size_t> listed;
-  for (ObjChunk& c : chunks) {
-    listed.insert(listed.end(), c.listedInvalidFaces.begin(), c.listedInvalidFaces.end());
-    release(c.listedInvalidFaces);
-  }
+  ListedFaces listed;
+  for (ObjChunk& c : chunks)
+    for (std::size_t i = 0; i < listed.size(); ++i) {
+      listed[i].insert(listed[i].end(), c.listedFaces[i].begin(), c.listedFaces[i].end());
+      release(c.listedFaces[i]);
+    }
   std::vector<std::size_t> marked;
-  markListedInvalidFaces(mesh, 0, mesh.triangles.size(), listed, marked);
+  applyFaceLists(mesh, 0, mesh.triangles.size(), listed, marked);
   warnings.listedInvalidUvFaces = marked.size();
   ReadMeshResult result = withWarnings(std::move(mesh), warnings);
   result.listedInvalidUvFaces = std::move(marked);

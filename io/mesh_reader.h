@@ -17,7 +17,7 @@ struct ReadMeshResult {
   Mesh mesh;
   MeshWarnings warnings;
   // The faces a uvtk writer listed as having corners without a valid UV, whose (0, 0) corners were
-  // read as without a UV (io/invalid_uv_faces.h); as many as warnings.listedInvalidUvFaces.
+  // read as without a UV (io/face_lists.h); as many as warnings.listedInvalidUvFaces.
   std::vector<std::size_t> listedInvalidUvFaces;
 };
 

@@ -13,7 +13,7 @@
 #include "core/error.h"
 #include "core/progress.h"
 #include "io/atomic_file.h"
-#include "io/invalid_uv_faces.h"
+#include "io/face_lists.h"
 #include "io/ordered_text.h"
 #include "io/split_vertices.h"
 
@@ -117,30 +117,29 @@ void writeObj(std::ostream& stream, const Mesh& mesh, const UvMap* uvs, const Ob
   const Vec3* normalValues = mesh.normals.data();
   if (normals) lines(mesh.normals.size(), [normalValues](std::size_t n, char* p) { return vectorLine(p, "vn ", normalValues[n]); });
 
-  if (uvs) {
-    // The list of invalid faces (io/invalid_uv_faces.h): the first block's numbers on the line that
-    // counts them, every later block's on a line of its own, so that no line is long.
-    const std::vector<std::size_t> invalid = invalidUvFaces(*uvs);
-    static_assert(kLinesPerBlock <= kInvalidFacesPerLine);
-    if (!invalid.empty()) {
-      out.text("# " + std::to_string(invalid.size()) + std::string(kObjInvalidFacesFirst));
-      const std::size_t firstBlock = invalid.front() / kLinesPerBlock;
-      out.blocks((faceCount + kLinesPerBlock - 1) / kLinesPerBlock, [&](std::size_t block, TextBlock& text) {
-        bool started = block == firstBlock;
-        for (std::size_t f = block * kLinesPerBlock, end = std::min(faceCount, f + kLinesPerBlock); f < end; ++f)
-          if (uvs->faceHas(f, kFaceInvalid)) {
-            char* p = text.room(kMaxLineBytes);
-            if (!started) {
-              *p++ = '\n';
-              p = std::copy(kObjInvalidFacesMore.begin(), kObjInvalidFacesMore.end(), p);
-              started = true;
-            }
-            *p++ = ' ';
-            text.commit(integer(p, f + 1));
+  // uvtk's lists of faces (io/face_lists.h): the first block's numbers on the line that counts
+  // them, every later block's on a line of its own, so that no line is long.
+  static_assert(kLinesPerBlock <= kFacesPerLine);
+  for (const FaceList& list : kFaceLists) {
+    const std::vector<std::size_t> listed = facesWith(uvs, list.flag);
+    if (listed.empty()) continue;
+    out.text("# " + std::to_string(listed.size()) + std::string(list.objFirst));
+    const std::size_t firstBlock = listed.front() / kLinesPerBlock;
+    out.blocks((faceCount + kLinesPerBlock - 1) / kLinesPerBlock, [&](std::size_t block, TextBlock& text) {
+      bool started = block == firstBlock;
+      for (std::size_t f = block * kLinesPerBlock, end = std::min(faceCount, f + kLinesPerBlock); f < end; ++f)
+        if (uvs->faceHas(f, list.flag)) {
+          char* p = text.room(kMaxLineBytes);
+          if (!started) {
+            *p++ = '\n';
+            p = std::copy(list.objMore.begin(), list.objMore.end(), p);
+            started = true;
           }
-      });
-      out.text("\n");
-    }
+          *p++ = ' ';
+          text.commit(integer(p, f + 1));
+        }
+    });
+    out.text("\n");
   }
 
   const Triangle* triangles = mesh.triangles.data();

@@ -36,7 +36,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "io/invalid_uv_faces.h"
+#include "io/face_lists.h"
 #include "io/number_text.h"
 #include "io/polygon_triangulation.h"
 
@@ -134,7 +134,7 @@ struct Header {
   std::vector<Element> elements;
   int vertexElement = -1, faceElement = -1;
   bool normals = false, vertexTexcoords = false, faceTexcoords = false, colours = false;
-  std::vector<std::size_t> listedInvalidFaces;  // 0-based, from uvtk's comments (io/invalid_uv_faces.h)
+  ListedFaces listedFaces;  // 0-based, from uvtk's comments (io/face_lists.h)
 };
 
 // "1 vertex", "6 faces", "2 'edge' elements".
@@ -465,9 +465,7 @@ Header parseHeader(HeaderReader& reader, const std::string& name) {
     if (!reader.next()) failAtLine(name, reader.line() + 1, "'end_header'", "end of file");
     Tokens tokens(reader.text());
     const std::string_view keyword = tokens.next();
-    if (keyword == "comment")
-      readInvalidFaceLine(reader.text(), "comment uvtk: ", kPlyInvalidFacesFirst, kPlyInvalidFacesMore, 0,
-                          header.listedInvalidFaces);
+    if (keyword == "comment") readFaceListLine(reader.text(), true, header.listedFaces);
     if (keyword.empty() || keyword == "comment" || keyword == "obj_info") continue;
     if (keyword == "format") {
       if (haveFormat) reader.fail("one format line", "a second");
@@ -911,7 +909,7 @@ ReadMeshResult readPly(std::istream& in, const std::string& name) {
   }
   ReadMeshResult result;
   result.warnings = b.warnings;
-  markListedInvalidFaces(mesh, 0, mesh.triangles.size(), header.listedInvalidFaces, result.listedInvalidUvFaces);
+  applyFaceLists(mesh, 0, mesh.triangles.size(), header.listedFaces, result.listedInvalidUvFaces);
   result.warnings.listedInvalidUvFaces = result.listedInvalidUvFaces.size();
   if (header.colours) result.warnings.vertexColours = mesh.positions.size();
   const MeshWarnings checked = checkMesh(mesh);

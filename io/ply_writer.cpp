@@ -12,7 +12,7 @@
 
 #include "core/error.h"
 #include "core/progress.h"
-#include "io/invalid_uv_faces.h"
+#include "io/face_lists.h"
 #include "io/split_vertices.h"
 
 namespace uvtk::io {
@@ -77,23 +77,22 @@ void writeHeader(Buffer& out, const Mesh& mesh, const UvMap* uvs, const PlyWrite
     out.character('\n');
   }
   const std::size_t faceCount = mesh.triangles.size();
-  if (uvs) {
-    const std::vector<std::size_t> invalid = invalidUvFaces(*uvs);
-    if (!invalid.empty()) {
-      out.text("comment uvtk: ");
-      out.integer(invalid.size());
-      out.text(kPlyInvalidFacesFirst);
-      // Continued on further lines, so that no header line grows past what a reader holds at once.
-      for (std::size_t i = 0; i < invalid.size(); ++i) {
-        if (i > 0 && i % kInvalidFacesPerLine == 0) {
-          out.character('\n');
-          out.text(kPlyInvalidFacesMore);
-        }
-        out.character(' ');
-        out.integer(invalid[i]);
+  for (const FaceList& list : kFaceLists) {
+    const std::vector<std::size_t> listed = facesWith(uvs, list.flag);
+    if (listed.empty()) continue;
+    out.text("comment uvtk: ");
+    out.integer(listed.size());
+    out.text(list.plyFirst);
+    // Continued on further lines, so that no header line grows past what a reader holds at once.
+    for (std::size_t i = 0; i < listed.size(); ++i) {
+      if (i > 0 && i % kFacesPerLine == 0) {
+        out.character('\n');
+        out.text(list.plyMore);
       }
-      out.character('\n');
+      out.character(' ');
+      out.integer(listed[i]);
     }
+    out.character('\n');
   }
   out.text("element vertex ");
   out.integer(vertices);

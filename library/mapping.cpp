@@ -222,6 +222,10 @@ Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thre
   for (std::size_t c = 0; c < corners; ++c) mapping.uv[c] = {m.uv.uv[c].x(), m.uv.uv[c].y()};
   mapping.w = m.uv.w;
   mapping.q = m.q;
+  static_assert(api::kFaceTurnedAway == uvtk::kFaceTurnedAway && api::kFaceSphereMapSingular == uvtk::kFaceSphereMapSingular &&
+                api::kFaceCap == uvtk::kFaceCap && api::kFaceCubeSeam == uvtk::kFaceCubeSeam &&
+                api::kFaceSeamStraddle == uvtk::kFaceSeamStraddle && api::kFacePole == uvtk::kFacePole &&
+                api::kFaceInvalid == uvtk::kFaceInvalid);  // the bits are copied as they are
   mapping.faceFlags = m.uv.faceFlags;
   mapping.invalidReason.resize(corners);
   mapping.state.resize(corners, CornerState::Ok);

@@ -58,6 +58,7 @@ uvtk::Mesh toEngine(const Mesh& mesh) {
   engine.cornerTexcoords = mesh.cornerTexcoords;
   engine.normals = convertPoints<Vec3>(mesh.normals);
   engine.cornerNormals = mesh.cornerNormals;
+  engine.listedFaceFlags = mesh.faceFlags;
   return engine;
 }
 
@@ -69,6 +70,7 @@ Mesh fromEngine(const uvtk::Mesh& engine) {
   mesh.cornerTexcoords = engine.cornerTexcoords;
   mesh.normals = convertPoints<Vector3>(engine.normals);
   mesh.cornerNormals = engine.cornerNormals;
+  mesh.faceFlags = engine.listedFaceFlags;
   return mesh;
 }
 
@@ -97,6 +99,9 @@ static void checkIndicesAndNumbers(const Mesh& mesh) {
   checkIndices(mesh.triangles, mesh.positions.size(), triangles, "the position index", false);
   checkIndices(mesh.cornerTexcoords, mesh.texcoords.size(), triangles, "the texcoord index", true);
   checkIndices(mesh.cornerNormals, mesh.normals.size(), triangles, "the normal index", true);
+  if (!mesh.faceFlags.empty() && mesh.faceFlags.size() != triangles)
+    throw std::invalid_argument("mesh: expected one face flag per triangle (" + std::to_string(triangles) + ") or none, found " +
+                                std::to_string(mesh.faceFlags.size()));
 }
 
 CheckedMesh checked(const Mesh& mesh) {

@@ -579,11 +579,12 @@ std::vector<std::array<T, N>> vectorOf(const char* what, const py::handle& objec
 
 py::tuple meshState(const api::Mesh& mesh) {
   return py::make_tuple(1, arrayOf(mesh.positions), arrayOf(mesh.triangles), arrayOf(mesh.texcoords),
-                        arrayOf(mesh.cornerTexcoords), arrayOf(mesh.normals), arrayOf(mesh.cornerNormals));
+                        arrayOf(mesh.cornerTexcoords), arrayOf(mesh.normals), arrayOf(mesh.cornerNormals),
+                        py::array(py::cast(mesh.faceFlags)));
 }
 
 api::Mesh meshFromState(const py::tuple& state) {
-  if (state.size() != 7 || state[0].cast<int>() != 1) throw py::value_error("unpickling: not a uvtk.Mesh state");
+  if (state.size() != 8 || state[0].cast<int>() != 1) throw py::value_error("unpickling: not a uvtk.Mesh state");
   api::Mesh mesh;
   mesh.positions = vectorOf<double, 3>("positions", state[1]);
   mesh.triangles = vectorOf<int, 3>("triangles", state[2]);
@@ -591,6 +592,7 @@ api::Mesh meshFromState(const py::tuple& state) {
   mesh.cornerTexcoords = vectorOf<int, 3>("corner texcoords", state[4]);
   mesh.normals = vectorOf<double, 3>("normals", state[5]);
   mesh.cornerNormals = vectorOf<int, 3>("corner normals", state[6]);
+  mesh.faceFlags = state[7].cast<std::vector<std::uint8_t>>();
   api::checkMesh(mesh);
   return mesh;
 }
@@ -613,7 +615,8 @@ py::tuple mappingState(const py::object& self) {
   const auto same = [&](const api::Mesh& a) {
     const api::Mesh& b = mapping.mesh;
     return a.positions == b.positions && a.triangles == b.triangles && a.texcoords == b.texcoords &&
-           a.cornerTexcoords == b.cornerTexcoords && a.normals == b.normals && a.cornerNormals == b.cornerNormals;
+           a.cornerTexcoords == b.cornerTexcoords && a.normals == b.normals && a.cornerNormals == b.cornerNormals &&
+           a.faceFlags == b.faceFlags;
   };
   const bool ownMesh = m.input.is_none() || (py::isinstance<api::Mesh>(m.input) && same(m.input.cast<const api::Mesh&>()));
   return py::make_tuple(1, meshState(mapping.mesh), arrayOf(mapping.uv), py::array(py::cast(mapping.w)),
@@ -699,6 +702,7 @@ line, bit for bit. Options are keywords named as the command line's options (cap
   m.attr("FACE_CUBE_SEAM") = int(api::kFaceCubeSeam);
   m.attr("FACE_CAP") = int(api::kFaceCap);
   m.attr("FACE_SPHERE_MAP_SINGULAR") = int(api::kFaceSphereMapSingular);
+  m.attr("FACE_TURNED_AWAY") = int(api::kFaceTurnedAway);
   m.attr("POINT_OK") = int(uvtk::point::Status::Ok);
   m.attr("POINT_POLE") = int(uvtk::point::Status::Pole);
   m.attr("POINT_ON_SEAM") = int(uvtk::point::Status::OnSeam);
@@ -890,7 +894,7 @@ along the seam (more vertices and faces than the input).)")
             const api::Mapping& mapping = self.cast<const PyMapping&>().mapping;
             return view(self, mapping.faceFlags.data(), {count(mapping.faceFlags.size())});
           },
-          "(F,) uint8: bits uvtk.FACE_INVALID, FACE_POLE, FACE_SEAM_STRADDLE, FACE_CUBE_SEAM, FACE_CAP, FACE_SPHERE_MAP_SINGULAR.")
+          "(F,) uint8: bits uvtk.FACE_INVALID, FACE_POLE, FACE_SEAM_STRADDLE, FACE_CUBE_SEAM, FACE_CAP, FACE_SPHERE_MAP_SINGULAR, FACE_TURNED_AWAY.")
       .def_property_readonly(
           "mesh", [](const PyMapping& self) -> const api::Mesh& { return self.mapping.mesh; },
           py::return_value_policy::reference_internal,

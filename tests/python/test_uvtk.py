@@ -2,6 +2,7 @@
 # errors), and the `uvtk` program: the same UVs bit for bit.
 import gc
 import json
+import pickle
 import math
 import struct
 import threading
@@ -533,6 +534,27 @@ def test_file_uvs_are_the_meshs_own():
     np.testing.assert_array_equal(m.uv, uv)
     with pytest.raises(ValueError):
         uvtk.file_uvs(uvtk.Mesh(positions, triangles))
+
+
+
+def test_a_written_map_read_back_keeps_its_pole_and_turned_away_faces(tmp_path):
+    # The writer lists them as it lists invalid faces; read back, report judges the file as map did
+    # (before, the plane's back faces read as flipped and failed the file).
+    mesh = uvtk.Mesh(*uv_sphere())
+    for projector, flag in (("sphere", uvtk.FACE_POLE), ("plane", uvtk.FACE_TURNED_AWAY)):
+        m = uvtk.map(mesh, projector=projector)
+        assert (m.face_flags & flag).any(), projector
+        for ext in ("obj", "ply", "glb"):
+            path = tmp_path / f"m.{ext}"
+            uvtk.write_mesh(path, m)
+            read = uvtk.read_mesh(path)
+            again = uvtk.file_uvs(read)
+            listed = uvtk.FACE_POLE | uvtk.FACE_TURNED_AWAY
+            np.testing.assert_array_equal(again.face_flags & listed, m.face_flags & listed)
+            rep = uvtk.report(read, again)
+            assert rep["verdict"] == m.verdict["status"], (projector, ext)
+            assert [r["code"] for r in rep["reasons"]] == [r["rule"] for r in m.verdict["reasons"]], (projector, ext)
+            np.testing.assert_array_equal(uvtk.file_uvs(pickle.loads(pickle.dumps(read))).face_flags, again.face_flags)
 
 
 # ---- writing ----

@@ -147,6 +147,7 @@ enum FaceFlag : std::uint8_t {
   kFaceCubeSeam = 1 << 3,           // the corners alone would have chosen different cube faces
   kFaceCap = 1 << 4,                // mapped by a cylinder's planar cap
   kFaceSphereMapSingular = 1 << 5,  // a texgen sphere_map corner at its singular point
+  kFaceTurnedAway = 1 << 6,         // turned away from a planar projection: mirrored by design (backfacing)
 };
 
 // One reason of a verdict (docs/conventions.md §11).

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <stdexcept>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,10 @@ struct Mesh {
   std::vector<Triangle> cornerTexcoords;
   std::vector<Vector3> normals;
   std::vector<Triangle> cornerNormals;
+  // Empty, or one per triangle: the pole faces (kFacePole) and the faces turned away from a planar
+  // projection (kFaceTurnedAway) that a uvtk writer listed in the file (uvtk/mapping.h's flags),
+  // which the UVs alone cannot tell; report() judges them as the map that wrote the file did.
+  std::vector<std::uint8_t> faceFlags;
 };
 
 // What a reader accepted with a warning rather than an error.

@@ -1,6 +1,6 @@
-// The list of faces with corners without a valid UV, as each writer notes it and each reader gives
-// it back (io/invalid_uv_faces.h).
-#include "io/invalid_uv_faces.h"
+// uvtk's lists of faces (invalid, pole, turned away), as each writer notes them and each reader
+// gives them back (io/face_lists.h).
+#include "io/face_lists.h"
 
 #include <gtest/gtest.h>
 
@@ -22,25 +22,34 @@ namespace {
 
 using Faces = std::vector<std::size_t>;
 
-Faces objLine(std::string_view line) {
-  Faces faces = {99};
-  if (!readInvalidFaceLine(line, "# ", kObjInvalidFacesFirst, kObjInvalidFacesMore, 1, faces)) return {};
-  return Faces(faces.begin() + 1, faces.end());
+// The faces one line adds to the list `list` (0: invalid, 1: pole, 2: turned away); none when the
+// line is not a line of that list (and then no list changes).
+Faces lineOf(std::string_view line, bool ply, std::size_t list = 0) {
+  ListedFaces lists;
+  for (Faces& faces : lists) faces = {99};
+  const bool read = readFaceListLine(line, ply, lists);
+  for (std::size_t i = 0; i < lists.size(); ++i)
+    if (i != list || !read) EXPECT_EQ(lists[i], Faces{99}) << line;
+  return read ? Faces(lists[list].begin() + 1, lists[list].end()) : Faces{};
 }
+Faces objLine(std::string_view line, std::size_t list = 0) { return lineOf(line, false, list); }
+Faces plyLine(std::string_view line, std::size_t list = 0) { return lineOf(line, true, list); }
 
-Faces plyLine(std::string_view line) {
-  Faces faces;
-  if (!readInvalidFaceLine(line, "comment uvtk: ", kPlyInvalidFacesFirst, kPlyInvalidFacesMore, 0, faces)) return {};
-  return faces;
-}
-
-TEST(InvalidUvFaces, ReadsTheLinesOfEachFormatsListAndNoOtherComment) {
+TEST(FaceLists, ReadsTheLinesOfEachFormatsListAndNoOtherComment) {
   EXPECT_EQ(objLine("# 3 faces have corners without a valid UV (written as vt 0 0); 1-based face numbers: 2 7\t10"),
             (Faces{1, 6, 9}));
   EXPECT_EQ(objLine("# more 1-based face numbers: 1 12 "), (Faces{0, 11}));
   EXPECT_EQ(plyLine("comment uvtk: 2 faces have corners without a valid UV (written as s t = 0 0); 0-based face numbers: 0 5"),
             (Faces{0, 5}));
   EXPECT_EQ(plyLine("comment uvtk: more 0-based face numbers: 8"), (Faces{8}));
+  EXPECT_EQ(objLine("# 2 faces are pole faces (their corners on the projector's axis fanned); 1-based face numbers: 1 4", 1),
+            (Faces{0, 3}));
+  EXPECT_EQ(objLine("# more 1-based pole face numbers: 5", 1), (Faces{4}));
+  EXPECT_EQ(plyLine("comment uvtk: 1 faces are turned away from the projection (mirrored by design); 0-based face "
+                    "numbers: 6",
+                    2),
+            (Faces{6}));
+  EXPECT_EQ(plyLine("comment uvtk: more 0-based turned-away face numbers: 0 3", 2), (Faces{0, 3}));
 
   // Anything else leaves the faces as they were.
   for (const std::string_view other :
@@ -49,19 +58,14 @@ TEST(InvalidUvFaces, ReadsTheLinesOfEachFormatsListAndNoOtherComment) {
         "# more 1-based face numbers: 4 -5", "# more 1-based face numbers: 4,5",
         "# faces have corners without a valid UV (written as vt 0 0); 1-based face numbers: 2",
         "#3 faces have corners without a valid UV (written as vt 0 0); 1-based face numbers: 2"}) {
-    Faces faces = {42};
-    EXPECT_FALSE(readInvalidFaceLine(other, "# ", kObjInvalidFacesFirst, kObjInvalidFacesMore, 1, faces)) << other;
-    EXPECT_EQ(faces, Faces{42}) << other;
+    EXPECT_EQ(objLine(other), Faces{}) << other;
   }
-  Faces faces;
-  EXPECT_FALSE(readInvalidFaceLine("comment more 0-based face numbers: 1", "comment uvtk: ", kPlyInvalidFacesFirst,
-                                   kPlyInvalidFacesMore, 0, faces));
-  EXPECT_FALSE(readInvalidFaceLine("# more 1-based face numbers: 1", "comment uvtk: ", kPlyInvalidFacesFirst,
-                                   kPlyInvalidFacesMore, 0, faces));  // one format's list is not another's
-  EXPECT_TRUE(faces.empty());
+  EXPECT_EQ(plyLine("comment more 0-based face numbers: 1"), Faces{});
+  EXPECT_EQ(plyLine("# more 1-based face numbers: 1"), Faces{});  // one format's list is not another's
+  EXPECT_EQ(objLine("comment uvtk: more 0-based face numbers: 1"), Faces{});
 }
 
-TEST(InvalidUvFaces, MarksOnlyTheCornersAtZeroOfListedFaces) {
+TEST(FaceLists, MarksOnlyTheCornersAtZeroOfListedFaces) {
   Mesh mesh;
   mesh.positions.assign(4, Vec3::Zero());
   mesh.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 2, 3}};
@@ -69,21 +73,26 @@ TEST(InvalidUvFaces, MarksOnlyTheCornersAtZeroOfListedFaces) {
   mesh.cornerTexcoords = {{0, 1, 2}, {0, 1, 3}, {-1, 1, 2}};
   // Face 0 lists nothing; face 1 twice (counted once); face 2 has no (0, 0) corner; 3 and 9 are beyond the faces.
   std::vector<std::size_t> marked;
-  markListedInvalidFaces(mesh, 0, 3, {1, 2, 1, 3, 9}, marked);
+  applyFaceLists(mesh, 0, 3, {Faces{1, 2, 1, 3, 9}, Faces{}, Faces{}}, marked);
   EXPECT_EQ(marked, Faces{1});
   EXPECT_EQ(mesh.cornerTexcoords, (std::vector<Triangle>{{0, 1, 2}, {-1, 1, -1}, {-1, 1, 2}}));
 
   // Numbered from a first face (a glTF mesh's faces after an earlier mesh's), within its count.
   mesh.cornerTexcoords = {{0, 1, 2}, {0, 1, 3}, {0, 0, 0}};
   marked.clear();
-  markListedInvalidFaces(mesh, 1, 1, {0, 1}, marked);
+  applyFaceLists(mesh, 1, 1, {Faces{0, 1}, Faces{}, Faces{}}, marked);
   EXPECT_EQ(marked, Faces{1});
   EXPECT_EQ(mesh.cornerTexcoords, (std::vector<Triangle>{{0, 1, 2}, {-1, 1, -1}, {0, 0, 0}}));
+  EXPECT_TRUE(mesh.listedFaceFlags.empty());
+
+  // Pole and turned-away faces become bits of listedFaceFlags, within the count from the first face.
+  applyFaceLists(mesh, 1, 2, {Faces{}, Faces{0, 5}, Faces{1, 0}}, marked);
+  EXPECT_EQ(mesh.listedFaceFlags, (std::vector<std::uint8_t>{0, kFacePole | kFaceTurnedAway, kFaceTurnedAway}));
 
   Mesh without = mesh;
   without.cornerTexcoords.clear();
   marked.clear();
-  markListedInvalidFaces(without, 0, 3, {0, 1, 2}, marked);
+  applyFaceLists(without, 0, 3, {Faces{0, 1, 2}, Faces{}, Faces{}}, marked);
   EXPECT_TRUE(marked.empty());
 }
 
@@ -106,6 +115,9 @@ struct Listed {
       uvs.cornerInvalid[3 * f + f % 3] = kCornerMiss;
       ++invalidFaces;
     }
+    for (std::size_t f = 0; f < faces; f += 5) uvs.faceFlags[f] |= kFacePole;
+    for (std::size_t f = 2; f < faces; f += 2) uvs.faceFlags[f] |= kFaceTurnedAway;
+    for (std::size_t f = 0; f < faces; f += 4) uvs.faceFlags[f] |= kFaceSeamStraddle;  // not listed
   }
   // Every corner read back without a UV is one written without a valid UV, and the other way round.
   void expectSameInvalidCorners(const ReadMeshResult& read, const std::string& format) const {
@@ -116,12 +128,16 @@ struct Listed {
     for (std::size_t c = 0; c < uvs.cornerInvalid.size(); ++c)
       differing += (read.mesh.cornerTexcoords[c / 3][c % 3] < 0) != (uvs.cornerInvalid[c] != kCornerValid) ? 1 : 0;
     EXPECT_EQ(differing, 0u) << format;
+    // The pole and turned-away faces come back as such, and no other flag.
+    ASSERT_EQ(read.mesh.listedFaceFlags.size(), mesh.triangles.size()) << format;
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+      ASSERT_EQ(read.mesh.listedFaceFlags[f], uvs.faceFlags[f] & (kFacePole | kFaceTurnedAway)) << format << " face " << f;
   }
 };
 
-TEST(InvalidUvFaces, EveryWritersListComesBackAsTheSameCornersWithoutAUv) {
+TEST(FaceLists, EveryWritersListsComeBackAsTheSameCornersWithoutAUvAndTheSameFaceFlags) {
   const Listed listed;
-  ASSERT_GT(listed.invalidFaces, kInvalidFacesPerLine);  // lists of several lines in every format
+  ASSERT_GT(listed.invalidFaces, kFacesPerLine);  // lists of several lines in every format
 
   std::ostringstream obj;
   writeObj(obj, listed.mesh, &listed.uvs);
@@ -131,7 +147,7 @@ TEST(InvalidUvFaces, EveryWritersListComesBackAsTheSameCornersWithoutAUv) {
   for (std::string line; std::getline(lines, line);)
     if (line.find("face numbers:") != std::string::npos) ++listLines, longest = std::max(longest, line.size());
   EXPECT_GT(listLines, 1u);
-  EXPECT_LT(longest, 16 * kInvalidFacesPerLine);  // no line near the reader's 64 MiB limit
+  EXPECT_LT(longest, 16 * kFacesPerLine);  // no line near the reader's 64 MiB limit
   // In parallel chunks of several sizes (a chunk may begin inside the list) and as a stream.
   for (const std::size_t chunkBytes : {std::size_t{4096}, std::size_t{100000}, kObjChunkBytes})
     listed.expectSameInvalidCorners(readObjText(text, "listed.obj", 2, chunkBytes), "obj " + std::to_string(chunkBytes));
@@ -151,7 +167,7 @@ TEST(InvalidUvFaces, EveryWritersListComesBackAsTheSameCornersWithoutAUv) {
   listed.expectSameInvalidCorners(readGltf(glb.str(), "listed.glb", ".", true), "glb");
 }
 
-TEST(InvalidUvFaces, AFileWithoutTheListKeepsItsCornersAtZero) {
+TEST(FaceLists, AFileWithoutTheListKeepsItsCornersAtZero) {
   const Listed listed;
   std::ostringstream obj;
   writeObj(obj, listed.mesh, &listed.uvs);
