@@ -1,5 +1,6 @@
 #include "inspect/html_report.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -17,13 +18,47 @@ namespace uvtk::inspect {
 
 namespace {
 
-// A JSON leaf as table text.
+std::string cell(const nlohmann::json& value);
+
+// An array of records (the verdict's reasons, the texels' levels) as a table: a column per key, in
+// the order the keys first appear.
+std::string recordsTable(const nlohmann::json& records) {
+  std::vector<std::string> keys;
+  for (const nlohmann::json& r : records)
+    for (const auto& [key, value] : r.items())
+      if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+  std::string html = "<table class=\"records\"><tr>";
+  for (const std::string& key : keys) html += "<th>" + xmlEscaped(key) + "</th>";
+  html += "</tr>";
+  for (const nlohmann::json& r : records) {
+    html += "<tr>";
+    for (const std::string& key : keys) html += "<td>" + (r.contains(key) ? cell(r.at(key)) : std::string()) + "</td>";
+    html += "</tr>";
+  }
+  return html + "</table>";
+}
+
+// A JSON value as table text.
 std::string cell(const nlohmann::json& value) {
   if (value.is_null()) return "—";  // not measured
   if (value.is_number_float()) return number(value.get<double>());
   if (value.is_string()) return xmlEscaped(value.get<std::string>());
+  if (value.is_array() && !value.empty() && value.front().is_object()) return recordsTable(value);
   if (value.is_array() && value.size() > 8) return std::to_string(value.size()) + " entries (see the JSON report)";
   return xmlEscaped(io::jsonText(value));
+}
+
+// An overlap fraction as the pages show it: a percentage of the covered UV area.
+std::string overlapPercent(const nlohmann::json& fraction) {
+  return fraction.is_null() ? cell(fraction) : number(100.0 * fraction.get<double>()) + " %";
+}
+
+// A verdict's reasons as badges and their texts, one per line (the gallery's rows and pictures).
+std::string reasonLines(const nlohmann::json& reasons) {
+  std::string html;
+  for (const nlohmann::json& r : reasons)
+    html += "<br>" + verdictBadge(r.at("severity").get<std::string>()) + " " + xmlEscaped(r.at("text").get<std::string>());
+  return html;
 }
 
 // A bar chart of a histogram record of statisticsJson: bar heights are the weight fractions.
@@ -93,7 +128,8 @@ std::string keyMeasures(const nlohmann::json& report) {
   const nlohmann::json& seams = report.at("seams");
   const std::vector<Row> rows{
       {"L2 stretch, whole mesh", cell(report.at("stretch_l2")),
-       "Sander's root-mean-square stretch, normalised: 1 is isometric (no texel stretched)"},
+       "Sander's root-mean-square stretch, normalised: 1 is isometric (no texel stretched); the root of the mean "
+       "square of the per-face values, so above their mean, far above where a few faces stretch a lot"},
       {"L2 stretch per face: mean / p99 / max", three("stretch_l2_faces"), "the same per face, area-weighted over ok faces"},
       {"L∞ stretch per face: mean / p99 / max", three("stretch_linf_faces"), "the largest stretch in any direction"},
       {"angle distortion σ₁/σ₂: mean / p99 / max", three("angle"), "1 is conformal (angles kept)"},
@@ -103,7 +139,7 @@ std::string keyMeasures(const nlohmann::json& report) {
       {"pole faces", cell(counts.at("pole_face")), "faces at a projector's pole, where u is undefined"},
       {"seams: wrap / cut edges", cell(seams.at("wrap_edges")) + " / " + cell(seams.at("cut_edges")),
        "edges whose faces' UVs differ: by a whole turn (wrap) or otherwise (cut)"},
-      {"overlap", number(100.0 * report.at("overlap_fraction").get<double>()) + " %",
+      {"overlap", overlapPercent(report.at("overlap_fraction")),
        "share of the covered UV pixels that more than one face covers"}};
   std::ostringstream html;
   html << "<table class=\"key-measures\">\n<tr><th>measure</th><th>value</th><th>meaning</th></tr>\n";
@@ -153,11 +189,14 @@ std::string verdictSection(const nlohmann::json& report) {
   if (reasons.empty()) {
     html << "<p>No rule triggered (docs/conventions.md section 11 lists the rules and thresholds).</p>\n";
   } else {
-    html << "<ul class=\"reasons\">\n";
+    html << "<table class=\"reasons\">\n<tr><th>severity</th><th>rule</th><th>value</th><th>threshold</th>"
+            "<th>faces</th><th>what to do</th></tr>\n";
     for (const nlohmann::json& r : reasons)
-      html << "<li>" << verdictBadge(r.at("severity").get<std::string>()) << " " << xmlEscaped(r.at("text").get<std::string>())
-           << "</li>\n";
-    html << "</ul>\n";
+      html << "<tr><td>" << verdictBadge(r.at("severity").get<std::string>()) << "</td><td>" << cell(r.at("code"))
+           << "</td><td class=\"num\">" << cell(r.at("value")) << "</td><td class=\"num\">" << cell(r.at("threshold"))
+           << "</td><td class=\"num\">" << cell(r.at("faces")) << "</td><td>" << cell(r.value("advice", nlohmann::json()))
+           << "</td></tr>\n";
+    html << "</table>\n";
   }
   html << "</section>\n";
   return html.str();
@@ -193,10 +232,25 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath,
         if (std::filesystem::path(file.get<std::string>()).extension() == ".html")
           if (const std::optional<std::string> href = files.link(file.get<std::string>()))
             reportPages.emplace(o.at("mapping").get<std::string>(), *href);
+  // A report output's own page, else its own JSON; another output's, its mapping's report page.
+  const auto reportLink = [&](const nlohmann::json& o) -> std::optional<std::string> {
+    if (kind(o) == "report") {
+      std::optional<std::string> json;
+      for (const nlohmann::json& file : o.at("files")) {
+        const std::optional<std::string> href = files.link(file.get<std::string>());
+        if (href && std::filesystem::path(*href).extension() == ".html") return href;
+        if (href && !json) json = href;
+      }
+      if (json) return json;
+    }
+    const auto page = reportPages.find(o.value("mapping", std::string()));
+    if (page == reportPages.end()) return std::nullopt;
+    return page->second;
+  };
   const auto badge = [&](const nlohmann::json& o) {
     const std::string b = verdictBadge(o.at("verdict").get<std::string>());
-    const auto page = reportPages.find(o.value("mapping", std::string()));
-    return page == reportPages.end() ? b : "<a href=\"" + xmlEscaped(page->second) + "\" title=\"open the report\">" + b + "</a>";
+    const std::optional<std::string> href = reportLink(o);
+    return href ? "<a href=\"" + xmlEscaped(*href) + "\" title=\"open the report\">" + b + "</a>" : b;
   };
 
   html << "<h2>Mappings</h2>\n<table>\n<tr><th>mesh</th><th>mapping</th><th>verdict (opens the report)</th>"
@@ -204,12 +258,12 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath,
           "<th>files</th></tr>\n";
   for (const nlohmann::json& o : outputs)
     if (kind(o) == "report" && o.contains("stretch_l2"))
-      html << "<tr><td>" << cell(o.at("mesh")) << "</td><td>" << cell(o.at("mapping")) << "</td><td>" << badge(o) << " "
-           << cell(o.at("first_reason")) << "</td><td class=\"num\">" << cell(o.at("stretch_l2"))
+      html << "<tr><td>" << cell(o.at("mesh")) << "</td><td>" << cell(o.at("mapping")) << "</td><td>" << badge(o)
+           << reasonLines(o.at("reasons")) << "</td><td class=\"num\">" << cell(o.at("stretch_l2"))
            << "</td><td class=\"num\">" << cell(o.at("stretch_linf")) << "</td><td class=\"num\">"
            << cell(o.at("angle_mean")) << "</td><td class=\"num\">" << cell(o.at("seam_length"))
-           << "</td><td class=\"num\">" << cell(o.at("overlap_fraction")) << "</td><td>" << files.links(o.at("files"))
-           << "</td></tr>\n";
+           << "</td><td class=\"num\">" << overlapPercent(o.at("overlap_fraction")) << "</td><td>"
+           << files.links(o.at("files")) << "</td></tr>\n";
   html << "</table>\n";
 
   if (!views3d.empty()) {
@@ -238,7 +292,7 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath,
           kind(o) == "compare" ? "ranking of " + o.value("mesh", std::string()) : o.value("mapping", std::string());
       if (o.contains("views")) caption += ": " + io::jsonText(o.at("views"));
       std::string verdict;  // each mapping's picture says how its mapping was judged
-      if (o.contains("verdict")) verdict = badge(o) + " " + xmlEscaped(o.value("first_reason", std::string())) + "<br>";
+      if (o.contains("verdict")) verdict = badge(o) + reasonLines(o.value("reasons", nlohmann::json::array())) + "<br>";
       html << "<figure><a href=\"" << xmlEscaped(*src) << "\"><img alt=\"" << xmlEscaped(caption) << "\" src=\""
            << xmlEscaped(*src) << "\"></a><figcaption>" << verdict << xmlEscaped(caption) << "<br><code>" << xmlEscaped(*src)
            << "</code></figcaption></figure>\n";
@@ -262,8 +316,8 @@ std::string galleryHtml(const nlohmann::json& run, const std::string& pagePath,
     if ((kind(o) == "obj" || kind(o) == "mesh") && o.contains("summary")) {
       const nlohmann::json& summary = o.at("summary");
       const nlohmann::json& seams = summary.at("judgement").at("seams");
-      html << "<tr><td>" << cell(o.value("mapping", nlohmann::json())) << "</td><td>" << badge(o) << " "
-           << cell(o.at("first_reason")) << "</td><td class=\"num\">"
+      html << "<tr><td>" << cell(o.value("mapping", nlohmann::json())) << "</td><td>" << badge(o)
+           << reasonLines(o.at("reasons")) << "</td><td class=\"num\">"
            << cell(seams.at("wrap_edges").get<std::size_t>() + seams.at("cut_edges").get<std::size_t>())
            << "</td><td class=\"num\">" << cell(summary.value("pole_faces", nlohmann::json())) << "</td><td class=\"num\">"
            << cell(summary.value("invalid_vertices", nlohmann::json())) << "</td><td>" << files.links(o.at("files"))

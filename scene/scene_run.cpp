@@ -42,10 +42,18 @@ constexpr int kViewsOverlapResolution = 1024;
 // The faces each 3D view of the gallery shows before it decimates: the page holds every report's.
 constexpr std::size_t kGalleryViewFaces = 50000;
 
-// The verdict and first reason of a mapping, for the run report and the gallery.
+// A verdict's reasons as the gallery shows them: each one's severity and text.
+json reasonsRecord(const analysis::Judgement& judgement) {
+  json reasons = json::array();
+  for (const analysis::Reason& r : judgement.reasons) reasons.push_back({{"severity", toString(r.severity)}, {"text", r.text()}});
+  return reasons;
+}
+
+// The verdict and its reasons (the first alone too) of a mapping, for the run report and the gallery.
 void addVerdict(json& record, const analysis::Judgement& judgement) {
   record["verdict"] = analysis::toString(judgement.verdict);
   record["first_reason"] = judgement.firstReason();
+  record["reasons"] = reasonsRecord(judgement);
 }
 
 std::string joined(const std::vector<std::string>& items) {
@@ -255,6 +263,7 @@ class SceneRunner {
         outputs_[stage.index] = {{"mapping", scene_.mappings[*o.mapping].name},
                                  {"verdict", report["verdict"]},
                                  {"first_reason", judgement.firstReason()},
+                                 {"reasons", reasonsRecord(judgement)},
                                  {"mesh", scene_.meshes[scene_.mappings[*o.mapping].mesh].name},
                                  {"stretch_l2", report["stretch_l2"]},
                                  {"stretch_linf", report["stretch_linf"]},

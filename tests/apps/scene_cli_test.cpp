@@ -266,6 +266,34 @@ TEST_F(SceneCli, DemoSceneWritesAGalleryThatRefersOnlyToFilesThatExist) {
     ++references;
   }
   EXPECT_GE(references, 20);
+
+  // Every row of the mappings table opens its report page, shows every reason of its report, and
+  // states overlap as the report does (a percentage).
+  const std::size_t begin = html.find("<h2>Mappings</h2>"), end = html.find("</table>", begin);
+  ASSERT_NE(begin, std::string::npos);
+  const std::string table = html.substr(begin, end - begin);
+  const std::regex row("<tr><td>[^<]*</td><td>([^<]*)</td><td>(.*?)</td>(?:<td class=\"num\">[^<]*</td>){4}"
+                       "<td class=\"num\">([^<]*)</td>");
+  int rows = 0;
+  for (auto it = std::sregex_iterator(table.begin(), table.end(), row); it != std::sregex_iterator(); ++it, ++rows) {
+    const std::string mapping = (*it)[1], verdict = (*it)[2];
+    std::smatch link;
+    ASSERT_TRUE(std::regex_search(verdict, link, std::regex("<a href=\"(reports/[^\"]+\\.html)\" title=\"open the report\">")))
+        << mapping;
+    const std::string page = link[1];
+    const json judged = readJson("out/" + page.substr(0, page.size() - 4) + "json");
+    std::size_t badges = 0;
+    for (std::size_t at = verdict.find("class=\"verdict "); at != std::string::npos;
+         at = verdict.find("class=\"verdict ", at + 1))
+      ++badges;
+    EXPECT_EQ(badges, 1 + judged["reasons"].size()) << mapping;
+    for (const json& reason : judged["reasons"]) {
+      const std::string text = std::regex_replace(reason["text"].get<std::string>(), std::regex(">"), "&gt;");
+      EXPECT_NE(verdict.find(text), std::string::npos) << mapping << ": " << text;
+    }
+    EXPECT_EQ((*it)[3].str().substr((*it)[3].str().size() - 2), " %") << mapping;
+  }
+  EXPECT_EQ(rows, 4);
 }
 
 // Memory before work: the render stage refuses a frame the process cannot hold, naming the
