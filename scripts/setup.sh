@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages uvtk needs (only those missing), then configures and builds.
 # Usage: scripts/setup.sh [build-dir]   the release build (default: build)
+#        scripts/setup.sh build --program   only the program and its image plugin (about half the
+#                                       compiling: no library for C++ users, Python module or tests)
 #        scripts/setup.sh --fuzz        the fuzz preset (clang, ASan + UBSan + libFuzzer): build-fuzz
 #        scripts/setup.sh --validator   the Khronos glTF-Validator and the browser test's tools (Debian's
 #                                       nodejs, npm and chromium, then the npm packages pinned in
@@ -67,4 +69,6 @@ if [ ! -f "$build_dir/build.ninja" ]; then
     cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release >&2
   fi
 fi
-cmake --build "$build_dir" -j "$(nproc)" >&2
+targets=()
+[ "${2:-}" = "--program" ] && targets=(--target uvtk uvtk_image_oiio)
+cmake --build "$build_dir" -j "$(nproc)" "${targets[@]}" >&2
