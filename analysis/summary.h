@@ -16,7 +16,7 @@
 
 #include "analysis/distortion.h"
 #include "analysis/overlap.h"
-#include "analysis/seams.h"
+#include "core/seam_edges.h"
 #include "analysis/statistics.h"
 #include "core/mesh.h"
 #include "core/uv_map.h"

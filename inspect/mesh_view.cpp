@@ -332,7 +332,7 @@ std::string meshViewHtml(const MappedMesh& mapped, const analysis::Judgement& ju
   std::vector<float> seamPoints;
   std::vector<std::uint8_t> seamWrap;
   const views::SeamMarks marks = views::seamMarks(mapped.mesh, mapped.uv, judgement.summary.poleVertices);
-  for (const analysis::SeamEdge& edge : marks.edges) {
+  for (const SeamEdge& edge : marks.edges) {
     const int a = shown.vertexOf[std::size_t(edge.a)], b = shown.vertexOf[std::size_t(edge.b)];
     if (a == b) continue;
     for (const int v : {a, b}) {

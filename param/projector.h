@@ -104,8 +104,6 @@ struct VertexUv {
 struct MappingSummary {
   std::size_t vertices = 0, faces = 0;  // of the output mesh
   std::size_t straddlingFaces = 0;      // faces whose u spanned more than 0.5 before repair
-  std::size_t seamEdges = 0;            // edges whose two faces give an endpoint u differing by an integer
-  double seamLength = 0.0;              // their total length in object space
   std::size_t poleVertices = 0, poleFaces = 0;
   std::size_t invalidVertices = 0, invalidFaces = 0;
   // Corners of the output mesh per CornerInvalid (entry kCornerValid: the valid corners), as in

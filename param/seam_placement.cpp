@@ -15,11 +15,18 @@
 #include <cstdio>
 
 #include "core/progress.h"
+#include "core/seam_edges.h"
 #include "param/surfaces.h"
 
 namespace uvtk::param {
 
 namespace {
+
+// The seam edges' total length as the judgement measures it (the one seam rule), with the
+// projection's own pole vertices.
+double seamLength(const Projection& projection) {
+  return classifySeamEdges(projection.mesh, projection.uv, projection.summary.poleVertexList).length();
+}
 
 struct SeamCandidate {
   double position = 0.0;  // in turns from the current seam, [0, 1)
@@ -110,7 +117,7 @@ SeamPlacement placeSeam(const Mesh& mesh, const ProjectorOptions& options) {
   SeamPlacement placement;
   placement.turnDegrees = options.placement.turnDegrees;
   placement.facesCrossed = placement.facesCrossedBefore = before.summary.straddlingFaces;
-  placement.seamLength = placement.seamLengthBefore = before.summary.seamLength;
+  placement.seamLength = placement.seamLengthBefore = seamLength(before);
   if (best.faces >= before.summary.straddlingFaces) return placement;
 
   // u measured from the seam grows by uPerTurn per counter-clockwise turn of the azimuth.
@@ -121,7 +128,7 @@ SeamPlacement placeSeam(const Mesh& mesh, const ProjectorOptions& options) {
   const Projection after = project(mesh, turned);
   placement.turnDegrees = turn;
   placement.facesCrossed = after.summary.straddlingFaces;
-  placement.seamLength = after.summary.seamLength;
+  placement.seamLength = seamLength(after);
   return placement;
 }
 

@@ -274,43 +274,6 @@ MappingSummary summarize(const Mesh& mesh, const CornerField& c, const SeamRepor
   s.poleFaces = s.poleFaceList.size();
   s.poleVertices = s.poleVertexList.size();
   s.invalidVertices = s.invalidVertexList.size();
-  if (seams.straddlingFaces == 0) return s;
-
-  // Seam edges join a straddling face to a neighbour, so only edges between vertices of
-  // straddling faces are looked up.
-  std::vector<char> nearSeam(mesh.positions.size(), 0);
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    if (c.faceFlags[f] & kFaceSeamStraddle)
-      for (int v : mesh.triangles[f]) nearSeam[v] = 1;
-  struct EdgeSide {
-    Vec2 uvLower, uvHigher;  // at the lower and the higher vertex index
-    bool poleLower, poleHigher;
-  };
-  std::unordered_map<std::uint64_t, EdgeSide> open;
-  auto integerOffset = [](double a, double b) {
-    const double d = a - b;
-    return std::fabs(d) >= 0.5 && std::fabs(d - std::round(d)) <= 1e-9;
-  };
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int i = k, j = (k + 1) % 3;
-      int a = mesh.triangles[f][i], b = mesh.triangles[f][j];
-      if (!nearSeam[a] || !nearSeam[b]) continue;
-      EdgeSide side{c.uv[3 * f + i], c.uv[3 * f + j], c.state[3 * f + i] == CornerState::Pole,
-                    c.state[3 * f + j] == CornerState::Pole};
-      if (a > b) std::swap(a, b), std::swap(side.uvLower, side.uvHigher), std::swap(side.poleLower, side.poleHigher);
-      const std::uint64_t key = (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
-      auto [it, inserted] = open.emplace(key, side);
-      if (inserted) continue;
-      const EdgeSide& other = it->second;
-      const bool seam = (!side.poleLower && !other.poleLower && integerOffset(side.uvLower.x(), other.uvLower.x())) ||
-                        (!side.poleHigher && !other.poleHigher && integerOffset(side.uvHigher.x(), other.uvHigher.x()));
-      if (seam) {
-        ++s.seamEdges;
-        s.seamLength += (mesh.positions[a] - mesh.positions[b]).norm();
-      }
-      open.erase(it);
-    }
   return s;
 }
 

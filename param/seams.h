@@ -48,8 +48,8 @@ SeamReport repairSeams(Mesh& mesh, CornerField& corners, double uStart, SeamMode
 // Gives each pole corner the mean u of its face's other valid corners.
 void fanPoleCorners(CornerField& corners);
 
-// Counts for the summary: poles, invalid vertices, corners per reason, cube seams, caps, and the seam edges (edges
-// whose two faces give an endpoint u values differing by a non-zero integer) with their length.
+// Counts for the summary: poles, invalid vertices, corners per reason, cube seams and caps. The seam
+// edges are the one rule's (core/seam_edges.h), on the UVs the projection ends with.
 MappingSummary summarize(const Mesh& mesh, const CornerField& corners, const SeamReport& seams);
 
 }  // namespace uvtk::param

@@ -75,7 +75,7 @@ DrawnView drawLayout(const ViewInput& in, const ViewOptions& options) {
 
   // Each seam edge on both of its faces' sides.
   const SeamMarks seams = seamMarks(*in.mesh, uv, judgement.summary.poleVertices);
-  for (const analysis::SeamEdge& edge : seams.edges)
+  for (const SeamEdge& edge : seams.edges)
     for (int side = 0; side < 2; ++side)
       drawSegment(image, layoutImagePoint(grid, uv.uv[edge.cornerA[side]]), layoutImagePoint(grid, uv.uv[edge.cornerB[side]]),
                   kSeamWidth, SeamMarks::colour(edge));

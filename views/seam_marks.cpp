@@ -6,7 +6,7 @@
 
 namespace uvtk::views {
 
-std::vector<LegendEntry> seamLegendEntries(const analysis::SeamEdges& counts) {
+std::vector<LegendEntry> seamLegendEntries(const SeamEdges& counts) {
   return {{kWrapSeamColour, "wrap seam edges: " + std::to_string(counts.wrapEdges)},
           {kCutColour, "cut edges: " + std::to_string(counts.cutEdges)}};
 }
@@ -20,8 +20,8 @@ std::string overlapText(const analysis::Overlap& overlap) {
 
 SeamMarks seamMarks(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices) {
   SeamMarks marks;
-  marks.edges = analysis::seamEdgeList(mesh, uv, poleVertices);
-  std::stable_partition(marks.edges.begin(), marks.edges.end(), [](const analysis::SeamEdge& e) { return e.wrap; });
+  marks.edges = seamEdgeList(mesh, uv, poleVertices);
+  std::stable_partition(marks.edges.begin(), marks.edges.end(), [](const SeamEdge& e) { return e.wrap; });
   return marks;
 }
 

@@ -114,7 +114,7 @@ DrawnView drawSeams(const ViewInput& in, const ViewOptions& options) {
 
   const std::vector<int>& poleVertices = judgement.summary.poleVertices;
   const SeamMarks seams = seamMarks(mesh, *in.uv, poleVertices);
-  for (const analysis::SeamEdge& edge : seams.edges) {
+  for (const SeamEdge& edge : seams.edges) {
     const auto clipped = clipSegment(scene.clip[std::size_t(edge.a)], scene.clip[std::size_t(edge.b)]);
     if (!clipped) continue;
     const ScreenPoint a = toScreen(clipped->first, width, height), b = toScreen(clipped->second, width, height);

@@ -197,6 +197,15 @@ TEST_F(ReportCli, SeamPlaceAutoMovesTheSeamOffAnOpenHalfCylinder) {
   EXPECT_EQ(j["straddling_faces"], 0);
   EXPECT_NE(r.err.find("seam placed at"), std::string::npos) << r.err;
   EXPECT_EQ(uvtk("map " + path("half.obj") + " --projector plane --seam-place auto -o " + path("p.obj")).status, 2);
+
+  // One seam rule (core/seam_edges.h): the placement's seam length is the judgement's, with and without a cut.
+  for (const std::string seam : {"shift", "cut"}) {
+    ASSERT_EQ(uvtk("map " + path("sphere.obj") + " --projector cylinder --fit pca --seam-place auto --seam " + seam +
+                   " -q -o " + path("s.obj") + " --json " + path("s.json")).status, 0);
+    const nlohmann::json s = json("s.json");
+    EXPECT_GT(s["judgement"]["seams"]["length"].get<double>(), 0.0) << seam;
+    EXPECT_EQ(s["seam_placement"]["seam_length"], s["judgement"]["seams"]["length"]) << seam;
+  }
 }
 
 TEST_F(ReportCli, CompareRanksAnIsometricProjectionFirstAndIncludesTheBaselines) {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/seam_edges.h"
+
 #include <cmath>
 #include <limits>
 
@@ -158,7 +160,8 @@ TEST(CameraProjector, ProjectMapsEveryCornerByTheFormula) {
   EXPECT_FALSE(p.uv.faceHas(0, kFaceInvalid));
   EXPECT_EQ(p.summary.invalidCorners[kCornerBehind], 1u);
   EXPECT_EQ(p.summary.invalidVertices, 1u);
-  EXPECT_EQ(p.summary.seamEdges + p.summary.poleVertices + p.summary.straddlingFaces, 0u);
+  const SeamEdges seams = classifySeamEdges(p.mesh, p.uv, p.summary.poleVertexList);
+  EXPECT_EQ(seams.wrapEdges + seams.cutEdges + p.summary.poleVertices + p.summary.straddlingFaces, 0u);
 }
 
 TEST(CameraProjector, MapVerticesAndPointMappingAgreeWithProject) {

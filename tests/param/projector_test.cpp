@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/seam_edges.h"
+
 #include <cmath>
 #include <set>
 
@@ -124,8 +126,10 @@ TEST(Project, ShiftGivesTheTwoSidesOfASeamEdgeUsThatDifferByExactlyOne) {
     }
   EXPECT_EQ(seamUs, (std::set<double>{0.0, 1.0}));
   // The seam meridian runs over 16 stacks: 16 edges from pole to pole, each 2 sin(pi/32) long.
-  EXPECT_EQ(p.summary.seamEdges, 16u);
-  EXPECT_NEAR(p.summary.seamLength, 16 * 2 * std::sin(kPi / 32), 1e-12);
+  const SeamEdges seams = classifySeamEdges(p.mesh, p.uv, p.summary.poleVertexList);
+  EXPECT_EQ(seams.wrapEdges, 16u);
+  EXPECT_EQ(seams.cutEdges, 0u);
+  EXPECT_NEAR(seams.length(), 16 * 2 * std::sin(kPi / 32), 1e-12);
   EXPECT_EQ(p.summary.straddlingFaces, 2u * 15u);
 }
 
@@ -159,7 +163,7 @@ TEST(Project, CutKeepsEveryUInsideTheUnitIntervalAndThePiecesTileTheTriangles) {
   }
   // The cut's seam is where shift's was: one seam edge per cut triangle edge on the seam.
   EXPECT_EQ(p.summary.straddlingFaces, shifted.summary.straddlingFaces);
-  EXPECT_GT(p.summary.seamEdges, 0u);
+  EXPECT_GT(classifySeamEdges(p.mesh, p.uv, p.summary.poleVertexList).wrapEdges, 0u);
 }
 
 TEST(Project, FanGivesEachPoleCornerTheMeanUOfTheOtherCorners) {
@@ -197,7 +201,7 @@ TEST(Project, SeamNoneKeepsTheRawStraddlingFaces) {
   o.seam = SeamMode::None;
   const Projection p = project(meshes::latLongSphere(16, 8), o);
   EXPECT_EQ(p.summary.straddlingFaces, 2u * 7u);
-  EXPECT_EQ(p.summary.seamEdges, 0u);
+  EXPECT_EQ(classifySeamEdges(p.mesh, p.uv, p.summary.poleVertexList).length(), 0.0);
   for (const Vec2& uv : p.uv.uv) EXPECT_LT(uv.x(), 1.0);
 }
 

@@ -9,7 +9,7 @@
 #include <limits>
 #include <memory>
 
-#include "analysis/seams.h"
+#include "core/seam_edges.h"
 #include "core/error.h"
 #include "meshes/generators.h"
 #include "param/projector.h"
@@ -177,13 +177,13 @@ TEST(Heatmaps, FaceColoursMatchTheLegendBarAtTheirValues) {
 // An open cylinder by the cylinder projector: the wrap seam runs up the +x side.
 TEST(SeamsView, DrawsTheSeamWhereItsEdgesProjectAndNotBehindTheSurface) {
   const Mapped m = mapWith(meshes::cylinder(24, 4, 1.0, 2.0, false), projector(param::SurfaceKind::Cylinder));
-  const std::vector<analysis::SeamEdge> edges = analysis::seamEdgeList(m.mesh, m.uv, m.judgement.summary.poleVertices);
+  const std::vector<SeamEdge> edges = seamEdgeList(m.mesh, m.uv, m.judgement.summary.poleVertices);
   ASSERT_EQ(edges.size(), 4u);
   const Vec3& wrap = kWrapSeamColour;
 
   const ViewOptions front = viewFrom(m.mesh, Vec3::UnitX(), Vec3::UnitZ(), 128);
   const Image image = drawView(View::Seams, m.input(), front);
-  for (const analysis::SeamEdge& edge : edges) {
+  for (const SeamEdge& edge : edges) {
     ASSERT_TRUE(edge.wrap);
     const Vec2 p = projectToImage(front, 0.5 * (m.mesh.positions[edge.a] + m.mesh.positions[edge.b]));
     EXPECT_TRUE(near(pixelColour(image, int(p.x()), int(p.y())), wrap)) << p.transpose();

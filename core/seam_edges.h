@@ -1,4 +1,6 @@
-// Seams and fanned poles of a UV layout, read from the per-corner UVs alone.
+// Seams and fanned poles of a UV layout, read from the per-corner UVs alone: the one seam rule,
+// which the judgement, the views and the seam placement of param/ all read (below param/ and
+// analysis/, so that neither holds a second one).
 //
 // An edge is a pair of vertices; it is examined when exactly two triangles have it (a boundary
 // or non-manifold edge is never a seam) and none of the four corners at its endpoints is invalid.
@@ -20,7 +22,7 @@
 #include "core/mesh.h"
 #include "core/uv_map.h"
 
-namespace uvtk::analysis {
+namespace uvtk {
 
 struct SeamEdges {
   std::size_t wrapEdges = 0, cutEdges = 0;
@@ -52,4 +54,4 @@ std::vector<SeamEdge> seamEdgeList(const Mesh& mesh, const UvMap& uv, const std:
 // The counts and lengths of seamEdgeList(mesh, uv, poleVertices) per class.
 SeamEdges classifySeamEdges(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices);
 
-}  // namespace uvtk::analysis
+}  // namespace uvtk

@@ -1,4 +1,4 @@
-#include "analysis/seams.h"
+#include "core/seam_edges.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include "core/math.h"
 #include "core/huge_pages.h"
 
-namespace uvtk::analysis {
+namespace uvtk {
 
 namespace {
 
@@ -195,4 +195,4 @@ SeamEdges classifySeamEdges(const Mesh& mesh, const UvMap& uv, const std::vector
   return seams;
 }
 
-}  // namespace uvtk::analysis
+}  // namespace uvtk
