@@ -1,6 +1,8 @@
 #include "inspect/map_job.h"
 
 #include <algorithm>
+#include <atomic>
+#include <numeric>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -313,17 +315,43 @@ BatchResult mapBatch(const std::vector<std::string>& inputs, const std::string& 
   // end: a batch is many independent runs (an interrupted one leaves the meshes done so far, each
   // whole), not one output.
   const std::vector<MeshPaths> paths = batchPaths(inputs, output, json, job.batchFormat);
-  MapJob each = job;
-  if (each.settings.threads == 0) each.settings.threads = 1;  // the meshes run side by side
   createFolder(output);
   if (!json.empty()) createFolder(json);
   const auto start = std::chrono::steady_clock::now();
-  const int threads = std::min(threadCount(jobs), int(paths.size()));
+  const int count = int(paths.size()), threads = std::min(threadCount(jobs), count);
+  // Each mesh takes its share of the cores (unless --threads says). The smallest files go first, so
+  // that the largest start last; a mesh started with fewer meshes left than workers, and at least
+  // 4 times the bytes of each mesh still running, takes the cores the finished workers leave: a
+  // folder of small meshes and one large one ends as soon as the large one alone would, and equal
+  // meshes never share a core.
+  std::vector<std::size_t> order(paths.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::vector<std::uintmax_t> bytes(paths.size());
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    std::error_code error;
+    bytes[i] = fs::file_size(paths[i].input, error);
+    if (error) bytes[i] = 0;  // its read reports the problem
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return bytes[a] < bytes[b]; });
+  const int cores = threadCount(0);
   std::vector<MeshOutcome> outcomes(paths.size());
+  std::vector<std::atomic<std::uintmax_t>> running(std::size_t(std::max(threads, 1)));  // bytes per worker, 0 idle
+  for (auto& r : running) r = 0;
   {
     Progress progress("mapping", paths.size(), "meshes");
-    parallelFor(int(paths.size()), threads, [&](int i) {
-      outcomes[std::size_t(i)] = mapBatchMesh(paths[std::size_t(i)], each, quiet);
+    parallelForWorkers(count, threads, [&](int k, int worker) {
+      const std::size_t i = order[std::size_t(k)];
+      MapJob mine = job;
+      if (mine.settings.threads == 0) {
+        std::uintmax_t others = 0;
+        for (int w = 0; w < int(running.size()); ++w)
+          if (w != worker) others = std::max(others, running[std::size_t(w)].load());
+        const bool alone = count - k < threads && bytes[i] >= 4 * others;
+        mine.settings.threads = std::max(1, cores / (alone ? count - k : threads));
+      }
+      running[std::size_t(worker)] = std::max<std::uintmax_t>(bytes[i], 1);
+      outcomes[i] = mapBatchMesh(paths[i], mine, quiet);
+      running[std::size_t(worker)] = 0;
       progress.advance();
     });
   }
