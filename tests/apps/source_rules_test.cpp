@@ -9,6 +9,7 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -51,9 +52,21 @@ TEST(SourceRules, OnlyParamComparesTheSurfaceEnum) {
 }
 
 TEST(SourceRules, IncludesRunDownTheLayers) {
-  // docs/architecture.md: core -> io, param, texgen, analysis, render -> views -> inspect -> options
-  // (the command line's parser) -> timing, scene -> apps; library/ and point/ are faces over them.
-  // A module includes its own headers and those of the modules below it, never one above.
+  // docs/architecture.md, issue 44's layers: core -> io, param, texgen, analysis, render -> views ->
+  // inspect -> timing -> scene -> options (the command line) -> apps; library/, point/ and python/
+  // are faces over inspect and scene, never over options/. A module includes its own headers and
+  // those of the modules below it ("uvtk" is the installed headers), and CLI:: (CLI11) appears only
+  // in options/ and apps/. What does not hold yet is kNotYet, by file: the test fails on any other
+  // crossing and on an entry that no longer crosses, so that the list only shrinks.
+  const std::set<std::string> kernels = {"core", "io", "param", "texgen", "analysis", "render"};
+  std::set<std::string> inspect = kernels;
+  inspect.insert({"verify", "views", "peers", "meshes"});
+  std::set<std::string> scene = inspect;
+  scene.insert({"inspect", "timing"});
+  const auto with = [](std::set<std::string> set, std::initializer_list<std::string> more) {
+    set.insert(more);
+    return set;
+  };
   const std::map<std::string, std::set<std::string>> below = {
       {"core", {}},
       {"io", {"core"}},
@@ -65,22 +78,45 @@ TEST(SourceRules, IncludesRunDownTheLayers) {
       {"meshes", {"core", "io"}},
       {"views", {"core", "analysis", "render"}},
       {"verify", {"core", "render"}},
-      {"inspect", {"core", "io", "param", "texgen", "analysis", "render", "verify", "views"}},
-      {"options", {"core", "io", "param", "texgen", "analysis", "render", "verify", "views", "inspect"}},
-      {"timing", {"core", "io", "param", "views", "inspect", "options", "peers", "meshes"}},
-      {"scene", {"core", "io", "param", "analysis", "render", "inspect", "options", "timing"}},
+      {"inspect", inspect},
+      {"timing", with(inspect, {"inspect"})},
+      {"scene", scene},
+      {"options", with(scene, {"scene"})},
+      {"library", with(scene, {"scene", "uvtk"})},
+      {"point", with(scene, {"scene", "uvtk"})},
+      {"python", with(scene, {"scene", "library", "uvtk"})},
   };
-  const std::regex include(R"re(#include "([a-z_]+)/)re");
+  const std::set<std::string> cliModules = {"options", "apps"};
+  // Issue 44 has still to take these faces off the command line's option structs (text, CLI::App).
+  const std::set<std::pair<std::string, std::string>> kNotYet = {
+      {"library/detail.h", "CLI::"},        {"library/inspect.cpp", "CLI::"},      {"library/inspect.cpp", "options"},
+      {"library/mapping.cpp", "CLI::"},     {"library/mapping.cpp", "options"},    {"library/mesh.cpp", "CLI::"},
+      {"library/option_fields.h", "CLI::"}, {"library/option_fields.h", "options"}, {"point/point.cpp", "CLI::"},
+      {"point/point_evaluator.h", "options"}, {"point/point_io.cpp", "options"},   {"point/point_io.h", "options"},
+      {"scene/scene.cpp", "CLI::"},         {"scene/scene.cpp", "options"},        {"scene/scene.h", "CLI::"},
+      {"scene/scene.h", "options"},         {"timing/bench.cpp", "CLI::"},         {"timing/bench.cpp", "options"},
+      {"timing/bench.h", "CLI::"},          {"timing/bench.h", "options"}};
+  const std::regex include(R"re(#\s*include\s+[<"]([a-z_]+)/)re");
+  std::set<std::pair<std::string, std::string>> crossings;
+  std::set<std::string> modules;
   for (const fs::path& file : sources()) {
     const std::string module = file.begin()->string();
     const auto allowed = below.find(module);
-    if (allowed == below.end()) continue;  // apps/, library/, point/, python/, bench/, fuzz/: the faces
-    const std::string text = textOf(file);
+    if (allowed == below.end()) continue;  // apps/ (over everything), bench/, fuzz/, examples/
+    modules.insert(module);
+    const std::string text = textOf(file), name = file.generic_string();
     for (auto it = std::sregex_iterator(text.begin(), text.end(), include); it != std::sregex_iterator(); ++it) {
       const std::string target = (*it)[1];
-      EXPECT_TRUE(target == module || allowed->second.count(target)) << file << " includes " << target << "/";
+      if (target != module && (below.count(target) || target == "uvtk") && !allowed->second.count(target))
+        crossings.insert({name, target});
     }
+    if (!cliModules.count(module) && text.find("CLI::") != std::string::npos) crossings.insert({name, "CLI::"});
   }
+  EXPECT_EQ(modules.size(), below.size());  // the walk found every module of the table
+  for (const auto& [file, target] : crossings)
+    EXPECT_TRUE(kNotYet.count({file, target})) << file << " -> " << target << " runs up the layers";
+  for (const auto& entry : kNotYet)
+    EXPECT_TRUE(crossings.count(entry)) << entry.first << " -> " << entry.second << " no longer crosses: take it off kNotYet";
 }
 
 }  // namespace
