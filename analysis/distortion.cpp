@@ -162,32 +162,31 @@ namespace {
 
 constexpr std::size_t kFlagChunk = std::size_t(1) << 16;  // faces a thread takes at a time
 
-// Whether a face whose (area-weighted) normal is `normal` points away from where `options` says
-// the projector looks at face f.
-bool facesAway(const Vec3& normal, const DistortionOptions& options, std::size_t f) {
-  if (!options.faceProjectionDirections.empty()) return normal.dot(options.faceProjectionDirections[f]) < 0.0;
-  return options.projectionDirection && normal.dot(*options.projectionDirection) < 0.0;
+// Whether a face whose (area-weighted) normal is `normal` points away from where the projector
+// looks at face f.
+bool facesAway(const Vec3& normal, const ProjectionDirections& directions, std::size_t f) {
+  if (!directions.faceProjectionDirections.empty()) return normal.dot(directions.faceProjectionDirections[f]) < 0.0;
+  return directions.projectionDirection && normal.dot(*directions.projectionDirection) < 0.0;
 }
 
 }  // namespace
 
-void markTurnedAwayFaces(const Mesh& mesh, const DistortionOptions& options, UvMap& uv, int threads) {
+void markTurnedAwayFaces(const Mesh& mesh, const ProjectionDirections& directions, UvMap& uv, int threads) {
   const std::size_t faceCount = mesh.triangles.size();
   UVTK_CHECK(uv.faceFlags.size() == faceCount);
-  UVTK_CHECK(options.faceProjectionDirections.empty() || options.faceProjectionDirections.size() == faceCount);
-  if (!options.projectionDirection && options.faceProjectionDirections.empty()) return;
+  UVTK_CHECK(directions.faceProjectionDirections.empty() || directions.faceProjectionDirections.size() == faceCount);
+  if (!directions.projectionDirection && directions.faceProjectionDirections.empty()) return;
   const double scale = measureLengthScale(mesh, threads);  // as measureFaces sees the normals
   parallelFor(int((faceCount + kFlagChunk - 1) / kFlagChunk), threads, [&](int c) {
     for (std::size_t f = std::size_t(c) * kFlagChunk, end = std::min(faceCount, f + kFlagChunk); f < end; ++f) {
       const Triangle& t = mesh.triangles[f];
       const Edges e(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], scale);
-      if (facesAway(triangleAreaNormal(Vec3(Vec3::Zero()), e.e1, e.e2), options, f)) uv.faceFlags[f] |= kFaceTurnedAway;
+      if (facesAway(triangleAreaNormal(Vec3(Vec3::Zero()), e.e1, e.e2), directions, f)) uv.faceFlags[f] |= kFaceTurnedAway;
     }
   });
 }
 
-std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const DistortionOptions& options,
-                                         int threads) {
+std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, int threads) {
   const std::size_t faceCount = mesh.triangles.size();
   UVTK_CHECK(uv.uv.size() == 3 * faceCount && uv.faceFlags.size() == faceCount);
   UVTK_CHECK(uv.cornerInvalid.empty() || uv.cornerInvalid.size() == 3 * faceCount);
@@ -198,11 +197,6 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
   };
   auto uvCorners = [&](std::size_t f) {  // times uvScale (exact: a power of two)
     return std::array<Vec2, 3>{uv.uv[3 * f] * uvScale, uv.uv[3 * f + 1] * uvScale, uv.uv[3 * f + 2] * uvScale};
-  };
-  // Turned away from the projector: mirrored by design.
-  UVTK_CHECK(options.faceProjectionDirections.empty() || options.faceProjectionDirections.size() == faceCount);
-  auto turnedAway = [&](const TriangleAreas& a, std::size_t f) {
-    return uv.faceHas(f, kFaceTurnedAway) || facesAway(a.normal, options, f);
   };
 
   // Faces in fixed chunks, so that the vote adds up in the same order whatever the thread count.
@@ -238,7 +232,7 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
         face.status = FaceStatus::ZeroAreaUv;
       } else {
         face.status = FaceStatus::Ok;  // until the majority winding is known
-        const bool away = turnedAway(a, f);
+        const bool away = uv.faceHas(f, kFaceTurnedAway);  // mirrored by design
         votes[std::size_t(c)] += (a.signedAreaUv > 0.0) != away ? a.area3d : -a.area3d;
         orientation[f] = std::uint8_t((a.signedAreaUv > 0.0 ? kCounterClockwise : 0) |
                                       (a.signedAreaUv < 0.0 ? kClockwise : 0) | (away ? kTurnedAway : 0));

@@ -11,17 +11,17 @@
 //   zero_area_3d  A3  <= 1e-14 (longest 3D edge)^2: the triangle is a point or a segment
 //   zero_area_uv  Auv <= 1e-14 (longest UV edge)^2
 //   pole_face     the face has kFacePole
-//   backfacing    mirrored, and turned away from the projection: kFaceTurnedAway, or its 3D
-//                 normal n satisfies n . direction < 0 for the caller's projection direction (or
-//                 the face's own): planar and triplanar projections mirror such faces by design
+//   backfacing    mirrored, and turned away from its projection (kFaceTurnedAway, which
+//                 markTurnedAwayFaces sets): planar and triplanar projections mirror such faces
+//                 by design
 //   flipped       mirrored: its UV winding is opposite to the mesh's majority winding
 //   ok
 // The zero-area thresholds are relative, so they do not depend on the units; 1e-14 lies about
 // 50 times above the rounding noise of a cross product (2^-52 times the squared edge length).
 //
 // Majority winding: each non-degenerate, valid face (status ok, pole_face, backfacing or flipped)
-// votes its 3D area for the sign of its UV signed area; a face turned away from the projection
-// direction (n . direction < 0) votes with the opposite sign, since its mirroring is expected.
+// votes its 3D area for the sign of its UV signed area; a face turned away from its projection
+// (kFaceTurnedAway) votes with the opposite sign, since its mirroring is expected.
 // The sign with the larger total wins; a tie goes to counter-clockwise (positive).
 #pragma once
 
@@ -86,9 +86,10 @@ struct TextureSize {
   bool operator==(const TextureSize& other) const { return width == other.width && height == other.height; }
 };
 
-struct DistortionOptions {
+// Where a projector looks, for markTurnedAwayFaces.
+struct ProjectionDirections {
   // The direction the projector looks along, in object space (for the plane projector the image
-  // of local +z: localFromObject.inverse().linear().col(2)). Unset: no face is backfacing.
+  // of local +z: localFromObject.inverse().linear().col(2)). Unset: no face is turned away.
   std::optional<Vec3> projectionDirection;
   // Per face, in place of projectionDirection when not empty: a projector whose direction changes
   // from face to face (triplanar: the facing of each face's projection, param::triplanarFacing).
@@ -115,16 +116,15 @@ double measureUvScale(const Eigen::AlignedBox2d& validBounds);
 // share the corners; the result does not depend on them.
 Eigen::AlignedBox2d validUvBounds(const UvMap& uv, int threads = 1);
 
-// Sets kFaceTurnedAway on the faces whose 3D normal n points away from where `options` says the
-// projector looks (n . direction < 0): the faces a planar or triplanar projection mirrors by
-// design, which measureFaces counts as backfacing rather than flipped. The flag travels with the
-// UVs (a uvtk writer lists the faces, io/face_lists.h), so a written file is judged as its map was.
-void markTurnedAwayFaces(const Mesh& mesh, const DistortionOptions& options, UvMap& uv, int threads = 1);
+// Sets kFaceTurnedAway on the faces whose 3D normal n points away from where the projector looks
+// (n . direction < 0): the faces a planar or triplanar projection mirrors by design, which
+// measureFaces counts as backfacing rather than flipped. The flag travels with the UVs (a uvtk
+// writer lists the faces, io/face_lists.h), so a written file is judged as its map was.
+void markTurnedAwayFaces(const Mesh& mesh, const ProjectionDirections& directions, UvMap& uv, int threads = 1);
 
 // One FaceDistortion per triangle of `mesh`. Precondition: `uv` has 3 corners per triangle.
 // `threads` (0: one per core) share the faces; the result does not depend on them.
-std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const DistortionOptions& options = {},
-                                         int threads = 0);
+std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, int threads = 0);
 
 // The sums sum(A3) and sum(Auv) over the status-ok faces: the normalisation of every mesh-wide
 // value. Faces of any other status are reported by count only.

@@ -254,7 +254,7 @@ void setMeasuredRule(Judgement& j, Rule rule, double value, std::size_t faces) {
 Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& options) {
   UVTK_CHECK(uv.uv.size() == 3 * mesh.faceCount() && uv.faceFlags.size() == mesh.faceCount());
   Judgement j;
-  j.faces = measureFaces(mesh, uv, options.distortion, options.threads);
+  j.faces = measureFaces(mesh, uv, options.threads);
   j.summary = summarize(mesh, uv, j.faces, options.overlapResolution,
                         options.poleVertices ? &*options.poleVertices : nullptr, options.threads, options.textureSize);
 

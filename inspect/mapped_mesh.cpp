@@ -17,8 +17,8 @@
 
 namespace uvtk::inspect {
 
-analysis::DistortionOptions MappedMesh::distortionOptions() const {
-  analysis::DistortionOptions options;
+analysis::ProjectionDirections MappedMesh::projectionDirections() const {
+  analysis::ProjectionDirections options;
   if (projector && param::traitsOf(projector->surface).projectsAlongAxis)
     options.projectionDirection = projection->localFromObject.inverse().linear().col(2);
   if (projector && param::traitsOf(projector->surface).blendsProjections) {
@@ -35,7 +35,6 @@ analysis::DistortionOptions MappedMesh::distortionOptions() const {
 analysis::Judgement MappedMesh::judge(const analysis::Thresholds& thresholds, int overlapResolution,
                                       int threads, analysis::TextureSize textureSize) const {
   analysis::JudgementOptions options;
-  options.distortion = distortionOptions();
   if (projection) options.poleVertices = projection->summary.poleVertexList;
   options.wrapsU = projector && exact && exact->wrapsS;  // a wrapping projector's seam is expected
   options.uPeriod = uvScale;
@@ -204,7 +203,7 @@ MappedMesh mapByProjector(Mesh mesh, param::ProjectorOptions options, bool seamP
   out.projector = options;
   out.source = "projector";
   out.exact = projectorPixelMapping(options, *out.projection, out.mesh, out.uv);
-  analysis::markTurnedAwayFaces(out.mesh, out.distortionOptions(), out.uv, threads);
+  analysis::markTurnedAwayFaces(out.mesh, out.projectionDirections(), out.uv, threads);
   if (param::traitsOf(options.surface).isPerspective) {
     const param::CameraTransform camera(options.camera);
     out.cameraQ.assign(out.uv.uv.size(), 1.0);

@@ -42,8 +42,9 @@ struct MappedMesh {
   // What the renderer interpolates (per-vertex, `baked` as corners() says) or evaluates at every
   // pixel (per-pixel).
   render::TexcoordSource texcoordSource(bool perPixel, bool baked = false) const;
-  // Where a planar projector looks, so that faces turned away count as backfacing, not flipped.
-  analysis::DistortionOptions distortionOptions() const;
+  // Where a planar projector looks: mapByProjector marks the faces turned away (kFaceTurnedAway), so
+  // that they count as backfacing, not flipped.
+  analysis::ProjectionDirections projectionDirections() const;
   // The judgement of these UVs (analysis/judgement.h): per-face measures, counts, the summary
   // with the projector's own pole vertices (for other sources the fanned poles found in the UVs),
   // and the verdict under `thresholds`; texel densities counted in `textureSize` texels.

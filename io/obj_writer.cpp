@@ -121,10 +121,12 @@ void writeObj(std::ostream& stream, const Mesh& mesh, const UvMap* uvs, const Ob
   // them, every later block's on a line of its own, so that no line is long.
   static_assert(kLinesPerBlock <= kFacesPerLine);
   for (const FaceList& list : kFaceLists) {
-    const std::vector<std::size_t> listed = facesWith(uvs, list.flag);
-    if (listed.empty()) continue;
-    out.text("# " + std::to_string(listed.size()) + std::string(list.objFirst));
-    const std::size_t firstBlock = listed.front() / kLinesPerBlock;
+    if (!uvs) break;
+    const auto has = [&](std::uint8_t flags) { return (flags & list.flag) != 0; };
+    const auto first = std::find_if(uvs->faceFlags.begin(), uvs->faceFlags.end(), has);
+    if (first == uvs->faceFlags.end()) continue;
+    out.text("# " + std::to_string(std::count_if(first, uvs->faceFlags.end(), has)) + std::string(list.objFirst));
+    const std::size_t firstBlock = std::size_t(first - uvs->faceFlags.begin()) / kLinesPerBlock;
     out.blocks((faceCount + kLinesPerBlock - 1) / kLinesPerBlock, [&](std::size_t block, TextBlock& text) {
       bool started = block == firstBlock;
       for (std::size_t f = block * kLinesPerBlock, end = std::min(faceCount, f + kLinesPerBlock); f < end; ++f)
