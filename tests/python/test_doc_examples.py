@@ -143,7 +143,7 @@ FILES_FOR = {
     ("scale-out.md", "uvtk merge-reports -o merged.json out/"): {"out/": _summaries(nested=True)},
     ("scale-out.md", "uvtk merge-reports -o merged.json reports/"): {"reports/": _summaries(nested=False)},
     # README's screenshot check reads the quad-derivative picture of the block above it
-    ("README.md", "uvtk check meshes/sphere_latlong.obj $C --image gpu.png --error-mask bad.png"):
+    ("commands.md", "uvtk check meshes/sphere_latlong.obj $C --image gpu.png --error-mask bad.png"):
         {"gpu.png": _shell("uvtk render meshes/sphere_latlong.obj $C --derivatives quad-coarse -o gpu.png -q")},
 }
 # Commands that the text names but that are no uvtk: what stands in for them.
@@ -156,12 +156,12 @@ STAND_INS = {
 SYNOPSIS = "a synopsis (the command's grammar: alternatives and [options]), not a command"
 # (document, the command's start) -> why it is not run
 SKIP = {
-    ("README.md", "uvtk map IN.obj|.off|.ply"): SYNOPSIS,
-    ("README.md", "uvtk texgen IN.obj --s object_linear:a,b,c,d"): SYNOPSIS,
-    ("README.md", "uvtk render IN.obj [--projector"): SYNOPSIS,
-    ("README.md", "uvtk report IN.obj [projector options]"): SYNOPSIS,
-    ("README.md", "uvtk compare IN.obj [--by"): SYNOPSIS,
-    ("README.md", "uvtk bench [--mesh FILE]"): SYNOPSIS,
+    ("commands.md", "uvtk map IN.obj|.off|.ply"): SYNOPSIS,
+    ("commands.md", "uvtk texgen IN.obj --s object_linear:a,b,c,d"): SYNOPSIS,
+    ("commands.md", "uvtk render IN.obj [--projector"): SYNOPSIS,
+    ("commands.md", "uvtk report IN.obj [projector options]"): SYNOPSIS,
+    ("commands.md", "uvtk compare IN.obj [--by"): SYNOPSIS,
+    ("commands.md", "uvtk bench [--mesh FILE]"): SYNOPSIS,
     ("check.md", "uvtk check MESH.obj [--projector"): SYNOPSIS,
     ("check.md", "uvtk check MESH --image SHOT.png [every"): SYNOPSIS,
     ("eval.md", "uvtk eval [--point x,y,z"): SYNOPSIS,
@@ -189,7 +189,7 @@ XFAIL = {}
 # (document, command) -> exit status, where the text says it is not 0
 EXIT = {
     ("check.md", "uvtk check model.obj --projector sphere --tolerance 1e-3 --worst 2"): 1,  # FAIL above --tolerance
-    ("README.md", "uvtk check meshes/sphere_latlong.obj $C --image gpu.png --error-mask bad.png"): 1,  # "FAIL: ..."
+    ("commands.md", "uvtk check meshes/sphere_latlong.obj $C --image gpu.png --error-mask bad.png"): 1,  # "FAIL: ..."
 }
 
 
@@ -212,11 +212,11 @@ CLAIMS = {
         lambda out, err, d: re.match(r"uvtk run meshes/demo.json: \d+ stages\n", out) and not (d / "meshes" / "obj").exists(),
     ("README.md", "uvtk schema"):  # "the JSON Schema (schema/scene.schema.json)"
         lambda out, err, d: out == (ROOT / "schema" / "scene.schema.json").read_text(),
-    ("README.md", "uvtk render meshes/sphere_latlong.obj $C --view mipline -o mipline.png --json m.json"):  # "450 seam pixels"
+    ("commands.md", "uvtk render meshes/sphere_latlong.obj $C --view mipline -o mipline.png --json m.json"):  # "450 seam pixels"
         lambda out, err, d: json.loads((d / "m.json").read_text())["mip_line"]["where"]["seam"] == 450,
-    ("README.md", "uvtk check meshes/sphere_latlong.obj $C --image gpu.png --error-mask bad.png"):  # "FAIL: 455 invalid pixels, the line"
+    ("commands.md", "uvtk check meshes/sphere_latlong.obj $C --image gpu.png --error-mask bad.png"):  # "FAIL: 455 invalid pixels, the line"
         lambda out, err, d: "uvtk check: FAIL (455 invalid pixels)" in out.splitlines() and (d / "bad.png").exists(),
-    ("README.md", "uvtk eval --projector sphere --point 0,1,0 --point 0,0,2"):  # "x,y,z,u,v,w,q,status,reason, 17 digits"
+    ("commands.md", "uvtk eval --projector sphere --point 0,1,0 --point 0,0,2"):  # "x,y,z,u,v,w,q,status,reason, 17 digits"
         lambda out, err, d: out.splitlines()[0] == "x,y,z,u,v,w,q,status,reason" and len(out.splitlines()) == 3,
     ("eval.md", "uvtk eval --point 0,1,0"):  # sphere: 0,1,0,0.25,0.5,0,1,ok,""
         lambda out, err, d: out.splitlines()[1] == '0,1,0,0.25,0.5,0,1,ok,""',
@@ -228,15 +228,15 @@ CLAIMS = {
         lambda out, err, d: _csv_row(out)[3] == "10",
     ("benchmarks.md", "/usr/bin/time -v uvtk map tri.obj -o out.obj"):  # "Maximum resident set size"
         lambda out, err, d: "Maximum resident set size" in err,
-    ("README.md", "uvtk map meshes/cube.obj --projector cube -o cube_cross.obj"):  # "the cross layout"
+    ("commands.md", "uvtk map meshes/cube.obj --projector cube -o cube_cross.obj"):  # "the cross layout"
         lambda out, err, d: (d / "cube_cross.obj").exists(),
 }
 # Blocks of output that show no command: (document, the block's first line) -> the commands that
 # print it (run in a fresh folder prepared as above) and their exit status, or a reason to skip.
 OUTPUT_BLOCKS = {
-    ("README.md", "uvtk map: 482 vertices, 960 faces"): (
+    ("commands.md", "uvtk map: 482 vertices, 960 faces"): (
         "uvtk map meshes/sphere_latlong.obj -o a.obj; uvtk map meshes/torus.obj --projector cylinder -o b.obj", 0),
-    ("README.md", "Ranked by verdict, then by L2 stretch"): ("uvtk compare knot.obj --write-best best.obj", 0),
+    ("commands.md", "Ranked by verdict, then by L2 stretch"): ("uvtk compare knot.obj --write-best best.obj", 0),
     ("check.md", "uvtk check: gpu.png against meshes/icosphere.obj"): (
         "O='--projector sphere --filter linear_mipmap_linear --texture checker:64:8 --size 320x240'; "
         "uvtk render meshes/icosphere.obj $O --uv-offset 0.0078125,0 -o gpu.png -q && "
@@ -251,7 +251,7 @@ INLINE = [
     ("README.md", "`uvtk: error: unknown option '--projektor'; did you mean '--projector'?`",
      "uvtk map meshes/torus.obj --projektor sphere -o x.obj", 2,
      ["uvtk: error: unknown option '--projektor'; did you mean '--projector'?"]),
-    ("README.md", "`uvtk eval --projector cube --convention notes --point=-0.2,0.5,-0.84` prints the notes' worked\n"
+    ("commands.md", "`uvtk eval --projector cube --convention notes --point=-0.2,0.5,-0.84` prints the notes' worked\n"
                   "example, the -Z face (w = 5) at (u, v) = (0.380952..., 0.797619...)",
      "uvtk eval --projector cube --convention notes --point=-0.2,0.5,-0.84", 0,
      ["-0.20000000000000001,0.5,-0.83999999999999997,0.380952...,0.797619...,5,1,ok,\"\""]),
