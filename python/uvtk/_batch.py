@@ -1,7 +1,7 @@
 """Many meshes on Dask (docs/python.md, "Many meshes on Dask").
 
 map_many(paths, out_dir, client=None, **options) maps every mesh as `uvtk map DIR -o OUT_DIR`
-does, one mesh a task: OUT_DIR/STEM.obj (or .ply, .glb, .gltf) with the same bytes, each mesh
+does, in tasks of a few meshes: OUT_DIR/STEM.obj (or .ply, .glb, .gltf) with the same bytes, each mesh
 mapped with threads=1 unless given (the tasks are the parallelism, as `--jobs` is the program's).
 Where the tasks run is Dask's choice: client=None runs them on Dask's default scheduler (a
 dask.bag); a distributed.Client runs them on its cluster; a scheduler's address
@@ -44,21 +44,55 @@ def _map_one(path, out_dir, extension, options):
             "summary": m.summary, "verdict": m.verdict["status"]}
 
 
+_heap_kept = False
+
+
+def _keep_freed_buffers():
+    """Where the environment sets MALLOC_TRIM_THRESHOLD_ (distributed's nanny starts every worker
+    with 65536), glibc turns its adaptive mmap threshold off: each buffer over 128 KiB of every mesh
+    then comes fresh from the kernel and goes back when freed, and fresh pages cost (about 3 ms a
+    megabyte on the 2-core machine of docs/python.md: map_many ran at 0.76x the program's
+    throughput). Such a worker process keeps buffers up to 32 MiB in its heap and trims above
+    64 MiB, the limits glibc's adaptive threshold reaches (its DEFAULT_MMAP_THRESHOLD_MAX); once a
+    process, on glibc only."""
+    global _heap_kept
+    if _heap_kept or "MALLOC_TRIM_THRESHOLD_" not in _os.environ:
+        return
+    _heap_kept = True
+    import ctypes
+    import platform
+
+    if platform.libc_ver()[0] != "glibc":
+        return
+    mallopt = getattr(ctypes.CDLL(None), "mallopt", None)
+    if mallopt is not None:
+        M_TRIM_THRESHOLD, M_MMAP_THRESHOLD = -1, -3  # glibc's malloc.h
+        mallopt(M_MMAP_THRESHOLD, 32 << 20)
+        mallopt(M_TRIM_THRESHOLD, 64 << 20)
+
+
 def _map_chunk(paths, out_dir, extension, options):
     """One task of several meshes: fewer tasks for the scheduler to hand out (each costs a few
     milliseconds of its and the workers' event loops), the same records."""
+    _keep_freed_buffers()
     return [_map_one(path, out_dir, extension, options) for path in paths]
 
 
 def _chunks(items, workers):
-    """`items` in consecutive chunks: about 8 a worker, so that uneven meshes still balance."""
-    size = max(1, len(items) // (8 * max(1, workers)))
-    return [items[i:i + size] for i in range(0, len(items), size)]
+    """`items` in consecutive chunks, shrinking as they go (each a quarter of a worker's share of
+    what is left, down to one mesh): few tasks for the scheduler early, and small ones at the end
+    so that no worker idles while another finishes a long chunk."""
+    chunks, start = [], 0
+    while start < len(items):
+        size = max(1, (len(items) - start) // (4 * max(1, workers)))
+        chunks.append(items[start:start + size])
+        start += size
+    return chunks
 
 
 def map_many(paths, out_dir, client=None, format="obj", **options):  # noqa: A002 (as --format)
     """Maps every mesh of `paths` (a list of files, or a folder: its meshes as `uvtk map DIR` finds
-    them) into `out_dir`, one Dask task a mesh; the keywords are uvtk.map's (threads=1 unless
+    them) into `out_dir`, in Dask tasks of a few meshes; the keywords are uvtk.map's (threads=1 unless
     given). client: None (Dask's default scheduler over a dask.bag), a distributed.Client, or a
     scheduler's address. Returns the batch as `uvtk map DIR --json` writes batch.json: "mapped",
     "failed", "meshes" [{"input", "status" ("ok" or "failed"), "verdict", "output", "summary" (the
@@ -81,8 +115,9 @@ def map_many(paths, out_dir, client=None, format="obj", **options):  # noqa: A00
     if client is None:
         import dask.bag
 
-        bag = dask.bag.from_sequence(meshes, partition_size=1)
-        records = bag.map(_map_one, out_dir, extension, options).compute()
+        workers = dask.config.get("num_workers", None) or _os.cpu_count() or 1
+        bag = dask.bag.from_sequence(_chunks(meshes, workers), partition_size=1)
+        records = [record for chunk in bag.map(_map_chunk, out_dir, extension, options).compute() for record in chunk]
     else:
         own = None
         if isinstance(client, str):

@@ -467,6 +467,27 @@ def test_map_many_on_a_local_cluster_writes_what_the_program_writes(tmp_path, cl
     assert local["mapped"] == 1 and (tmp_path / "bag" / "m1.obj").read_bytes() == (expected / "m1.obj").read_bytes()
 
 
+def test_map_many_hands_out_every_mesh_once_in_order_in_shrinking_chunks():
+    from uvtk import _batch
+    for count, workers in ((0, 2), (1, 2), (7, 1), (200, 2), (1000, 8)):
+        items = list(range(count))
+        chunks = _batch._chunks(items, workers)
+        assert [i for c in chunks for i in c] == items
+        sizes = [len(c) for c in chunks]
+        assert all(a >= b for a, b in zip(sizes, sizes[1:])), sizes
+        assert not sizes or sizes[-1] == 1
+    # 200 meshes on 2 workers: a quarter of a worker's share first (200 / 2 / 4 = 25), one mesh at the end
+    assert [len(c) for c in _batch._chunks(list(range(200)), 2)][:3] == [25, 21, 19]
+
+
+def test_map_many_keeps_freed_buffers_only_where_the_environment_turned_mallocs_adaptivity_off(monkeypatch):
+    from uvtk import _batch
+    monkeypatch.setattr(_batch, "_heap_kept", False)
+    monkeypatch.delenv("MALLOC_TRIM_THRESHOLD_", raising=False)
+    _batch._keep_freed_buffers()
+    assert _batch._heap_kept is False  # this process's allocator is left alone
+
+
 # ---- the README ----
 
 def test_the_readmes_python_lines_run(tmp_path, meshes_dir, monkeypatch):
