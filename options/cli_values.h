@@ -13,11 +13,12 @@
 #include "analysis/distortion.h"
 #include "core/math.h"
 #include "core/names.h"
+#include "core/number_text.h"
 
 namespace uvtk::cli {
 
-// Parses `text` as `n` comma-separated finite numbers; throws UsageError naming `option`.
-Eigen::VectorXd parseNumbers(const std::string& text, int n, const std::string& option);
+using uvtk::parseNumbers;
+using uvtk::parseMatrix;
 
 inline Vec2 parseVec2(const std::string& text, const std::string& option) { return parseNumbers(text, 2, option); }
 inline Vec3 parseVec3(const std::string& text, const std::string& option) { return parseNumbers(text, 3, option); }
@@ -80,8 +81,5 @@ std::pair<int, int> parseImageSize(const std::string& text, const std::string& o
 // A texture size "W,H", or "N" meaning N,N, with 1 <= W, H <= 16384 texels; throws UsageError
 // naming `option`.
 analysis::TextureSize parseTextureSize(const std::string& text, const std::string& option);
-
-// A 4x4 matrix from 16 numbers separated by spaces or commas, column-major like glLoadMatrix.
-Mat4 parseMatrix(const std::string& text, const std::string& option);
 
 }  // namespace uvtk::cli

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "inspect/mapping_parameters.h"
 #include "options/projector_cli.h"
 #include "options/texgen_cli.h"
 
@@ -19,18 +20,12 @@ struct MappingArguments {
   ProjectorArguments projector;
   TexgenArguments texgen;
   std::string model;  // texgen's model matrix; its view's eye, centre and up are the projector's strings
-  std::vector<std::string> projectorOnlyOptions;  // the options texgen does not take
   CLI::App* app = nullptr;
 
   bool isTexgen() const { return texgen.given(); }
 };
 
-// Exactly one of the two is set.
-struct ResolvedMapping {
-  std::optional<param::ProjectorOptions> projector;
-  std::optional<texgen::TexgenOptions> texgen;
-  bool seamPlaceAuto = false;  // --seam-place auto: the caller, which has the mesh, places the seam
-};
+using inspect::ResolvedMapping;
 
 // Adds the projector options, the texgen options and the model matrix (--model) to `app`; texgen's
 // view takes the projector's --eye, --center and --up (the camera projector's).
@@ -38,11 +33,9 @@ struct ResolvedMapping {
 // no mesh to fit to unless one is named).
 void addMappingOptions(CLI::App& app, MappingArguments& arguments, param::Fit defaultFit);
 
-// Throws UsageError for options of the other kind (a projector option with --texgen, --model with a
-// projector) and for everything the projector or texgen options reject.
+// inspect::readMapping of the options given. Throws UsageError for options of the other kind (a
+// projector option with --texgen, --model with a projector) and for everything the projector or
+// texgen options reject.
 ResolvedMapping resolveMapping(const MappingArguments& arguments);
-
-// Whether the placement is fitted to a mesh (a fit other than none and no explicit frame).
-bool fitsToMesh(const param::ProjectorOptions& options);
 
 }  // namespace uvtk::cli

@@ -171,10 +171,12 @@ ParameterDictionary ProjectorArguments::parameters() const {
     numbers(context.cameraEye, projEye, 3);
     numbers(context.cameraCenter, projCenter, 3);
   }
-  if (has("eye") && !context.cameraOwnsEye)
-    numbers("eye", eye, 3);
-  else if (o.eye)  // the reflection's eye, set by a command from its camera's (render, check --image)
+  if (!eye.empty() && !context.cameraOwnsEye) {  // given, or set by `uvtk eval` from a row's own eye
+    const Vec3 given = parseVec3(eye, "--eye");
+    p.add("eye", std::vector<double>(given.data(), given.data() + 3));
+  } else if (o.eye) {  // the reflection's eye, set by a command from its camera's (render, check --image)
     p.add("eye", std::vector<double>(o.eye->data(), o.eye->data() + 3));
+  }
   flag("at-infinity", o.atInfinity);
   choice("seam", kSeamNames, o.seam);
   choice("pole", kPoleNames, o.pole);

@@ -5,38 +5,12 @@
 
 #include "options/arithmetic_cli.h"
 #include "options/cli_values.h"
-#include "inspect/projector_json.h"
+#include "inspect/mapping_parameters.h"
 #include "param/projector_names.h"
-#include "core/error.h"
 
 namespace uvtk::cli {
 
-namespace {
-
-using texgen::TexgenMode;
-
 const char* const kCoordinateOptions[4] = {"--s", "--t", "--r", "--q"};
-
-// "MODE" or "MODE:a,b,c,d" for the coordinate option `option`.
-texgen::TexgenCoordinate parseCoordinate(const std::string& text, const std::string& option,
-                                         const texgen::TexgenCoordinate& defaults) {
-  const std::size_t colon = text.find(':');
-  const std::string name = text.substr(0, colon);
-  texgen::TexgenCoordinate c = defaults;
-  bool known = false;
-  for (const auto& [modeText, value] : texgen::kTexgenModeNames)
-    if (name == modeText) {
-      c.mode = value;
-      known = true;
-    }
-  if (!known)
-    throw UsageError(option + ": expected object_linear|eye_linear|sphere_map|normal_map|reflection_map|off, found '" +
-                     name + "'");
-  if (colon != std::string::npos) c.plane = parseVec4(text.substr(colon + 1), option);
-  return c;
-}
-
-}  // namespace
 
 bool TexgenArguments::given() const {
   if (!mode.empty()) return true;
@@ -45,40 +19,22 @@ bool TexgenArguments::given() const {
   return false;
 }
 
-texgen::TexgenOptions TexgenArguments::resolve(const Mat4& view, const Mat4& model) const {
-  texgen::TexgenOptions o;
-  const std::array<texgen::TexgenCoordinate, 4> defaults = texgen::defaultCoordinates();
-  if (!mode.empty()) {
-    const texgen::TexgenCoordinate shortcut = parseCoordinate(mode, shortcutOption, {});
-    const bool linear = shortcut.mode == TexgenMode::ObjectLinear || shortcut.mode == TexgenMode::EyeLinear;
-    if (shortcut.mode == TexgenMode::Off || (linear && shortcutOption == "--mode"))
-      throw UsageError(shortcutOption + ": expected " +
-                       (shortcutOption == "--mode" ? "" : "object_linear|eye_linear|") +
-                       "sphere_map|normal_map|reflection_map, found '" + mode + "'");
-    const int count = shortcut.mode == TexgenMode::NormalMap || shortcut.mode == TexgenMode::ReflectionMap ? 3 : 2;
-    for (int i = 0; i < count; ++i) o.coordinates[std::size_t(i)].mode = shortcut.mode;
-  }
-  bool any = !mode.empty();
+void TexgenArguments::addTo(param::ParameterDictionary& parameters) const {
+  if (!mode.empty()) parameters.add(shortcutOption.substr(2), mode);
   for (std::size_t i = 0; i < 4; ++i)
-    if (!coordinates[i].empty()) {  // an explicit coordinate option overrides the shortcut
-      o.coordinates[i] = parseCoordinate(coordinates[i], kCoordinateOptions[i], defaults[i]);
-      any = true;
-    }
-  if (!any) o.coordinates[0].mode = o.coordinates[1].mode = TexgenMode::ObjectLinear;
-  for (std::size_t i = 0; i < 4; ++i) {
-    const TexgenMode m = o.coordinates[i].mode;
-    if ((m == TexgenMode::SphereMap && i >= 2) ||
-        ((m == TexgenMode::NormalMap || m == TexgenMode::ReflectionMap) && i == 3))
-      throw UsageError(std::string(kCoordinateOptions[i]) + ": " + texgen::texgenModeName(m) +
-                       " is not allowed on this coordinate (sphere_map: s, t only; normal_map, reflection_map: "
-                       "s, t, r only)");
+    if (!coordinates[i].empty()) parameters.add(kCoordinateOptions[i] + 2, coordinates[i]);
+  if (!textureMatrix.empty()) {
+    const Mat4 matrix = parseMatrix(textureMatrix, "--texmatrix");
+    parameters.add("texmatrix", std::vector<double>(matrix.data(), matrix.data() + 16));
   }
-  o.modelviewAtPlanes = view;  // planes are given under the view alone: they act in world space
-  o.modelviewAtDraw = view * model;
-  if (!textureMatrix.empty()) o.textureMatrix = parseMatrix(textureMatrix, "--texmatrix");
-  o.normalize = !noNormalize;
-  o.precision = arithmetic.precision;
-  return o;
+  if (noNormalize) parameters.add("no-normalize", true);
+}
+
+texgen::TexgenOptions TexgenArguments::resolve(const Mat4& view, const Mat4& model) const {
+  param::ParameterDictionary parameters(param::ParameterFace::CommandLine);
+  addTo(parameters);
+  parameters.add("precision", param::precisionName(arithmetic.precision));
+  return inspect::readTexgen(parameters, shortcutOption.substr(2), view, model);
 }
 
 void addTexgenOptions(CLI::App& app, TexgenArguments& a, const std::string& shortcut) {

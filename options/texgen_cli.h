@@ -7,7 +7,7 @@
 #include <array>
 #include <string>
 
-#include "texgen/texgen.h"
+#include "param/parameters.h"
 #include "texgen/texgen.h"
 
 namespace uvtk::cli {
@@ -21,8 +21,10 @@ struct TexgenArguments {
   std::string shortcutOption;  // the shortcut's name as registered, for messages
 
   bool given() const;  // any coordinate option or the shortcut
-  // Throws UsageError for a malformed or disallowed coordinate. Without any coordinate option
-  // s and t are OBJECT_LINEAR with GL's default planes.
+  // The options given, typed, as inspect::readTexgen reads them (the shortcut under its own name).
+  void addTo(param::ParameterDictionary& parameters) const;
+  // inspect::readTexgen of the options given. Throws UsageError for a malformed or disallowed
+  // coordinate. Without any coordinate option s and t are OBJECT_LINEAR with GL's default planes.
   texgen::TexgenOptions resolve(const Mat4& view, const Mat4& model) const;
 };
 

@@ -28,14 +28,14 @@ Result invalid(Result out, const char* reason) {
 }  // namespace
 
 Affine3 placementFor(const param::ProjectorOptions& o, const std::vector<Vec3>& positions) {
-  if (cli::fitsToMesh(o) && positions.empty())
+  if (inspect::fitsToMesh(o) && positions.empty())
     throw UsageError(
         "the placement is fitted to a mesh (--fit or --convention), and no mesh was given: name one, or "
         "use --fit none");
   return param::fitPlacement(positions, o.surface, o.placement);
 }
 
-PointEvaluator::PointEvaluator(const cli::ResolvedMapping& mapping, const Affine3& localFromObject,
+PointEvaluator::PointEvaluator(const inspect::ResolvedMapping& mapping, const Affine3& localFromObject,
                                std::string description, const std::optional<Eigen::AlignedBox3d>& sensible)
     : description_(std::move(description)) {
   if (mapping.texgen) {

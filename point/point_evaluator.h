@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/math.h"
-#include "options/mapping_options.h"
+#include "inspect/mapping_parameters.h"
 #include "param/projector.h"
 #include "uvtk/point.h"
 
@@ -18,7 +18,7 @@ class PointEvaluator {
   // names the mapping in every Result (Result::mapping). `sensible` (param::sensibleBox of the mesh)
   // enables the range rule: hits beyond it are invalid; without it there is no range check.
   // Throws UsageError like project().
-  PointEvaluator(const cli::ResolvedMapping& mapping, const Affine3& localFromObject, std::string description,
+  PointEvaluator(const inspect::ResolvedMapping& mapping, const Affine3& localFromObject, std::string description,
                  const std::optional<Eigen::AlignedBox3d>& sensible = std::nullopt);
 
   Result at(const Vector3& position, const Vector3& normal) const noexcept;

@@ -212,7 +212,7 @@ std::string eyeText(const Vector3& e) { return number(e[0]) + "," + number(e[1])
 class Evaluators {
  public:
   // `sensible`: the range rule's box of --mesh (param::sensibleBox); none without a mesh.
-  Evaluators(const cli::MappingArguments& arguments, const cli::ResolvedMapping& mapping, const Affine3& frame,
+  Evaluators(const cli::MappingArguments& arguments, const inspect::ResolvedMapping& mapping, const Affine3& frame,
              const std::optional<Eigen::AlignedBox3d>& sensible, bool defaultUsable)
       : arguments_(arguments), mapping_(mapping), frame_(frame), sensible_(sensible) {
     if (defaultUsable) default_.emplace(mapping_, frame_, "uvtk eval", sensible_);
@@ -233,7 +233,7 @@ class Evaluators {
     } else {
       try {
         if (mapping_.projector) {
-          cli::ResolvedMapping m = mapping_;
+          inspect::ResolvedMapping m = mapping_;
           m.projector->eye = Vec3((*eye)[0], (*eye)[1], (*eye)[2]);
           last_.emplace(m, frame_, "uvtk eval", sensible_);
         } else {  // the view is made from the options' text: the same path as --eye
@@ -252,14 +252,14 @@ class Evaluators {
   bool needsNormal() const {
     if (default_) return default_->needsNormal();
     // Build a throwaway one at a placeholder eye to ask.
-    cli::ResolvedMapping m = mapping_;
+    inspect::ResolvedMapping m = mapping_;
     if (m.projector) m.projector->eye = Vec3(0, 0, 1);
     return PointEvaluator(m, frame_, "uvtk eval").needsNormal();
   }
 
  private:
   const cli::MappingArguments& arguments_;
-  cli::ResolvedMapping mapping_;
+  inspect::ResolvedMapping mapping_;
   Affine3 frame_;
   std::optional<Eigen::AlignedBox3d> sensible_;
   std::optional<PointEvaluator> default_, last_;
@@ -346,7 +346,7 @@ EvalCounts evaluatePoints(const EvalJob& job, const cli::MappingArguments& mappi
   const bool isTexgen = m.isTexgen();
   const bool eyeFromRows =
       !isTexgen && fromStdin && m.projector.options.ray == param::RayKind::Reflection && m.projector.eye.empty();
-  cli::ResolvedMapping resolved;
+  inspect::ResolvedMapping resolved;
   if (eyeFromRows) {
     cli::MappingArguments placeholder = m;
     placeholder.projector.options.eye = Vec3(0, 0, 1);
@@ -360,7 +360,7 @@ EvalCounts evaluatePoints(const EvalJob& job, const cli::MappingArguments& mappi
     throw UsageError("--mesh: texgen has no placement to fit; --mesh goes with a projector only");
   if (resolved.projector) {
     param::ProjectorOptions& options = *resolved.projector;
-    if (job.mesh.empty() && cli::fitsToMesh(options))
+    if (job.mesh.empty() && inspect::fitsToMesh(options))
       throw UsageError(
           "the placement is fitted to a mesh (--fit bbox, center, pca or obb, or --convention blender or assimp): "
           "give --mesh FILE, or use --fit none (with --center, --axis-dir, --ref-dir and --scale for an explicit "

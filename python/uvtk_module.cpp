@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/cancel.h"
+#include "core/parallel.h"
 #include "uvtk/point.h"
 #include "uvtk/uvtk.h"
 
@@ -471,8 +472,8 @@ api::WriteOptions writeOptions(const std::string& uvDigits, bool writeW, bool as
 
 // ---- single points ----
 
-// eval's points between two looks for a cancellation: a few milliseconds of work.
-constexpr std::size_t kPointsBetweenCancelChecks = 1 << 16;
+// eval's points a thread takes at a time, between two looks for a cancellation (parallelFor's).
+constexpr std::size_t kPointsPerBlock = 4096;
 
 EvalResult evaluate(const py::object& pointsObject, const py::object& normals, const py::object& mesh,
                     const py::kwargs& kwargs) {
@@ -495,7 +496,20 @@ EvalResult evaluate(const py::object& pointsObject, const py::object& normals, c
   }
   std::vector<uvtk::point::Vector3> positions;
   if (!mesh.is_none()) positions = meshOf("eval", mesh).positions;
-  const std::string options = commandLine(kwargs);
+  int threads = 0;  // the points spread over threads; the numbers do not depend on how many
+  py::kwargs mappingKeywords;
+  for (const auto& [key, value] : kwargs)
+    if (key.cast<std::string>() == "threads") {
+      if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
+        throw py::type_error("threads: expected an int, got " + py::repr(value).cast<std::string>());
+      threads = value.cast<int>();
+      if (threads < 0 || threads > 1024) throw py::value_error("threads: expected 0 to 1024, got " + std::to_string(threads));
+    } else {
+      mappingKeywords[key] = value;
+    }
+  std::vector<uvtk::point::Parameter> parameters;
+  for (const api::Parameter& given : keywordParameters(mappingKeywords).values)
+    parameters.push_back({given.name, given.value, given.place});
 
   py::array_t<double> u(shape), v(shape), w(shape), q(shape);
   py::array_t<std::uint8_t> status(shape);
@@ -511,23 +525,26 @@ EvalResult evaluate(const py::object& pointsObject, const py::object& normals, c
   std::uint8_t* statusOut = status.mutable_data();
   double *uvOut = triplanarUv.mutable_data(), *weightOut = triplanarWeights.mutable_data();
   const std::string mappingText = interruptible([&] {
-    const uvtk::point::Mapping mapping(options, positions);
-    for (std::size_t i = 0; i < n; ++i) {
-      if (i % kPointsBetweenCancelChecks == 0) uvtk::throwIfCancelled();
-      const uvtk::point::Vector3 at{p[3 * i], p[3 * i + 1], p[3 * i + 2]};
-      const uvtk::point::Vector3 nAt = normal ? uvtk::point::Vector3{normal[normalStep * i], normal[normalStep * i + 1],
-                                                                     normal[normalStep * i + 2]}
-                                              : uvtk::point::Vector3{0.0, 0.0, 0.0};
-      const uvtk::point::Result r = mapping.at(at, nAt);
-      uOut[i] = r.u, vOut[i] = r.v, wOut[i] = r.w, qOut[i] = r.q;
-      statusOut[i] = std::uint8_t(r.status);
-      reasons[i] = r.reason;
-      for (std::size_t axis = 0; axis < 3; ++axis) {
-        uvOut[6 * i + 2 * axis] = r.triplanarUv[axis][0];
-        uvOut[6 * i + 2 * axis + 1] = r.triplanarUv[axis][1];
-        weightOut[3 * i + axis] = r.triplanarWeights[axis];
+    const uvtk::point::Mapping mapping(parameters, positions, uvtk::point::Face::Keyword);
+    const std::size_t blocks = (n + kPointsPerBlock - 1) / kPointsPerBlock;
+    uvtk::parallelFor(int(blocks), threads, [&](int block) {
+      const std::size_t end = std::min(n, (std::size_t(block) + 1) * kPointsPerBlock);
+      for (std::size_t i = std::size_t(block) * kPointsPerBlock; i < end; ++i) {
+        const uvtk::point::Vector3 at{p[3 * i], p[3 * i + 1], p[3 * i + 2]};
+        const uvtk::point::Vector3 nAt = normal ? uvtk::point::Vector3{normal[normalStep * i], normal[normalStep * i + 1],
+                                                                       normal[normalStep * i + 2]}
+                                                : uvtk::point::Vector3{0.0, 0.0, 0.0};
+        const uvtk::point::Result r = mapping.at(at, nAt);
+        uOut[i] = r.u, vOut[i] = r.v, wOut[i] = r.w, qOut[i] = r.q;
+        statusOut[i] = std::uint8_t(r.status);
+        reasons[i] = r.reason;
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+          uvOut[6 * i + 2 * axis] = r.triplanarUv[axis][0];
+          uvOut[6 * i + 2 * axis + 1] = r.triplanarUv[axis][1];
+          weightOut[3 * i + axis] = r.triplanarWeights[axis];
+        }
       }
-    }
+    });
     return mapping.options();
   });
   const bool triplanar = kwargs.contains("projector") && py::str(kwargs["projector"]).cast<std::string>() == "triplanar";
@@ -661,7 +678,10 @@ PYBIND11_MODULE(_uvtk, m) {
 
 The Python face of the C++ library (docs/python.md): the numbers are those of the `uvtk` command
 line, bit for bit. Options are keywords named as the command line's options (cap_angle=30 is
---cap-angle 30), parsed by the command line's own parser, so its messages are the errors here.)";
+--cap-angle 30). map's and eval's keywords reach the engine as typed values (True is a flag, 0 is
+False, a str where a number belongs is a TypeError), read by the function the command line's
+options reach; texgen's, report's, render's and compare's still go through the command line's
+parser. Either way the messages name the keyword.)";
 
   py::register_exception<api::InputError>(m, "InputError", PyExc_Exception)
       .doc() = "A file could not be read: 'PATH:LINE: error: ...' (the command line's exit 3).";
@@ -669,6 +689,8 @@ line, bit for bit. Options are keywords named as the command line's options (cap
     try {
       if (error) std::rethrow_exception(error);
     } catch (const api::ParameterTypeError& e) {
+      PyErr_SetString(PyExc_TypeError, e.what());
+    } catch (const uvtk::point::ParameterTypeError& e) {
       PyErr_SetString(PyExc_TypeError, e.what());
     } catch (const uvtk::Cancelled&) {
       // Ctrl-C in another thread's call: the request to stop is the whole process's.
@@ -689,6 +711,7 @@ line, bit for bit. Options are keywords named as the command line's options (cap
         "render's keywords as `uvtk render --help` shows them.");
   m.def("_compare_options", [] { return optionTable(api::CompareOptions::describe()); },
         "compare's keywords as `uvtk compare --help` shows them.");
+  m.def("_eval_parameter_names", &uvtk::point::parameterNames, "The names eval's keywords take (dashes, not underscores).");
   m.def("version", &api::version, "The library's version, as `uvtk --version` prints it.");
 
   // Corner states (Mapping.state), face flags (Mapping.face_flags), invalid reasons, point statuses.
@@ -1063,7 +1086,8 @@ Returns {'json': the --json document as a dict, 'table': the Markdown table, 'be
 points (..., 3); normals None, one (3,) for all, or one per point (read by the normal and
 reflection O-mappings, cylinder caps and texgen). Keywords are `uvtk eval`'s mapping options:
 projector="cylinder", omap="normal", texgen="sphere_map", eye=(0, 0, 5), ...; the placement is
-fit="none" unless given; mesh=uvtk.Mesh fits a fitted placement to that mesh as `uvtk map` does.
+fit="none" unless given; mesh=uvtk.Mesh fits a fitted placement to that mesh as `uvtk map` does;
+threads= spreads the points over threads (0: one per hardware thread; the same numbers).
 Returns a uvtk.EvalResult: arrays u, v, w, q (float64) and status (uint8) of the points' shape,
 and the list reason.)");
 }

@@ -15,6 +15,7 @@ import typing as _typing
 
 try:  # a dependency (the wheel's Requires-Dist): missing, `import uvtk` says so at once
     import numpy as _np
+    import numpy.typing as _npt  # eval's signature: numpy.typing.ArrayLike
 except ModuleNotFoundError as _error:
     # The stubs are made at build time by an interpreter that may have no numpy (pip's build
     # isolation with an index): python/CMakeLists.txt sets UVTK_STUBGEN for it.
@@ -140,6 +141,28 @@ RENDER_OPTIONS = tuple(_uvtk._render_options())
 COMPARE_OPTIONS = tuple(_uvtk._compare_options())
 
 
+def _eval_options():
+    """eval's keywords: the names the point API reads (uvtk::point::parameterNames), each as map's
+    table (the projector's) or texgen's describes it, and threads; two differ from those tables:
+    fit is none unless given (points have no mesh to fit to), and the texgen shortcut is `texgen`,
+    which also takes the linear modes (texgen's own `mode` leaves those to s and t)."""
+    names = set(_uvtk._eval_parameter_names()) | {"threads"}
+    table, seen = [], set()
+    for option in MAP_OPTIONS + TEXGEN_OPTIONS:
+        if option["name"] in names and option["name"] not in seen:
+            seen.add(option["name"])
+            table.append(dict(option, default="none") if option["name"] == "fit" else option)
+        elif option["name"] == "mode":
+            shortcut = dict(option, name="texgen", keyword="texgen",
+                            choices=["object_linear", "eye_linear"] + list(option["choices"]),
+                            help="Texture coordinates by GL texgen: s, t (and r for normal_map, reflection_map) "
+                                 "in this mode, under the view of eye, center and up; s, t, r, q override it")
+    return tuple(table + [shortcut])
+
+
+EVAL_OPTIONS = _eval_options()
+
+
 def map(mesh, options=None, **keywords):  # noqa: A001 (uvtk.map, as `uvtk map`)
     return _uvtk.map(mesh, options, **keywords)
 
@@ -153,6 +176,10 @@ def _nearest(keywords, table):
             near = _difflib.get_close_matches(keyword, known, n=1, cutoff=0.6)
             if near:
                 raise ValueError(f"{keyword}: not a parameter here; did you mean {near[0]}?")
+
+
+def eval(points, normals=None, mesh=None, **keywords):  # noqa: A001 (uvtk.eval, as `uvtk eval`)
+    return _uvtk.eval(points, normals, mesh, **keywords)
 
 
 def texgen(mesh, options=None, **keywords):
@@ -181,6 +208,7 @@ def _doc(function):
 
 
 _MESH = ("mesh", _inspect.Parameter.empty, _typing.Optional[Mesh])
+_ARRAY_LIKE = _npt.ArrayLike if _np else _typing.Any
 _MAPPING = ("m", _inspect.Parameter.empty, Mapping)
 _signed(report, REPORT_OPTIONS, _doc(_uvtk.report), [_MESH, _MAPPING], dict)
 _signed(render, RENDER_OPTIONS, _doc(_uvtk.render),
@@ -189,6 +217,10 @@ _signed(render, RENDER_OPTIONS, _doc(_uvtk.render),
 _signed(compare, COMPARE_OPTIONS, _doc(_uvtk.compare), [("mesh", _inspect.Parameter.empty, Mesh)], dict)
 _signed(map, MAP_OPTIONS, _uvtk.map.__doc__.split("\n", 2)[-1].strip(),
         [("mesh", _inspect.Parameter.empty, Mesh), ("options", None, _typing.Optional[MapOptions])])
+_signed(eval, EVAL_OPTIONS, _doc(_uvtk.eval),
+        [("points", _inspect.Parameter.empty, _ARRAY_LIKE), ("normals", None, _typing.Optional[_ARRAY_LIKE]),
+         ("mesh", None, _typing.Optional[Mesh])],
+        EvalResult)
 _signed(texgen, TEXGEN_OPTIONS, _uvtk.texgen.__doc__.split("\n", 2)[-1].strip(),
         [("mesh", _inspect.Parameter.empty, Mesh), ("options", None, _typing.Optional[TexgenOptions])])
 

@@ -108,8 +108,6 @@ def check_mesh(mesh: Mesh) -> dict[str, int]: ...
 def file_uvs(mesh: Mesh) -> Mapping: ...
 def write_mesh(path: _Path, mesh: Union[Mesh, Mapping], m: Optional[Mapping] = None, uv_digits: Literal["double", "float"] = "double",
                write_w: bool = False, ascii: bool = False, header: str = "", threads: int = 0) -> None: ...
-def eval(points: npt.ArrayLike, normals: Optional[npt.ArrayLike] = None, mesh: Optional[Mesh] = None,
-         **keywords: Any) -> EvalResult: ...
 def from_meshio(mesh: Any) -> Mesh: ...
 def to_meshio(m: Union[Mesh, Mapping]) -> Any: ...
 def map_many(paths: collections.abc.Iterable[_Path], out_dir: _Path, client: Any = None, **keywords: Any) -> dict[str, Any]: ...
@@ -119,6 +117,7 @@ TEXGEN_OPTIONS: tuple[dict[str, Any], ...]
 REPORT_OPTIONS: tuple[dict[str, Any], ...]
 RENDER_OPTIONS: tuple[dict[str, Any], ...]
 COMPARE_OPTIONS: tuple[dict[str, Any], ...]
+EVAL_OPTIONS: tuple[dict[str, Any], ...]
 '''
 
 
@@ -157,7 +156,9 @@ def stub_text():
             _function("report", "mesh: Optional[Mesh], m: Mapping", uvtk.REPORT_OPTIONS, "dict[str, Any]") + "\n" +
             _function("render", 'mesh: Optional[Mesh], m: Mapping, dtype: Literal["uint8", "float32"] = "uint8"',
                       uvtk.RENDER_OPTIONS, "npt.NDArray[Any]") + "\n" +
-            _function("compare", "mesh: Mesh", uvtk.COMPARE_OPTIONS, "dict[str, Any]"))
+            _function("compare", "mesh: Mesh", uvtk.COMPARE_OPTIONS, "dict[str, Any]") + "\n" +
+            _function("eval", "points: npt.ArrayLike, normals: Optional[npt.ArrayLike] = None, mesh: Optional[Mesh] = None",
+                      uvtk.EVAL_OPTIONS, "EvalResult"))
 
 
 if __name__ == "__main__":

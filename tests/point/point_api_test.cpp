@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -244,6 +245,74 @@ TEST(PointApi, InvalidOptionsThrowNamingTheOption) {
     const std::string message = rejection(c.options);
     EXPECT_NE(message.find(c.named), std::string::npos) << c.options << ": " << message;
     EXPECT_EQ(message.rfind(std::string("uvtk::point::Mapping(\"") + c.options + "\")", 0), 0u) << message;
+  }
+}
+
+// The typed constructor and the option text make the same mapping: the same numbers bit for bit.
+TEST(PointApi, TypedParametersMakeTheMappingTheTextMakes) {
+  using uvtk::point::Parameter;
+  using Numbers = std::vector<double>;
+  struct Case {
+    const char* text;
+    std::vector<Parameter> typed;
+  } cases[] = {
+      {"--projector sphere --omap normal", {{"projector", std::string("sphere")}, {"omap", std::string("normal")}}},
+      {"--projector cylinder --caps --cap-angle 30",
+       {{"projector", std::string("cylinder")}, {"caps", true}, {"cap-angle", std::int64_t(30)}}},
+      {"--projector triplanar --tile 2.5 --blend 4", {{"projector", std::string("triplanar")}, {"tile", 2.5}, {"blend", 4.0}}},
+      {"--projector sphere --omap reflection --eye 0,0,5 --uv-offset -0.25,0",
+       {{"projector", std::string("sphere")}, {"omap", std::string("reflection")}, {"eye", Numbers{0, 0, 5}},
+        {"uv-offset", Numbers{-0.25, 0}}}},
+      {"--texgen sphere_map --eye=0,0,5 --s object_linear:1,0,0,0.5",
+       {{"texgen", std::string("sphere_map")}, {"eye", Numbers{0, 0, 5}}, {"s", std::string("object_linear:1,0,0,0.5")}}},
+  };
+  const std::vector<Vector3> points = {{0.3, 0.2, 1.0}, {-0.7, 0.1, 0.2}, {0.1, -0.9, -0.4}};
+  for (const Case& c : cases) {
+    const Mapping text(c.text), typed(c.typed);
+    for (const Vector3& p : points) {
+      const Result a = text.at(p, {p[0], 1, 0.5}), b = typed.at(p, {p[0], 1, 0.5});
+      EXPECT_EQ(a.u, b.u) << c.text;
+      EXPECT_EQ(a.v, b.v) << c.text;
+      EXPECT_EQ(a.w, b.w) << c.text;
+      EXPECT_EQ(a.status, b.status) << c.text;
+    }
+  }
+  EXPECT_EQ(Mapping(cases[1].typed).options(), "--projector cylinder --caps --cap-angle 30");
+}
+
+// A flag is a flag in either face: --caps=false and caps=false turn caps off, a text is refused as
+// the wrong kind (ParameterTypeError, caught across the library's boundary), naming the parameter
+// as the face spells it; a misspelt name gets the nearest.
+TEST(PointApi, TypedParametersAreCheckedByKind) {
+  using uvtk::point::Face;
+  using uvtk::point::Parameter;
+  using uvtk::point::ParameterTypeError;
+  const Vector3 side{0.6, 0.8, 0.95};  // on the cylinder's rim: a cap face's normal
+  const Vector3 up{0, 0, 1};
+  const Result off = Mapping("--projector cylinder --caps=false").at(side, up);
+  const Result on = Mapping("--projector cylinder --caps").at(side, up);
+  EXPECT_NE(off.u, on.u);
+  EXPECT_EQ(Mapping({{"projector", std::string("cylinder")}, {"caps", false}}).at(side, up).u, off.u);
+  EXPECT_EQ(Mapping({{"projector", std::string("cylinder")}, {"caps", std::int64_t(0)}}).at(side, up).u, off.u);
+  const auto typeError = [](const std::vector<Parameter>& parameters, Face face) -> std::string {
+    try {
+      Mapping m(parameters, {}, face);
+    } catch (const ParameterTypeError& e) {
+      return e.what();
+    } catch (const std::exception& e) {
+      return std::string("not a ParameterTypeError: ") + e.what();
+    }
+    return "nothing thrown";
+  };
+  EXPECT_EQ(typeError({{"projector", std::string("cylinder")}, {"caps", std::string("no")}}, Face::Keyword),
+            "uvtk::point::Mapping: caps: expected True or False, got 'no'");
+  EXPECT_EQ(typeError({{"projector", std::string("cylinder")}, {"cap-angle", std::string("wide")}}, Face::Library),
+            "uvtk::point::Mapping: capAngle: expected a number, got 'wide'");
+  try {
+    Mapping m({{"projecter", std::string("sphere")}}, {}, Face::Keyword);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("did you mean projector?"), std::string::npos) << e.what();
   }
 }
 

@@ -181,6 +181,9 @@ t = uvtk.texgen(mesh, s="object_linear:1,0,0,0", no_normalize=True)
 rep: dict[str, object] = uvtk.report(mesh, m, html=pathlib.Path("r.html"), size=(64, 64), threads=1)
 img: npt.NDArray[Any] = uvtk.render(mesh, m, view="checker", size=(32, 32), cull="none", near=0.1, threads=2)
 ranked = uvtk.compare(mesh, by="angle", top=3, no_baselines=True, threads=1)
+at = uvtk.eval(np.zeros((4, 3)), normals=(0, 0, 1), projector="cylinder", caps=True, eye=(0, 0, 5), threads=2)
+gl = uvtk.eval([[0.0, 1.0, 0.0]], texgen="sphere_map", texmatrix=[1.0] * 16)
+u: npt.NDArray[np.float64] = at.u
 '''
 
 WRONG = '''
@@ -194,6 +197,8 @@ uvtk.map(mesh, cap_angel=30)
 n: int = uvtk.map(mesh).uv
 uvtk.render(mesh, uvtk.map(mesh), cull="sideways")
 uvtk.report(mesh, uvtk.map(mesh), threads="2")
+uvtk.eval([[0.0, 0.0, 1.0]], caps="yes")
+uvtk.eval([[0.0, 0.0, 1.0]], texgen="cube_map")
 '''
 
 
@@ -219,6 +224,8 @@ def test_mypy_checks_scripts_against_the_stubs(tmp_path):
     assert "bad.py:9: error: Incompatible types in assignment" in out, out
     assert 'bad.py:10: error: Argument "cull" to "render" has incompatible type' in out, out
     assert 'bad.py:11: error: Argument "threads" to "report" has incompatible type' in out, out
+    assert 'bad.py:12: error: Argument "caps" to "eval" has incompatible type' in out, out
+    assert 'bad.py:13: error: Argument "texgen" to "eval" has incompatible type' in out, out
 
 
 def test_unknown_keywords_and_choices_are_errors_naming_them():

@@ -684,6 +684,40 @@ def test_eval_bad_options_are_value_errors():
         uvtk.eval([[1, 0, 0], [0, 1, 0]], normals=[[0, 0, 1]] * 3)
 
 
+
+def test_eval_keywords_are_typed_as_maps_are():
+    side, up = [[0.6, 0.8, 0.95]], [0, 0, 1]  # a point on a cap face of the cylinder
+    off = uvtk.eval(side, normals=up, projector="cylinder").u[0]
+    on = uvtk.eval(side, normals=up, projector="cylinder", caps=True).u[0]
+    assert off != on
+    assert uvtk.eval(side, normals=up, projector="cylinder", caps=False).u[0] == off
+    assert uvtk.eval(side, normals=up, projector="cylinder", caps=0).u[0] == off  # 0 is False, not a flag given
+    with pytest.raises(TypeError, match=r"caps: expected True or False, got 'no'"):
+        uvtk.eval(side, projector="cylinder", caps="no")
+    with pytest.raises(ValueError, match=r"projecter: not a parameter here; did you mean projector\?"):
+        uvtk.eval(side, projecter="cylinder")
+    with pytest.raises(ValueError, match="threads: expected 0 to 1024"):
+        uvtk.eval(side, threads=-1)
+    # threads spread the points; the numbers are the same
+    points = np.random.default_rng(7).normal(size=(20000, 3))
+    one, two = uvtk.eval(points, projector="sphere", threads=1), uvtk.eval(points, projector="sphere", threads=2)
+    assert np.array_equal(one.u, two.u) and np.array_equal(one.v, two.v) and np.array_equal(one.status, two.status)
+
+
+def test_eval_has_a_signature_of_every_keyword_it_takes():
+    import inspect
+    parameters = inspect.signature(uvtk.eval).parameters
+    assert list(parameters)[:3] == ["points", "normals", "mesh"]
+    for keyword in ("projector", "omap", "caps", "cap_angle", "texgen", "s", "texmatrix", "model", "threads"):
+        assert parameters[keyword].kind is inspect.Parameter.KEYWORD_ONLY, keyword
+    assert parameters["fit"].default == "none"  # points have no mesh to fit to unless one is given
+    assert "object_linear" in str(parameters["texgen"].annotation)
+    assert "cap_angle: float = 45.0" in uvtk.eval.__doc__
+    # every keyword of the signature is one eval takes (a name it does not read would be refused)
+    names = {o["keyword"] for o in uvtk.EVAL_OPTIONS}
+    assert names == {n.replace("-", "_") for n in uvtk._uvtk._eval_parameter_names()} | {"threads"}
+
+
 # ---- report, render, compare ----
 
 def test_report_is_the_programs_json(tmp_path, cli):

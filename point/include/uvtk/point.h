@@ -7,8 +7,11 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <variant>
 #include <vector>
 
 // The library is built with hidden symbols; these are its interface.
@@ -54,13 +57,44 @@ struct Result {
   const char* mapping = "";  // the options of the Mapping that evaluated it (valid while it lives)
 };
 
+// One option of a Mapping, typed: its name as `uvtk eval` spells it without the dashes
+// ("cap-angle"), its value, and where it came from for messages ("": the name as the Face spells
+// it). Nothing (std::monostate) is "not given" where an option may be left out. A choice is its
+// name (std::string("cylinder")), a vector its numbers (std::vector<double>{0, 0, 5}), a flag a bool.
+using ParameterValue =
+    std::variant<std::monostate, bool, std::int64_t, double, std::vector<double>, std::string, std::vector<std::string>>;
+struct Parameter {
+  std::string name;
+  ParameterValue value;
+  std::string place;
+};
+
+// Who gave the parameters, which decides how a message names one: capAngle (Library), cap_angle
+// (Keyword, as Python's), --cap-angle (CommandLine).
+enum class Face { Library, Keyword, CommandLine };
+
+// A value of the wrong kind (a number where a flag belongs, a text where numbers do).
+class UVTK_POINT_API ParameterTypeError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
 class UVTK_POINT_API Mapping {
  public:
   // `options` as `uvtk eval` takes them, e.g. "--projector sphere --omap normal" or "--texgen
   // sphere_map --eye 0,0,5". The placement is --fit none unless given; a fitted placement (--fit
   // bbox, center, pca, obb, or a --convention) is fitted to `meshPositions` exactly as `uvtk map`
   // fits it to that mesh. Throws std::invalid_argument with the command line's message.
+  // The text is read once into typed parameters: each --name is followed by its value (--name
+  // value or --name=value: true or false, an integer, a number, comma-separated numbers, or a
+  // text) unless it is a flag (nothing, or another --name, follows it).
   explicit Mapping(const std::string& options, const std::vector<Vector3>& meshPositions = {});
+  // The same mapping from typed parameters, e.g. {{"projector", std::string("cylinder")}, {"caps",
+  // true}}; options() spells them as the command line would. Throws ParameterTypeError for a value of
+  // the wrong kind, std::invalid_argument for any other refused value, naming the parameter as `face`
+  // spells it.
+  explicit Mapping(const std::vector<Parameter>& parameters, const std::vector<Vector3>& meshPositions = {},
+                   Face face = Face::Library);
   ~Mapping();
   Mapping(Mapping&&) noexcept;
   Mapping& operator=(Mapping&&) noexcept;
@@ -76,6 +110,9 @@ class UVTK_POINT_API Mapping {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// The names of every option a Mapping takes, as `uvtk eval` spells them without the dashes.
+UVTK_POINT_API std::vector<std::string> parameterNames();
 
 // The distance in UV units between texture coordinates (u, v) and `expected`, with whole periods
 // removed (u compared modulo 1 on a wrapping surface) and, at a pole, only the component across

@@ -1,0 +1,44 @@
+#include "core/number_text.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+
+#include "core/error.h"
+
+namespace uvtk {
+
+namespace {
+
+Eigen::VectorXd parseSeparated(const std::string& text, int n, const std::string& option, const char* separators,
+                               const std::string& expected) {
+  Eigen::VectorXd values(n);
+  const char* p = text.c_str();
+  for (int i = 0; i < n; ++i) {
+    while (*p == ' ' || (i > 0 && std::strchr(separators, *p) && *p != '\0')) ++p;
+    char* end = nullptr;
+    errno = 0;
+    const double value = std::strtod(p, &end);
+    if (end == p || errno == ERANGE || !std::isfinite(value))
+      throw UsageError(option + ": expected " + expected + ", found '" + text + "'");
+    values[i] = value;
+    p = end;
+  }
+  while (*p == ' ') ++p;
+  if (*p != '\0') throw UsageError(option + ": expected " + expected + ", found '" + text + "'");
+  return values;
+}
+
+}  // namespace
+
+Eigen::VectorXd parseNumbers(const std::string& text, int n, const std::string& option) {
+  return parseSeparated(text, n, option, ",", std::to_string(n) + " comma-separated finite numbers");
+}
+
+Mat4 parseMatrix(const std::string& text, const std::string& option) {
+  const Eigen::VectorXd v = parseSeparated(text, 16, option, ", ", "16 finite numbers (column-major)");
+  return Eigen::Map<const Mat4>(v.data());  // Eigen's default storage is column-major, as GL's
+}
+
+}  // namespace uvtk
