@@ -1,6 +1,7 @@
 #include "inspect/mapping_parameters.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "core/error.h"
 #include "core/gl_matrices.h"
@@ -39,6 +40,14 @@ texgen::TexgenCoordinate parseCoordinate(const std::string& text, const std::str
 std::string texgenParameters(const param::ParameterDictionary& p) {
   return param::spellName(p.face(), "texgen") + " or " + param::spellName(p.face(), "s") + "/" +
          param::spellName(p.face(), "t") + "/" + param::spellName(p.face(), "r") + "/" + param::spellName(p.face(), "q");
+}
+
+// texgen's view, gluLookAt of "eye", "center" and "up", and its model matrix "model".
+std::pair<Mat4, Mat4> texgenViewAndModel(const param::ParameterDictionary& p) {
+  const Mat4 view = lookAt(p.getVector<3>("eye").value_or(Vec3::Zero()), p.getVector<3>("center").value_or(Vec3(0, 0, -1)),
+                           p.getVector<3>("up").value_or(Vec3::UnitY()));
+  const std::optional<Eigen::VectorXd> model = p.getNumbers("model", 16);
+  return {view, model ? Mat4(Eigen::Map<const Mat4>(model->data())) : Mat4::Identity()};
 }
 
 }  // namespace
@@ -102,11 +111,20 @@ ResolvedMapping readMapping(const param::ParameterDictionary& p, param::Fit defa
     if (std::none_of(std::begin(kShared), std::end(kShared), [&](const char* shared) { return name == shared; }) &&
         p.given(name))
       throw UsageError(p.spelled(name) + " is a projector option; it does not go with " + texgenParameters(p));
-  const Mat4 view = lookAt(p.getVector<3>("eye").value_or(Vec3::Zero()), p.getVector<3>("center").value_or(Vec3(0, 0, -1)),
-                           p.getVector<3>("up").value_or(Vec3::UnitY()));
-  const std::optional<Eigen::VectorXd> model = p.getNumbers("model", 16);
-  out.texgen = readTexgen(p, "texgen", view, model ? Mat4(Eigen::Map<const Mat4>(model->data())) : Mat4::Identity());
+  const auto [view, model] = texgenViewAndModel(p);
+  out.texgen = readTexgen(p, "texgen", view, model);
   return out;
+}
+
+TexgenSettings readTexgenSettings(const param::ParameterDictionary& p) {
+  const auto [view, model] = texgenViewAndModel(p);
+  return {readTexgen(p, "mode", view, model), p.getInteger("threads", 0, 0, 1024)};
+}
+
+std::vector<std::string> texgenParameterNames() {
+  std::vector<std::string> names = {"mode", "s", "t", "r", "q", "eye", "center", "up", "precision", "threads"};
+  names.insert(names.end(), std::begin(kTexgenOnly), std::end(kTexgenOnly));
+  return names;
 }
 
 bool fitsToMesh(const param::ProjectorOptions& o) {

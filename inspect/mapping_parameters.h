@@ -37,6 +37,18 @@ bool asksForTexgen(const param::ParameterDictionary& parameters, const std::stri
 // the projector (its fit `defaultFit` unless given). A parameter of the other kind is a UsageError.
 ResolvedMapping readMapping(const param::ParameterDictionary& parameters, param::Fit defaultFit);
 
+// `uvtk texgen`'s parameters: readTexgen with the shortcut "mode", under the view gluLookAt("eye"
+// 0,0,0, "center" 0,0,-1, "up" 0,1,0) and the model matrix "model"; and "threads", those the mesh
+// is read, judged and written with (0 to 1024; 0: one per hardware thread).
+struct TexgenSettings {
+  texgen::TexgenOptions texgen;
+  int threads = 0;
+};
+TexgenSettings readTexgenSettings(const param::ParameterDictionary& parameters);
+
+// Every name readTexgenSettings reads.
+std::vector<std::string> texgenParameterNames();
+
 // Whether the placement is fitted to a mesh (a fit other than none and no explicit frame).
 bool fitsToMesh(const param::ProjectorOptions& options);
 

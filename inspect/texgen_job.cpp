@@ -83,7 +83,7 @@ TexgenRun texgenMesh(const std::string& inputPath, const std::string& output, co
   io::checkMeshOutput(output, write);
   StageClock clock("uvtk texgen");
   clock.start("reading", inputPath);
-  const io::ReadMeshResult input = io::readMesh(inputPath);
+  const io::ReadMeshResult input = io::readMesh(inputPath, write.threads);
   const double readMs = clock.stop();
 
   clock.start("generating", std::to_string(input.mesh.faceCount()) + " faces");

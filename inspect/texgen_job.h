@@ -55,8 +55,8 @@ struct TexgenRun {
 };
 
 // Reads `input`, generates, and writes the mesh `output` by its extension (and the summary `json`
-// unless empty, published together with it); the stages are shown on a terminal. `write.writeW`
-// is set here: r is written when texgen generates it and the format holds it (OBJ).
+// unless empty, published together with it) on write.threads threads (reading too); the stages are
+// shown on a terminal. `write.writeW` is set here: r is written when texgen generates it and the format holds it (OBJ).
 TexgenRun texgenMesh(const std::string& input, const std::string& output, const std::string& json,
                      const texgen::TexgenOptions& options, io::MeshWriteOptions write = {});
 

@@ -9,6 +9,7 @@
 #include "option_fields.h"
 #include "inspect/map_job.h"
 #include "inspect/map_parameters.h"
+#include "inspect/mapping_parameters.h"
 #include "inspect/texgen_job.h"
 #include "io/mesh_format.h"
 #include "io/mesh_writer.h"
@@ -121,6 +122,7 @@ const std::vector<Field<TexgenOptions>>& texgenFields() {
       arrayField("--up", &O::up),
       optionalArrayField("--model", &O::model),
       textField("--precision", &O::precision),
+      integerField("--threads", &O::threads),
   };
   return fields;
 }
@@ -148,10 +150,12 @@ struct TexgenCommand {
   CLI::App app;
   cli::TexgenArguments texgen;
   std::string eye = "0,0,0", center = "0,0,-1", up = "0,1,0", model;
+  int threads = 0;
 
   explicit TexgenCommand(const std::vector<std::string>& words) {
     cli::addTexgenOptions(app, texgen, "--mode");
     cli::addTexgenViewOptions(app, eye, center, up, model);
+    cli::addTexgenThreadsOption(app, threads);
     parseWords(app, words);
   }
 
@@ -202,6 +206,8 @@ TexgenOptions TexgenOptions::parse(const std::string& commandLine) {
 }
 
 std::string TexgenOptions::commandLine() const { return joinCommandLine(wordsOf(*this, texgenFields())); }
+
+Parameters TexgenOptions::parameters() const { return parametersOf(*this, texgenFields()); }
 
 Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thresholds, int overlapResolution,
                     nlohmann::json input, std::optional<texgen::TexgenOptions> texgen, analysis::TextureSize textureSize,
@@ -319,12 +325,16 @@ Mapping map(const Mesh& mesh, const Parameters& parameters) {
   });
 }
 
-Mapping texgen(const Mesh& mesh, const TexgenOptions& options) {
-  CheckedMesh in = checked(mesh);
+Mapping texgen(const Mesh& mesh, const TexgenOptions& options) { return texgen(mesh, options.parameters()); }
+
+Mapping texgen(const Mesh& mesh, const Parameters& parameters) {
   return translatingErrors([&] {
-    const TexgenCommand command(wordsOf(options, texgenFields()));
-    const texgen::TexgenOptions resolved = command.resolve();
-    return makeMapping(inspect::mapByTexgen(std::move(in.engine), resolved), {}, 1024, std::move(in.input), resolved);
+    const param::ParameterDictionary dictionary = toEngine(parameters);
+    const inspect::TexgenSettings s = inspect::readTexgenSettings(dictionary);
+    dictionary.checkAllRead(inspect::texgenParameterNames());
+    CheckedMesh in = checked(mesh);
+    return makeMapping(inspect::mapByTexgen(std::move(in.engine), s.texgen), {}, 1024, std::move(in.input), s.texgen,
+                       {}, s.threads);
   });
 }
 

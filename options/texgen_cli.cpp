@@ -65,6 +65,14 @@ void addTexgenOptions(CLI::App& app, TexgenArguments& a, const std::string& shor
                "by default it is renormalised, as with GL_NORMALIZE)");
 }
 
+void addTexgenThreadsOption(CLI::App& app, int& threads) {
+  app.add_option("--threads", threads,
+                 "Threads the mesh is read and written with (the library's mapping is also judged with them); 0: one "
+                 "per hardware thread")
+      ->check(CLI::Range(0, 1024))
+      ->default_str("0");
+}
+
 void addTexgenViewOptions(CLI::App& app, std::string& eye, std::string& center, std::string& up, std::string& model) {
   app.add_option("--eye", eye, "View: gluLookAt eye (x,y,z)")->capture_default_str();
   app.add_option("--center", center, "View: gluLookAt center (x,y,z)")->capture_default_str();

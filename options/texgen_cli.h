@@ -31,6 +31,8 @@ struct TexgenArguments {
 // `shortcut` names the mode shortcut option: "--mode" in `uvtk texgen`, "--texgen" in `uvtk
 // render`, where it also takes object_linear and eye_linear (s and t with GL's default planes).
 void addTexgenOptions(CLI::App& app, TexgenArguments& arguments, const std::string& shortcut);
+// `uvtk texgen`'s --threads: those the mesh is read and written with (and the library's mapping judged).
+void addTexgenThreadsOption(CLI::App& app, int& threads);
 // `uvtk texgen`'s view and model (--eye, --center, --up, --model), shared with the library's TexgenOptions.
 void addTexgenViewOptions(CLI::App& app, std::string& eye, std::string& center, std::string& up, std::string& model);
 

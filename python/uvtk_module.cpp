@@ -230,13 +230,14 @@ api::Parameters keywordParameters(const py::kwargs& kwargs) {
   return parameters;
 }
 
-// The options from either an options object or keywords (not both: which would win is unclear).
+// The typed parameters of either an options object or keywords (not both: which would win is unclear).
 template <class Options>
-Options optionsFrom(const char* function, const char* expected, const py::object& options, const py::kwargs& kwargs) {
+api::Parameters parametersFrom(const char* function, const char* expected, const py::object& options,
+                               const py::kwargs& kwargs) {
   if (!options.is_none() && kwargs.size() > 0)
     throw py::type_error("give the options either as an options object or as keywords, not both");
-  if (!options.is_none()) return argumentOf<Options>(function, "options", expected, options);
-  return Options::parse(commandLine(kwargs));
+  if (!options.is_none()) return argumentOf<Options>(function, "options", expected, options).parameters();
+  return keywordParameters(kwargs);
 }
 
 // ---- long calls ----
@@ -678,9 +679,9 @@ PYBIND11_MODULE(_uvtk, m) {
 
 The Python face of the C++ library (docs/python.md): the numbers are those of the `uvtk` command
 line, bit for bit. Options are keywords named as the command line's options (cap_angle=30 is
---cap-angle 30). map's and eval's keywords reach the engine as typed values (True is a flag, 0 is
-False, a str where a number belongs is a TypeError), read by the function the command line's
-options reach; texgen's, report's, render's and compare's still go through the command line's
+--cap-angle 30). map's, texgen's and eval's keywords reach the engine as typed values (True is a
+flag, 0 is False, a str where a number belongs is a TypeError), read by the function the command
+line's options reach; report's, render's and compare's still go through the command line's
 parser. Either way the messages name the keyword.)";
 
   py::register_exception<api::InputError>(m, "InputError", PyExc_Exception)
@@ -939,12 +940,7 @@ along the seam (more vertices and faces than the input).)")
   m.def(
       "map",
       [](py::object mesh, py::object options, py::kwargs kwargs) {
-        if (!options.is_none() && kwargs.size() > 0)
-          throw py::type_error("give the options either as an options object or as keywords, not both");
-        const api::Parameters parameters =
-            options.is_none()
-                ? keywordParameters(kwargs)
-                : argumentOf<api::MapOptions>("map", "options", "a uvtk.MapOptions", options).parameters();
+        const api::Parameters parameters = parametersFrom<api::MapOptions>("map", "a uvtk.MapOptions", options, kwargs);
         const api::Mesh& input = meshOf("map", mesh);
         return wrap(interruptible([&] { return api::map(input, parameters); }), mesh);
       },
@@ -960,16 +956,18 @@ wrong value or an unknown keyword ValueError, naming the keyword.)");
   m.def(
       "texgen",
       [](py::object mesh, py::object options, py::kwargs kwargs) {
-        const api::TexgenOptions resolved =
-            optionsFrom<api::TexgenOptions>("texgen", "a uvtk.TexgenOptions", options, kwargs);
+        const api::Parameters parameters =
+            parametersFrom<api::TexgenOptions>("texgen", "a uvtk.TexgenOptions", options, kwargs);
         const api::Mesh& input = meshOf("texgen", mesh);
-        return wrap(interruptible([&] { return api::texgen(input, resolved); }), mesh);
+        return wrap(interruptible([&] { return api::texgen(input, parameters); }), mesh);
       },
       py::arg("mesh"), py::arg("options") = py::none(),
       R"(OpenGL texgen's (s, t, r, q) on `mesh`, as `uvtk texgen` computes them.
 
 Keywords are the options of `uvtk texgen`: s="object_linear:1,0,0,0", t="eye_linear:0,1,0,0",
-mode="sphere_map", eye=(0, 0, 5), no_normalize=True, ... Returns a uvtk.Mapping (r in .w, q in .q).)");
+mode="sphere_map", eye=(0, 0, 5), no_normalize=True, threads=1 (those judging the mapping), ... (or
+options=uvtk.TexgenOptions(...)). Returns a uvtk.Mapping (r in .w, q in .q). A value of the wrong
+kind raises TypeError, a wrong value or an unknown keyword ValueError, naming the keyword.)");
   m.def(
       "file_uvs",
       [](py::object mesh) {

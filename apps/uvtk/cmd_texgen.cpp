@@ -53,6 +53,7 @@ void addTexgenCommand(CLI::App& root) {
   cmd->add_flag("--ascii", arguments->write.ascii, "Write a .ply as ASCII text, not binary little endian");
   addTexgenOptions(*cmd, arguments->texgen, "--mode");
   addTexgenViewOptions(*cmd, arguments->eye, arguments->center, arguments->up, arguments->model);
+  addTexgenThreadsOption(*cmd, arguments->write.threads);
   cmd->add_option("--json", arguments->json, "Also write the summary and every corner's [s, t, r, q] (undivided) as JSON");
   cmd->callback([arguments] { runTexgen(*arguments); });
 }

@@ -526,6 +526,32 @@ def test_texgen_equals_the_programs_bit_for_bit(options, mesh_file, cli, tmp_pat
     np.testing.assert_array_equal(m.w, corner_stp[..., 2] if corner_stp.shape[-1] == 3 else 0.0)
 
 
+def test_texgen_keywords_are_typed_and_threads_judge(mesh_file, cli, tmp_path):
+    mesh = uvtk.read_mesh(mesh_file)
+    normalized = uvtk.texgen(mesh, mode="normal_map", eye=(3, -2, 4), center=(0, 0, 0))
+    raw = uvtk.texgen(mesh, mode="normal_map", eye=(3, -2, 4), center=(0, 0, 0), no_normalize=True)
+    assert not np.array_equal(normalized.uv, raw.uv)  # the flag matters here
+    np.testing.assert_array_equal(uvtk.texgen(mesh, mode="normal_map", eye=(3, -2, 4), center=(0, 0, 0),
+                                              no_normalize=0).uv, normalized.uv)  # 0 is False
+    with pytest.raises(TypeError, match=r"^no_normalize: expected True or False, got 'yes'$"):
+        uvtk.texgen(mesh, no_normalize="yes")
+    with pytest.raises(ValueError, match=r"^mdoe: not a parameter here; did you mean mode\?$"):
+        uvtk.texgen(mesh, mdoe="sphere_map")
+    with pytest.raises(ValueError, match=r"^threads: expected 0 to 1024"):
+        uvtk.texgen(mesh, threads=5000)
+    one, two = uvtk.texgen(mesh, mode="sphere_map", threads=1), uvtk.texgen(mesh, mode="sphere_map", threads=2)
+    np.testing.assert_array_equal(one.uv, two.uv)
+    assert one.verdict == two.verdict
+    # the options object and the keywords are one path
+    options = uvtk.TexgenOptions.parse("--mode sphere_map --threads 2")
+    np.testing.assert_array_equal(uvtk.texgen(mesh, options).uv, one.uv)
+    # the program's --threads: the same bytes
+    for threads in ("1", "2"):
+        run = cli("texgen", mesh_file, "-o", tmp_path / f"t{threads}.obj", "--mode", "sphere_map", "--threads", threads)
+        assert run.returncode == 0, run.stderr
+    assert (tmp_path / "t1.obj").read_bytes() == (tmp_path / "t2.obj").read_bytes()
+
+
 def test_file_uvs_are_the_meshs_own():
     positions, triangles = unit_square()
     uv = positions[:, :2][triangles] * 0.5

@@ -122,10 +122,14 @@ struct TexgenOptions {
   Vector3 up{0, 1, 0};                   // --up: gluLookAt up
   std::optional<std::array<double, 16>> model;  // --model: column-major model matrix
   std::string precision = "double";      // --precision: double, float
+  int threads = 0;                       // --threads: those the mesh is read, judged and written with (0: one
+                                         // per hardware thread)
 
   // From `uvtk texgen`'s syntax, e.g. "--s object_linear:1,0,0,0 --t eye_linear:0,1,0,0".
   UVTK_API static TexgenOptions parse(const std::string& commandLine);
   UVTK_API std::string commandLine() const;
+  // The options that differ from the defaults, as typed parameters (no text).
+  UVTK_API Parameters parameters() const;
   // Every field's option as `uvtk texgen --help` shows it.
   UVTK_API static std::vector<OptionDescription> describe();
 };
@@ -195,6 +199,8 @@ UVTK_API Mapping map(const Mesh& mesh, const Parameters& parameters);
 UVTK_API Mapping restoreMapping(Mapping data);
 // `mesh` with OpenGL texgen's (s, t, r, q), as `uvtk texgen` computes them.
 UVTK_API Mapping texgen(const Mesh& mesh, const TexgenOptions& options);
+// The same from typed parameters (Python's keywords): every name `uvtk texgen` takes but its outputs.
+UVTK_API Mapping texgen(const Mesh& mesh, const Parameters& parameters);
 // The mesh's own texture coordinates, judged. Throws std::invalid_argument when it has none.
 UVTK_API Mapping fileUvs(const Mesh& mesh);
 
