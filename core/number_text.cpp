@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <sstream>
 
 #include "core/error.h"
 
@@ -39,6 +40,19 @@ Eigen::VectorXd parseNumbers(const std::string& text, int n, const std::string& 
 Mat4 parseMatrix(const std::string& text, const std::string& option) {
   const Eigen::VectorXd v = parseSeparated(text, 16, option, ", ", "16 finite numbers (column-major)");
   return Eigen::Map<const Mat4>(v.data());  // Eigen's default storage is column-major, as GL's
+}
+
+std::pair<int, int> parseImageSize(const std::string& text, const std::string& option) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  std::istringstream in(text);
+  const bool square = text.find_first_of("xX") == std::string::npos;  // N: N x N, as --texture-size N
+  if (square ? !(in >> w) || (in >> extra) || (h = w, false)
+             : !(in >> w >> x >> h) || (x != 'x' && x != 'X') || bool(in >> extra))
+    w = 0;
+  if (w < 1 || h < 1 || w > 16384 || h > 16384)
+    throw UsageError(option + ": expected WxH or N (NxN) with 1 <= W, H <= 16384, found '" + text + "'");
+  return {w, h};
 }
 
 }  // namespace uvtk

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 
 #include "core/math.h"
 
@@ -15,5 +16,9 @@ Eigen::VectorXd parseNumbers(const std::string& text, int n, const std::string& 
 
 // A 4x4 matrix from 16 numbers separated by spaces or commas, column-major like glLoadMatrix.
 Mat4 parseMatrix(const std::string& text, const std::string& option);
+
+// A picture's size "WxH", or "N" meaning NxN, with 1 <= W, H <= 16384 pixels; throws UsageError
+// naming `option`.
+std::pair<int, int> parseImageSize(const std::string& text, const std::string& option);
 
 }  // namespace uvtk

@@ -3,9 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <tuple>
 #include <optional>
 
 #include "core/error.h"
+#include "core/number_text.h"
+#include "param/make_projector.h"
 #include "inspect/html_report.h"
 #include "inspect/mesh_view.h"
 #include "inspect/projector_json.h"
@@ -24,6 +28,45 @@ void ReportOptions::check() const {
     throw UsageError("--overlap-resolution: expected 1 to 16384 pixels");
   if (textureSize.width < 1 || textureSize.height < 1 || textureSize.width > 16384 || textureSize.height > 16384)
     throw UsageError("--texture-size: expected 1 to 16384 texels");
+}
+
+std::pair<int, int> readImageSize(const param::ParameterDictionary& p, const std::string& name,
+                                  std::pair<int, int> fallback) {
+  if (!p.given(name)) return fallback;
+  if (p.givenAsText(name)) return parseImageSize(*p.getText(name), p.spelled(name));
+  if (p.givenAsNumbers(name)) {
+    const Eigen::Vector2d wh = *p.getVector<2>(name);
+    if (wh != wh.array().floor().matrix() || wh.minCoeff() < 1 || wh.maxCoeff() > 16384)
+      throw UsageError(p.spelled(name) + ": expected W, H with 1 <= W, H <= 16384");
+    return {int(wh.x()), int(wh.y())};
+  }
+  const int n = p.getInteger(name, 0, 1, 16384);
+  return {n, n};
+}
+
+ReportOptions readReportOptions(const param::ParameterDictionary& p) {
+  ReportOptions o;
+  o.json = p.getText("json").value_or("");
+  o.html = p.getText("html").value_or("");
+  if (!o.html.empty() && p.given("views")) {  // the page's views: read only for a page
+    std::string list;
+    for (const std::string& name : p.getTexts("views")) list += (list.empty() ? "" : ",") + name;
+    o.views = views::parseViewList(list, p.spelled("views"));
+  }
+  std::tie(o.width, o.height) = readImageSize(p, "size", {o.width, o.height});
+  o.camera.viewDir = p.getVector<3>("view-dir").value_or(o.camera.viewDir);
+  o.camera.up = p.getVector<3>("up").value_or(o.camera.up);
+  if (const std::optional<std::array<int, 2>> size = param::readTextureSize(p))
+    o.textureSize = {(*size)[0], (*size)[1]};
+  o.overlapResolution = p.getInteger("overlap-resolution", o.overlapResolution, 1, 16384);
+  o.threads = p.getInteger("threads", o.threads, 0, 1024);
+  o.view3dFaces = std::size_t(p.getInteger("view3d-faces", int(o.view3dFaces), 0, std::numeric_limits<int>::max()));
+  return o;
+}
+
+std::vector<std::string> reportParameterNames() {
+  return {"json", "html", "views", "size", "view-dir", "up", "texture-size", "overlap-resolution", "threads",
+          "view3d-faces"};
 }
 
 namespace {

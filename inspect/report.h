@@ -5,10 +5,12 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/atomic_file.h"
 #include "inspect/mapped_mesh.h"
+#include "param/parameters.h"
 #include "views/views.h"
 
 namespace uvtk::inspect {
@@ -28,6 +30,21 @@ struct ReportOptions {
 
   void check() const;  // throws UsageError for a value out of range, before any work
 };
+
+// The report's options as every face gives them (the command line, a scene, the library,
+// Python's keywords): "json", "html", "views" (names, as a comma list or a list; read for a page
+// only), "size" (WxH, N, or W and H), "view-dir", "up", "texture-size", "overlap-resolution",
+// "threads", "view3d-faces". Throws UsageError (ParameterTypeError for a value of the wrong kind)
+// naming the parameter; no file is asked for here.
+ReportOptions readReportOptions(const param::ParameterDictionary& parameters);
+
+// Every name readReportOptions reads.
+std::vector<std::string> reportParameterNames();
+
+// A picture's size from the parameter `name`: "WxH" or "N" (NxN) as text, an integer N, or the
+// numbers W, H, each 1 to 16384; `fallback` when not given.
+std::pair<int, int> readImageSize(const param::ParameterDictionary& parameters, const std::string& name,
+                                  std::pair<int, int> fallback);
 
 // The report of `mapped` with its `judgement` (taken at options.overlapResolution), writing
 // nothing: every measure, the tool, `input` (the "input" record), the mapping's origin, and with

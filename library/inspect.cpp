@@ -91,20 +91,19 @@ const std::vector<Field<CompareOptions>>& compareFields() {
   return fields;
 }
 
+// The names the library's report takes: its fields' (not `uvtk report`'s --view3d-faces).
+std::vector<std::string> libraryReportParameterNames() {
+  std::vector<std::string> names;
+  for (const Field<ReportOptions>& field : reportFields()) names.push_back(field.name + 2);
+  return names;
+}
+
 struct ReportCommand {
   CLI::App app;
   cli::ReportArguments report;
   explicit ReportCommand(const std::vector<std::string>& words) {
     cli::addReportOptions(app, report);
     parseWords(app, words);
-  }
-  // The engine's options; unlike `uvtk report`, the library's report may write no file at all.
-  inspect::ReportOptions options() const {
-    cli::ReportArguments checked = report;
-    if (checked.json.empty() && checked.html.empty()) checked.json = "report.json";
-    inspect::ReportOptions o = checked.options();
-    o.json = report.json;
-    return o;
   }
 };
 
@@ -145,7 +144,7 @@ struct CompareCommand {
 ReportOptions ReportOptions::parse(const std::string& commandLine) {
   return translatingErrors([&] {
     const std::vector<std::string> words = splitCommandLine(commandLine);
-    ReportCommand(words).options();
+    ReportCommand(words).report.check();
     return fromWords(words, reportFields());
   });
 }
@@ -171,14 +170,21 @@ std::vector<OptionDescription> RenderOptions::describe() { return describeFields
 std::vector<OptionDescription> CompareOptions::describe() { return describeFields(CompareCommand({}).app, compareFields()); }
 
 std::string ReportOptions::commandLine() const { return joinCommandLine(wordsOf(*this, reportFields())); }
+Parameters ReportOptions::parameters() const { return parametersOf(*this, reportFields()); }
 std::string RenderOptions::commandLine() const { return joinCommandLine(wordsOf(*this, renderFields())); }
 std::string CompareOptions::commandLine() const { return joinCommandLine(wordsOf(*this, compareFields())); }
 
 std::string report(const Mapping& mapping, const ReportOptions& options) {
+  return report(mapping, options.parameters());
+}
+
+std::string report(const Mapping& mapping, const Parameters& parameters) {
   judgedDetailOf(mapping, "report");
   return translatingErrors([&] {
-    const ReportCommand command(wordsOf(options, reportFields()));
-    const inspect::ReportOptions o = command.options();
+    const param::ParameterDictionary dictionary = toEngine(parameters);
+    const inspect::ReportOptions o = inspect::readReportOptions(dictionary);
+    dictionary.checkAllRead(libraryReportParameterNames());
+    o.check();
     const inspect::MappedMesh& mapped = mapping.detail->mapped;
     const analysis::Judgement& judged = mapping.detail->judgement;
     const bool asJudged = o.overlapResolution == mapping.detail->overlapResolution &&

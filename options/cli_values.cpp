@@ -11,21 +11,6 @@
 
 namespace uvtk::cli {
 
-
-
-std::pair<int, int> parseImageSize(const std::string& text, const std::string& option) {
-  int w = 0, h = 0;
-  char x = 0, extra = 0;
-  std::istringstream in(text);
-  const bool square = text.find_first_of("xX") == std::string::npos;  // N: N x N, as --texture-size N
-  if (square ? !(in >> w) || (in >> extra) || (h = w, false)
-             : !(in >> w >> x >> h) || (x != 'x' && x != 'X') || bool(in >> extra))
-    w = 0;
-  if (w < 1 || h < 1 || w > 16384 || h > 16384)
-    throw UsageError(option + ": expected WxH or N (NxN) with 1 <= W, H <= 16384, found '" + text + "'");
-  return {w, h};
-}
-
 analysis::TextureSize parseTextureSize(const std::string& text, const std::string& option) {
   analysis::TextureSize size;
   char comma = 0, extra = 0;

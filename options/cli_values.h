@@ -19,6 +19,7 @@ namespace uvtk::cli {
 
 using uvtk::parseNumbers;
 using uvtk::parseMatrix;
+using uvtk::parseImageSize;
 
 inline Vec2 parseVec2(const std::string& text, const std::string& option) { return parseNumbers(text, 2, option); }
 inline Vec3 parseVec3(const std::string& text, const std::string& option) { return parseNumbers(text, 3, option); }
@@ -75,8 +76,6 @@ std::vector<Enum> parseNameList(const std::string& text, const std::vector<std::
 // Whether the user typed option `name` (rather than leaving its default).
 inline bool given(const CLI::App* app, const char* name) { return app->get_option(name)->count() > 0; }
 
-// An image size "WxH" with 1 <= W, H <= 16384; throws UsageError naming `option`.
-std::pair<int, int> parseImageSize(const std::string& text, const std::string& option);
 
 // A texture size "W,H", or "N" meaning N,N, with 1 <= W, H <= 16384 texels; throws UsageError
 // naming `option`.

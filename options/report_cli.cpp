@@ -33,17 +33,21 @@ void addReportOptions(CLI::App& app, ReportArguments& a) {
 }
 
 inspect::ReportOptions ReportArguments::options() const {
-  inspect::ReportOptions o;
-  o.json = json;
-  o.html = html;
-  o.overlapResolution = overlapResolution;
-  o.textureSize = parseTextureSize(textureSize, "--texture-size");
-  o.threads = threads;
-  o.view3dFaces = view3dFaces;
+  const auto numbers = [](const auto& vector) { return std::vector<double>(vector.data(), vector.data() + vector.size()); };
+  param::ParameterDictionary p(param::ParameterFace::CommandLine);
+  p.add("json", json);
+  p.add("html", html);
+  p.add("views", views);
+  p.add("size", size);
+  p.add("view-dir", numbers(parseVec3(camera.viewDir, "--view-dir")));
+  p.add("up", numbers(parseVec3(camera.up, "--up")));
+  const analysis::TextureSize texture = parseTextureSize(textureSize, "--texture-size");
+  p.add("texture-size", std::vector<double>{double(texture.width), double(texture.height)});
+  p.add("overlap-resolution", std::int64_t(overlapResolution));
+  p.add("threads", std::int64_t(threads));
+  p.add("view3d-faces", std::int64_t(view3dFaces));
+  const inspect::ReportOptions o = inspect::readReportOptions(p);
   o.check();
-  if (!html.empty()) o.views = views::parseViewList(views, "--views");  // the page's views: read only for a page
-  std::tie(o.width, o.height) = parseImageSize(size, "--size");
-  o.camera = camera.resolve();
   return o;
 }
 

@@ -679,9 +679,9 @@ PYBIND11_MODULE(_uvtk, m) {
 
 The Python face of the C++ library (docs/python.md): the numbers are those of the `uvtk` command
 line, bit for bit. Options are keywords named as the command line's options (cap_angle=30 is
---cap-angle 30). map's, texgen's and eval's keywords reach the engine as typed values (True is a
-flag, 0 is False, a str where a number belongs is a TypeError), read by the function the command
-line's options reach; report's, render's and compare's still go through the command line's
+--cap-angle 30). map's, texgen's, eval's and report's keywords reach the engine as typed values
+(True is a flag, 0 is False, a str where a number belongs is a TypeError), read by the function
+the command line's options reach; render's and compare's still go through the command line's
 parser. Either way the messages name the keyword.)";
 
   py::register_exception<api::InputError>(m, "InputError", PyExc_Exception)
@@ -1007,8 +1007,8 @@ write_mesh(path, mesh): the mesh with its own texture coordinates and normals.)"
       "report",
       [](py::object mesh, py::object mapping, py::kwargs kwargs) {
         const api::Mapping& mapped = mappingFor("report", mesh, mapping);
-        const api::ReportOptions options = api::ReportOptions::parse(commandLine(kwargs));
-        return jsonLoads(interruptible([&] { return api::report(mapped, options); }));
+        const api::Parameters parameters = keywordParameters(kwargs);
+        return jsonLoads(interruptible([&] { return api::report(mapped, parameters); }));
       },
       py::arg("mesh"), py::arg("m"),
       R"(The report of mapping `m` as a dict: the document `uvtk report --json` writes, verdict first.

@@ -763,7 +763,7 @@ def test_report_is_the_programs_json(tmp_path, cli):
     assert {k: v for k, v in rep.items() if k != "input"} == {k: v for k, v in theirs.items() if k != "input"}
     with pytest.raises(ValueError, match="pass the mesh the mapping was made from"):
         uvtk.report(uvtk.Mesh(*octahedron()), m)
-    with pytest.raises(ValueError, match="--size: expected WxH"):
+    with pytest.raises(ValueError, match="^size: expected WxH"):
         uvtk.report(mesh, m, size="big")
     # The page of a mesh made in memory (no path): it raised nlohmann's out_of_range 'path' before.
     uvtk.report(mesh, m, html=tmp_path / "py.html")

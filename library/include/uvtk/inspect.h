@@ -29,6 +29,8 @@ struct ReportOptions {
   // From `uvtk report`'s syntax, e.g. "--views checker,seams --size 256x256".
   UVTK_API static ReportOptions parse(const std::string& commandLine);
   UVTK_API std::string commandLine() const;  // the options that differ from the defaults
+  // The options that differ from the defaults, as typed parameters (no text).
+  UVTK_API Parameters parameters() const;
   // Every field's option as the command's --help shows it (Python's signatures).
   UVTK_API static std::vector<OptionDescription> describe();
 };
@@ -36,6 +38,8 @@ struct ReportOptions {
 // The report of `mapping` as JSON text: the document `uvtk report --json` writes (verdict first,
 // every measure, seams, poles, overlap), and the files `options` names, published together.
 UVTK_API std::string report(const Mapping& mapping, const ReportOptions& options = {});
+// The same from typed parameters (Python's keywords): the names of ReportOptions' options.
+UVTK_API std::string report(const Mapping& mapping, const Parameters& parameters);
 
 // An image in memory: values in [0, 1], row 0 at the top.
 struct Image {
