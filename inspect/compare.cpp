@@ -12,7 +12,9 @@
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/image_io.h"
+#include "inspect/map_parameters.h"
 #include "inspect/mapped_mesh.h"
+#include "param/make_projector.h"
 #include "inspect/measures_json.h"
 #include "core/progress.h"
 #include "io/mesh_writer.h"
@@ -190,9 +192,47 @@ std::string markdownTable(const std::vector<RankedMapping>& ranked, RankBy by) {
 
 }  // namespace
 
+const ChoiceNames<RankBy> kRankByNames = {{"stretch_l2", RankBy::StretchL2},
+                                           {"stretch_linf", RankBy::StretchLinf},
+                                           {"angle", RankBy::Angle},
+                                           {"seam_length", RankBy::SeamLength}};
+
+CompareOptions readCompareOptions(const param::ParameterDictionary& p) {
+  constexpr int kMost = std::numeric_limits<int>::max();
+  CompareOptions o;
+  o.json = p.getText("json").value_or("");
+  o.markdown = p.getText("markdown").value_or("");
+  o.sheet = p.getText("sheet").value_or("");
+  o.writeBest = p.getText("write-best").value_or("");
+  o.by = p.getChoice("by", kRankByNames, o.by);
+  o.top = p.getInteger("top", o.top, 1, kMost);
+  o.tileSize = p.getInteger("tile-size", o.tileSize, kMinTileSize, kMaxTileSize);
+  o.camera.viewDir = p.getVector<3>("view-dir").value_or(o.camera.viewDir);
+  o.camera.up = p.getVector<3>("up").value_or(o.camera.up);
+  o.overlapResolution = p.getInteger("overlap-resolution", o.overlapResolution, 1, 16384);
+  if (const std::optional<std::array<int, 2>> size = param::readTextureSize(p))
+    o.textureSize = {(*size)[0], (*size)[1]};
+  o.seamPlaceAuto = p.getBool("seam-place-auto", o.seamPlaceAuto);
+  o.baselines = !p.getBool("no-baselines", !o.baselines);
+  o.baselineMaxFaces = p.getInteger("baseline-max-faces", o.baselineMaxFaces, 0, kMost);
+  o.margin = p.getInteger("margin", o.margin, 0, kMost);
+  o.threads = p.getInteger("threads", o.threads, 0, 1024);
+  o.thresholds = readThresholds(p);
+  o.check();
+  return o;
+}
+
+std::vector<std::string> compareParameterNames() {
+  return {"json", "markdown", "sheet", "write-best", "by", "top", "tile-size", "view-dir", "up", "overlap-resolution",
+          "texture-size", "seam-place-auto", "no-baselines", "baseline-max-faces", "margin", "threads", "fail-on",
+          "warn-on"};
+}
+
 void CompareOptions::check() const {
   if (top < 1) throw UsageError("--top: expected at least 1");
-  if (tileSize < 16 || tileSize > 4096) throw UsageError("--tile-size: expected 16 to 4096 pixels");
+  if (tileSize < kMinTileSize || tileSize > kMaxTileSize)
+    throw UsageError("--tile-size: expected " + std::to_string(kMinTileSize) + " to " + std::to_string(kMaxTileSize) +
+                     " pixels");
   if (overlapResolution < 1 || overlapResolution > 16384)
     throw UsageError("--overlap-resolution: expected 1 to 16384 pixels");
   if (!sheet.empty()) io::checkImageType(sheet, io::PixelType::UInt8);
@@ -235,10 +275,9 @@ Comparison rankMappings(const CompareOptions& a, const Mesh& mesh, const nlohman
   out.table = markdownTable(ranked, a.by);
   for (const nlohmann::json& s : skipped)  // every mapping not ranked, with its reason, under the table
     out.table += "\nNot ranked: " + s["name"].get<std::string>() + ": " + s["reason"].get<std::string>() + "\n";
-  static const char* kRankNames[] = {"stretch_l2", "stretch_linf", "angle", "seam_length"};
   out.record = {{"tool", {{"name", "uvtk"}, {"version", UVTK_VERSION}}},
                 {"input", input},
-                {"rank_by", kRankNames[int(a.by)]},
+                {"rank_by", nameOf(kRankByNames, a.by)},
                 {"order", "verdict (pass, warn, fail), then rank_by, then seam length"},
                 {"ranking", nlohmann::json::array()},
                 {"skipped", skipped}};

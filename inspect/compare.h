@@ -8,10 +8,17 @@
 #include "core/mesh.h"
 #include "io/atomic_file.h"
 #include "inspect/mapped_mesh.h"
+#include "param/parameters.h"
+#include "core/names.h"
 
 namespace uvtk::inspect {
 
 enum class RankBy { StretchL2, StretchLinf, Angle, SeamLength };
+// Their names, as every face spells them: stretch_l2, stretch_linf, angle, seam_length.
+extern const ChoiceNames<RankBy> kRankByNames;
+
+// The bounds CompareOptions::check and readCompareOptions hold the sheet's pictures to.
+inline constexpr int kMinTileSize = 16, kMaxTileSize = 4096;
 
 struct CompareOptions {
   std::string json;                 // the ranking as JSON; empty: not written
@@ -33,6 +40,15 @@ struct CompareOptions {
 
   void check() const;  // throws UsageError for a value out of range, before any work
 };
+
+// The comparison's options as the library and Python's keywords give them: "json", "markdown",
+// "sheet", "write-best", "by", "top", "tile-size", "view-dir", "up", "overlap-resolution",
+// "texture-size", "seam-place-auto", "no-baselines", "baseline-max-faces", "margin", "threads",
+// "fail-on" and "warn-on", each named as given in a message; then check() them.
+CompareOptions readCompareOptions(const param::ParameterDictionary& parameters);
+
+// Every name readCompareOptions reads.
+std::vector<std::string> compareParameterNames();
 
 // One ranked mapping: a projector configuration or a baseline, with its judgement.
 struct RankedMapping {

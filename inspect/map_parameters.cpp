@@ -15,13 +15,18 @@ analysis::TextureSize textureSizeOf(const param::ParameterDictionary& p) {
 
 }  // namespace
 
+analysis::Thresholds readThresholds(const param::ParameterDictionary& p) {
+  analysis::Thresholds t;
+  for (const std::string& entry : p.getTexts("fail-on"))
+    if (!analysis::parseVerdict(entry)) t.set(entry, analysis::Verdict::Fail, p.spelled("fail-on"));
+  for (const std::string& entry : p.getTexts("warn-on")) t.set(entry, analysis::Verdict::Warn, p.spelled("warn-on"));
+  return t;
+}
+
 MapSettings readMapSettings(const param::ParameterDictionary& p) {
   MapSettings s;
   s.projector = param::makeProjector(p);
-  for (const std::string& entry : p.getTexts("fail-on"))
-    if (!analysis::parseVerdict(entry)) s.thresholds.set(entry, analysis::Verdict::Fail, p.spelled("fail-on"));
-  for (const std::string& entry : p.getTexts("warn-on"))
-    s.thresholds.set(entry, analysis::Verdict::Warn, p.spelled("warn-on"));
+  s.thresholds = readThresholds(p);
   s.overlapResolution = p.getInteger("overlap-resolution", 1024, 1, 16384);
   s.textureSize = textureSizeOf(p);
   if (p.given("density")) {

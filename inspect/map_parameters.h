@@ -21,6 +21,10 @@ struct MapSettings {
   int threads = 0;                        // 0 to 1024; 0: one per hardware thread
 };
 
+// The verdict's thresholds: "fail-on" and "warn-on", RULE=VALUE each ("warn" and "fail" among
+// fail-on's are the command's exit, not thresholds: skipped here).
+analysis::Thresholds readThresholds(const param::ParameterDictionary& parameters);
+
 // Throws UsageError (ParameterTypeError for a value of the wrong kind) naming the parameter.
 MapSettings readMapSettings(const param::ParameterDictionary& parameters);
 

@@ -91,10 +91,12 @@ const std::vector<Field<CompareOptions>>& compareFields() {
   return fields;
 }
 
-// The names the library's report takes: its fields' (not `uvtk report`'s --view3d-faces).
-std::vector<std::string> libraryReportParameterNames() {
+// The names an options struct takes: its fields' (not the command's others, e.g. `uvtk report
+// --view3d-faces`).
+template <class Options>
+std::vector<std::string> namesOf(const std::vector<Field<Options>>& fields) {
   std::vector<std::string> names;
-  for (const Field<ReportOptions>& field : reportFields()) names.push_back(field.name + 2);
+  for (const Field<Options>& field : fields) names.push_back(field.name + 2);
   return names;
 }
 
@@ -173,6 +175,7 @@ std::string ReportOptions::commandLine() const { return joinCommandLine(wordsOf(
 Parameters ReportOptions::parameters() const { return parametersOf(*this, reportFields()); }
 std::string RenderOptions::commandLine() const { return joinCommandLine(wordsOf(*this, renderFields())); }
 std::string CompareOptions::commandLine() const { return joinCommandLine(wordsOf(*this, compareFields())); }
+Parameters CompareOptions::parameters() const { return parametersOf(*this, compareFields()); }
 
 std::string report(const Mapping& mapping, const ReportOptions& options) {
   return report(mapping, options.parameters());
@@ -183,7 +186,7 @@ std::string report(const Mapping& mapping, const Parameters& parameters) {
   return translatingErrors([&] {
     const param::ParameterDictionary dictionary = toEngine(parameters);
     const inspect::ReportOptions o = inspect::readReportOptions(dictionary);
-    dictionary.checkAllRead(libraryReportParameterNames());
+    dictionary.checkAllRead(namesOf(reportFields()));
     o.check();
     const inspect::MappedMesh& mapped = mapping.detail->mapped;
     const analysis::Judgement& judged = mapping.detail->judgement;
@@ -232,11 +235,14 @@ Image render(const Mapping& mapping, const RenderOptions& options) {
   });
 }
 
-Comparison compare(const Mesh& mesh, const CompareOptions& options) {
+Comparison compare(const Mesh& mesh, const CompareOptions& options) { return compare(mesh, options.parameters()); }
+
+Comparison compare(const Mesh& mesh, const Parameters& parameters) {
   const CheckedMesh in = checked(mesh);
   return translatingErrors([&] {
-    const CompareCommand command(wordsOf(options, compareFields()));
-    const inspect::CompareOptions o = command.options();
+    const param::ParameterDictionary dictionary = toEngine(parameters);
+    const inspect::CompareOptions o = inspect::readCompareOptions(dictionary);
+    dictionary.checkAllRead(namesOf(compareFields()));
     const uvtk::Mesh& engine = in.engine;
     const nlohmann::json& input = in.input;
     const bool writes = !o.json.empty() || !o.markdown.empty() || !o.sheet.empty();

@@ -14,12 +14,7 @@ inspect::CompareOptions CompareArguments::resolve() const {
 
 void addCompareOptions(CLI::App& app, CompareArguments& arguments) {
   inspect::CompareOptions& a = arguments.options;
-  addChoice<inspect::RankBy>(app, "--by", a.by,
-                    {{"stretch_l2", inspect::RankBy::StretchL2},
-                     {"stretch_linf", inspect::RankBy::StretchLinf},
-                     {"angle", inspect::RankBy::Angle},
-                     {"seam_length", inspect::RankBy::SeamLength}},
-                    "The measure that ranks (ties: the shorter seam)")
+  addChoice<inspect::RankBy>(app, "--by", a.by, inspect::kRankByNames, "The measure that ranks (ties: the shorter seam)")
       ->default_str("stretch_l2");
   app.add_option("--json", a.json, "Write the ranking with every measure as JSON");
   app.add_option("--markdown", a.markdown, "Also write the table (printed on stdout) to this file");

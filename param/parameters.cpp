@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace uvtk::param {
 
@@ -135,8 +136,10 @@ int ParameterDictionary::getInteger(const std::string& name, int fallback, int l
   else
     wrongKind(*p, "an integer");
   if (!(value >= low && value <= high))
-    throw UsageError(p->place + ": expected " + std::to_string(low) + " to " + std::to_string(high) + ", got " +
-                     describe(p->value, face_));
+    throw UsageError(p->place + ": expected " +
+                     (high == std::numeric_limits<int>::max() ? "at least " + std::to_string(low)
+                                                               : std::to_string(low) + " to " + std::to_string(high)) +
+                     ", got " + describe(p->value, face_));
   return int(value);
 }
 

@@ -62,7 +62,8 @@ class ParameterDictionary {
   // ParameterTypeError; None is one too, except for the optional getters (getVector, getText).
   bool getBool(const std::string& name, bool fallback) const;  // true, false (or the integers 1, 0)
   double getNumber(const std::string& name, double fallback) const;
-  // An integer in [low, high] (an integral number is one), else a UsageError naming the range.
+  // An integer in [low, high] (an integral number is one), else a UsageError naming the range
+  // ("at least LOW" when high is INT_MAX).
   int getInteger(const std::string& name, int fallback, int low, int high) const;
   // `n` finite numbers; nothing where not given or None.
   std::optional<Eigen::VectorXd> getNumbers(const std::string& name, int n) const;

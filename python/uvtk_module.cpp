@@ -679,9 +679,9 @@ PYBIND11_MODULE(_uvtk, m) {
 
 The Python face of the C++ library (docs/python.md): the numbers are those of the `uvtk` command
 line, bit for bit. Options are keywords named as the command line's options (cap_angle=30 is
---cap-angle 30). map's, texgen's, eval's and report's keywords reach the engine as typed values
-(True is a flag, 0 is False, a str where a number belongs is a TypeError), read by the function
-the command line's options reach; render's and compare's still go through the command line's
+--cap-angle 30). map's, texgen's, eval's, report's and compare's keywords reach the engine as
+typed values (True is a flag, 0 is False, a str where a number belongs is a TypeError), read by
+the function the command line's options reach; render's still go through the command line's
 parser. Either way the messages name the keyword.)";
 
   py::register_exception<api::InputError>(m, "InputError", PyExc_Exception)
@@ -1042,8 +1042,8 @@ the PNG's 8-bit values, dtype="float32" the values in [0, 1].)");
       "compare",
       [](py::object mesh, py::kwargs kwargs) {
         const api::Mesh& input = meshOf("compare", mesh);
-        const api::CompareOptions options = api::CompareOptions::parse(commandLine(kwargs));
-        const api::Comparison comparison = interruptible([&] { return api::compare(input, options); });
+        const api::Parameters parameters = keywordParameters(kwargs);
+        const api::Comparison comparison = interruptible([&] { return api::compare(input, parameters); });
         py::dict result;
         result["json"] = jsonLoads(comparison.json);
         result["table"] = comparison.table;

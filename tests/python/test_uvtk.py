@@ -746,6 +746,28 @@ def test_eval_has_a_signature_of_every_keyword_it_takes():
 
 # ---- report, render, compare ----
 
+def test_report_and_compare_keywords_are_typed(tmp_path):
+    mesh = uvtk.Mesh(*uv_sphere())
+    m = uvtk.map(mesh, projector="sphere")
+    # size as (W, H), "WxH" or N; views as a list or a comma list: the same page
+    uvtk.report(mesh, m, html=tmp_path / "a.html", size=(48, 32), views=["checker", "seams"])
+    uvtk.report(mesh, m, html=tmp_path / "b.html", size="48x32", views="checker,seams")
+    assert (tmp_path / "a.html").read_text().count("<img") == (tmp_path / "b.html").read_text().count("<img") > 0
+    with pytest.raises(TypeError, match=r"^threads: expected an integer, got '2'$"):
+        uvtk.report(mesh, m, threads="2")
+    with pytest.raises(ValueError, match=r"^size: expected W, H with 1 <= W, H <= 16384$"):
+        uvtk.report(mesh, m, size=(0, 10))
+    with pytest.raises(ValueError, match=r"^top: expected at least 1, got 0$"):
+        uvtk.compare(mesh, top=0, no_baselines=True)
+    with pytest.raises(TypeError, match=r"^no_baselines: expected True or False, got 'yes'$"):
+        uvtk.compare(mesh, no_baselines="yes")
+    with pytest.raises(ValueError, match=r"^by: 'angel' is not one of: .*did you mean 'angle'\?$"):
+        uvtk.compare(mesh, by="angel", no_baselines=True)
+    ranked = uvtk.compare(mesh, by="angle", top=2, no_baselines=1)  # 1 is True
+    assert ranked["json"]["rank_by"] == "angle"
+    assert not any(row["name"] in ("lscm", "arap") for row in ranked["json"]["ranking"])
+
+
 def test_report_is_the_programs_json(tmp_path, cli):
     path = write_obj(tmp_path / "s.obj", *uv_sphere())
     mesh = uvtk.read_mesh(path)

@@ -112,6 +112,8 @@ struct CompareOptions {
   // From `uvtk compare`'s syntax, e.g. "--by angle --no-baselines".
   UVTK_API static CompareOptions parse(const std::string& commandLine);
   UVTK_API std::string commandLine() const;  // the options that differ from the defaults
+  // The options that differ from the defaults, as typed parameters (no text).
+  UVTK_API Parameters parameters() const;
   // Every field's option as the command's --help shows it (Python's signatures).
   UVTK_API static std::vector<OptionDescription> describe();
 };
@@ -124,5 +126,7 @@ struct Comparison {
 
 // Every projector configuration on `mesh`, ranked (verdict first): `uvtk compare`.
 UVTK_API Comparison compare(const Mesh& mesh, const CompareOptions& options = {});
+// The same from typed parameters (Python's keywords): the names of CompareOptions' options.
+UVTK_API Comparison compare(const Mesh& mesh, const Parameters& parameters);
 
 }  // namespace uvtk::api
