@@ -86,13 +86,11 @@ texgen::TexgenOptions readTexgen(const param::ParameterDictionary& p, const std:
                        " is not allowed on this coordinate (sphere_map: s, t only; normal_map, reflection_map: "
                        "s, t, r only)");
   }
-  o.modelviewAtPlanes = view;  // planes are given under the view alone: they act in world space
-  o.modelviewAtDraw = view * model;
   if (const std::optional<Eigen::VectorXd> matrix = p.getNumbers("texmatrix", 16))
     o.textureMatrix = Eigen::Map<const Mat4>(matrix->data());  // column-major, as GL's
   o.normalize = !p.getBool("no-normalize", false);
   o.precision = p.getChoice("precision", param::kPrecisionNames, Precision::Double);
-  return o;
+  return texgen::drawnUnder(o, view, model);
 }
 
 ResolvedMapping readMapping(const param::ParameterDictionary& p, param::Fit defaultFit) {
@@ -121,9 +119,13 @@ TexgenSettings readTexgenSettings(const param::ParameterDictionary& p) {
   return {readTexgen(p, "mode", view, model), p.getInteger("threads", 0, 0, 1024)};
 }
 
+std::vector<std::string> texgenOptionNames(const std::string& shortcut) {
+  return {shortcut, "s", "t", "r", "q", "texmatrix", "no-normalize", "precision"};
+}
+
 std::vector<std::string> texgenParameterNames() {
-  std::vector<std::string> names = {"mode", "s", "t", "r", "q", "eye", "center", "up", "precision", "threads"};
-  names.insert(names.end(), std::begin(kTexgenOnly), std::end(kTexgenOnly));
+  std::vector<std::string> names = texgenOptionNames("mode");
+  names.insert(names.end(), {"eye", "center", "up", "model", "threads"});
   return names;
 }
 
@@ -133,8 +135,8 @@ bool fitsToMesh(const param::ProjectorOptions& o) {
 
 std::vector<std::string> mappingParameterNames() {
   std::vector<std::string> names = param::projectorParameterNames();
-  names.insert(names.end(), {"texgen", "s", "t", "r", "q"});
-  names.insert(names.end(), std::begin(kTexgenOnly), std::end(kTexgenOnly));
+  for (const std::string& name : texgenOptionNames("texgen")) names.push_back(name);
+  names.push_back("model");
   std::vector<std::string> once;  // the projector's context names "eye", "center" and "up" twice
   for (const std::string& name : names)
     if (std::find(once.begin(), once.end(), name) == once.end()) once.push_back(name);

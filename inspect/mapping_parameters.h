@@ -46,6 +46,9 @@ struct TexgenSettings {
 };
 TexgenSettings readTexgenSettings(const param::ParameterDictionary& parameters);
 
+// The names readTexgen reads with the shortcut `shortcut` (not the view's and the model's).
+std::vector<std::string> texgenOptionNames(const std::string& shortcut);
+
 // Every name readTexgenSettings reads.
 std::vector<std::string> texgenParameterNames();
 

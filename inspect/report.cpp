@@ -48,7 +48,8 @@ ReportOptions readReportOptions(const param::ParameterDictionary& p) {
   ReportOptions o;
   o.json = p.getText("json").value_or("");
   o.html = p.getText("html").value_or("");
-  if (!o.html.empty() && p.given("views")) {  // the page's views: read only for a page
+  const bool viewsGiven = p.given("views");
+  if (!o.html.empty() && viewsGiven) {  // the page's views: read only for a page
     std::string list;
     for (const std::string& name : p.getTexts("views")) list += (list.empty() ? "" : ",") + name;
     o.views = views::parseViewList(list, p.spelled("views"));

@@ -12,7 +12,7 @@
 #include "io/json_schema.h"
 #include "io/mesh_format.h"
 #include "io/mesh_writer.h"
-#include "options/arithmetic_cli.h"
+#include "inspect/mapping_parameters.h"
 #include "options/cli_values.h"
 #include "options/projector_cli.h"
 #include "render/procedural.h"
@@ -283,10 +283,13 @@ class SceneReader {
       m.seamPlaceAuto = projector.seamPlaceAuto;
     } else if (kind == "texgen") {
       m.kind = SceneMapping::Kind::Texgen;
-      m.parser = std::make_shared<CLI::App>();
-      addTexgenOptions(*m.parser, m.texgen, "--texgen");
-      addArithmeticOptions(*m.parser, m.texgen.arithmetic, false);
-      parseOptions(*m.parser, j, {"kind", "name", "camera", "eye", "center", "up"}, pointer);
+      const param::ParameterDictionary parameters =
+          sceneParameters(j, {"kind", "name", "camera", "eye", "center", "up"}, pointer);
+      m.texgen = at(pointer, [&] {
+        const texgen::TexgenOptions made = inspect::readTexgen(parameters, "texgen", Mat4::Identity(), Mat4::Identity());
+        parameters.checkAllRead(inspect::texgenOptionNames("texgen"));
+        return made;
+      });
       const bool lookAtGiven = j.contains("eye") || j.contains("center") || j.contains("up");
       if (j.contains("camera") && lookAtGiven) fail(pointer, "camera and eye, center, up exclude each other");
       if (j.contains("camera")) m.camera = find(scene.cameras, j["camera"], "camera", pointer + "/camera");
@@ -296,7 +299,6 @@ class SceneReader {
       };
       // As `uvtk texgen`: GL's initial view, the eye at the origin looking down -z.
       m.viewFromWorld = lookAt(vec3("eye", Vec3::Zero()), vec3("center", Vec3(0, 0, -1)), vec3("up", Vec3(0, 1, 0)));
-      at(pointer, [&] { m.texgen.resolve(Mat4::Identity(), Mat4::Identity()); });
     }
     return m;
   }
@@ -342,23 +344,28 @@ class SceneReader {
                           "\" is the file's own UVs");
     } else if (kind == "report") {
       o.kind = SceneOutput::Kind::Report;
-      addReportOptions(*o.parser, o.report);
-      parseOptions(*o.parser, j, {"kind", "mapping"}, pointer);
+      const param::ParameterDictionary parameters = sceneParameters(j, {"kind", "mapping"}, pointer);
+      o.report = at(pointer, [&] {
+        inspect::ReportOptions made = inspect::readReportOptions(parameters);
+        parameters.checkAllRead(inspect::reportParameterNames());
+        made.check();
+        return made;
+      });
       o.report.json = output(o.report.json, pointer + "/json");
       o.report.html = output(o.report.html, pointer + "/html");
-      at(pointer, [&] {
-        o.report.check();
-        if (o.report.json.empty() && o.report.html.empty()) throw UsageError("expected json, html or both");
-      });
+      if (o.report.json.empty() && o.report.html.empty()) fail(pointer, "expected json, html or both");
     } else if (kind == "compare") {
       o.kind = SceneOutput::Kind::Compare;
-      addCompareOptions(*o.parser, o.compare);
-      parseOptions(*o.parser, j, {"kind", "mesh"}, pointer);
-      o.compare.options.json = output(o.compare.options.json, pointer + "/json");
-      o.compare.options.markdown = output(o.compare.options.markdown, pointer + "/markdown");
-      o.compare.options.sheet = output(o.compare.options.sheet, pointer + "/sheet");
-      o.compare.options.writeBest = output(o.compare.options.writeBest, pointer + "/write_best");
-      at(pointer, [&] { o.compare.check(); });
+      const param::ParameterDictionary parameters = sceneParameters(j, {"kind", "mesh"}, pointer);
+      o.compare = at(pointer, [&] {
+        const inspect::CompareOptions made = inspect::readCompareOptions(parameters);
+        parameters.checkAllRead(inspect::compareParameterNames());
+        return made;
+      });
+      o.compare.json = output(o.compare.json, pointer + "/json");
+      o.compare.markdown = output(o.compare.markdown, pointer + "/markdown");
+      o.compare.sheet = output(o.compare.sheet, pointer + "/sheet");
+      o.compare.writeBest = output(o.compare.writeBest, pointer + "/write_best");
     } else if (kind == "bench") {
       o.kind = SceneOutput::Kind::Bench;
       o.bench = bench(j, pointer, o, scene);
@@ -436,8 +443,7 @@ bool SceneMapping::needsNormals() const {
   if (kind == Kind::Projector)
     return projector.ray == param::RayKind::ObjectNormal || projector.ray == param::RayKind::Reflection;
   if (kind == Kind::File) return false;
-  const texgen::TexgenOptions options = texgen.resolve(Mat4::Identity(), Mat4::Identity());
-  return std::any_of(options.coordinates.begin(), options.coordinates.end(), [](const texgen::TexgenCoordinate& c) {
+  return std::any_of(texgen.coordinates.begin(), texgen.coordinates.end(), [](const texgen::TexgenCoordinate& c) {
     return c.mode == texgen::TexgenMode::SphereMap || c.mode == texgen::TexgenMode::NormalMap ||
            c.mode == texgen::TexgenMode::ReflectionMap;
   });
@@ -453,8 +459,7 @@ std::vector<std::string> SceneOutput::files() const {
   add(json);
   if (kind == Kind::Render && !frame.aov.empty()) add(frame.aovOutput);
   if (kind == Kind::Report) add(report.json), add(report.html);
-  if (kind == Kind::Compare) add(compare.options.json), add(compare.options.markdown), add(compare.options.sheet),
-                                  add(compare.options.writeBest);
+  if (kind == Kind::Compare) add(compare.json), add(compare.markdown), add(compare.sheet), add(compare.writeBest);
   if (kind == Kind::Bench) add(bench.json), add(bench.markdown), add(bench.plot);
   return out;
 }

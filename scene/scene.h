@@ -14,14 +14,14 @@
 #include <vector>
 
 #include "analysis/judgement.h"
-#include "options/compare_cli.h"
+#include "inspect/compare.h"
 #include "core/math.h"
 #include "timing/bench.h"
 #include "io/mesh_writer.h"
 #include "param/projector.h"
 #include "options/render_cli.h"
-#include "options/report_cli.h"
-#include "options/texgen_cli.h"
+#include "inspect/report.h"
+#include "texgen/texgen.h"
 
 namespace uvtk::scene {
 
@@ -40,10 +40,9 @@ struct SceneMapping {
   Kind kind = Kind::File;
   param::ProjectorOptions projector;
   bool seamPlaceAuto = false;
-  cli::TexgenArguments texgen;             // resolved with the view when it runs
+  texgen::TexgenOptions texgen;       // under the identity: drawnUnder the view and the model when it runs
   std::optional<std::size_t> camera;  // texgen: the view of this camera, else viewFromWorld
   Mat4 viewFromWorld = Mat4::Identity();
-  std::shared_ptr<CLI::App> parser;  // texgen: owns what its arguments refer to (a projector's are typed)
 
   // Whether computing the mapping reads vertex normals (an O-mapping or texgen mode that needs them).
   bool needsNormals() const;
@@ -69,8 +68,8 @@ struct SceneOutput {
   std::string path, json;     // mesh, render, gallery: the file; mesh, render: the summary JSON
   io::MeshWriteOptions write;  // mesh (the header is set when written)
   cli::FrameArguments frame;                      // render
-  cli::ReportArguments report;                    // report
-  cli::CompareArguments compare;                  // compare
+  inspect::ReportOptions report;                  // report
+  inspect::CompareOptions compare;                // compare (the scene's thresholds are set when it runs)
   timing::BenchOptions bench;                    // bench: `uvtk bench` of the mesh, html = path
   std::string title;                         // gallery
   std::shared_ptr<CLI::App> parser;

@@ -256,7 +256,7 @@ class SceneRunner {
       case Stage::Kind::Report: {
         const SceneOutput& o = scene_.outputs[stage.index];
         const MappedMesh& mapped = work->mapped.at(*o.mapping);
-        const ReportOptions options = o.report.options();
+        const ReportOptions& options = o.report;
         const analysis::Judgement& judgement = judgementFor(work->judgements.at({*o.mapping, o.report.overlapResolution}),
                                                             mapped, o.report.overlapResolution, options.textureSize);
         const json report = writeReport(outputs, options, mapped, judgement, work->inputSummary);
@@ -273,14 +273,14 @@ class SceneRunner {
         if (hasGallery()) {
           MeshViewOptions view;
           view.faceBudget = std::min<std::size_t>(o.report.view3dFaces, kGalleryViewFaces);
-          view.camera = o.report.camera.resolve();
+          view.camera = o.report.camera;
           if (view.faceBudget > 0) views3d_[stage.index] = meshViewHtml(mapped, judgement, view);
         }
         return;
       }
       case Stage::Kind::Compare: {
         const SceneOutput& o = scene_.outputs[stage.index];
-        CompareOptions options = o.compare.resolve();
+        CompareOptions options = o.compare;
         options.thresholds = scene_.thresholds;
         const Comparison comparison = compareMappings(outputs, options, work->input.mesh, work->inputSummary);
         json top = json::array();
@@ -352,7 +352,7 @@ class SceneRunner {
         // A camera's view as framed for a 512 x 512 picture (framing depends on the aspect only through the distance).
         const Mat4 view = m.camera ? Mat4(scene_.cameras[*m.camera].arguments.make(mesh, scene_.meshes[m.mesh].path, model, 512, 512).viewFromWorld)
                                    : m.viewFromWorld;
-        return mapByTexgen(std::move(mesh), m.texgen.resolve(view, model));
+        return mapByTexgen(std::move(mesh), texgen::drawnUnder(m.texgen, view, model));
       }
       case SceneMapping::Kind::File:
         break;
@@ -504,9 +504,13 @@ std::vector<Stage> planScene(const Scene& s) {
                                            Stage::Kind::Compare};
       std::vector<std::string> computes;
       if (o.kind == SceneOutput::Kind::Render) computes = renderComputes(s, o);
-      if (o.kind == SceneOutput::Kind::Report && !o.report.html.empty()) computes.push_back("views " + o.report.views);
+      if (o.kind == SceneOutput::Kind::Report && !o.report.html.empty()) {
+        std::string names;
+        for (const views::View view : o.report.views) names += (names.empty() ? "" : ",") + std::string(views::toString(view));
+        computes.push_back("views " + names);
+      }
       if (o.kind == SceneOutput::Kind::Compare)
-        computes.push_back(o.compare.options.baselines ? "every projector, LSCM and ARAP" : "every projector");
+        computes.push_back(o.compare.baselines ? "every projector, LSCM and ARAP" : "every projector");
       std::vector<std::size_t> needs = {o.mapping ? mapStage[*o.mapping] : read};
       if (o.kind == SceneOutput::Kind::Render) needs.push_back(textureStage[o.texture.value_or(defaultTexture)]);
       if (judged(o)) needs.push_back(measureStage[{*o.mapping, kViewsOverlapResolution}]);

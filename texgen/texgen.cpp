@@ -263,4 +263,10 @@ const ChoiceNames<TexgenMode> kTexgenModeNames = {
 
 const char* texgenModeName(TexgenMode mode) { return nameOf(kTexgenModeNames, mode).c_str(); }
 
+TexgenOptions drawnUnder(TexgenOptions options, const Mat4& view, const Mat4& model) {
+  options.modelviewAtPlanes = view;
+  options.modelviewAtDraw = view * model;
+  return options;
+}
+
 }  // namespace uvtk::texgen

@@ -45,6 +45,10 @@ struct TexgenOptions {
   Precision precision = Precision::Double;
 };
 
+// `options` drawn under `view` and `model`: the EYE_LINEAR planes count as given under the view
+// alone (so they act in world space), the vertices are drawn under view * model.
+TexgenOptions drawnUnder(TexgenOptions options, const Mat4& view, const Mat4& model);
+
 struct TexgenResult {
   UvMap uv;                           // uv = (s, t) and w = r per corner (3 per triangle)
   std::vector<double> q;              // per corner; never divided out (projective lookup divides)
