@@ -26,14 +26,18 @@ void addMappingOptions(CLI::App& app, MappingArguments& a, param::Fit defaultFit
                  "the view alone");
 }
 
-ResolvedMapping resolveMapping(const MappingArguments& a) {
+param::ParameterDictionary mappingParameters(const MappingArguments& a) {
   param::ParameterDictionary parameters = a.projector.parameters();
   a.texgen.addTo(parameters);
   if (!a.model.empty()) {
     const Mat4 model = parseMatrix(a.model, "--model");
     parameters.add("model", std::vector<double>(model.data(), model.data() + 16));
   }
-  return inspect::readMapping(parameters, a.projector.context.defaultFit);
+  return parameters;
+}
+
+ResolvedMapping resolveMapping(const MappingArguments& a) {
+  return inspect::readMapping(mappingParameters(a), a.projector.context.defaultFit);
 }
 
 }  // namespace uvtk::cli

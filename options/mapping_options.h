@@ -33,6 +33,9 @@ using inspect::ResolvedMapping;
 // no mesh to fit to unless one is named).
 void addMappingOptions(CLI::App& app, MappingArguments& arguments, param::Fit defaultFit);
 
+// The options given, typed, as inspect::readMapping reads them.
+param::ParameterDictionary mappingParameters(const MappingArguments& arguments);
+
 // inspect::readMapping of the options given. Throws UsageError for options of the other kind (a
 // projector option with --texgen, --model with a projector) and for everything the projector or
 // texgen options reject.

@@ -8,13 +8,14 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
-#include "options/cli_values.h"
-#include "options/projector_cli.h"
+#include "inspect/mapping_parameters.h"
+#include "param/projector_names.h"
 #include "param/projector.h"
 #include "point/point_evaluator.h"
 
@@ -207,14 +208,23 @@ std::string number(double x) {
 
 std::string eyeText(const Vector3& e) { return number(e[0]) + "," + number(e[1]) + "," + number(e[2]); }
 
+// `parameters` with the eye `eye` in place of theirs.
+param::ParameterDictionary withEye(const param::ParameterDictionary& parameters, const Vector3& eye) {
+  param::ParameterDictionary out(parameters.face());
+  for (const param::Parameter& p : parameters.parameters())
+    if (p.name != "eye") out.add(p.name, p.value, p.place);
+  out.add("eye", std::vector<double>{eye[0], eye[1], eye[2]});
+  return out;
+}
+
 // The evaluators of one run: the mapping as the options give it, and the one for the eye of the
 // latest row that brought its own (rebuilt only when that eye changes).
 class Evaluators {
  public:
   // `sensible`: the range rule's box of --mesh (param::sensibleBox); none without a mesh.
-  Evaluators(const cli::MappingArguments& arguments, const inspect::ResolvedMapping& mapping, const Affine3& frame,
-             const std::optional<Eigen::AlignedBox3d>& sensible, bool defaultUsable)
-      : arguments_(arguments), mapping_(mapping), frame_(frame), sensible_(sensible) {
+  Evaluators(const param::ParameterDictionary& parameters, const inspect::ResolvedMapping& mapping,
+             const Affine3& frame, const std::optional<Eigen::AlignedBox3d>& sensible, bool defaultUsable)
+      : parameters_(parameters), mapping_(mapping), frame_(frame), sensible_(sensible) {
     if (defaultUsable) default_.emplace(mapping_, frame_, "uvtk eval", sensible_);
   }
 
@@ -236,10 +246,9 @@ class Evaluators {
           inspect::ResolvedMapping m = mapping_;
           m.projector->eye = Vec3((*eye)[0], (*eye)[1], (*eye)[2]);
           last_.emplace(m, frame_, "uvtk eval", sensible_);
-        } else {  // the view is made from the options' text: the same path as --eye
-          cli::MappingArguments a = arguments_;
-          a.projector.eye = eyeText(*eye);
-          last_.emplace(cli::resolveMapping(a), frame_, "uvtk eval", sensible_);
+        } else {  // texgen's view from this eye: the same path as --eye
+          last_.emplace(inspect::readMapping(withEye(parameters_, *eye), param::Fit::None), frame_, "uvtk eval",
+                        sensible_);
         }
       } catch (const UsageError& e) {
         lastReason_ = std::string("no view from this eye: ") + e.what();
@@ -258,7 +267,7 @@ class Evaluators {
   }
 
  private:
-  const cli::MappingArguments& arguments_;
+  const param::ParameterDictionary& parameters_;
   inspect::ResolvedMapping mapping_;
   Affine3 frame_;
   std::optional<Eigen::AlignedBox3d> sensible_;
@@ -324,7 +333,9 @@ std::string outputLine(const Output& o, TextFormat format, bool withNormals, boo
 }  // namespace
 
 Vector3 parseTriple(const std::string& text, const char* option) {
-  std::vector<std::string> items = cli::splitList(text);
+  std::vector<std::string> items;
+  std::stringstream list(text);
+  for (std::string item; std::getline(list, item, ',');) items.push_back(item);
   if (!text.empty() && text.back() == ',') items.push_back("");
   Vector3 v{};
   bool ok = items.size() == 3;
@@ -337,23 +348,18 @@ std::vector<PointRow> readPointRows(std::istream& in, TextFormat format) {
   return format == TextFormat::Csv ? readCsv(in) : readJsonLines(in);
 }
 
-EvalCounts evaluatePoints(const EvalJob& job, const cli::MappingArguments& mapping) {
+EvalCounts evaluatePoints(const EvalJob& job, const param::ParameterDictionary& parameters) {
   const bool fromStdin = job.in != nullptr;
   std::vector<PointRow> rows = job.rows;
   // The mapping. A reflection without --eye is resolved at a placeholder eye when the rows bring
   // their own: each row must then have one.
-  const cli::MappingArguments& m = mapping;
-  const bool isTexgen = m.isTexgen();
-  const bool eyeFromRows =
-      !isTexgen && fromStdin && m.projector.options.ray == param::RayKind::Reflection && m.projector.eye.empty();
-  inspect::ResolvedMapping resolved;
-  if (eyeFromRows) {
-    cli::MappingArguments placeholder = m;
-    placeholder.projector.options.eye = Vec3(0, 0, 1);
-    resolved = cli::resolveMapping(placeholder);
-  } else {
-    resolved = cli::resolveMapping(m);
-  }
+  const bool isTexgen = inspect::asksForTexgen(parameters, "texgen");
+  const bool eyeFromRows = !isTexgen && fromStdin && !parameters.given("eye") &&
+                           parameters.getChoice("omap", param::kRayNames, param::RayKind::SurfaceNormal) ==
+                               param::RayKind::Reflection;
+  const param::ParameterDictionary read = eyeFromRows ? withEye(parameters, {0, 0, 1}) : parameters;
+  inspect::ResolvedMapping resolved = inspect::readMapping(read, param::Fit::None);
+  read.checkAllRead(inspect::mappingParameterNames());
   Affine3 frame = Affine3::Identity();
   std::optional<Eigen::AlignedBox3d> sensible;
   if (isTexgen && !job.mesh.empty())
@@ -380,15 +386,15 @@ EvalCounts evaluatePoints(const EvalJob& job, const cli::MappingArguments& mappi
     frame = point::placementFor(options, positions);
     if (!positions.empty()) sensible = param::sensibleBox(positions, options, frame);
   }
-  Evaluators evaluators(m, resolved, frame, sensible, !eyeFromRows);
+  Evaluators evaluators(parameters, resolved, frame, sensible, !eyeFromRows);
 
   if (fromStdin) rows = readPointRows(*job.in, job.input);
 
   // Eyes: what each row is evaluated from, and whether the mapping reads one.
   const bool readsEye = isTexgen || resolved.projector->ray == param::RayKind::Reflection;
   Vector3 defaultEye{};
-  if (isTexgen && !m.projector.eye.empty()) {
-    const Vec3 e = cli::parseVec3(m.projector.eye, "--eye");
+  if (isTexgen && parameters.given("eye")) {
+    const Vec3 e = *parameters.getVector<3>("eye");
     defaultEye = {e.x(), e.y(), e.z()};
   } else if (!isTexgen && resolved.projector->eye) {
     defaultEye = {resolved.projector->eye->x(), resolved.projector->eye->y(), resolved.projector->eye->z()};

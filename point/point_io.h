@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "options/mapping_options.h"
+#include "param/parameters.h"
 #include "uvtk/point.h"
 
 namespace uvtk::point {
@@ -57,10 +57,11 @@ struct EvalCounts {
   std::size_t byStatus[4] = {};
 };
 
-// Resolves `mapping` (a reflection without an eye takes each row's when the rows are read), reads
+// Resolves `mapping`, the parameters of inspect::readMapping (a reflection without an eye takes
+// each row's when the rows are read), reads
 // the mesh and the rows, checks every row, then evaluates and writes each point as it goes.
 // Throws UsageError for a mapping the points cannot take, InputError for a malformed row or
 // mesh, OutputError when the output cannot be written.
-EvalCounts evaluatePoints(const EvalJob& job, const cli::MappingArguments& mapping);
+EvalCounts evaluatePoints(const EvalJob& job, const param::ParameterDictionary& mapping);
 
 }  // namespace uvtk::point

@@ -31,7 +31,7 @@ struct EvalArguments {
 void runEval(const EvalArguments& a) {
   point::EvalJob job = point::evalJobOf(a.points, a.normals, given(a.app, "--input"));
   job.input = a.input, job.format = a.format, job.mesh = a.mesh, job.output = a.output;
-  const point::EvalCounts c = point::evaluatePoints(job, a.mapping);
+  const point::EvalCounts c = point::evaluatePoints(job, mappingParameters(a.mapping));
   using point::Status;
   if (!quiet())
     std::fprintf(stderr, "uvtk eval: %zu points, %zu ok, %zu poles, %zu on seam, %zu invalid\n", c.points,
