@@ -43,4 +43,8 @@ std::vector<std::string> splitList(const std::string& text) {
   return items;
 }
 
+CLI::Option* addThreadsOption(CLI::App& app, int& threads, const std::string& help) {
+  return app.add_option("--threads", threads, help)->check(CLI::Range(0, 1024))->default_str("0");
+}
+
 }  // namespace uvtk::cli

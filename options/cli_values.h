@@ -29,6 +29,9 @@ inline Vec4 parseVec4(const std::string& text, const std::string& option) { retu
 // option's name before it): for a string option checked against a list of names.
 CLI::Validator nameCheck(std::vector<std::string> names);
 
+// --threads: 0 to 1024, 0 being one per hardware thread; `help` says what they do.
+CLI::Option* addThreadsOption(CLI::App& app, int& threads, const std::string& help);
+
 // A named choice: the help shows the names (a|b|c), not the enumerators they map to. Only the
 // names are accepted (in any case): not the numbers behind them.
 template <class Enum>

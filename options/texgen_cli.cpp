@@ -66,11 +66,9 @@ void addTexgenOptions(CLI::App& app, TexgenArguments& a, const std::string& shor
 }
 
 void addTexgenThreadsOption(CLI::App& app, int& threads) {
-  app.add_option("--threads", threads,
-                 "Threads the mesh is read and written with (the library's mapping is also judged with them); 0: one "
-                 "per hardware thread")
-      ->check(CLI::Range(0, 1024))
-      ->default_str("0");
+  addThreadsOption(app, threads,
+                   "Threads the mesh is read and written with (the library's mapping is also judged with them); 0: "
+                   "one per hardware thread");
 }
 
 void addTexgenViewOptions(CLI::App& app, std::string& eye, std::string& center, std::string& up, std::string& model) {

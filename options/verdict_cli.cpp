@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "options/cli_values.h"
 
 namespace uvtk::cli {
 
@@ -38,11 +39,9 @@ void addVerdictOptions(CLI::App& app, VerdictArguments& a) {
 }
 
 void addMapThreadsOption(CLI::App& app, int& threads) {
-  app.add_option("--threads", threads,
-                 "Threads each mesh is read, mapped, judged and written with; 0: one per hardware thread for one "
-                 "mesh, one per mesh of many")
-      ->check(CLI::Range(0, 1024))
-      ->default_str("0");
+  addThreadsOption(app, threads,
+                   "Threads each mesh is read, mapped, judged and written with; 0: one per hardware thread for one "
+                   "mesh, one per mesh of many");
 }
 
 void addMapJudgementOptions(CLI::App& app, int& overlapResolution, std::string& textureSize,

@@ -508,9 +508,7 @@ EvalResult evaluate(const py::object& pointsObject, const py::object& normals, c
     } else {
       mappingKeywords[key] = value;
     }
-  std::vector<uvtk::point::Parameter> parameters;
-  for (const api::Parameter& given : keywordParameters(mappingKeywords).values)
-    parameters.push_back({given.name, given.value, given.place});
+  const std::vector<uvtk::point::Parameter> parameters = keywordParameters(mappingKeywords).values;
 
   py::array_t<double> u(shape), v(shape), w(shape), q(shape);
   py::array_t<std::uint8_t> status(shape);

@@ -14,6 +14,7 @@
 
 #include "uvtk/export.h"
 #include "uvtk/mesh.h"
+#include "uvtk/point.h"
 
 namespace uvtk::api {
 
@@ -22,13 +23,9 @@ namespace uvtk::api {
 // spelling of the name, capAngle for the library, cap_angle for a Python keyword). Nothing
 // (std::monostate) is Python's None: "not given" where a parameter is optional, else a
 // ParameterTypeError. A choice is its name ("cylinder").
-using ParameterValue =
-    std::variant<std::monostate, bool, std::int64_t, double, std::vector<double>, std::string, std::vector<std::string>>;
-struct Parameter {
-  std::string name;
-  ParameterValue value;
-  std::string place;
-};
+// The point API's (uvtk/point.h): one kind of typed parameter for both libraries.
+using ParameterValue = point::ParameterValue;
+using Parameter = point::Parameter;
 struct Parameters {
   // Who gave them, which decides how a message names a parameter: capAngle (the library's
   // fields), cap_angle (a Python keyword), --cap-angle (a command line, as MapOptions::parse reads it).
