@@ -80,9 +80,11 @@ MeshWarnings fromEngine(const uvtk::MeshWarnings& w) {
           w.listedInvalidUvFaces};
 }
 
-Mesh readMesh(const std::string& path, MeshWarnings* warnings) {
+Mesh readMesh(const std::string& path, MeshWarnings* warnings, int threads) {
+  if (threads < 0 || threads > 1024)
+    throw std::invalid_argument("readMesh: threads: expected 0 to 1024, got " + std::to_string(threads));
   return translatingErrors([&] {
-    io::ReadMeshResult read = io::readMesh(path);
+    io::ReadMeshResult read = io::readMesh(path, threads);
     if (warnings) *warnings = fromEngine(read.warnings);
     return fromEngine(read.mesh);
   });

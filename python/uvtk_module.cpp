@@ -771,16 +771,19 @@ first problem. The arrays are copied in; the properties are read-only views.)")
 
   m.def(
       "read_mesh",
-      [](py::object path, bool withWarnings) -> py::object {
+      [](py::object path, bool withWarnings, int threads) -> py::object {
         const std::string file = pathOf("read_mesh", path);
+        if (threads < 0 || threads > 1024) throw py::value_error("read_mesh(): threads: expected 0 to 1024, got " + std::to_string(threads));
         api::MeshWarnings warnings;
-        api::Mesh mesh = interruptible([&] { return api::readMesh(file, &warnings); });
+        api::Mesh mesh = interruptible([&] { return api::readMesh(file, &warnings, threads); });
         py::object result = py::cast(std::move(mesh));
         return withWarnings ? py::make_tuple(result, warningsDict(warnings)) : result;
       },
-      py::arg("path"), py::arg("with_warnings") = false,
-      R"(Reads an OBJ or OFF file as `uvtk map` does: strictly, polygons ear-clipped into triangles.
-Raises uvtk.InputError "PATH:LINE: error: ...". with_warnings=True returns (mesh, warnings dict).)");
+      py::arg("path"), py::arg("with_warnings") = false, py::arg("threads") = 0,
+      R"(Reads a mesh file (.obj, .off, .ply, .stl, .gltf, .glb) as `uvtk map` does: strictly, polygons
+ear-clipped into triangles. Raises uvtk.InputError "PATH:LINE: error: ...". with_warnings=True
+returns (mesh, warnings dict); threads: those parsing a large OBJ (0: one per hardware thread; the
+same mesh).)");
   m.def("check_mesh", [](py::object mesh) { return warningsDict(api::checkMesh(meshOf("check_mesh", mesh))); },
         py::arg("mesh"),
         "What a reader would accept with a warning (degenerate faces, unreferenced vertices, ...), as a dict.");

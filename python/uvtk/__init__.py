@@ -182,6 +182,16 @@ def eval(points, normals=None, mesh=None, **keywords):  # noqa: A001 (uvtk.eval,
     return _uvtk.eval(points, normals, mesh, **keywords)
 
 
+def read_mesh(path: _typing.Union[str, _os.PathLike], with_warnings: bool = False, threads: int = 0):
+    return _uvtk.read_mesh(path, with_warnings, threads)
+
+
+def write_mesh(path: _typing.Union[str, _os.PathLike], mesh, m=None,
+               uv_digits: _typing.Literal["double", "float"] = "double", write_w: bool = False, ascii: bool = False,
+               header: str = "", threads: int = 0) -> None:
+    return _uvtk.write_mesh(path, mesh, m, uv_digits, write_w, ascii, header, threads)
+
+
 def texgen(mesh, options=None, **keywords):
     _nearest(keywords, TEXGEN_OPTIONS)
     return _uvtk.texgen(mesh, options, **keywords)
@@ -207,6 +217,8 @@ def _doc(function):
     return function.__doc__.split("\n", 2)[-1].strip()
 
 
+read_mesh.__doc__ = _doc(_uvtk.read_mesh)
+write_mesh.__doc__ = _doc(_uvtk.write_mesh)
 _MESH = ("mesh", _inspect.Parameter.empty, _typing.Optional[Mesh])
 _ARRAY_LIKE = _npt.ArrayLike if _np else _typing.Any
 _MAPPING = ("m", _inspect.Parameter.empty, Mapping)

@@ -744,6 +744,22 @@ def test_eval_has_a_signature_of_every_keyword_it_takes():
     assert names == {n.replace("-", "_") for n in uvtk._uvtk._eval_parameter_names()} | {"threads"}
 
 
+def test_reading_and_writing_have_signatures_and_threads(tmp_path, meshes_dir):
+    import inspect
+    assert list(inspect.signature(uvtk.read_mesh).parameters) == ["path", "with_warnings", "threads"]
+    assert list(inspect.signature(uvtk.write_mesh).parameters) == [
+        "path", "mesh", "m", "uv_digits", "write_w", "ascii", "header", "threads"]
+    one, two = uvtk.read_mesh(meshes_dir / "torus.obj", threads=1), uvtk.read_mesh(meshes_dir / "torus.obj", threads=2)
+    np.testing.assert_array_equal(one.positions, two.positions)
+    np.testing.assert_array_equal(one.triangles, two.triangles)
+    with pytest.raises(ValueError, match="threads: expected 0 to 1024, got 2000"):
+        uvtk.read_mesh(meshes_dir / "torus.obj", threads=2000)
+    m = uvtk.map(one, projector="sphere")
+    uvtk.write_mesh(tmp_path / "a.obj", one, m, threads=1)
+    uvtk.write_mesh(tmp_path / "b.obj", one, m, threads=2)
+    assert (tmp_path / "a.obj").read_bytes() == (tmp_path / "b.obj").read_bytes()
+
+
 # ---- report, render, compare ----
 
 def test_report_and_compare_keywords_are_typed(tmp_path):

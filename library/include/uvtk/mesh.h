@@ -72,8 +72,8 @@ struct MeshWarnings {
 // Reads a mesh file by its extension (.obj, .off, .ply, .stl, .gltf, .glb; docs/formats.md) as
 // `uvtk map` does: strictly (throws InputError naming the file and the line, byte or JSON
 // pointer), polygons ear-clipped into triangles. `warnings`, when given, receives what was accepted
-// with a warning.
-UVTK_API Mesh readMesh(const std::string& path, MeshWarnings* warnings = nullptr);
+// with a warning. `threads` parse a large OBJ (0: one per hardware thread; the same mesh).
+UVTK_API Mesh readMesh(const std::string& path, MeshWarnings* warnings = nullptr, int threads = 0);
 
 // Checks a mesh built in memory as a reader checks a file: indices within the positions, finite
 // coordinates, corner tables of one entry per triangle. Throws std::invalid_argument naming the
