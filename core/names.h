@@ -2,10 +2,13 @@
 // "did you mean" every face (command line, scenes, Python, the library) gives for a mistyped name.
 #pragma once
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "core/error.h"
 
 namespace uvtk {
 
@@ -26,6 +29,25 @@ std::vector<std::string> namesOf(const ChoiceNames<Value>& table) {
   std::vector<std::string> names;
   for (const auto& entry : table) names.push_back(entry.first);
   return names;
+}
+
+// Each of `items` looked up in `table` (exactly, in order); a UsageError naming `spelled` for an
+// unknown name ("--precision: expected a list of double, float, found "quad"") or for no item.
+template <class Value>
+std::vector<Value> namedValues(const std::vector<std::string>& items, const ChoiceNames<Value>& table,
+                               const std::string& spelled) {
+  std::vector<Value> values;
+  for (const std::string& item : items) {
+    const auto found = std::find_if(table.begin(), table.end(), [&](const auto& entry) { return entry.first == item; });
+    if (found == table.end()) {
+      std::string names;
+      for (const auto& entry : table) names += (names.empty() ? "" : ", ") + entry.first;
+      throw UsageError(spelled + ": expected a list of " + names + ", found \"" + item + "\"");
+    }
+    values.push_back(found->second);
+  }
+  if (values.empty()) throw UsageError(spelled + ": expected at least one value");
+  return values;
 }
 
 // The name among `names` that a mistyped `typed` most likely meant, ignoring case: the nearest by

@@ -55,4 +55,23 @@ std::pair<int, int> parseImageSize(const std::string& text, const std::string& o
   return {w, h};
 }
 
+std::pair<int, int> parseTextureSize(const std::string& text, const std::string& option) {
+  struct {
+    int width = 0, height = 0;
+  } size;
+  char comma = 0, extra = 0;
+  std::istringstream in(text);
+  bool ok = bool(in >> size.width);
+  if (ok && in >> comma) {
+    ok = comma == ',' && in >> size.height && !(in >> extra);
+  } else {
+    size.height = size.width;
+  }
+  // Digits only: istream would also read "+5" or " 5".
+  ok = ok && text.find_first_not_of("0123456789,") == std::string::npos;
+  if (!ok || size.width < 1 || size.height < 1 || size.width > 16384 || size.height > 16384)
+    throw UsageError(option + ": expected W,H or N (N,N) texels with 1 <= W, H <= 16384, found '" + text + "'");
+  return {size.width, size.height};
+}
+
 }  // namespace uvtk

@@ -21,4 +21,8 @@ Mat4 parseMatrix(const std::string& text, const std::string& option);
 // naming `option`.
 std::pair<int, int> parseImageSize(const std::string& text, const std::string& option);
 
+// A texture's size "W,H", or "N" meaning N,N, with 1 <= W, H <= 16384 texels; throws UsageError
+// naming `option`.
+std::pair<int, int> parseTextureSize(const std::string& text, const std::string& option);
+
 }  // namespace uvtk

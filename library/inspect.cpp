@@ -5,6 +5,7 @@
 #include "detail.h"
 #include "inspect/compare.h"
 #include "inspect/frame.h"
+#include "inspect/render_parameters.h"
 #include "inspect/report.h"
 #include "option_fields.h"
 #include "options/compare_cli.h"
@@ -100,15 +101,21 @@ std::vector<std::string> namesOf(const std::vector<Field<Options>>& fields) {
   return names;
 }
 
-struct ReportCommand {
-  CLI::App app;
-  cli::ReportArguments report;
-  explicit ReportCommand(const std::vector<std::string>& words) {
-    cli::addReportOptions(app, report);
-    parseWords(app, words);
-  }
+// A picture's camera, texture and frame, as `uvtk render` reads them; every parameter read.
+struct RenderSettings {
+  inspect::CameraSettings camera;
+  inspect::TextureSettings texture;
+  inspect::FrameSettings frame;
 };
 
+RenderSettings readRenderSettings(const param::ParameterDictionary& parameters) {
+  parameters.checkKnown(namesOf(renderFields()));
+  RenderSettings settings{inspect::readCameraSettings(parameters), inspect::readTextureSettings(parameters, "texture"),
+                          inspect::readFrameSettings(parameters)};
+  return settings;
+}
+
+// `uvtk render`'s options as its parser reads them: the syntax, the help texts.
 struct RenderCommand {
   CLI::App app;
   cli::CameraArguments camera;
@@ -119,9 +126,15 @@ struct RenderCommand {
     cli::addFrameOptions(app, frame);
     cli::addTextureOptions(app, texture, "--texture");
     parseWords(app, words);
-    frame.check("picture.png");
-    camera.check();
-    texture.check();
+  }
+};
+
+struct ReportCommand {
+  CLI::App app;
+  cli::ReportArguments report;
+  explicit ReportCommand(const std::vector<std::string>& words) {
+    cli::addReportOptions(app, report);
+    parseWords(app, words);
   }
 };
 
@@ -154,8 +167,12 @@ ReportOptions ReportOptions::parse(const std::string& commandLine) {
 RenderOptions RenderOptions::parse(const std::string& commandLine) {
   return translatingErrors([&] {
     const std::vector<std::string> words = splitCommandLine(commandLine);
-    RenderCommand{words};
-    return fromWords(words, renderFields());
+    RenderCommand{words};  // the command line's syntax
+    RenderOptions options = fromWords(words, renderFields());
+    Parameters parameters = options.parameters();
+    parameters.face = Parameters::Face::CommandLine;
+    readRenderSettings(toEngine(parameters));  // the engine's checks of each value and the combination
+    return options;
   });
 }
 
@@ -174,6 +191,7 @@ std::vector<OptionDescription> CompareOptions::describe() { return describeField
 std::string ReportOptions::commandLine() const { return joinCommandLine(wordsOf(*this, reportFields())); }
 Parameters ReportOptions::parameters() const { return parametersOf(*this, reportFields()); }
 std::string RenderOptions::commandLine() const { return joinCommandLine(wordsOf(*this, renderFields())); }
+Parameters RenderOptions::parameters() const { return parametersOf(*this, renderFields()); }
 std::string CompareOptions::commandLine() const { return joinCommandLine(wordsOf(*this, compareFields())); }
 Parameters CompareOptions::parameters() const { return parametersOf(*this, compareFields()); }
 
@@ -207,22 +225,24 @@ std::vector<std::uint8_t> Image::bytes() const {
   return out;
 }
 
-Image render(const Mapping& mapping, const RenderOptions& options) {
+Image render(const Mapping& mapping, const RenderOptions& options) { return render(mapping, options.parameters()); }
+
+Image render(const Mapping& mapping, const Parameters& parameters) {
   judgedDetailOf(mapping, "render");
   return translatingErrors([&] {
-    const RenderCommand command(wordsOf(options, renderFields()));
+    const RenderSettings settings = readRenderSettings(toEngine(parameters));
     const inspect::MappedMesh& mapped = mapping.detail->mapped;
-    const inspect::FrameOptions frame = command.frame.options();
+    const inspect::FrameOptions& frame = settings.frame.frame;
     if (frame.needsExact() && !mapped.exact)
       throw UsageError(frame.perPixel ? "--uv per-pixel evaluates a mapping: the file's texture coordinates have none"
                                       : "--view uverror compares with the exact mapping: the file's texture coordinates "
                                         "have none");
-    cli::checkTextureUse(command.frame, command.texture,
-                         mapped.projector ? &*mapped.projector : nullptr);
-    const render::Camera camera = command.camera.make(mapped.mesh, "the mapping's mesh", Mat4::Identity(), frame.width, frame.height);
-    const inspect::BoundTexture texture = frame.samplesTexture() ? command.texture.load() : inspect::BoundTexture{};
+    inspect::checkTextureUse(frame, settings.texture, mapped.projector ? &*mapped.projector : nullptr);
+    const render::Camera camera =
+        settings.camera.make(mapped.mesh, "the mapping's mesh", Mat4::Identity(), frame.width, frame.height);
+    const inspect::BoundTexture texture = frame.samplesTexture() ? settings.texture.load() : inspect::BoundTexture{};
     const render::RenderOptions renderOptions =
-        inspect::renderOptions(frame, command.texture.options(), texture, camera, Mat4::Identity());
+        inspect::renderOptions(frame, settings.texture.options(), texture, camera, Mat4::Identity());
     const analysis::Judgement& judgement = mapping.detail->judgement;
     const inspect::DrawnFrame drawn =
         inspect::drawFrame(frame, mapped, renderOptions, [&]() -> const analysis::Judgement& { return judgement; });

@@ -95,10 +95,12 @@ inspect::ImageCheckRun checkImageFile(CheckArguments a) {
   if (projectorGiven && a.mapping.isTexgen()) throw UsageError("--projector and texgen options exclude each other");
   if (projectorGiven && param::traitsOf(projector.options.surface).isPerspective)
     throw UsageError("--image: --eye, --center and --up are the camera's; --projector camera is not supported");
+  inspect::FrameSettings frameSettings = a.frame.settings();
+  inspect::FrameOptions& frame = frameSettings.frame;
   // A triplanar blend exists per pixel only: drawn so unless --uv asks for the box mapping, as `uvtk render` does.
-  if (projectorGiven && param::traitsOf(projector.options.surface).blendsProjections && !given(app, "--uv"))
-    a.frame.uv = FrameArguments::Uv::PerPixel;
-  if (!projectorGiven && !a.mapping.isTexgen() && a.frame.uv == FrameArguments::Uv::PerPixel)
+  if (projectorGiven && param::traitsOf(projector.options.surface).blendsProjections && !frameSettings.uvGiven)
+    frame.perPixel = true;
+  if (!projectorGiven && !a.mapping.isTexgen() && frame.perPixel)
     throw UsageError("--uv per-pixel evaluates a mapping: give --projector or --texgen");
   // The shared options are the camera's, as in `uvtk render`: taken, and cleared, so that the
   // projector reads no placement origin, reflection eye or camera projector's up and fovy from them.
@@ -110,34 +112,32 @@ inspect::ImageCheckRun checkImageFile(CheckArguments a) {
   for (const char* name : {"--eye", "--center", "--up", "--fovy"}) app->get_option(name)->clear();
   projector.eye.clear(), projector.center.clear(), projector.up.clear();
   a.texture.wrap = given(app, "--wrap") ? a.wrap : "";
-  a.camera.check();
-  a.texture.check();
-  a.texture.wrapMode();
-  checkTextureUse(a.frame, a.texture, projectorGiven ? &projector.options : nullptr);
-  const inspect::FrameOptions frame = a.frame.options();
+  const inspect::CameraSettings camera = a.camera.settings();
+  const inspect::TextureSettings texture = a.texture.settings();
+  inspect::checkTextureUse(frame, texture, projectorGiven ? &projector.options : nullptr);
   if (!a.errorMask.empty()) io::checkImageType(a.errorMask, io::PixelType::UInt8);
-  verify::resolvePrecision(a.precision, render::samplerFor(a.texture.filter, a.texture.wrapMode()), false);
+  verify::resolvePrecision(a.precision, render::samplerFor(texture.filter, texture.wrapMode()), false);
   const Mat4 worldFromObject = a.mapping.model.empty() ? Mat4::Identity() : parseMatrix(a.mapping.model, "--model");
 
   io::ReadMeshResult input = io::readMesh(a.input);
-  const render::Camera camera = a.camera.make(input.mesh, a.input, worldFromObject, frame.width, frame.height);
+  const render::Camera view = camera.make(input.mesh, a.input, worldFromObject, frame.width, frame.height);
   inspect::MappedMesh mapped;
   if (projectorGiven) {  // the reflection O-mapping sees from the camera's eye, as in `uvtk render`
     if (projector.options.ray == param::RayKind::Reflection)
-      projector.options.eye = (worldFromObject.inverse() * camera.eye().homogeneous()).head<3>();
+      projector.options.eye = (worldFromObject.inverse() * view.eye().homogeneous()).head<3>();
     const param::Projector resolved = projector.resolve();
     mapped = inspect::mapByProjector(std::move(input.mesh), resolved.options, resolved.seamPlaceAuto);
   } else if (a.mapping.isTexgen()) {
     a.mapping.texgen.arithmetic = projector.options.arithmetic;
-    mapped = inspect::mapByTexgen(std::move(input.mesh), a.mapping.texgen.resolve(camera.viewFromWorld, worldFromObject));
+    mapped = inspect::mapByTexgen(std::move(input.mesh), a.mapping.texgen.resolve(view.viewFromWorld, worldFromObject));
   } else {
     mapped = inspect::withFileUvs(std::move(input.mesh), a.input);
   }
-  const inspect::BoundTexture texture = a.texture.load();
+  const inspect::BoundTexture bound = texture.load();
   inspect::ImageCheckOptions o;
   o.input = a.input, o.image = a.image, o.errorMask = a.errorMask, o.json = a.json, o.precision = a.precision;
   const inspect::ImageCheckRun run = inspect::checkImageShot(
-      o, mapped, frame, inspect::renderOptions(frame, a.texture.options(), texture, camera, worldFromObject));
+      o, mapped, frame, inspect::renderOptions(frame, texture.options(), bound, view, worldFromObject));
   inspect::printMappingNotes(a.input, input.warnings, mapped);
   return run;
 }

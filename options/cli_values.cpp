@@ -11,23 +11,6 @@
 
 namespace uvtk::cli {
 
-analysis::TextureSize parseTextureSize(const std::string& text, const std::string& option) {
-  analysis::TextureSize size;
-  char comma = 0, extra = 0;
-  std::istringstream in(text);
-  bool ok = bool(in >> size.width);
-  if (ok && in >> comma) {
-    ok = comma == ',' && in >> size.height && !(in >> extra);
-  } else {
-    size.height = size.width;
-  }
-  // Digits only: istream would also read "+5" or " 5".
-  ok = ok && text.find_first_not_of("0123456789,") == std::string::npos;
-  if (!ok || size.width < 1 || size.height < 1 || size.width > 16384 || size.height > 16384)
-    throw UsageError(option + ": expected W,H or N (N,N) texels with 1 <= W, H <= 16384, found '" + text + "'");
-  return size;
-}
-
 CLI::Validator nameCheck(std::vector<std::string> names) {
   return CLI::Validator(
       [names = std::move(names)](const std::string& text) {

@@ -62,26 +62,16 @@ std::vector<std::string> splitList(const std::string& text);
 template <class Enum>
 std::vector<Enum> parseNameList(const std::string& text, const std::vector<std::pair<std::string, Enum>>& table,
                                 const std::string& option) {
-  std::vector<Enum> values;
-  for (const std::string& item : splitList(text)) {
-    const auto found = std::find_if(table.begin(), table.end(), [&](const auto& entry) { return entry.first == item; });
-    if (found == table.end()) {
-      std::string names;
-      for (const auto& entry : table) names += (names.empty() ? "" : ", ") + entry.first;
-      throw UsageError(option + ": expected a list of " + names + ", found \"" + item + "\"");
-    }
-    values.push_back(found->second);
-  }
-  if (values.empty()) throw UsageError(option + ": expected at least one value");
-  return values;
+  return namedValues(splitList(text), table, option);
 }
 
 // Whether the user typed option `name` (rather than leaving its default).
 inline bool given(const CLI::App* app, const char* name) { return app->get_option(name)->count() > 0; }
 
 
-// A texture size "W,H", or "N" meaning N,N, with 1 <= W, H <= 16384 texels; throws UsageError
-// naming `option`.
-analysis::TextureSize parseTextureSize(const std::string& text, const std::string& option);
+inline analysis::TextureSize parseTextureSize(const std::string& text, const std::string& option) {
+  const auto [width, height] = uvtk::parseTextureSize(text, option);
+  return {width, height};
+}
 
 }  // namespace uvtk::cli

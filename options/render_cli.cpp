@@ -17,41 +17,9 @@
 
 namespace uvtk::cli {
 
-const std::vector<std::pair<std::string, render::Filter>> kFilterNames = {
-    {"nearest", render::Filter::Nearest},
-    {"linear", render::Filter::Linear},
-    {"nearest_mipmap_nearest", render::Filter::NearestMipmapNearest},
-    {"linear_mipmap_nearest", render::Filter::LinearMipmapNearest},
-    {"nearest_mipmap_linear", render::Filter::NearestMipmapLinear},
-    {"linear_mipmap_linear", render::Filter::LinearMipmapLinear}};
-const std::vector<std::pair<std::string, render::Wrap>> kWrapNames = {
-    {"repeat", render::Wrap::Repeat},
-    {"clamp_to_edge", render::Wrap::ClampToEdge},
-    {"mirrored_repeat", render::Wrap::MirroredRepeat}};
-const std::vector<std::pair<std::string, render::EnvMode>> kEnvNames = {{"replace", render::EnvMode::Replace},
-                                                                        {"modulate", render::EnvMode::Modulate},
-                                                                        {"decal", render::EnvMode::Decal},
-                                                                        {"blend", render::EnvMode::Blend}};
-const std::vector<std::pair<std::string, render::Cull>> kCullNames = {
-    {"back", render::Cull::Back}, {"front", render::Cull::Front}, {"none", render::Cull::None}};
-
 namespace {
 
-// The AOV channels `list` names ("uv,depth,face,lod" in any order and subset), by their names in
-// Rendering::aovs; throws UsageError for anything else.
-std::vector<std::string> aovChannels(const std::string& list) {
-  std::vector<std::string> channels;
-  for (const std::string& name : splitList(list)) {
-    if (name == "uv") {
-      channels.push_back("u"), channels.push_back("v");
-    } else if (name == "depth" || name == "face" || name == "lod" || name == "cubeface") {
-      channels.push_back(name);
-    } else {
-      throw UsageError("--aov: expected a list of uv, depth, face, lod, cubeface, found '" + name + "'");
-    }
-  }
-  return channels;
-}
+std::vector<double> numbers(const Eigen::VectorXd& vector) { return {vector.data(), vector.data() + vector.size()}; }
 
 }  // namespace
 
@@ -80,55 +48,26 @@ void addCameraOptions(CLI::App& app, CameraArguments& a, bool lookAt) {
       ->type_name("L,R,B,T|auto");
 }
 
-bool CameraArguments::explicitCamera() const {
-  // Explicit when asked for, or when --eye is given without --camera.
-  return app && given(app, "--camera") ? mode == Mode::Explicit : !eye.empty();
+void CameraArguments::addTo(param::ParameterDictionary& p) const {
+  if (app && given(app, "--camera")) p.add("camera", std::string(mode == Mode::Explicit ? "explicit" : "auto"));
+  if (!eye.empty()) p.add("eye", numbers(parseVec3(eye, "--eye")));
+  p.add("center", numbers(parseVec3(center, "--center")));
+  if (!up.empty()) p.add("up", numbers(parseVec3(up, "--up")));
+  p.add("view-dir", numbers(parseVec3(viewDir, "--view-dir")));
+  p.add("fovy", fovy);
+  if (zNear) p.add("near", *zNear);
+  if (zFar) p.add("far", *zFar);
+  if (!ortho.empty()) p.add("ortho", ortho);
 }
 
-void CameraArguments::check() const {
-  const bool manual = explicitCamera();
-  if (manual && eye.empty()) throw UsageError("--camera explicit: expected --eye x,y,z");
-  if (manual && ortho == "auto") throw UsageError("--ortho auto goes with the automatic camera");
-  if (!manual && (zNear || zFar)) throw UsageError("--near and --far go with an explicit camera (--eye)");
-  if (!up.empty()) parseVec3(up, "--up");
-  parseVec3(center, "--center");
-  parseVec3(viewDir, "--view-dir");
-  if (!eye.empty()) parseVec3(eye, "--eye");
-  if (!ortho.empty() && ortho != "auto") parseVec4(ortho, "--ortho");
-}
-
-render::Camera CameraArguments::make(const Mesh& mesh, const std::string& meshFile, const Mat4& worldFromObject, int width,
-                                     int height) const {
-  check();
-  const bool manual = explicitCamera();
-  const Vec3 direction =
-      eye.empty() ? parseVec3(viewDir, "--view-dir") : Vec3(parseVec3(eye, "--eye") - parseVec3(center, "--center"));
-  // Not given: z up along a view direction (report's camera), y up with an eye (gluLookAt's) or when
-  // looking within 18 degrees of the z axis, where z would point almost out of the picture.
-  const bool zUp = eye.empty() && std::fabs(direction.normalized().z()) < 0.95;
-  const Vec3 upDir = !up.empty() ? parseVec3(up, "--up") : zUp ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
-  render::Camera camera;
-  if (!manual) {
-    std::vector<Vec3> world(mesh.positions.size());
-    for (std::size_t v = 0; v < world.size(); ++v)
-      world[v] = (worldFromObject * mesh.positions[v].homogeneous()).head<3>();
-    return render::frameSphere(render::boundingSphere(world), direction, upDir, {ortho == "auto", fovy}, width, height,
-                               meshFile);
-  }
-  camera.width = width;
-  camera.height = height;
-  camera.viewFromWorld = lookAt(parseVec3(eye, "--eye"), parseVec3(center, "--center"), upDir);
-  const double n = zNear.value_or(0.1), f = zFar.value_or(100.0);
-  if (!ortho.empty()) {
-    const Vec4 box = parseVec4(ortho, "--ortho");
-    camera.clipFromView = orthographic(box[0], box[1], box[2], box[3], n, f);
-  } else {
-    camera.clipFromView = perspective(fovy, double(width) / double(height), n, f);
-  }
-  return camera;
+inspect::CameraSettings CameraArguments::settings() const {
+  param::ParameterDictionary p(param::ParameterFace::CommandLine);
+  addTo(p);
+  return inspect::readCameraSettings(p);
 }
 
 void addTextureOptions(CLI::App& app, TextureArguments& a, const std::string& sourceOption) {
+  a.app = &app;
   app.add_option(sourceOption, a.source,
                  "checker:N[:C] (N x N texels in squares of C x C texels, white at texel 0,0), uvgrid[:N], spheremap[:N[:K]], or "
                  "an image file (top row at v = 1); cube maps: cube[:N], cubeindex[:N], cubefaces:PX,NX,PY,NY,PZ,NZ, "
@@ -157,66 +96,39 @@ void addTextureOptions(CLI::App& app, TextureArguments& a, const std::string& so
                "GL's default)");
 }
 
-bool TextureArguments::cubeMap() const { return inspect::isCubeMapSource(source); }
-
-std::vector<std::string> TextureArguments::files() const { return inspect::textureFiles(source); }
-
-void TextureArguments::resolveFiles(const std::function<std::string(const std::string&)>& resolve) {
-  source = inspect::resolveTextureFiles(source, resolve);
+void TextureArguments::addTo(param::ParameterDictionary& p) const {
+  p.add("texture", source);
+  if (!app || given(app, "--filter")) p.add("filter", nameOf(kFilterNames, filter));
+  if (!wrap.empty()) p.add("wrap", wrap);
+  p.add("env", nameOf(kEnvNames, env));
+  p.add("env-color", numbers(parseVec4(envColour, "--env-color")));
+  p.add("seamless", seamless);
+  p.add("two-sided", twoSided);
 }
 
-void TextureArguments::check() const {
-  files();
-  if (seamless && !cubeMap())
-    throw UsageError("--seamless filters cube maps across their edges: '" + source + "' is 2D");
-}
-
-render::Wrap TextureArguments::wrapMode() const {
-  if (wrap.empty()) return cubeMap() ? render::Wrap::ClampToEdge : render::Wrap::Repeat;
-  for (const auto& [name, mode] : kWrapNames)
-    if (name == wrap) return mode;
-  throw UsageError("--wrap: expected repeat, clamp_to_edge or mirrored_repeat, found '" + wrap + "'");
-}
-
-inspect::BoundTexture TextureArguments::load() const {
-  check();
-  return inspect::loadTexture(source, filter);
-}
-
-inspect::TextureOptions TextureArguments::options() const {
-  inspect::TextureOptions o;
-  o.filter = filter;
-  o.wrap = wrapMode();
-  o.env = env;
-  o.envColour = parseVec4(envColour, "--env-color");
-  o.seamless = seamless;
-  o.twoSided = twoSided;
-  return o;
+inspect::TextureSettings TextureArguments::settings() const {
+  param::ParameterDictionary p(param::ParameterFace::CommandLine);
+  addTo(p);
+  return inspect::readTextureSettings(p, "texture");
 }
 
 void addFrameSceneOptions(CLI::App& app, FrameArguments& a) {
+  a.app = &app;
   app.add_option("--size", a.size, "Image size WxH")->capture_default_str();
   addChoice<render::Cull>(app, "--cull", a.cull, kCullNames, "Face culling; front faces are counter-clockwise")
       ->default_str("back");
   app.add_option("--background", a.background, "Background colour r,g,b in [0, 1]")->capture_default_str();
   addChoice<FrameArguments::Uv>(
-      app, "--uv", a.uv,
-      {{"per-vertex", FrameArguments::Uv::PerVertex},
-       {"per-pixel", FrameArguments::Uv::PerPixel},
-       {"baked", FrameArguments::Uv::Baked}},
+      app, "--uv", a.uv, inspect::kUvNames,
       "Interpolate per-vertex texture coordinates, or evaluate the mapping at every pixel; baked: the camera "
       "projector's divided per-vertex (u, v), as an OBJ holds them, instead of its (s, t, q); --projector triplanar "
       "defaults to per-pixel, its blend")
       ->default_str("per-vertex");
-  addChoice<render::Derivatives>(app, "--derivatives", a.derivatives,
-                                 {{"analytic", render::Derivatives::Analytic},
-                                  {"quad-coarse", render::Derivatives::QuadCoarse},
-                                  {"quad-fine", render::Derivatives::QuadFine}},
+  addChoice<render::Derivatives>(app, "--derivatives", a.derivatives, inspect::kDerivativeNames,
                                  "The texture derivatives for the mipmap level: exact, or differences across 2x2 pixel "
                                  "quads as a GPU's dFdxCoarse / dFdxFine (the seam line of per-pixel mappings)")
       ->default_str("analytic");
-  addChoice<render::SeamFix>(app, "--seam-fix", a.seamFix,
-                             {{"none", render::SeamFix::None}, {"grad", render::SeamFix::Grad}, {"tarini", render::SeamFix::Tarini}},
+  addChoice<render::SeamFix>(app, "--seam-fix", a.seamFix, inspect::kSeamFixNames,
                              "With quad derivatives: textureGrad with the analytic derivatives (grad), or Tarini's choice "
                              "of fract(u) or fract(u + 1/2) - 1/2 per pixel (tarini; per-pixel sphere and cylinder)")
       ->default_str("none");
@@ -236,12 +148,7 @@ void addFrameOptions(CLI::App& app, FrameArguments& a) {
                  "Draw inspection views instead: checker, uvgrid, stretch, linf, angle, area, seams, uverror, layout, "
                  "density, weights, blendzone, mipline (several: a contact sheet)")
       ->type_name("NAME[,NAME...]");
-  addChoice<views::View>(app, "--layout-fill", a.layoutFill,
-                         {{"stretch", views::View::Stretch},
-                          {"linf", views::View::Linf},
-                          {"angle", views::View::Angle},
-                          {"area", views::View::Area},
-                          {"density", views::View::Density}},
+  addChoice<views::View>(app, "--layout-fill", a.layoutFill, inspect::kLayoutFillNames,
                          "The measure that fills the triangles of the layout view")
       ->default_str("stretch");
   app.add_option("--texture-size", a.textureSize,
@@ -254,86 +161,45 @@ void addFrameOptions(CLI::App& app, FrameArguments& a) {
       ->capture_default_str();
 }
 
-void FrameArguments::check(const std::string& output) {
-  imageSize();
-  parseVec3(background, "--background");
-  if (!aov.empty()) aovChannels(aov);
-  if (!aov.empty() && aovOutput.empty()) aovOutput = std::filesystem::path(output).replace_extension(".exr").string();
-  if (!aov.empty() && aovOutput == output) throw UsageError("--aov-output must differ from --output");
-  if (!view.empty() && !aov.empty()) throw UsageError("--view and --aov exclude each other");
-  views();
-  densityTexture();
-  if (layoutSize < 16 || layoutSize > 16384) throw UsageError("--layout-size: expected 16 to 16384 pixels");
-  if (checks < 1 || checks > 1024) throw UsageError("--checks: expected 1 to 1024 checks, got " + std::to_string(checks));
-  io::checkImageType(output, io::PixelType::UInt8);
-  if (!aov.empty()) io::checkImageType(aovOutput, io::PixelType::Float);
+void FrameArguments::addSceneTo(param::ParameterDictionary& p) const {
+  p.add("size", size);
+  p.add("cull", nameOf(kCullNames, cull));
+  p.add("background", numbers(parseVec3(background, "--background")));
+  if (app && given(app, "--uv"))
+    p.add("uv", nameOf(inspect::kUvNames, uv));
+  p.add("derivatives", nameOf(inspect::kDerivativeNames, derivatives));
+  p.add("seam-fix", nameOf(inspect::kSeamFixNames, seamFix));
 }
 
-std::pair<int, int> FrameArguments::imageSize() const { return parseImageSize(size, "--size"); }
-
-analysis::TextureSize FrameArguments::densityTexture() const { return parseTextureSize(textureSize, "--texture-size"); }
-
-std::vector<views::View> FrameArguments::views() const {
-  return view.empty() ? std::vector<views::View>() : views::parseViewList(view);
-}
-
-bool FrameArguments::showsMeasures() const {
-  inspect::FrameOptions o;
-  o.views = views();
-  return o.showsMeasures();
-}
-
-bool FrameArguments::needsExact() const {
-  inspect::FrameOptions o;
-  o.views = views();
-  o.perPixel = uv == Uv::PerPixel;
-  return o.needsExact();
-}
-
-inspect::FrameOptions FrameArguments::options() const {
-  inspect::FrameOptions o;
-  std::tie(o.width, o.height) = imageSize();
-  o.cull = cull;
-  o.threads = threads;
-  o.samplesPerPixel = samplesPerPixel;
-  o.background = parseVec3(background, "--background");
-  o.perPixel = uv == Uv::PerPixel;
-  o.baked = uv == Uv::Baked;
-  o.derivatives = derivatives;
-  o.seamFix = seamFix;
-  if (!aov.empty()) o.aovs = aovChannels(aov);
-  o.views = views();
-  o.layoutFill = layoutFill;
-  o.layoutSize = layoutSize;
-  o.bleedLevel = bleedLevel;
-  o.checks = checks;
-  return o;
-}
-
-void checkTextureUse(const FrameArguments& frame, const TextureArguments& texture,
-                     const param::ProjectorOptions* projector) {
-  const bool cube = texture.cubeMap();
-  if (cube && projector && !inspect::writesCubeFaceIds(*projector))
-    throw UsageError(
-        "a cube-map texture needs directions: --texgen, a file's vt, or --projector cube --cube-layout faces; for "
-        "an atlas layout give the layout image as a 2D texture");
-  const std::vector<std::string> aovs = frame.aov.empty() ? std::vector<std::string>() : aovChannels(frame.aov);
-  if (!cube && std::find(aovs.begin(), aovs.end(), "cubeface") != aovs.end())
-    throw UsageError("--aov cubeface: the texture '" + texture.source + "' is 2D, not a cube map");
+inspect::FrameSettings FrameArguments::settings() const {
+  param::ParameterDictionary p(param::ParameterFace::CommandLine);
+  addSceneTo(p);
+  p.add("threads", std::int64_t(threads));
+  p.add("spp", std::int64_t(samplesPerPixel));
+  if (!aov.empty()) p.add("aov", splitList(aov));
+  if (!aovOutput.empty()) p.add("aov-output", aovOutput);
+  if (!view.empty()) p.add("view", view);
+  p.add("layout-fill", nameOf(inspect::kLayoutFillNames, layoutFill));
+  p.add("layout-size", std::int64_t(layoutSize));
+  if (bleedLevel) p.add("bleed-level", std::int64_t(*bleedLevel));
+  p.add("checks", std::int64_t(checks));
+  p.add("texture-size", textureSize);
+  return inspect::readFrameSettings(p);
 }
 
 RenderResult renderMeshFile(RenderJob a) {
   using namespace inspect;
   const bool projectorGiven = given(a.projector.app, "--projector");
   if (projectorGiven && a.texgen.given()) throw UsageError("--projector and texgen options exclude each other");
-  a.frame.check(a.output);  // nothing is written unless every output can be
-  if (!projectorGiven && !a.texgen.given() && a.frame.needsExact())
-    throw UsageError(a.frame.uv == FrameArguments::Uv::PerPixel
-                         ? "--uv per-pixel evaluates a mapping: give --projector or --texgen"
-                         : "--view uverror compares with the exact mapping: give --projector or --texgen");
-  a.camera.check();
-  a.texture.check();
-  checkTextureUse(a.frame, a.texture, projectorGiven ? &a.projector.options : nullptr);
+  FrameSettings frameSettings = a.frame.settings();
+  checkFrameOutputs(frameSettings, a.output);  // nothing is written unless every output can be
+  FrameOptions& frame = frameSettings.frame;
+  if (!projectorGiven && !a.texgen.given() && frame.needsExact())
+    throw UsageError(frame.perPixel ? "--uv per-pixel evaluates a mapping: give --projector or --texgen"
+                                    : "--view uverror compares with the exact mapping: give --projector or --texgen");
+  const CameraSettings cameraSettings = a.camera.settings();
+  const TextureSettings textureSettings = a.texture.settings();
+  checkTextureUse(frame, textureSettings, projectorGiven ? &a.projector.options : nullptr);
   const Mat4 worldFromObject = a.model.empty() ? Mat4::Identity() : parseMatrix(a.model, "--model");
 
   StageClock clock("uvtk render");
@@ -342,8 +208,8 @@ RenderResult renderMeshFile(RenderJob a) {
   const double readMs = clock.stop();
   const nlohmann::json inputSummary = inputJson(a.input, input);
 
-  const auto [width, height] = a.frame.imageSize();
-  const render::Camera camera = a.camera.make(input.mesh, a.input, worldFromObject, width, height);
+  const int width = frame.width, height = frame.height;
+  const render::Camera camera = cameraSettings.make(input.mesh, a.input, worldFromObject, width, height);
   clock.start("texture coordinates", std::to_string(input.mesh.faceCount()) + " faces");
   MappedMesh mapped;
   if (projectorGiven) {
@@ -359,26 +225,27 @@ RenderResult renderMeshFile(RenderJob a) {
   const double uvMs = clock.stop();
 
   clock.start("texture", a.texture.source);
-  const BoundTexture texture = a.frame.options().samplesTexture() ? a.texture.load() : BoundTexture{};
+  const BoundTexture texture = frame.samplesTexture() ? textureSettings.load() : BoundTexture{};
   const double textureMs = clock.stop();
 
   clock.start(a.frame.view.empty() ? "rendering" : "drawing", a.frame.size);
   analysis::Judgement judgement;
-  const auto measured = [&]() -> const analysis::Judgement& { return judgement = mapped.judge({}, 1024, 0, a.frame.densityTexture()); };
+  const auto measured = [&]() -> const analysis::Judgement& { 
+    return judgement = mapped.judge({}, 1024, 0, frameSettings.densityTexture);
+  };
   io::OutputSet outputs;  // the picture, its AOVs and the record, published together
   // A triplanar blend exists per pixel only: drawn so unless --uv asks for the box mapping an OBJ holds.
-  if (projectorGiven && param::traitsOf(a.projector.options.surface).blendsProjections && !given(a.projector.app, "--uv"))
-    a.frame.uv = FrameArguments::Uv::PerPixel;
-  const FrameOptions frame = a.frame.options();
+  if (projectorGiven && param::traitsOf(a.projector.options.surface).blendsProjections && !frameSettings.uvGiven)
+    frame.perPixel = true;
   RenderResult result;
   nlohmann::json& j = result.record;
-  j = writeFrame(outputs, frame, a.output, a.frame.aovOutput, mapped,
-                 renderOptions(frame, a.texture.options(), texture, camera, worldFromObject), measured);
+  j = writeFrame(outputs, frame, a.output, frameSettings.aovOutput, mapped,
+                 renderOptions(frame, textureSettings.options(), texture, camera, worldFromObject), measured);
   clock.stop();
 
   j["input"] = inputSummary;
   j["arithmetic"] = arithmeticJson(a.projector.options.arithmetic);
-  j["texture"]["name"] = a.texture.source;
+  j["texture"]["name"] = textureSettings.source;
   j["milliseconds"]["read"] = readMs;
   j["milliseconds"]["texcoords"] = uvMs;
   j["milliseconds"]["texture"] = textureMs;

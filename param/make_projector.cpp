@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/number_text.h"
 #include "param/surface_traits.h"
 
 namespace uvtk::param {
@@ -80,6 +81,10 @@ const char* const kAtlasOnly[] = {"angle-limit", "margin", "texels-per-unit"};
 
 std::optional<std::array<int, 2>> readTextureSize(const ParameterDictionary& p) {
   if (!p.given("texture-size")) return std::nullopt;
+  if (p.givenAsText("texture-size")) {
+    const auto [width, height] = parseTextureSize(*p.getText("texture-size"), p.spelled("texture-size"));
+    return std::array<int, 2>{width, height};
+  }
   const std::string range = ": expected W,H or N (N,N) texels with 1 <= W, H <= 16384";
   if (p.givenAsNumbers("texture-size")) {
     const Eigen::Vector2d wh = *p.getVector<2>("texture-size");

@@ -37,7 +37,7 @@ struct Projector {
   bool seamPlaceAuto = false;
 };
 
-// "texture-size": W,H or N (N,N) texels, 1 to 16384 each; nothing when not given. The texture the
+// "texture-size": W,H or N (N,N) texels, 1 to 16384 each (numbers, or as text "W,H" or "N"); nothing when not given. The texture the
 // atlas packs for and the judgement counts texel densities in.
 std::optional<std::array<int, 2>> readTextureSize(const ParameterDictionary& parameters);
 

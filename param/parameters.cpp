@@ -155,6 +155,19 @@ std::optional<Eigen::VectorXd> ParameterDictionary::getNumbers(const std::string
   return Eigen::Map<const Eigen::VectorXd>(numbers->data(), n);
 }
 
+std::vector<double> ParameterDictionary::getNumberList(const std::string& name) const {
+  const Parameter* p = find(name);
+  if (!p || std::holds_alternative<std::monostate>(p->value)) return {};
+  std::vector<double> numbers;
+  if (const auto* list = std::get_if<std::vector<double>>(&p->value)) numbers = *list;
+  else if (const std::int64_t* i = std::get_if<std::int64_t>(&p->value)) numbers = {double(*i)};
+  else if (const double* d = std::get_if<double>(&p->value)) numbers = {*d};
+  else wrongKind(*p, "a list of numbers");
+  if (std::any_of(numbers.begin(), numbers.end(), [](double d) { return !std::isfinite(d); }))
+    throw UsageError(p->place + ": expected finite numbers, got " + describe(p->value, face_));
+  return numbers;
+}
+
 std::optional<std::string> ParameterDictionary::getText(const std::string& name) const {
   const Parameter* p = find(name);
   if (!p || std::holds_alternative<std::monostate>(p->value)) return std::nullopt;
@@ -183,15 +196,21 @@ std::optional<std::string> ParameterDictionary::getChoiceText(const std::string&
   throw UsageError(p->place + ": " + notOneOf(*text, names));
 }
 
+void ParameterDictionary::notAParameter(const Parameter& parameter, const std::vector<std::string>& known) const {
+  std::vector<std::string> spelledKnown;
+  for (const std::string& name : known) spelledKnown.push_back(spellName(face_, name));
+  const std::string nearest = nearestName(spellName(face_, parameter.name), spelledKnown);
+  throw UsageError(parameter.place + ": not a parameter here" + (nearest.empty() ? "" : "; did you mean " + nearest + "?"));
+}
+
 void ParameterDictionary::checkAllRead(const std::vector<std::string>& known) const {
-  for (std::size_t i = 0; i < parameters_.size(); ++i) {
-    if (read_[i]) continue;
-    std::vector<std::string> spelledKnown;
-    for (const std::string& name : known) spelledKnown.push_back(spellName(face_, name));
-    const std::string typed = parameters_[i].place;
-    const std::string nearest = nearestName(spellName(face_, parameters_[i].name), spelledKnown);
-    throw UsageError(typed + ": not a parameter here" + (nearest.empty() ? "" : "; did you mean " + nearest + "?"));
-  }
+  for (std::size_t i = 0; i < parameters_.size(); ++i)
+    if (!read_[i]) notAParameter(parameters_[i], known);
+}
+
+void ParameterDictionary::checkKnown(const std::vector<std::string>& known) const {
+  for (const Parameter& parameter : parameters_)
+    if (std::find(known.begin(), known.end(), parameter.name) == known.end()) notAParameter(parameter, known);
 }
 
 }  // namespace uvtk::param

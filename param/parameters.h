@@ -67,6 +67,8 @@ class ParameterDictionary {
   int getInteger(const std::string& name, int fallback, int low, int high) const;
   // `n` finite numbers; nothing where not given or None.
   std::optional<Eigen::VectorXd> getNumbers(const std::string& name, int n) const;
+  // Finite numbers, as many as given (a number alone is a list of one); none where not given.
+  std::vector<double> getNumberList(const std::string& name) const;
   template <int N>
   std::optional<Eigen::Matrix<double, N, 1>> getVector(const std::string& name) const {
     const auto values = getNumbers(name, N);
@@ -88,6 +90,9 @@ class ParameterDictionary {
   // A UsageError naming the first parameter no getter (nor given()) has read, with the nearest
   // of `known` (the names the reader takes) when it looks mistyped.
   void checkAllRead(const std::vector<std::string>& known) const;
+  // A UsageError naming the first parameter that is not among `known`, before any is read (a face
+  // that takes fewer than the reader reads: the library's render takes no AOV file).
+  void checkKnown(const std::vector<std::string>& known) const;
 
   const std::vector<Parameter>& parameters() const { return parameters_; }
 
@@ -95,6 +100,7 @@ class ParameterDictionary {
   const Parameter* find(const std::string& name) const;  // marks it read
   std::optional<std::string> getChoiceText(const std::string& name, const std::vector<std::string>& names) const;
   [[noreturn]] void wrongKind(const Parameter& parameter, const std::string& expected) const;
+  [[noreturn]] void notAParameter(const Parameter& parameter, const std::vector<std::string>& known) const;
 
   ParameterFace face_;
   std::vector<Parameter> parameters_;

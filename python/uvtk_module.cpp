@@ -114,63 +114,13 @@ std::string pathOf(const char* function, py::handle object) {
   return path;
 }
 
-// ---- keywords -> the command line's words ----
-
-// `word` as splitCommandLine reads it back: plain, or in single quotes.
-std::string quoted(const std::string& word) {
-  if (!word.empty() && word.find_first_of(" \t\n'\"\\") == std::string::npos) return word;
-  std::string text = "'";
-  for (const char c : word) text += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return text + "'";
-}
+// ---- keywords -> typed parameters ----
 
 // numpy scalars and arrays become Python numbers and lists, paths (os.PathLike) strings.
 py::object plain(py::handle value) {
   if (py::hasattr(value, "__fspath__")) return py::module_::import("os").attr("fspath")(value);
   if (!py::isinstance<py::str>(value) && py::hasattr(value, "tolist")) return value.attr("tolist")();
   return py::reinterpret_borrow<py::object>(value);
-}
-
-// A number as the command line spells it: repr() of a float reads back as the same double.
-std::string numberText(const std::string& option, py::handle value) {
-  if (py::isinstance<py::bool_>(value) || !(py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value)))
-    throw py::type_error(option + ": expected numbers, got " + py::repr(value).cast<std::string>());
-  return py::isinstance<py::int_>(value) ? py::str(value).cast<std::string>() : py::repr(value).cast<std::string>();
-}
-
-// The keywords as a command line: cap_angle=30 -> "--cap-angle=30", True -> the flag, False and
-// None -> nothing, numbers -> "a,b,c" (size=(w, h) -> "WxH"), a list of strings -> the option
-// repeated, "" -> "--name ''". "--name=value" keeps a value such as "-1,0,0" from reading as an option.
-std::string commandLine(const py::kwargs& kwargs) {
-  std::string line;
-  auto add = [&line](const std::string& word) { line += (line.empty() ? "" : " ") + quoted(word); };
-  for (const auto& [key, rawValue] : kwargs) {
-    std::string name = key.cast<std::string>();
-    const bool isSize = name == "size";
-    for (char& c : name) c = c == '_' ? '-' : c;
-    name = "--" + name;
-    const py::object value = plain(rawValue);
-    if (value.is_none()) continue;
-    if (py::isinstance<py::bool_>(value)) {
-      if (value.cast<bool>()) add(name);
-    } else if (py::isinstance<py::str>(value)) {
-      const std::string text = value.cast<std::string>();
-      if (text.empty()) add(name), add(text);  // "--view=" would read the next word as its value
-      else add(name + "=" + text);
-    } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
-      const py::sequence items = value;
-      if (items.size() > 0 && py::isinstance<py::str>(items[0])) {
-        for (const py::handle item : items) add(name + "=" + py::str(item).cast<std::string>());
-      } else if (items.size() > 0) {
-        std::string text;
-        for (const py::handle item : items) text += (text.empty() ? "" : isSize ? "x" : ",") + numberText(name, item);
-        add(name + "=" + text);
-      }
-    } else {
-      add(name + "=" + numberText(name, value));
-    }
-  }
-  return line;
 }
 
 // The keywords as typed parameters, each named by its keyword in messages: True and False are
@@ -677,10 +627,9 @@ PYBIND11_MODULE(_uvtk, m) {
 
 The Python face of the C++ library (docs/python.md): the numbers are those of the `uvtk` command
 line, bit for bit. Options are keywords named as the command line's options (cap_angle=30 is
---cap-angle 30). map's, texgen's, eval's, report's and compare's keywords reach the engine as
-typed values (True is a flag, 0 is False, a str where a number belongs is a TypeError), read by
-the function the command line's options reach; render's still go through the command line's
-parser. Either way the messages name the keyword.)";
+--cap-angle 30). Keywords reach the engine as typed values (True is a flag, 0 is False, a str where
+a number belongs is a TypeError), read by the function the command line's options reach; the
+messages name the keyword.)";
 
   py::register_exception<api::InputError>(m, "InputError", PyExc_Exception)
       .doc() = "A file could not be read: 'PATH:LINE: error: ...' (the command line's exit 3).";
@@ -1022,11 +971,11 @@ views=, size=(w, h), texture_size=, threads=.)");
         if (dtype != "uint8" && dtype != "float32")
           throw py::value_error("render: dtype is '" + dtype + "', expected uint8 or float32");
         const api::Mapping& mapped = mappingFor("render", mesh, mapping);
-        const api::RenderOptions options = api::RenderOptions::parse(commandLine(kwargs));
+        const api::Parameters parameters = keywordParameters(kwargs);
         api::Image image;
         std::vector<std::uint8_t> bytes;
         interruptible([&] {
-          image = api::render(mapped, options);
+          image = api::render(mapped, parameters);
           if (dtype == "uint8") bytes = image.bytes();
         });
         const Shape shape{image.height, image.width, image.channels};

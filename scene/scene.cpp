@@ -13,13 +13,13 @@
 #include "io/mesh_format.h"
 #include "io/mesh_writer.h"
 #include "inspect/mapping_parameters.h"
-#include "options/cli_values.h"
-#include "options/projector_cli.h"
+#include "param/make_projector.h"
+#include "param/surface_traits.h"
+#include "timing/bench.h"
 #include "render/procedural.h"
 
 namespace uvtk::scene {
 
-using namespace uvtk::cli;
 using namespace uvtk::inspect;
 using namespace uvtk::timing;
 
@@ -27,22 +27,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-// The text a command-line option takes for a JSON value: arrays as comma-separated lists, integral
-// numbers without a fraction (so that 4.0 reads as the integer 4), others in round-trip digits.
-std::string optionText(const json& value) {
-  if (value.is_string()) return value.get<std::string>();
-  if (value.is_array()) {
-    std::string text;
-    for (const json& item : value) text += (text.empty() ? "" : ",") + optionText(item);
-    return text;
-  }
-  if (value.is_number_float()) {
-    const double d = value.get<double>();
-    if (std::isfinite(d) && d == std::floor(d) && std::abs(d) < 9007199254740992.0) return json(std::int64_t(d)).dump();
-  }
-  return value.dump();
-}
 
 // "--axis-dir" in a message becomes the scene's key "axis_dir".
 std::string keysForOptions(const std::string& message) {
@@ -90,29 +74,6 @@ class SceneReader {
     try {
       return check();
     } catch (const UsageError& e) {
-      fail(pointer, keysForOptions(e.what()));
-    }
-  }
-
-  // Parses the keys of `object` (but `sceneKeys`) as the options of `parser`: key "k_l" is --k-l,
-  // true sets a flag.
-  void parseOptions(CLI::App& parser, const json& object, const std::set<std::string>& sceneKeys,
-                    const std::string& pointer) const {
-    std::vector<std::string> arguments;
-    for (const auto& [key, value] : object.items()) {
-      if (sceneKeys.count(key)) continue;
-      std::string option = "--" + key;
-      std::replace(option.begin(), option.end(), '_', '-');
-      if (value.is_boolean()) {
-        if (value.get<bool>()) arguments.push_back(option);
-      } else {
-        arguments.push_back(option + "=" + optionText(value));
-      }
-    }
-    std::reverse(arguments.begin(), arguments.end());  // CLI11 takes them last first
-    try {
-      parser.parse(arguments);
-    } catch (const CLI::ParseError& e) {
       fail(pointer, keysForOptions(e.what()));
     }
   }
@@ -214,8 +175,6 @@ class SceneReader {
     for (std::size_t i = 0; i < doc.value("textures", none).size(); ++i)
       scene.textures.push_back(texture(doc["textures"][i], "/textures/" + std::to_string(i)));
     checkUnique(scene.textures, "texture");
-    scene.defaultTextureParser = std::make_shared<CLI::App>();
-    addTextureOptions(*scene.defaultTextureParser, scene.defaultTexture, "--source");
     for (std::size_t i = 0; i < doc["meshes"].size(); ++i) mesh(doc["meshes"][i], i, scene);
     checkUnique(scene.meshes, "mesh");
     checkUnique(scene.mappings, "mapping");
@@ -230,10 +189,12 @@ class SceneReader {
     SceneCamera c;
     c.name = j["name"];
     c.pointer = pointer;
-    c.parser = std::make_shared<CLI::App>();
-    addCameraOptions(*c.parser, c.arguments);
-    parseOptions(*c.parser, j, {"name"}, pointer);
-    at(pointer, [&] { c.arguments.check(); });
+    const param::ParameterDictionary parameters = sceneParameters(j, {"name"}, pointer);
+    c.settings = at(pointer, [&] {
+      const inspect::CameraSettings made = inspect::readCameraSettings(parameters);
+      parameters.checkAllRead(inspect::cameraParameterNames());
+      return made;
+    });
     return c;
   }
 
@@ -241,14 +202,13 @@ class SceneReader {
     SceneTexture t;
     t.name = j["name"];
     t.pointer = pointer;
-    t.parser = std::make_shared<CLI::App>();
-    addTextureOptions(*t.parser, t.arguments, "--source");
-    parseOptions(*t.parser, j, {"name"}, pointer);
-    at(pointer + "/source", [&] {
-      t.arguments.resolveFiles([&](const std::string& file) { return input(file, pointer + "/source"); });
-      t.arguments.check();
+    const param::ParameterDictionary parameters = sceneParameters(j, {"name"}, pointer);
+    t.settings = at(pointer, [&] {
+      const inspect::TextureSettings made = inspect::readTextureSettings(parameters, "source");
+      parameters.checkAllRead(inspect::textureParameterNames("source"));
+      return made;
     });
-    at(pointer + "/env_color", [&] { parseVec4(t.arguments.envColour, "--env-color"); });
+    t.settings.resolveFiles([&](const std::string& file) { return input(file, pointer + "/source"); });
     return t;
   }
 
@@ -306,7 +266,6 @@ class SceneReader {
   SceneOutput output(const json& j, const std::string& pointer, const Scene& scene) const {
     SceneOutput o;
     o.pointer = pointer;
-    o.parser = std::make_shared<CLI::App>();
     o.path = output(j.value("path", ""), pointer + "/path");
     if (j.contains("mapping")) o.mapping = find(scene.mappings, j["mapping"], "mapping", pointer + "/mapping");
     if (j.contains("mesh")) o.mesh = find(scene.meshes, j["mesh"], "mesh", pointer + "/mesh");
@@ -325,21 +284,27 @@ class SceneReader {
       at(pointer + "/path", [&] { io::checkMeshOutput(o.path, o.write, "path"); });
     } else if (kind == "render") {
       o.kind = SceneOutput::Kind::Render;
-      addFrameOptions(*o.parser, o.frame);
-      parseOptions(*o.parser, j, {"kind", "mapping", "camera", "texture", "path", "json"}, pointer);
-      // The AOV file by default is the picture's with .exr (as FrameArguments::check names it), checked as given.
+      const param::ParameterDictionary parameters =
+          sceneParameters(j, {"kind", "mapping", "camera", "texture", "path", "json"}, pointer);
+      o.frame = at(pointer, [&] {
+        const inspect::FrameSettings made = inspect::readFrameSettings(parameters);
+        parameters.checkAllRead(inspect::frameParameterNames());
+        return made;
+      });
+      // The AOV file by default is the picture's with .exr (as checkFrameOutputs names it), checked as given.
       const bool aovNamed = !o.frame.aovOutput.empty();
-      if (!o.frame.aov.empty() && !aovNamed)
+      if (!o.frame.frame.aovs.empty() && !aovNamed)
         o.frame.aovOutput = fs::path(j.value("path", "")).replace_extension(".exr").string();
       o.frame.aovOutput = output(o.frame.aovOutput, pointer + (aovNamed ? "/aov_output" : "/path"));
-      at(pointer, [&] { o.frame.check(o.path); });
+      at(pointer, [&] { checkFrameOutputs(o.frame, o.path); });
       const SceneMapping& mapping = scene.mappings[*o.mapping];
-      const TextureArguments& texture = o.texture ? scene.textures[*o.texture].arguments : scene.defaultTexture;
+      const TextureSettings& texture = o.texture ? scene.textures[*o.texture].settings : scene.defaultTexture;
       at(pointer, [&] {
-        checkTextureUse(o.frame, texture, mapping.kind == SceneMapping::Kind::Projector ? &mapping.projector : nullptr);
+        checkTextureUse(o.frame.frame, texture,
+                        mapping.kind == SceneMapping::Kind::Projector ? &mapping.projector : nullptr);
       });
-      if (o.frame.needsExact() && scene.mappings[*o.mapping].kind == SceneMapping::Kind::File)
-        fail(pointer, std::string(o.frame.uv == FrameArguments::Uv::PerPixel ? "uv per-pixel" : "view uverror") +
+      if (o.frame.frame.needsExact() && scene.mappings[*o.mapping].kind == SceneMapping::Kind::File)
+        fail(pointer, std::string(o.frame.frame.perPixel ? "uv per-pixel" : "view uverror") +
                           " evaluates the mapping at every pixel, and mapping \"" + scene.mappings[*o.mapping].name +
                           "\" is the file's own UVs");
     } else if (kind == "report") {
@@ -382,11 +347,11 @@ class SceneReader {
   timing::BenchOptions bench(const json& j, const std::string& pointer, const SceneOutput& o,
                               const Scene& scene) const {
     if (j.contains("mesh") == j.contains("mapping")) fail(pointer, "expected mesh or mapping, one of them");
-    timing::BenchArguments arguments;
-    arguments.minTime = 0.01;  // a look at the trade beside the pictures, not a measurement to publish
-    CLI::App parser;
-    timing::addBenchOptions(parser, arguments);
-    parseOptions(parser, j, {"kind", "mesh", "mapping", "path"}, pointer);
+    // The output files are checked as a scene's (their folders are created when the scene runs).
+    param::ParameterDictionary parameters =
+        sceneParameters(j, {"kind", "mesh", "mapping", "path", "json", "markdown", "plot"}, pointer);
+    // A look at the trade beside the pictures, not a measurement to publish.
+    if (!j.contains("min_time")) parameters.add("min-time", 0.01);
     const SceneMapping* mapping = o.mapping ? &scene.mappings[*o.mapping] : nullptr;
     if (mapping) {
       for (const char* key : {"projector", "omap"})
@@ -400,17 +365,18 @@ class SceneReader {
         fail(pointer + "/mapping", "mapping \"" + mapping->name +
                                        "\" chooses a projection per triangle; `uvtk bench` times per-vertex mappings");
     }
-    arguments.mesh = scene.meshes[mapping ? mapping->mesh : *o.mesh].path;
-    arguments.noEndToEnd = true;
-    // Checked without the files: their folders are created when the scene runs.
-    timing::BenchArguments unwritten = arguments;
-    unwritten.json = unwritten.markdown = unwritten.plot = unwritten.html = "";
-    timing::BenchOptions options = at(pointer, [&] { return unwritten.resolve(); });
+    parameters.add("mesh", scene.meshes[mapping ? mapping->mesh : *o.mesh].path);
+    parameters.add("no-end-to-end", true);
+    timing::BenchOptions options = at(pointer, [&] {
+      timing::BenchOptions made = timing::readBenchOptions(parameters);
+      parameters.checkAllRead(timing::benchParameterNames());
+      return made;
+    });
     if (mapping) options.projectors = {{mapping->name, mapping->projector}};
     options.html = o.path;
-    options.json = output(arguments.json, pointer + "/json");
-    options.markdown = output(arguments.markdown, pointer + "/markdown");
-    options.plot = output(arguments.plot, pointer + "/plot");
+    options.json = output(j.value("json", ""), pointer + "/json");
+    options.markdown = output(j.value("markdown", ""), pointer + "/markdown");
+    options.plot = output(j.value("plot", ""), pointer + "/plot");
     return options;
   }
 
@@ -457,7 +423,7 @@ std::vector<std::string> SceneOutput::files() const {
   add(path);
   if (kind == Kind::Mesh && io::meshFormatOf(path) == io::MeshFormat::gltf) add(io::gltfBufferPath(path));
   add(json);
-  if (kind == Kind::Render && !frame.aov.empty()) add(frame.aovOutput);
+  if (kind == Kind::Render && !frame.frame.aovs.empty()) add(frame.aovOutput);
   if (kind == Kind::Report) add(report.json), add(report.html);
   if (kind == Kind::Compare) add(compare.json), add(compare.markdown), add(compare.sheet), add(compare.writeBest);
   if (kind == Kind::Bench) add(bench.json), add(bench.markdown), add(bench.plot);

@@ -1,11 +1,10 @@
 // A scene file (schema/scene.schema.json): meshes with their mappings, cameras, textures and the
 // outputs to write, read and checked completely before any work starts. A projector mapping's keys
 // are typed parameters read by param::makeProjector, as the command line's options are (key
-// "axis_dir" is --axis-dir); the other option objects are parsed by the very option parser of the
-// subcommand they mirror, so a scene can say exactly what the command line can, checked the same way.
+// "axis_dir" is --axis-dir), and so are the other objects' (read by the readers the subcommands they
+// mirror use), so a scene can say exactly what the command line can, checked the same way.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -19,7 +18,7 @@
 #include "timing/bench.h"
 #include "io/mesh_writer.h"
 #include "param/projector.h"
-#include "options/render_cli.h"
+#include "inspect/render_parameters.h"
 #include "inspect/report.h"
 #include "texgen/texgen.h"
 
@@ -50,14 +49,12 @@ struct SceneMapping {
 
 struct SceneCamera {
   std::string name, pointer;
-  cli::CameraArguments arguments;
-  std::shared_ptr<CLI::App> parser;
+  inspect::CameraSettings settings;
 };
 
 struct SceneTexture {
   std::string name, pointer;
-  cli::TextureArguments arguments;
-  std::shared_ptr<CLI::App> parser;
+  inspect::TextureSettings settings;  // its files resolved against the scene's folder
 };
 
 struct SceneOutput {
@@ -67,12 +64,11 @@ struct SceneOutput {
   std::optional<std::size_t> mapping, mesh, camera, texture;
   std::string path, json;     // mesh, render, gallery: the file; mesh, render: the summary JSON
   io::MeshWriteOptions write;  // mesh (the header is set when written)
-  cli::FrameArguments frame;                      // render
+  inspect::FrameSettings frame;                   // render
   inspect::ReportOptions report;                  // report
   inspect::CompareOptions compare;                // compare (the scene's thresholds are set when it runs)
   timing::BenchOptions bench;                    // bench: `uvtk bench` of the mesh, html = path
   std::string title;                         // gallery
-  std::shared_ptr<CLI::App> parser;
 
   std::vector<std::string> files() const;  // every file it writes
 };
@@ -85,8 +81,7 @@ struct Scene {
   std::vector<SceneTexture> textures;
   std::vector<SceneOutput> outputs;
   analysis::Thresholds thresholds;  // the verdict's, for every mapping ("thresholds")
-  cli::TextureArguments defaultTexture;  // for render outputs that name none
-  std::shared_ptr<CLI::App> defaultTextureParser;
+  inspect::TextureSettings defaultTexture;  // for render outputs that name none
 };
 
 // Reads and checks the scene at `path`: against the schema, then names and references, input

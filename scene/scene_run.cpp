@@ -26,7 +26,6 @@
 
 namespace uvtk::scene {
 
-using namespace uvtk::cli;
 using namespace uvtk::inspect;
 using namespace uvtk::timing;
 
@@ -62,23 +61,36 @@ std::string joined(const std::vector<std::string>& items) {
   return text;
 }
 
-const TextureArguments& textureOf(const Scene& scene, std::size_t index) {
-  return index < scene.textures.size() ? scene.textures[index].arguments : scene.defaultTexture;
+const TextureSettings& textureOf(const Scene& scene, std::size_t index) {
+  return index < scene.textures.size() ? scene.textures[index].settings : scene.defaultTexture;
+}
+
+// The names of what `frame` draws: views, or AOVs ("uv" for the channels u and v).
+std::string viewNames(const FrameOptions& frame) {
+  std::string names;
+  for (const views::View view : frame.views) names += (names.empty() ? "" : ",") + std::string(views::toString(view));
+  return names;
+}
+std::string aovNames(const FrameOptions& frame) {
+  std::string names;
+  for (const std::string& channel : frame.aovs)
+    if (channel != "v") names += (names.empty() ? "" : ",") + (channel == "u" ? std::string("uv") : channel);
+  return names;
 }
 
 // What a render output computes beyond rasterising the mesh with its texture coordinates.
 std::vector<std::string> renderComputes(const Scene& scene, const SceneOutput& o) {
   const SceneMapping& mapping = scene.mappings[*o.mapping];
-  const FrameArguments& f = o.frame;
+  const FrameOptions& f = o.frame.frame;
   std::vector<std::string> computes;
-  if (!f.view.empty()) computes.push_back("views " + f.view);
+  if (!f.views.empty()) computes.push_back("views " + viewNames(f));
   if (f.needsExact()) computes.push_back("exact UVs per pixel");
-  if (f.view.empty()) {
+  if (f.views.empty()) {
     const bool lit = render::readsFragmentColour(textureOf(scene, o.texture.value_or(scene.textures.size())).env);
     if (lit) computes.push_back("lighting (corner normals)");
-    if (!lit && f.uv == FrameArguments::Uv::PerPixel && mapping.needsNormals()) computes.push_back("corner normals");
+    if (!lit && f.perPixel && mapping.needsNormals()) computes.push_back("corner normals");
     if (f.samplesPerPixel > 1) computes.push_back(std::to_string(f.samplesPerPixel) + " samples per pixel");
-    if (!f.aov.empty()) computes.push_back("AOVs " + f.aov);
+    if (!f.aovs.empty()) computes.push_back("AOVs " + aovNames(f));
   }
   return computes;
 }
@@ -350,7 +362,7 @@ class SceneRunner {
       case SceneMapping::Kind::Texgen: {
         const Mat4& model = scene_.meshes[m.mesh].model;
         // A camera's view as framed for a 512 x 512 picture (framing depends on the aspect only through the distance).
-        const Mat4 view = m.camera ? Mat4(scene_.cameras[*m.camera].arguments.make(mesh, scene_.meshes[m.mesh].path, model, 512, 512).viewFromWorld)
+        const Mat4 view = m.camera ? Mat4(scene_.cameras[*m.camera].settings.make(mesh, scene_.meshes[m.mesh].path, model, 512, 512).viewFromWorld)
                                    : m.viewFromWorld;
         return mapByTexgen(std::move(mesh), texgen::drawnUnder(m.texgen, view, model));
       }
@@ -376,18 +388,17 @@ class SceneRunner {
     const MappedMesh& mapped = work.mapped.at(*o.mapping);
     const SceneMesh& sceneMesh = scene_.meshes[scene_.mappings[*o.mapping].mesh];
     const Mat4& model = sceneMesh.model;
-    const auto [width, height] = o.frame.imageSize();
-    const CameraArguments& arguments = o.camera ? scene_.cameras[*o.camera].arguments : CameraArguments{};
-    const render::Camera camera = arguments.make(mapped.mesh, sceneMesh.path, model, width, height);
+    const FrameOptions& frame = o.frame.frame;
+    const CameraSettings settings = o.camera ? scene_.cameras[*o.camera].settings : CameraSettings{};
+    const render::Camera camera = settings.make(mapped.mesh, sceneMesh.path, model, frame.width, frame.height);
     const std::size_t texture = o.texture.value_or(scene_.textures.size());
     const analysis::Judgement* judged = nullptr;  // on the first call only
     const auto judgement = [&]() -> const analysis::Judgement& {
       if (!judged)
         judged = &judgementFor(work.judgements.at({*o.mapping, kViewsOverlapResolution}), mapped,
-                               kViewsOverlapResolution, o.frame.densityTexture());
+                               kViewsOverlapResolution, o.frame.densityTexture);
       return *judged;
     };
-    const FrameOptions frame = o.frame.options();
     json record = writeFrame(outputs, frame, o.path, o.frame.aovOutput, mapped,
                              renderOptions(frame, textureOf(scene_, texture).options(), textures_.at(texture), camera, model),
                              judgement);
@@ -443,7 +454,7 @@ std::vector<Stage> planScene(const Scene& s) {
   // --json`), and every picture a gallery labels with its verdict.
   const auto judged = [gallery](const SceneOutput& o) {
     return o.kind == SceneOutput::Kind::Mesh ||
-           (o.kind == SceneOutput::Kind::Render && (gallery || o.frame.showsMeasures()));
+           (o.kind == SceneOutput::Kind::Render && (gallery || o.frame.frame.showsMeasures()));
   };
   for (const SceneOutput& o : s.outputs) {
     if (o.kind == SceneOutput::Kind::Bench) continue;  // it reads its mesh itself
@@ -460,7 +471,7 @@ std::vector<Stage> planScene(const Scene& s) {
   for (std::size_t t = 0; t <= defaultTexture; ++t)
     if (textureUsed[t]) {
       textureStage[t] = plan.size();
-      const TextureArguments& texture = textureOf(s, t);
+      const TextureSettings& texture = textureOf(s, t);
       plan.push_back(
           {Stage::Kind::Texture,
            t,

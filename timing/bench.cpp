@@ -27,11 +27,10 @@
 #include "inspect/html_page.h"
 #include "inspect/map_job.h"
 #include "meshes/generators.h"
-#include "options/cli_values.h"
 #include "inspect/projector_json.h"
 #include "param/projector_names.h"
-#include "options/projector_cli.h"
-#include "options/render_cli.h"
+#include "inspect/render_parameters.h"
+#include "param/surface_traits.h"
 #include "param/batch_atan2.h"
 #include "param/uv_kernel.h"
 #include "param/reference.h"
@@ -374,16 +373,16 @@ std::vector<nlohmann::json> benchRendering(const BenchOptions& a, const Mesh& me
                        {"width", a.frame.width},
                        {"height", a.frame.height},
                        {"camera", a.camera.explicitCamera() ? "explicit" : "auto"},
-                       {"projection", a.camera.ortho.empty() ? "perspective" : "orthographic"},
+                       {"projection", a.camera.orthographic() ? "orthographic" : "perspective"},
                        {"eye", {eye.x(), eye.y(), eye.z()}},
                        {"texture", a.textureSource},
-                       {"wrap", nameOf(cli::kWrapNames, a.textureOptions.wrap)},
-                       {"env", nameOf(cli::kEnvNames, a.textureOptions.env)},
+                       {"wrap", nameOf(kWrapNames, a.textureOptions.wrap)},
+                       {"env", nameOf(kEnvNames, a.textureOptions.env)},
                        {"seamless", a.textureOptions.seamless},
                        {"two_sided", a.textureOptions.twoSided},
-                       {"cull", nameOf(cli::kCullNames, a.frame.cull)},
+                       {"cull", nameOf(kCullNames, a.frame.cull)},
                        {"background", {a.frame.background.x(), a.frame.background.y(), a.frame.background.z()}},
-                       {"filter", nameOf(cli::kFilterNames, c.filter)},
+                       {"filter", nameOf(kFilterNames, c.filter)},
                        {"uv", c.uv},
                        {"spp", c.spp},
                        {"threads", c.threads},
@@ -539,108 +538,117 @@ std::string withSuffix(const std::string& path, const std::string& suffix) {
   return dot == std::string::npos ? path + suffix : path.substr(0, dot) + suffix + path.substr(dot);
 }
 
-// A comma-separated list of whole numbers in [low, high].
-std::vector<int> parseCounts(const std::string& text, const std::string& option, int low, int high) {
+// Whole numbers in [low, high], each; `fallback` when not given.
+std::vector<int> counts(const param::ParameterDictionary& p, const std::string& name, int low, int high,
+                        std::vector<int> fallback) {
+  if (!p.given(name)) return fallback;
   std::vector<int> values;
-  for (double v : cli::parseNumbers(text, int(std::count(text.begin(), text.end(), ',')) + 1, option)) {
+  for (const double v : p.getNumberList(name)) {
     if (v != std::floor(v) || v < low || v > high)
-      throw UsageError(option + ": expected whole numbers in [" + std::to_string(low) + ", " + std::to_string(high) +
-                       "]");
+      throw UsageError(p.spelled(name) + ": expected whole numbers in [" + std::to_string(low) + ", " +
+                       std::to_string(high) + "]");
     values.push_back(int(v));
   }
+  if (values.empty()) throw UsageError(p.spelled(name) + ": expected at least one value");
   return values;
+}
+
+// The values a list of names gives; `fallback`'s names when not given.
+template <class Value>
+std::vector<Value> choices(const param::ParameterDictionary& p, const std::string& name, const ChoiceNames<Value>& table,
+                           const std::vector<std::string>& fallback) {
+  return namedValues(p.given(name) ? p.getTexts(name) : fallback, table, p.spelled(name));
+}
+
+// A projector with its default options, by name and O-mapping.
+param::ProjectorOptions projectorNamed(const param::ParameterDictionary& p, const std::string& name,
+                                       const std::string& surface, param::RayKind ray) {
+  param::ProjectorOptions o;
+  o.surface = namedValues({surface}, param::kSurfaceNames, p.spelled(name)).at(0);
+  o.ray = ray;
+  return o;
 }
 
 }  // namespace
 
-BenchOptions BenchArguments::resolve() const {
-  if (!(minTime > 0)) throw UsageError("--min-time: expected seconds > 0");
-  if (textureWidth < 1) throw UsageError("--texture-width: expected a positive number of texels");
+BenchOptions readBenchOptions(const param::ParameterDictionary& p) {
+  BenchOptions o;
+  o.mesh = p.getText("mesh").value_or("");
+  o.minTime = p.getNumber("min-time", o.minTime);
+  if (!(o.minTime > 0)) throw UsageError(p.spelled("min-time") + ": expected seconds > 0");
+  o.textureWidth = p.getInteger("texture-width", o.textureWidth, std::numeric_limits<int>::min(),
+                                std::numeric_limits<int>::max());
+  if (o.textureWidth < 1) throw UsageError(p.spelled("texture-width") + ": expected a positive number of texels");
+  o.json = p.getText("json").value_or("");
+  o.markdown = p.getText("markdown").value_or("");
+  o.plot = p.getText("plot").value_or("");
+  o.html = p.getText("html").value_or("");
   // Every output's folder is checked before the first measurement.
-  for (const std::string* path : {&json, &markdown, &plot, &html}) {
+  for (const std::string* path : {&o.json, &o.markdown, &o.plot, &o.html}) {
     const std::filesystem::path folder = std::filesystem::path(*path).parent_path();
     std::error_code error;
     if (!path->empty() && !folder.empty() && !std::filesystem::is_directory(folder, error))
       throw UsageError(*path + ": the folder " + folder.string() + " does not exist");
   }
-  BenchOptions o;
-  o.precisions = cli::parseNameList(precisions, param::kPrecisionNames, "--precision");
-  o.maths = cli::parseNameList(maths, param::kMathNames, "--math");
-  o.threads = parseCounts(threads, "--threads", 1, 256);
-  cli::projectorNamed("plane", omap);  // a bad --omap is named before a bad projector
-  for (const std::string& projector : cli::splitList(projectors)) {
-    o.projectors.push_back({projector, cli::projectorNamed(projector, omap)});
+  o.precisions = choices(p, "precision", param::kPrecisionNames, {"double", "float"});
+  o.maths = choices(p, "math", param::kMathNames, {"exact", "fast", "fast-u10"});
+  o.threads = counts(p, "threads", 1, 256, {1});
+  o.omap = p.getText("omap").value_or(o.omap);
+  const param::RayKind ray = namedValues({o.omap}, param::kRayNames, p.spelled("omap")).at(0);
+  const std::vector<std::string> projectors =
+      p.given("projector") ? p.getTexts("projector") : std::vector<std::string>{"plane", "two-plane", "cylinder", "sphere"};
+  for (const std::string& projector : projectors) {
+    o.projectors.push_back({projector, projectorNamed(p, "projector", projector, ray)});
     if (param::traitsOf(o.projectors.back().options.surface).choosesPerTriangle)
-      throw UsageError("--projector " + projector +
+      throw UsageError(p.spelledWith("projector", projector) +
                        ": it chooses a projection per triangle; `uvtk bench` times per-vertex mappings");
   }
-  if (render) {
-    o.samples = parseCounts(samples, "--spp", 1, 256);
-    // --filter given: the one filter timed; else the sweep, and the UV and sample-count rows in
-    // linear_mipmap_linear.
-    const bool filterGiven = app && cli::given(app, "--filter");
-    if (filterGiven && cli::given(app, "--filters"))
-      throw UsageError("--filter and --filters exclude each other: --filter times one filter, --filters several");
-    o.filters = filterGiven ? std::vector<render::Filter>{texture.filter}
-                            : cli::parseNameList(filters, cli::kFilterNames, "--filters");
-    o.filter = filterGiven ? texture.filter : render::Filter::LinearMipmapLinear;
-    o.renderProjector = {renderProjector, cli::projectorNamed(renderProjector, "isn")};
-    // A cube map is looked up per face: the cube projector's faces layout (its map default is the cross).
-    if (texture.cubeMap()) o.renderProjector.options.cubeLayout = CubeLayout::Faces;
-    // What `uvtk render` refuses, in its order, before any work.
-    o.frame = frame.options();
-    camera.check();
-    texture.check();
-    cli::checkTextureUse(frame, texture, &o.renderProjector.options);
-    o.camera = camera;
-    o.textureSource = texture.source;
-    o.textureOptions = texture.options();
-    cli::TextureArguments mipmapped = texture;  // the reference reads the mipmaps; level 0 is the texture
-    mipmapped.filter = render::Filter::LinearMipmapLinear;
-    o.texture = mipmapped.load();
-  }
-  o.mapProjector = {mapProjector, cli::projectorNamed(mapProjector, omap)};
-  o.endToEnd = !noEndToEnd;
-  o.mesh = mesh, o.omap = omap, o.textureWidth = textureWidth, o.minTime = minTime, o.peers = !noPeers;
-  o.rendering = render, o.json = json, o.markdown = markdown, o.plot = plot, o.html = html;
+  o.peers = !p.getBool("no-peers", false);
+  o.endToEnd = !p.getBool("no-end-to-end", false);
+  const std::string mapProjector = p.getText("map-projector").value_or("sphere");
+  o.mapProjector = {mapProjector, projectorNamed(p, "map-projector", mapProjector, ray)};
+  o.rendering = p.getBool("render", false);
+  const std::string renderProjector = p.getText("render-projector").value_or("sphere");
+  o.renderProjector = {renderProjector, projectorNamed(p, "render-projector", renderProjector, param::RayKind::SurfaceNormal)};
+  // Rendering's parameters are checked with or without --render, as the others.
+  const std::vector<int> samples = counts(p, "spp", 1, 256, {1, 4, 16});
+  // filter given: the one filter timed; else the sweep, and the UV and sample-count rows in
+  // linear_mipmap_linear.
+  const bool filterGiven = p.given("filter");
+  if (filterGiven && p.given("filters"))
+    throw UsageError(p.spelled("filter") + " and " + p.spelled("filters") + " exclude each other: " +
+                     p.spelled("filter") + " times one filter, " + p.spelled("filters") + " several");
+  const TextureSettings texture = readTextureSettings(p, "texture");
+  const std::vector<render::Filter> filters =
+      filterGiven ? std::vector<render::Filter>{texture.filter} : choices(p, "filters", kFilterNames, namesOf(kFilterNames));
+  const FrameOptions frame = readFrameSceneSettings(p).frame;
+  const CameraSettings camera = readCameraSettings(p);
+  if (!o.rendering) return o;
+  o.samples = samples;
+  o.filters = filters;
+  o.filter = filterGiven ? texture.filter : render::Filter::LinearMipmapLinear;
+  // A cube map is looked up per face: the cube projector's faces layout (its map default is the cross).
+  if (texture.cubeMap()) o.renderProjector.options.cubeLayout = CubeLayout::Faces;
+  checkTextureUse(frame, texture, &o.renderProjector.options);  // as `uvtk render` refuses, before any work
+  o.frame = frame;
+  o.camera = camera;
+  o.textureSource = texture.source;
+  o.textureOptions = texture.options();
+  TextureSettings mipmapped = texture;  // the reference reads the mipmaps; level 0 is the texture
+  mipmapped.filter = render::Filter::LinearMipmapLinear;
+  o.texture = mipmapped.load();
   return o;
 }
 
-void addBenchOptions(CLI::App& cmd, BenchArguments& a) {
-  cmd.add_option("--mesh", a.mesh, "Mesh to measure (default: the built-in 2048 x 1024 lat-long sphere)");
-  cmd.add_option("--projector", a.projectors, "Projectors to time (plane, two-plane, cylinder, sphere)")
-      ->capture_default_str();
-  cmd.add_option("--omap", a.omap, "O-mapping of every projector (isn, centroid, normal, reflection)")
-      ->capture_default_str();
-  cmd.add_option("--precision", a.precisions, "Precisions (double, float)")->capture_default_str();
-  cmd.add_option("--math", a.maths, "Math modes (exact, fast, fast-u10); one for surfaces without atan2")
-      ->capture_default_str();
-  cmd.add_option("--threads", a.threads, "Thread counts, e.g. 1,2")->capture_default_str();
-  cmd.add_option("--texture-width", a.textureWidth, "Texels across the texture errors are measured in")
-      ->capture_default_str();
-  cmd.add_option("--min-time", a.minTime, "Seconds each configuration runs at least")->capture_default_str();
-  cmd.add_option("--json", a.json, "One record per configuration as JSON");
-  cmd.add_option("--markdown", a.markdown, "The table as Markdown to this file (default: stdout)");
-  cmd.add_option("--plot", a.plot, "Pareto chart PNG (with --render also FILE-render.png)");
-  cmd.add_option("--html", a.html, "One self-contained HTML page: the Pareto charts as SVG and the tables");
-  cmd.add_flag("--no-peers", a.noPeers, "Skip the peers (assimp's aiProcess_GenUVCoords)");
-  cmd.add_option("--map-projector", a.mapProjector,
-                 "With --mesh: the projector of the end-to-end `uvtk map` (read, map, seams, judge, write, peak "
-                 "memory, against reading and copying the files)")
-      ->capture_default_str();
-  cmd.add_flag("--no-end-to-end", a.noEndToEnd, "With --mesh: skip the end-to-end `uvtk map`");
-  cmd.add_flag("--render", a.render,
-               "Also measure rendering (default mesh there: a 64 x 32 lat-long sphere), of the scene `uvtk render` "
-               "draws from the same camera, texture, --size, --cull, --background and --uv options");
-  cmd.add_option("--render-projector", a.renderProjector, "Projector whose UVs are rendered")->capture_default_str();
-  cli::addCameraOptions(cmd, a.camera);
-  cli::addTextureOptions(cmd, a.texture, "--texture");
-  cli::addFrameSceneOptions(cmd, a.frame);
-  cmd.add_option("--filters", a.filters,
-                 "Rendering: the minification filters to time (an explicit --filter: that one alone)")
-      ->capture_default_str();
-  cmd.add_option("--spp", a.samples, "Rendering: samples per pixel to time (squares)")->capture_default_str();
-  a.app = &cmd;
+std::vector<std::string> benchParameterNames() {
+  std::vector<std::string> names = {"mesh",          "projector", "omap",       "precision",        "math",
+                                    "threads",       "texture-width", "min-time", "json",           "markdown",
+                                    "plot",          "html",      "no-peers",   "map-projector",    "no-end-to-end",
+                                    "render",        "render-projector", "filters", "spp"};
+  for (const std::vector<std::string>& more :
+       {cameraParameterNames(), textureParameterNames("texture"), frameSceneParameterNames()})
+    names.insert(names.end(), more.begin(), more.end());
+  return names;
 }
 
 BenchResult measureBench(const BenchOptions& a) {

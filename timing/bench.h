@@ -8,7 +8,6 @@
 // Its own target, uvtk_timing: only the program and scenes link Google Benchmark.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
@@ -18,7 +17,8 @@
 #include "inspect/frame.h"
 #include "inspect/mapped_mesh.h"
 #include "io/atomic_file.h"
-#include "options/render_cli.h"
+#include "inspect/render_parameters.h"
+#include "param/parameters.h"
 #include "param/projector.h"
 #include "views/pareto.h"
 
@@ -48,7 +48,7 @@ struct BenchOptions {
   // Rendering, when `rendering`: the scene as `uvtk render` sets it up from the same options.
   bool rendering = false;
   BenchProjector renderProjector;
-  cli::CameraArguments camera;  // checked; made on the rendered mesh
+  inspect::CameraSettings camera;  // made on the rendered mesh
   std::string textureSource;    // as given
   inspect::BoundTexture texture;  // loaded, with mipmaps (the 64-sample reference reads them)
   inspect::TextureOptions textureOptions;
@@ -61,35 +61,14 @@ struct BenchOptions {
   std::string html;                  // the charts as SVG and the tables, one self-contained page
 };
 
-// `uvtk bench`'s options as typed: lists are names or numbers separated by commas.
-struct BenchArguments {
-  std::string mesh;  // empty: the built-in 2048 x 1024 lat-long sphere
-  std::string projectors = "plane,two-plane,cylinder,sphere", omap = "isn";
-  std::string precisions = "double,float", maths = "exact,fast,fast-u10", threads = "1";
-  int textureWidth = 4096;
-  double minTime = 0.3;
-  std::string json, markdown, plot, html;
-  bool noPeers = false, noEndToEnd = false;
-  std::string mapProjector = "sphere";
-  // rendering: `uvtk render`'s camera, texture and frame options, and the lists timed
-  bool render = false;
-  std::string renderProjector = "sphere";
-  cli::CameraArguments camera;
-  cli::TextureArguments texture;
-  cli::FrameArguments frame;
-  std::string filters =
-      "nearest,linear,nearest_mipmap_nearest,linear_mipmap_nearest,nearest_mipmap_linear,linear_mipmap_linear";
-  std::string samples = "1,4,16";
-  CLI::App* app = nullptr;  // where the options were parsed: tells --filter given from its default
-
-  // The options they name; throws UsageError for a malformed value or an output's missing folder,
-  // before anything is measured.
-  BenchOptions resolve() const;
-};
-
-// `uvtk bench`'s options, registered on `app` into `arguments`: the subcommand's, and a scene's
-// bench output's (scene/scene.cpp), one parser for both.
-void addBenchOptions(CLI::App& app, BenchArguments& arguments);
+// `uvtk bench`'s parameters, as the command line, a scene's bench output and the tests give them:
+// mesh, projector (a list of names), omap, precision and math (lists of names), threads (a list of
+// counts), texture-width, min-time, json, markdown, plot, html (files; their folders must exist),
+// no-peers, map-projector, no-end-to-end; render, render-projector, the camera's, the texture's
+// ("texture") and the frame's scene parameters, filters, spp (a list of counts). UsageError for a
+// malformed value before anything is measured.
+BenchOptions readBenchOptions(const param::ParameterDictionary& parameters);
+std::vector<std::string> benchParameterNames();
 
 // A Pareto chart's points and texts, drawn as PNG (views::paretoChart) and as SVG (views::paretoChartSvg).
 struct BenchChart {

@@ -6,13 +6,13 @@
 #include <string>
 
 #include "commands.h"
-#include "timing/bench.h"
+#include "options/bench_cli.h"
 
 namespace uvtk::cli {
 
 namespace {
 
-void runBench(const timing::BenchArguments& a) {
+void runBench(const BenchArguments& a) {
   const std::string md = timing::bench(a.resolve());
   if (a.markdown.empty()) std::fputs(md.c_str(), stdout);
 }
@@ -20,9 +20,9 @@ void runBench(const timing::BenchArguments& a) {
 }  // namespace
 
 void addBenchCommand(CLI::App& root) {
-  auto a = std::make_shared<timing::BenchArguments>();
+  auto a = std::make_shared<BenchArguments>();
   CLI::App* cmd = root.add_subcommand("bench", "Measure speed against accuracy: mapping, rendering, and the peers");
-  timing::addBenchOptions(*cmd, *a);
+  addBenchOptions(*cmd, *a);
   cmd->callback([a] { runBench(*a); });
 }
 

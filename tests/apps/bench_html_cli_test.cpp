@@ -10,6 +10,7 @@
 #include <set>
 
 #include "apps/cli_test.h"
+#include "options/bench_cli.h"
 #include "timing/bench.h"
 #include "io/obj_writer.h"
 #include "meshes/generators.h"
@@ -175,8 +176,8 @@ TEST_F(SceneBench, RefusesWhatItCannotTimeBeforeAnyWork) {
 // same choices: a scene is parsed by that very parser.
 TEST(SceneBenchSchema, HasTheBenchOptionsButRenderingAndTheEndToEndMap) {
   CLI::App app;
-  timing::BenchArguments arguments;
-  timing::addBenchOptions(app, arguments);
+  cli::BenchArguments arguments;
+  cli::addBenchOptions(app, arguments);
   std::map<std::string, const CLI::Option*> options;
   for (const CLI::Option* option : app.get_options()) {
     if (option->get_lnames().empty() || option->get_lnames().front() == "help") continue;
@@ -191,6 +192,10 @@ TEST(SceneBenchSchema, HasTheBenchOptionsButRenderingAndTheEndToEndMap) {
     if (key == "kind" || key == "mesh" || key == "mapping" || key == "path") continue;
     schemaKeys.insert(key);
     ASSERT_TRUE(options.count(key)) << key << " is no option of uvtk bench";
+    std::string name = key;
+    std::replace(name.begin(), name.end(), '_', '-');
+    const std::vector<std::string> read = timing::benchParameterNames();
+    EXPECT_NE(std::find(read.begin(), read.end(), name), read.end()) << key << " is no parameter the bench reads";
     const nlohmann::json& choices = value.contains("items") ? value["items"] : value;
     if (!choices.contains("enum")) continue;
     std::set<std::string> names;

@@ -142,7 +142,7 @@ TEST_F(ImageCheckCli, OptionsOfTheOtherModeAreUsageErrors) {
   usage("--projector sphere --color-bits 17" + image, "color-bits: expected 1 to 16 bits, got 17");
   usage("--texgen normal_map --texture cube" + image, "a cube-map texture is not supported");
   usage("--projector triplanar" + image, "triplanar");
-  usage("--projector sphere --wrap u" + image, "--wrap: expected repeat, clamp_to_edge or mirrored_repeat");
+  usage("--projector sphere --wrap u" + image, "--wrap: 'u' is not one of: repeat, clamp_to_edge, mirrored_repeat");
   usage("--projector camera --eye 0,0,3" + image, "--projector camera is not supported");
   usage("--projector sphere --derivatives quad-coarse" + image, "--derivatives does not go with --image");
 }

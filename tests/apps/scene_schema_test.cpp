@@ -3,6 +3,7 @@
 // command line can and nothing it cannot.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -97,6 +98,22 @@ TEST(SceneSchema, CameraTextureAndOutputsHaveTheRenderReportAndCompareOptions) {
   expectSameOptions("renderOutput", frame, {"kind", "mapping", "camera", "texture", "path", "json"});
   expectSameOptions("reportOutput", report, {"kind", "mapping"});
   expectSameOptions("compareOutput", compare, {"kind", "mesh"});
+}
+
+// Every key of the scene's camera, texture and render output is a parameter their readers take.
+TEST(SceneSchema, CameraTextureAndRenderKeysAreTheReadersParameters) {
+  const nlohmann::json defs = nlohmann::json::parse(scene::sceneSchemaText())["$defs"];
+  const auto expectRead = [&](const char* def, const std::vector<std::string>& read, std::set<std::string> sceneKeys) {
+    for (const auto& [key, value] : defs[def]["properties"].items()) {
+      if (sceneKeys.count(key)) continue;
+      std::string name = key;
+      std::replace(name.begin(), name.end(), '_', '-');
+      EXPECT_NE(std::find(read.begin(), read.end(), name), read.end()) << def << ": " << key;
+    }
+  };
+  expectRead("camera", inspect::cameraParameterNames(), {"name"});
+  expectRead("texture", inspect::textureParameterNames("source"), {"name"});
+  expectRead("renderOutput", inspect::frameParameterNames(), {"kind", "mapping", "camera", "texture", "path", "json"});
 }
 
 }  // namespace

@@ -241,8 +241,12 @@ def test_unknown_keywords_and_choices_are_errors_naming_them():
         uvtk.compare(mesh, tpo=3)
     with pytest.raises(ValueError, match=r"^mdoe: not a parameter here; did you mean mode\?$"):
         uvtk.texgen(mesh, mdoe="sphere_map")
-    with pytest.raises(ValueError, match=r"^--cull: 'sideways' is not one of: back, front, none$"):
+    with pytest.raises(ValueError, match=r"^cull: 'sideways' is not one of: back, front, none$"):
         uvtk.render(mesh, m, cull="sideways")
+    with pytest.raises(ValueError, match=r"^wrpa: not a parameter here; did you mean wrap\?$"):
+        uvtk.render(mesh, m, wrpa="repeat")
+    with pytest.raises(TypeError, match=r"^spp: expected an integer"):
+        uvtk.render(mesh, m, spp="4")
 
 
 def test_without_numpy_import_says_so(tmp_path):

@@ -85,6 +85,7 @@ struct RenderOptions {
   // From `uvtk render`'s syntax, e.g. "--view seams --size 640x480".
   UVTK_API static RenderOptions parse(const std::string& commandLine);
   UVTK_API std::string commandLine() const;  // the options that differ from the defaults
+  UVTK_API Parameters parameters() const;    // the same, as typed parameters
   // Every field's option as the command's --help shows it (Python's signatures).
   UVTK_API static std::vector<OptionDescription> describe();
 };
@@ -93,6 +94,10 @@ struct RenderOptions {
 // (before it is stored as 8 bits: bytes() gives the PNG's values). Views with measures show the
 // mapping's judgement.
 UVTK_API Image render(const Mapping& mapping, const RenderOptions& options = {});
+// The same from typed parameters named as the options (Python's keywords): "view", "size" (WxH as
+// text, or W, H), "eye", "ortho" (L, R, B, T or "auto"), ...; an unknown name is a UsageError with
+// the nearest.
+UVTK_API Image render(const Mapping& mapping, const Parameters& parameters);
 
 // The options of `uvtk compare`.
 struct CompareOptions {
