@@ -3,7 +3,6 @@
 // that turns the engine's errors into the public ones.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
@@ -56,9 +55,6 @@ const MappingDetail& detailOf(const Mapping& mapping, const char* function);
 // The public parameters as the engine's dictionary (the same values; a Python keyword's face).
 param::ParameterDictionary toEngine(const Parameters& parameters);
 
-// Parses `words` (a command line without the program's name) with `app`; throws UsageError with
-// CLI11's message.
-void parseWords(CLI::App& app, const std::vector<std::string>& words);
 // `text` split as a shell would split it (whitespace, '...' and "..." quotes, backslash escapes).
 std::vector<std::string> splitCommandLine(const std::string& text);
 // `words` joined into one line, each quoted where a shell would need it.

@@ -8,10 +8,6 @@
 #include "inspect/render_parameters.h"
 #include "inspect/report.h"
 #include "option_fields.h"
-#include "options/compare_cli.h"
-#include "options/render_cli.h"
-#include "options/report_cli.h"
-#include "options/verdict_cli.h"
 #include "io/json_text.h"
 
 namespace uvtk::api {
@@ -101,7 +97,7 @@ std::vector<std::string> namesOf(const std::vector<Field<Options>>& fields) {
   return names;
 }
 
-// A picture's camera, texture and frame, as `uvtk render` reads them; every parameter read.
+// A picture's camera, texture and frame, as `uvtk render` reads them, from the parameters the struct has.
 struct RenderSettings {
   inspect::CameraSettings camera;
   inspect::TextureSettings texture;
@@ -115,51 +111,12 @@ RenderSettings readRenderSettings(const param::ParameterDictionary& parameters) 
   return settings;
 }
 
-// `uvtk render`'s options as its parser reads them: the syntax, the help texts.
-struct RenderCommand {
-  CLI::App app;
-  cli::CameraArguments camera;
-  cli::FrameArguments frame;
-  cli::TextureArguments texture;
-  explicit RenderCommand(const std::vector<std::string>& words) {
-    cli::addCameraOptions(app, camera);
-    cli::addFrameOptions(app, frame);
-    cli::addTextureOptions(app, texture, "--texture");
-    parseWords(app, words);
-  }
-};
-
-struct ReportCommand {
-  CLI::App app;
-  cli::ReportArguments report;
-  explicit ReportCommand(const std::vector<std::string>& words) {
-    cli::addReportOptions(app, report);
-    parseWords(app, words);
-  }
-};
-
-struct CompareCommand {
-  CLI::App app;
-  cli::CompareArguments compare;
-  cli::VerdictArguments verdict;
-  explicit CompareCommand(const std::vector<std::string>& words) {
-    cli::addCompareOptions(app, compare);
-    cli::addVerdictOptions(app, verdict);
-    parseWords(app, words);
-  }
-  inspect::CompareOptions options() const {
-    inspect::CompareOptions o = compare.resolve();
-    o.thresholds = verdict.thresholds();
-    return o;
-  }
-};
-
 }  // namespace
 
 ReportOptions ReportOptions::parse(const std::string& commandLine) {
   return translatingErrors([&] {
     const std::vector<std::string> words = splitCommandLine(commandLine);
-    ReportCommand(words).report.check();
+    inspect::readReportOptions(toEngine(typedWords(words, reportFields(), "report"))).check();
     return fromWords(words, reportFields());
   });
 }
@@ -167,26 +124,22 @@ ReportOptions ReportOptions::parse(const std::string& commandLine) {
 RenderOptions RenderOptions::parse(const std::string& commandLine) {
   return translatingErrors([&] {
     const std::vector<std::string> words = splitCommandLine(commandLine);
-    RenderCommand{words};  // the command line's syntax
-    RenderOptions options = fromWords(words, renderFields());
-    Parameters parameters = options.parameters();
-    parameters.face = Parameters::Face::CommandLine;
-    readRenderSettings(toEngine(parameters));  // the engine's checks of each value and the combination
-    return options;
+    readRenderSettings(toEngine(typedWords(words, renderFields(), "render")));
+    return fromWords(words, renderFields());
   });
 }
 
 CompareOptions CompareOptions::parse(const std::string& commandLine) {
   return translatingErrors([&] {
     const std::vector<std::string> words = splitCommandLine(commandLine);
-    CompareCommand(words).options();
+    inspect::readCompareOptions(toEngine(typedWords(words, compareFields(), "compare")));
     return fromWords(words, compareFields());
   });
 }
 
-std::vector<OptionDescription> ReportOptions::describe() { return describeFields(ReportCommand({}).app, reportFields()); }
-std::vector<OptionDescription> RenderOptions::describe() { return describeFields(RenderCommand({}).app, renderFields()); }
-std::vector<OptionDescription> CompareOptions::describe() { return describeFields(CompareCommand({}).app, compareFields()); }
+std::vector<OptionDescription> ReportOptions::describe() { return describeFields("report", reportFields()); }
+std::vector<OptionDescription> RenderOptions::describe() { return describeFields("render", renderFields()); }
+std::vector<OptionDescription> CompareOptions::describe() { return describeFields("compare", compareFields()); }
 
 std::string ReportOptions::commandLine() const { return joinCommandLine(wordsOf(*this, reportFields())); }
 Parameters ReportOptions::parameters() const { return parametersOf(*this, reportFields()); }

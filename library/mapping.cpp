@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/math.h"
+#include "core/number_text.h"
 #include "detail.h"
 #include "option_fields.h"
 #include "inspect/map_job.h"
@@ -13,10 +14,6 @@
 #include "inspect/texgen_job.h"
 #include "io/mesh_format.h"
 #include "io/mesh_writer.h"
-#include "options/cli_values.h"
-#include "options/projector_cli.h"
-#include "options/texgen_cli.h"
-#include "options/verdict_cli.h"
 #include "io/json_text.h"
 
 namespace uvtk::api {
@@ -48,8 +45,8 @@ Field<MapOptions> textureSizeField() {
   return field(
       "--texture-size", &MapOptions::textureSize,
       [](MapOptions& o, const std::vector<std::string>& r) {
-        const analysis::TextureSize size = cli::parseTextureSize(r.back(), "--texture-size");
-        o.textureSize = {size.width, size.height};
+        const auto [width, height] = parseTextureSize(r.back(), "--texture-size");
+        o.textureSize = {width, height};
       },
       [](const std::array<int, 2>& v) { return std::to_string(v[0]) + "," + std::to_string(v[1]); },
       [](const std::array<int, 2>& v) { return std::vector<double>{double(v[0]), double(v[1])}; }, "int|int[2]");
@@ -127,45 +124,6 @@ const std::vector<Field<TexgenOptions>>& texgenFields() {
   return fields;
 }
 
-// `uvtk map`'s options, parsed as the command parses them.
-struct MapCommand {
-  CLI::App app;
-  cli::ProjectorArguments projector;
-  cli::VerdictArguments verdict;
-  int overlapResolution = 1024, threads = 0;
-  std::string textureSize = "1024,1024";
-  std::optional<double> density;
-
-  explicit MapCommand(const std::vector<std::string>& words) {
-    cli::addMapThreadsOption(app, threads);
-    cli::addProjectorOptions(app, projector);
-    cli::addVerdictOptions(app, verdict);
-    cli::addMapJudgementOptions(app, overlapResolution, textureSize, density);
-    parseWords(app, words);
-    verdict.check();
-  }
-};
-
-struct TexgenCommand {
-  CLI::App app;
-  cli::TexgenArguments texgen;
-  std::string eye = "0,0,0", center = "0,0,-1", up = "0,1,0", model;
-  int threads = 0;
-
-  explicit TexgenCommand(const std::vector<std::string>& words) {
-    cli::addTexgenOptions(app, texgen, "--mode");
-    cli::addTexgenViewOptions(app, eye, center, up, model);
-    cli::addTexgenThreadsOption(app, threads);
-    parseWords(app, words);
-  }
-
-  texgen::TexgenOptions resolve() const {
-    const Mat4 view = lookAt(cli::parseVec3(eye, "--eye"), cli::parseVec3(center, "--center"), cli::parseVec3(up, "--up"));
-    const Mat4 modelMatrix = model.empty() ? Mat4::Identity() : cli::parseMatrix(model, "--model");
-    return texgen.resolve(view, modelMatrix);
-  }
-};
-
 Reason reasonOf(const analysis::Reason& reason) {
   return {analysis::toString(reason.rule), analysis::toString(reason.severity), reason.value, reason.threshold,
           reason.faces, reason.text()};
@@ -176,22 +134,15 @@ Reason reasonOf(const analysis::Reason& reason) {
 MapOptions MapOptions::parse(const std::string& commandLine) {
   return translatingErrors([&] {
     const std::vector<std::string> words = splitCommandLine(commandLine);
-    const MapCommand checked(words);  // CLI11's checks of the syntax and each value
-    MapOptions options = fromWords(words, mapFields());
-    Parameters parameters = options.parameters();
-    parameters.face = Parameters::Face::CommandLine;
-    inspect::readMapSettings(toEngine(parameters));  // the engine's checks of the combination
-    return options;
+    const param::ParameterDictionary typed = toEngine(typedWords(words, mapFields(), "map"));
+    inspect::readMapSettings(typed);  // the engine's checks of each value and the combination
+    return fromWords(words, mapFields());
   });
 }
 
-std::vector<OptionDescription> MapOptions::describe() {
-  return describeFields(MapCommand({}).app, mapFields());
-}
+std::vector<OptionDescription> MapOptions::describe() { return describeFields("map", mapFields()); }
 
-std::vector<OptionDescription> TexgenOptions::describe() {
-  return describeFields(TexgenCommand({}).app, texgenFields());
-}
+std::vector<OptionDescription> TexgenOptions::describe() { return describeFields("texgen", texgenFields()); }
 
 std::string MapOptions::commandLine() const { return joinCommandLine(wordsOf(*this, mapFields())); }
 
@@ -200,7 +151,7 @@ Parameters MapOptions::parameters() const { return parametersOf(*this, mapFields
 TexgenOptions TexgenOptions::parse(const std::string& commandLine) {
   return translatingErrors([&] {
     const std::vector<std::string> words = splitCommandLine(commandLine);
-    TexgenCommand(words).resolve();
+    inspect::readTexgenSettings(toEngine(typedWords(words, texgenFields(), "texgen")));
     return fromWords(words, texgenFields());
   });
 }

@@ -136,15 +136,6 @@ void writeMesh(const std::string& path, const Mesh& mesh) {
 
 std::string version() { return UVTK_VERSION; }
 
-void parseWords(CLI::App& app, const std::vector<std::string>& words) {
-  std::vector<std::string> reversed(words.rbegin(), words.rend());
-  try {
-    app.parse(reversed);
-  } catch (const CLI::ParseError& error) {
-    throw UsageError(error.what());
-  }
-}
-
 std::vector<std::string> splitCommandLine(const std::string& text) {
   std::vector<std::string> words;
   std::string word;

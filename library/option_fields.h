@@ -1,11 +1,13 @@
 // How a public options struct meets the command line: one Field per option, which sets the
-// struct's field from the option's parsed results (parse()) and gives the words of the option
-// (commandLine(), nothing at the default). The command line's own parser checks the words.
+// struct's field from the option's words (parse()), gives the words of the option (commandLine(),
+// nothing at the default) and its typed parameter (parameters()). parse() reads the words as typed
+// parameters by each field's kind and hands them to the engine's reader, which checks them as it
+// checks the command line's; describe() shows the program's --help (option_help.h).
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -17,7 +19,8 @@
 #include "core/error.h"
 #include "core/names.h"
 #include "uvtk/mapping.h"
-#include "options/cli_values.h"
+#include "core/number_text.h"
+#include "option_help.h"
 
 namespace uvtk::api {
 
@@ -44,7 +47,7 @@ inline double numberFrom(const std::string& text) { return std::strtod(text.c_st
 
 template <std::size_t N>
 std::array<double, N> arrayFrom(const std::string& text, const std::string& option) {
-  const Eigen::VectorXd parsed = cli::parseNumbers(text, int(N), option);
+  const Eigen::VectorXd parsed = parseNumbers(text, int(N), option);
   std::array<double, N> values;
   for (std::size_t i = 0; i < N; ++i) values[i] = parsed[Eigen::Index(i)];
   return values;
@@ -191,11 +194,9 @@ std::vector<std::string> wordsOf(const Options& options, const std::vector<Field
   return words;
 }
 
-// The options `words` give (already checked by the command line's parser), set on a default
-// struct through `fields`. Read from the words, not from the parser's results, which hold a
-// choice's value rather than its name. "--name value...", "--name=value"; a value never starts
-// with "--" (negative numbers start with one dash). An option the command takes but the struct
-// does not carry (an output file of the command's own) is a UsageError, never dropped silently.
+// The options `words` give (already checked: typedWords and the engine's reader), set on a default
+// struct through `fields`, as written ("--name value...", "--name=value"; a value never starts with
+// "--": negative numbers start with one dash).
 template <class Options>
 Options fromWords(const std::vector<std::string>& words, const std::vector<Field<Options>>& fields) {
   std::map<std::string, std::vector<std::string>> given;
@@ -204,8 +205,6 @@ Options fromWords(const std::vector<std::string>& words, const std::vector<Field
     if (word.rfind("--", 0) == 0) {
       const std::size_t equals = word.find('=');
       const std::string name = word.substr(0, equals);
-      if (std::none_of(fields.begin(), fields.end(), [&](const Field<Options>& f) { return name == f.name; }))
-        throw UsageError(name + ": the command line takes it, the library's options struct does not carry it");
       values = &given[name];
       if (equals != std::string::npos) values->push_back(word.substr(equals + 1));
     } else if (values) {
@@ -220,24 +219,101 @@ Options fromWords(const std::vector<std::string>& words, const std::vector<Field
   return options;
 }
 
-// Each field as the command's --help shows its option: the help's sentence, default and choices
-// (a choice's names are its type name, "a|b|c"), and the field's kind.
+// `text` as the kind of a field takes it (OptionDescription::kind: "str", "float", "int",
+// "float[3]", "str[]", "int|int[2]", "float|auto"); a UsageError naming `option` for a malformed one.
+inline ParameterValue typedWord(const std::string& text, const std::string& kind, const std::string& option) {
+  const auto number = [&](const char* what) {
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size())
+      throw UsageError(option + ": expected " + what + ", found '" + text + "'");
+    return value;
+  };
+  if (kind == "float" || (kind == "float|auto" && text != "auto")) return number("a number");
+  if (kind == "int") {
+    const double value = number("an integer");
+    if (value != std::floor(value) || std::fabs(value) > 2147483647.0)
+      throw UsageError(option + ": expected an integer, found '" + text + "'");
+    return std::int64_t(value);
+  }
+  if (kind.compare(0, 6, "float[") == 0) {
+    const Eigen::VectorXd values = parseNumbers(text, std::atoi(kind.c_str() + 6), option);
+    return std::vector<double>(values.data(), values.data() + values.size());
+  }
+  return text;  // a text, a choice's name, "auto", a size "W,H" the reader parses
+}
+
+// The options `words` give ("--name value", "--name=value", a flag alone or "--flag=0"), typed by
+// each field's kind, in the command line's face: what parse() hands the engine's reader. A value
+// never starts with "--" (negative numbers start with one dash). A name no field has is a
+// UsageError: an option of the program's `command` the struct does not carry (an output file of
+// the command's own) says so, another gets the nearest name.
 template <class Options>
-std::vector<OptionDescription> describeFields(const CLI::App& app, const std::vector<Field<Options>>& fields) {
+Parameters typedWords(const std::vector<std::string>& words, const std::vector<Field<Options>>& fields,
+                      const std::string& command) {
+  Parameters typed;
+  typed.face = Parameters::Face::CommandLine;
+  std::vector<std::string> names;
+  for (const Field<Options>& field : fields) names.push_back(field.name);
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    const std::string& word = words[i];
+    if (word.size() < 3 || word.compare(0, 2, "--") != 0)
+      throw UsageError("expected an option (--name), found '" + word + "'");
+    const std::size_t equals = word.find('=');
+    const std::string name = word.substr(0, equals);
+    const auto field = std::find_if(fields.begin(), fields.end(), [&](const Field<Options>& f) { return name == f.name; });
+    if (field == fields.end() && optionHelp(command, name))
+      throw UsageError(name + ": `uvtk " + command + "` takes it, the library's options struct does not carry it");
+    if (field == fields.end()) {
+      const std::string nearest = nearestName(name, names);
+      throw UsageError(name + ": not an option here" + (nearest.empty() ? "" : "; did you mean " + nearest + "?"));
+    }
+    std::optional<std::string> value;
+    if (equals != std::string::npos) value = word.substr(equals + 1);
+    else if (field->kind != "bool" && i + 1 < words.size() && words[i + 1].compare(0, 2, "--") != 0) value = words[++i];
+    ParameterValue typedValue;
+    if (field->kind == "bool") {
+      const std::string no = value ? lowerCase(*value) : "";
+      typedValue = !(no == "0" || no == "false" || no == "off" || no == "no");
+    } else if (!value) {
+      throw UsageError(name + ": expected a value");
+    } else if (field->kind == "str[]") {
+      const auto given = std::find_if(typed.values.begin(), typed.values.end(), [&](const Parameter& p) { return p.name == name.substr(2); });
+      if (given != typed.values.end()) {
+        std::get<std::vector<std::string>>(given->value).push_back(*value);
+        continue;
+      }
+      typedValue = std::vector<std::string>{*value};
+    } else {
+      typedValue = typedWord(*value, field->kind, name);
+    }
+    typed.values.push_back({name.substr(2), std::move(typedValue), ""});
+  }
+  return typed;
+}
+
+// Each field as the command's --help shows its option (option_help.h): the help's sentence,
+// default and choices (a choice's names are its type name, "a|b|c"), and the field's kind.
+template <class Options>
+std::vector<OptionDescription> describeFields(const std::string& command, const std::vector<Field<Options>>& fields) {
   std::vector<OptionDescription> out;
   for (const Field<Options>& field : fields) {
     OptionDescription d;
     d.name = field.name + 2;
     d.kind = field.kind;
     d.optional = field.optional;
-    if (const CLI::Option* option = app.get_option_no_throw(field.name)) {
-      d.help = option->get_description();
-      d.defaultText = option->get_default_str();
-      const std::string type = option->get_type_name();
+    if (const OptionHelp* help = optionHelp(command, field.name)) {
+      d.help = help->help;
+      d.defaultText = help->defaultText;
+      const std::string& type = help->typeName;
       d.typeName = type;
       if (d.kind == "str" && type.find('|') != std::string::npos &&
           type.find_first_of("ABCDEFGHIJKLMNOPQRSTUVWXYZ[") == std::string::npos)
-        d.choices = CLI::detail::split(type, '|');
+        for (std::size_t begin = 0; begin <= type.size();) {
+          const std::size_t end = std::min(type.find('|', begin), type.size());
+          d.choices.push_back(type.substr(begin, end - begin));
+          begin = end + 1;
+        }
     }
     out.push_back(std::move(d));
   }

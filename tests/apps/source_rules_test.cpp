@@ -87,11 +87,9 @@ TEST(SourceRules, IncludesRunDownTheLayers) {
       {"python", with(scene, {"scene", "library", "uvtk"})},
   };
   const std::set<std::string> cliModules = {"options", "apps"};
-  // Issue 44 has still to take these faces off the command line's option structs (text, CLI::App).
-  const std::set<std::pair<std::string, std::string>> kNotYet = {
-      {"library/detail.h", "CLI::"},        {"library/inspect.cpp", "CLI::"},      {"library/inspect.cpp", "options"},
-      {"library/mapping.cpp", "CLI::"},     {"library/mapping.cpp", "options"},    {"library/mesh.cpp", "CLI::"},
-      {"library/option_fields.h", "CLI::"}, {"library/option_fields.h", "options"}};
+  // Empty since issue 44 took the library, the scenes and the bench off the option groups: kept so
+  // that a crossing added later is named with the rule it breaks.
+  const std::set<std::pair<std::string, std::string>> kNotYet = {};
   const std::regex include(R"re(#\s*include\s+[<"]([a-z_]+)/)re");
   std::set<std::pair<std::string, std::string>> crossings;
   std::set<std::string> modules;
@@ -106,7 +104,8 @@ TEST(SourceRules, IncludesRunDownTheLayers) {
       if (target != module && (below.count(target) || target == "uvtk") && !allowed->second.count(target))
         crossings.insert({name, target});
     }
-    if (!cliModules.count(module) && text.find("CLI::") != std::string::npos) crossings.insert({name, "CLI::"});
+    if (!cliModules.count(module) && (text.find("CLI::") != std::string::npos || text.find("<CLI/") != std::string::npos))
+      crossings.insert({name, "CLI::"});
   }
   EXPECT_EQ(modules.size(), below.size());  // the walk found every module of the table
   for (const auto& [file, target] : crossings)

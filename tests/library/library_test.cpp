@@ -3,6 +3,8 @@
 // public exception types, and files written and read back.
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <filesystem>
 
 #include <cmath>
@@ -101,6 +103,38 @@ TEST(MapOptions, BadOptionsThrowInvalidArgumentWithTheCommandLinesMessage) {
   MapOptions bad;
   bad.omap = "sideways";
   EXPECT_THROW(map(triangle(), bad), std::invalid_argument);
+}
+
+// parse() reads the command line's syntax by the fields' kinds (no CLI11 in the library) and hands
+// the values to the engine's reader: each message names the option as the command line does.
+TEST(Options, ParseReadsTheSyntaxByKindAndTheEngineChecksTheValues) {
+  const std::vector<std::pair<std::function<void()>, std::string>> refusals = {
+      {[] { MapOptions::parse("--cap-angle abc"); }, "--cap-angle: expected a number, found 'abc'"},
+      {[] { MapOptions::parse("--projecter sphere"); }, "--projecter: not an option here; did you mean --projector?"},
+      {[] { MapOptions::parse("--projector"); }, "--projector: expected a value"},
+      {[] { MapOptions::parse("sphere"); }, "expected an option (--name), found 'sphere'"},
+      {[] { MapOptions::parse("--threads 99999"); }, "--threads: expected 0 to 1024, got 99999"},
+      {[] { MapOptions::parse("--center 1,2"); }, "--center"},
+      {[] { RenderOptions::parse("--aov uv"); }, "--aov: `uvtk render` takes it, the library's options struct does not carry it"},
+      {[] { RenderOptions::parse("--camera explicit"); }, "--camera explicit: expected --eye x,y,z"},
+      {[] { RenderOptions::parse("--spp 2.5"); }, "--spp: expected an integer, found '2.5'"},
+      {[] { CompareOptions::parse("--top 0"); }, "--top: expected at least 1, got 0"},
+      {[] { ReportOptions::parse("--size 0x0"); }, "--size"},
+  };
+  for (const auto& [call, message] : refusals) {
+    EXPECT_THROW(call(), std::invalid_argument) << message;
+    EXPECT_NE(messageOf(call).find(message), std::string::npos) << messageOf(call);
+  }
+  // A negative number is a value, not an option; a flag takes no value word; a list repeats.
+  const MapOptions o = MapOptions::parse("--caps --projector cylinder --center -1,0,0 --fail-on overlap=0.1 --fail-on flipped_area=0");
+  EXPECT_TRUE(o.caps);
+  EXPECT_EQ(o.projector, "cylinder");
+  EXPECT_EQ(*o.center, (std::array<double, 3>{-1, 0, 0}));
+  EXPECT_EQ(o.failOn, (std::vector<std::string>{"overlap=0.1", "flipped_area=0"}));
+  EXPECT_FALSE(MapOptions::parse("--projector cylinder --caps=off").caps);
+  const RenderOptions r = RenderOptions::parse("--size 64x48 --eye 0,0,5 --ortho=-1,1,-1,1");
+  EXPECT_EQ(r.size, "64x48");
+  EXPECT_EQ(r.ortho, "-1,1,-1,1");
 }
 
 TEST(Map, APlaneInObjectCoordinatesGivesXAndY) {
