@@ -10,10 +10,20 @@
 
 namespace uvtk::param {
 
-// Camera is no intermediate surface: the perspective projection of param/camera_projector.h,
-// which bypasses placement, O-mapping, seams and poles. Triplanar neither: three planar
-// projections blended by the normal (param/triplanar.h), placed as the others are.
-enum class SurfaceKind { Plane, TwoPlane, Cylinder, Sphere, Cube, Camera, Triplanar, Octahedral, ShrinkWrap, Atlas, Lscm, Arap };
+// Every surface, in the order help and messages list them. A surface with a formula of a point
+// adds itself here and in param/surfaces.h alone (its struct, formula, name and traits); the
+// others have their traits in param/surface_traits.cpp. Camera is no intermediate surface: the
+// perspective projection of param/camera_projector.h, which bypasses placement, O-mapping, seams
+// and poles. Triplanar neither: three planar projections blended by the normal
+// (param/triplanar.h), placed as the others are. The atlas, LSCM and ARAP make charts from the
+// whole mesh.
+#define UVTK_SURFACE_KINDS(SURFACE)                                                                          \
+  SURFACE(Plane) SURFACE(TwoPlane) SURFACE(Cylinder) SURFACE(Sphere) SURFACE(Cube) SURFACE(Camera)           \
+  SURFACE(Triplanar) SURFACE(Octahedral) SURFACE(ShrinkWrap) SURFACE(Atlas) SURFACE(Lscm) SURFACE(Arap)
+
+#define UVTK_SURFACE_ENUMERATOR(kind) kind,
+enum class SurfaceKind { UVTK_SURFACE_KINDS(UVTK_SURFACE_ENUMERATOR) };
+#undef UVTK_SURFACE_ENUMERATOR
 
 enum class Fit {
   None,  // local = object coordinates

@@ -151,7 +151,7 @@ Evaluated evaluateCorners(const S& surface, const M& mapping, const Mesh& mesh, 
         }
         if (invalid)
           c.faceFlags[f] |= kFaceInvalid;
-        else if (pole || (S::kWraps && enclosesAxis(s[0]->axial, s[1]->axial, s[2]->axial)))
+        else if (pole || (S::kTraits.wraps && enclosesAxis(s[0]->axial, s[1]->axial, s[2]->axial)))
           c.faceFlags[f] |= kFacePole;
       }
     });
@@ -537,7 +537,7 @@ PointMapping::PointMapping(const ProjectorOptions& o, const Affine3& localFromOb
           return s.cornerFace(m.probe(SampleT<T>{frame.point(position), frame.normal(normal)}));
         };
       } else {
-        wrapsU_ = S::kWraps;
+        wrapsU_ = S::kTraits.wraps;
         const SampleEvaluator<T, S, M> evaluate(s, m, frame, PoleTest(o.poleEpsilon), o.arithmetic.math, range);
         evaluate_ = [evaluate](const Vec3& position, const Vec3& normal) { return evaluate.at(position, normal); };
       }

@@ -55,32 +55,24 @@ struct LocalFrameT {
   }
 };
 
+// The surface of `o`, which has a formula of a point (the camera, triplanar and the charts go
+// round this: project(), mapVertices and PointMapping).
+template <class T, std::size_t... I>
+SurfaceT<T> makeSurface(const ProjectorOptions& o, std::index_sequence<I...>) {
+  std::optional<SurfaceT<T>> made;
+  const auto makeIf = [&](auto kind) {
+    using Of = SurfaceOf<decltype(kind)::value, T>;
+    if constexpr (!std::is_void_v<typename Of::type>)
+      if (o.surface == decltype(kind)::value) made.emplace(Of::make(o));
+  };
+  (makeIf(std::integral_constant<SurfaceKind, kSurfaces[I]>()), ...);
+  UVTK_CHECK(made.has_value());
+  return *std::move(made);
+}
+
 template <class T>
 SurfaceT<T> makeSurface(const ProjectorOptions& o) {
-  switch (o.surface) {
-    case SurfaceKind::Plane:
-      return PlaneSurfaceT<T>{};
-    case SurfaceKind::TwoPlane:
-      return TwoPlaneSurfaceT<T>(o.planeU, o.planeV);
-    case SurfaceKind::Cylinder:
-      return CylinderSurfaceT<T>{};
-    case SurfaceKind::Sphere:
-      return SphereSurfaceT<T>{o.spherePreset};
-    case SurfaceKind::Cube:
-      return CubeSurfaceT<T>{o.cubeConvention, o.cubeLayout};
-    case SurfaceKind::Octahedral:
-      return OctahedralSurfaceT<T>{};
-    case SurfaceKind::ShrinkWrap:
-      return ShrinkWrapSurfaceT<T>{};
-    case SurfaceKind::Camera:  // no surface: project(), mapVertices and PointMapping go round these
-    case SurfaceKind::Triplanar:
-    case SurfaceKind::Atlas:
-    case SurfaceKind::Lscm:
-    case SurfaceKind::Arap:
-      UVTK_CHECK(false);
-      break;
-  }
-  return PlaneSurfaceT<T>{};
+  return makeSurface<T>(o, std::make_index_sequence<std::size(kSurfaces)>());
 }
 
 template <class T>
@@ -176,7 +168,7 @@ class SampleEvaluator {
       if (out[i].state == CornerState::Invalid) continue;
       const Vec2T<T> uv = surface_.uvFromAngles(q[i], angles.data() + i * kAngles);
       // u is undefined at a wrapping surface's pole (§5); v is defined there.
-      out[i].uv = OutVec2(S::kWraps && out[i].state == CornerState::Pole ? R(0) : R(uv.x()), R(uv.y()));
+      out[i].uv = OutVec2(S::kTraits.wraps && out[i].state == CornerState::Pole ? R(0) : R(uv.x()), R(uv.y()));
       if (!out[i].uv.allFinite())
         out[i].uv = OutVec2::Zero(), out[i].state = CornerState::Invalid, out[i].reason = kCornerNotFinite;
     }

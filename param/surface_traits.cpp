@@ -1,40 +1,51 @@
 #include "param/surface_traits.h"
 
+#include <type_traits>
+
+#include "core/error.h"
 #include "param/projector.h"
 #include "param/surfaces.h"
 
 namespace uvtk::param {
 
-const SurfaceTraits& traitsOf(SurfaceKind surface) {
+namespace {
+
+// The traits of the surfaces without a formula of a point; the others declare theirs (kTraits).
+const SurfaceTraits& tableTraits(SurfaceKind surface) {
   using S = UnitShape;
   //                                   name         wraps  per-tri fits  axis   blends persp. face ids shape
-  static const SurfaceTraits kPlane{"plane", false, false, true, true, false, false, false, S::Plane};
-  static const SurfaceTraits kTwoPlane{"two-plane", false, false, false, false, false, false, false, S::None};
-  static const SurfaceTraits kCylinder{"cylinder", true, false, true, false, false, false, false, S::Cylinder};
-  static const SurfaceTraits kSphere{"sphere", true, false, true, false, false, false, false, S::Ball};
-  static const SurfaceTraits kCube{"cube", false, true, true, false, false, false, true, S::Cube};
   static const SurfaceTraits kCamera{"camera", false, false, false, false, false, true, false, S::None};
   static const SurfaceTraits kTriplanar{"triplanar", false, true, true, false, true, false, false, S::Box};
-  static const SurfaceTraits kOctahedral{"octahedral", false, false, true, false, false, false, false, S::Ball};
-  static const SurfaceTraits kShrinkWrap{"shrink-wrap", false, false, true, false, false, false, false, S::Ball};
   static const SurfaceTraits kAtlas{"atlas", false, true, false, false, false, false, false, S::None, true};
   static const SurfaceTraits kLscm{"lscm", false, true, false, false, false, false, false, S::None, true};
   static const SurfaceTraits kArap{"arap", false, true, false, false, false, false, false, S::None, true};
+  if (surface == SurfaceKind::Camera) return kCamera;
+  if (surface == SurfaceKind::Triplanar) return kTriplanar;
+  if (surface == SurfaceKind::Atlas) return kAtlas;
+  if (surface == SurfaceKind::Lscm) return kLscm;
+  UVTK_CHECK(surface == SurfaceKind::Arap);  // every surface without a struct is above
+  return kArap;
+}
+
+template <SurfaceKind Kind>
+const SurfaceTraits& traitsOfKind() {
+  using Surface = typename SurfaceOf<Kind, double>::type;
+  if constexpr (std::is_void_v<Surface>) return tableTraits(Kind);
+  else return Surface::kTraits;
+}
+
+}  // namespace
+
+const SurfaceTraits& traitsOf(SurfaceKind surface) {
   switch (surface) {
-    case SurfaceKind::Plane: return kPlane;
-    case SurfaceKind::TwoPlane: return kTwoPlane;
-    case SurfaceKind::Cylinder: return kCylinder;
-    case SurfaceKind::Sphere: return kSphere;
-    case SurfaceKind::Cube: return kCube;
-    case SurfaceKind::Camera: return kCamera;
-    case SurfaceKind::Triplanar: return kTriplanar;
-    case SurfaceKind::Octahedral: return kOctahedral;
-    case SurfaceKind::ShrinkWrap: return kShrinkWrap;
-    case SurfaceKind::Atlas: return kAtlas;
-    case SurfaceKind::Lscm: return kLscm;
-    case SurfaceKind::Arap: return kArap;
+#define UVTK_SURFACE_TRAITS(kind) \
+  case SurfaceKind::kind:         \
+    return traitsOfKind<SurfaceKind::kind>();
+    UVTK_SURFACE_KINDS(UVTK_SURFACE_TRAITS)
+#undef UVTK_SURFACE_TRAITS
   }
-  return kSphere;  // unreachable: every enumerator is above
+  UVTK_CHECK(false);  // a value outside the enumeration
+  return tableTraits(SurfaceKind::Arap);
 }
 
 // Why a projector found no value at a finite point (docs/conventions.md §4): the reason the

@@ -16,6 +16,7 @@ enum class UnitShape {
   Box,       // the mesh's box scaled by its largest extent, from its low corner (triplanar)
 };
 
+// What a surface is. A surface with a formula of a point declares its own (surfaces.h, kTraits).
 struct SurfaceTraits {
   const char* name;         // as every face spells it (param/projector_names.h)
   bool wraps;               // u turns about the axis with period 1: a seam, poles, --seam-place, the math mode
@@ -33,10 +34,9 @@ struct SurfaceTraits {
 
 const SurfaceTraits& traitsOf(SurfaceKind surface);
 
-// Every surface, in the order help and messages list them.
-inline constexpr SurfaceKind kSurfaces[] = {
-    SurfaceKind::Plane,  SurfaceKind::TwoPlane,  SurfaceKind::Cylinder,   SurfaceKind::Sphere,    SurfaceKind::Cube,
-    SurfaceKind::Camera, SurfaceKind::Triplanar, SurfaceKind::Octahedral, SurfaceKind::ShrinkWrap,
-    SurfaceKind::Atlas, SurfaceKind::Lscm, SurfaceKind::Arap};
+// Every surface, in the order help and messages list them (placement.h's list).
+#define UVTK_SURFACE_VALUE(kind) SurfaceKind::kind,
+inline constexpr SurfaceKind kSurfaces[] = {UVTK_SURFACE_KINDS(UVTK_SURFACE_VALUE)};
+#undef UVTK_SURFACE_VALUE
 
 }  // namespace uvtk::param

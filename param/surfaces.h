@@ -10,12 +10,14 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
 #include <utility>
 #include <variant>
 
 #include "core/math.h"
 #include "core/uv_map.h"
 #include "param/formulas.h"
+#include "param/surface_traits.h"
 
 namespace uvtk::param {
 
@@ -175,7 +177,7 @@ bool atSingularPoint(const PoleTest& isPole, const Vec3T<T>& q) {
 
 template <class T>
 struct PlaneSurfaceT {  // z = 0, (u, v) = (x, y)
-  static constexpr bool kWraps = false;
+  static constexpr SurfaceTraits kTraits{"plane", false, false, true, true, false, false, false, UnitShape::Plane};
   static constexpr Singular kSingular = Singular::None;
   static constexpr int kAngles = 0;
   HitT<T> resolve(const ProbeT<T>& probe) const;
@@ -189,7 +191,7 @@ struct PlaneSurfaceT {  // z = 0, (u, v) = (x, y)
 // x = 0 and y = 0 reproduce PlaneSurface.
 template <class T>
 struct TwoPlaneSurfaceT {
-  static constexpr bool kWraps = false;
+  static constexpr SurfaceTraits kTraits{"two-plane", false, false, false, false, false, false, false, UnitShape::None};
   static constexpr Singular kSingular = Singular::None;
   static constexpr int kAngles = 0;
   Vec4T<T> planeU;  // normalised so that (a, b, c) has unit length
@@ -207,7 +209,7 @@ struct TwoPlaneSurfaceT {
 
 template <class T>
 struct CylinderSurfaceT {  // radius 1 about the z axis
-  static constexpr bool kWraps = true;
+  static constexpr SurfaceTraits kTraits{"cylinder", true, false, true, false, false, false, false, UnitShape::Cylinder};
   static constexpr Singular kSingular = Singular::Axis;
   static constexpr int kAngles = 1;
   HitT<T> resolve(const ProbeT<T>& probe) const;
@@ -221,7 +223,7 @@ struct CylinderSurfaceT {  // radius 1 about the z axis
 
 template <class T>
 struct SphereSurfaceT {  // radius 1 about the origin
-  static constexpr bool kWraps = true;
+  static constexpr SurfaceTraits kTraits{"sphere", true, false, true, false, false, false, false, UnitShape::Ball};
   static constexpr Singular kSingular = Singular::Axis;
   static constexpr int kAngles = 2;
   SpherePreset preset = SpherePreset::Default;
@@ -243,7 +245,7 @@ struct SphereSurfaceT {  // radius 1 about the origin
 // unit sphere's directions on the square, the lower half folded out over the corners. No angle.
 template <class T>
 struct OctahedralSurfaceT {
-  static constexpr bool kWraps = false;
+  static constexpr SurfaceTraits kTraits{"octahedral", false, false, true, false, false, false, false, UnitShape::Ball};
   static constexpr Singular kSingular = Singular::None;
   static constexpr int kAngles = 0;
   HitT<T> resolve(const ProbeT<T>& probe) const { return SphereSurfaceT<T>{}.resolve(probe); }
@@ -256,7 +258,7 @@ struct OctahedralSurfaceT {
 // point (-z) instead of two poles (docs/conventions.md §3). One angle: theta from +z.
 template <class T>
 struct ShrinkWrapSurfaceT {
-  static constexpr bool kWraps = false;
+  static constexpr SurfaceTraits kTraits{"shrink-wrap", false, false, true, false, false, false, false, UnitShape::Ball};
   static constexpr Singular kSingular = Singular::BelowOnly;
   static constexpr int kAngles = 1;
   HitT<T> resolve(const ProbeT<T>& probe) const { return SphereSurfaceT<T>{}.resolve(probe); }
@@ -273,7 +275,7 @@ struct ShrinkWrapSurfaceT {
 // onto that face's plane by its own probe (projectOnFace), then to (s, t) (faceSt).
 template <class T>
 struct CubeSurfaceT {
-  static constexpr bool kWraps = false;
+  static constexpr SurfaceTraits kTraits{"cube", false, true, true, false, false, false, true, UnitShape::Cube};
   static constexpr Singular kSingular = Singular::None;
   CubeConvention convention = CubeConvention::Gl;
   CubeLayout layout = CubeLayout::Faces;
@@ -288,9 +290,76 @@ struct CubeSurfaceT {
   Vec2T<T> uvAt(const Vec2T<T>& st, CubeFace f) const { return cubeAtlasUv(st, f, convention, layout); }
 };
 
+// ---- The surfaces by kind ----
+// SurfaceOf<kind, T>::type is the struct of a surface with a formula of a point, made from the
+// projector's options by make(); void for the others (placement.h). A new surface is its struct
+// above and its SurfaceOf here: SurfaceT, makeSurface and traitsOf follow.
+template <SurfaceKind Kind, class T>
+struct SurfaceOf {
+  using type = void;
+};
 template <class T>
-using SurfaceT = std::variant<PlaneSurfaceT<T>, TwoPlaneSurfaceT<T>, CylinderSurfaceT<T>, SphereSurfaceT<T>,
-                              CubeSurfaceT<T>, OctahedralSurfaceT<T>, ShrinkWrapSurfaceT<T>>;
+struct SurfaceOf<SurfaceKind::Plane, T> {
+  using type = PlaneSurfaceT<T>;
+  template <class Options>
+  static type make(const Options&) { return {}; }
+};
+template <class T>
+struct SurfaceOf<SurfaceKind::TwoPlane, T> {
+  using type = TwoPlaneSurfaceT<T>;
+  template <class Options>
+  static type make(const Options& o) { return {o.planeU, o.planeV}; }
+};
+template <class T>
+struct SurfaceOf<SurfaceKind::Cylinder, T> {
+  using type = CylinderSurfaceT<T>;
+  template <class Options>
+  static type make(const Options&) { return {}; }
+};
+template <class T>
+struct SurfaceOf<SurfaceKind::Sphere, T> {
+  using type = SphereSurfaceT<T>;
+  template <class Options>
+  static type make(const Options& o) { return {o.spherePreset}; }
+};
+template <class T>
+struct SurfaceOf<SurfaceKind::Cube, T> {
+  using type = CubeSurfaceT<T>;
+  template <class Options>
+  static type make(const Options& o) { return {o.cubeConvention, o.cubeLayout}; }
+};
+template <class T>
+struct SurfaceOf<SurfaceKind::Octahedral, T> {
+  using type = OctahedralSurfaceT<T>;
+  template <class Options>
+  static type make(const Options&) { return {}; }
+};
+template <class T>
+struct SurfaceOf<SurfaceKind::ShrinkWrap, T> {
+  using type = ShrinkWrapSurfaceT<T>;
+  template <class Options>
+  static type make(const Options&) { return {}; }
+};
+
+namespace detail {
+// std::variant of the types among Ts that are not void, in their order.
+template <class Variant, class... Ts>
+struct VariantOfTypes {
+  using type = Variant;
+};
+template <class... Vs, class First, class... Rest>
+struct VariantOfTypes<std::variant<Vs...>, First, Rest...> {
+  using type = typename VariantOfTypes<
+      std::conditional_t<std::is_void_v<First>, std::variant<Vs...>, std::variant<Vs..., First>>, Rest...>::type;
+};
+template <class T, std::size_t... I>
+auto surfaceVariant(std::index_sequence<I...>) ->
+    typename VariantOfTypes<std::variant<>, typename SurfaceOf<kSurfaces[I], T>::type...>::type;
+}  // namespace detail
+
+// Every surface with a formula of a point, in kSurfaces' order.
+template <class T>
+using SurfaceT = decltype(detail::surfaceVariant<T>(std::make_index_sequence<std::size(kSurfaces)>()));
 
 using Probe = ProbeT<double>;
 using Sample = SampleT<double>;

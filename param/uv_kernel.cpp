@@ -48,7 +48,7 @@ LaneUv<T> mapLane(const S& surface, const M& mapping, const PoleTest& isPole, Ma
     atan2Block(math, y, x, angles, kAngles);
   }
   const Vec2T<T> uv = surface.uvFromAngles(q, angles);
-  out.u = S::kWraps && out.state == CornerState::Pole ? T(0) : uv.x();
+  out.u = S::kTraits.wraps && out.state == CornerState::Pole ? T(0) : uv.x();
   out.v = uv.y();
   if (!std::isfinite(out.u) || !std::isfinite(out.v))
     out.u = out.v = T(0), out.state = CornerState::Invalid, out.reason = kCornerNotFinite;
