@@ -115,37 +115,6 @@ Vec2T<T> sphereUv(const Vec3T<T>& q, SpherePreset preset) {
 // Where the u period of a wrapping preset starts: u lies in [start, start + 1).
 inline double uPeriodStart(SpherePreset preset) { return preset == SpherePreset::Seed004 ? -0.5 : 0.0; }
 
-// ---- Directions on the square (§3) ----
-
-// The octahedral map of the direction of q (Cigolle, Donow, Evangelakos, Mara, McGuire, Meyer, "A
-// Survey of Efficient Representations for Independent Unit Vectors", JCGT 3(2), 2014): p = q / |q|_1;
-// where p_z < 0 the lower half folds out over the corners, (p_x, p_y) <- ((1 - |p_y|) sign p_x,
-// (1 - |p_x|) sign p_y) with sign(0) = +1; (u, v) = (p_x, p_y)/2 + 1/2. Any positive scale of q.
-template <class T>
-Vec2T<T> octahedralUv(const Vec3T<T>& q) {
-  const T l1 = std::fabs(q.x()) + std::fabs(q.y()) + std::fabs(q.z());
-  T px = q.x() / l1, py = q.y() / l1;
-  if (q.z() < T(0)) {
-    const T sx = px < T(0) ? T(-1) : T(1), sy = py < T(0) ? T(-1) : T(1);  // -0 counts as 0: +1
-    const T foldedX = (T(1) - std::fabs(py)) * sx, foldedY = (T(1) - std::fabs(px)) * sy;
-    px = foldedX, py = foldedY;
-  }
-  return {px * T(0.5) + T(0.5), py * T(0.5) + T(0.5)};
-}
-
-// 3ds Max's shrink wrap, the azimuthal equidistant projection about the -z pole: theta the angle
-// of q from +z (atan2(hypot(x, y), z), in [0, pi]), phi its azimuth from +x; (u, v) = (1/2 + (theta
-// / pi) cos phi / 2, 1/2 + (theta / pi) sin phi / 2), with cos phi = x / hypot(x, y), sin phi = y /
-// hypot(x, y). +z maps to the centre (1/2, 1/2); -z, the one singular point, to the unit circle
-// about it, here at phi = 0: (1, 1/2).
-template <class T>
-Vec2T<T> shrinkWrapUv(const Vec3T<T>& q, T theta) {
-  const T r = radialDistance(q.x(), q.y());
-  const T radius = theta / T(kPi) * T(0.5);
-  if (!(r > T(0))) return {T(0.5) + radius, T(0.5)};
-  return {T(0.5) + radius * (q.x() / r), T(0.5) + radius * (q.y() / r)};
-}
-
 // ---- Cube (§3): face selection and GL's table live in core/cube.h ----
 
 enum class CubeConvention {

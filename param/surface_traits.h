@@ -11,7 +11,7 @@ enum class UnitShape {
   None,      // object space (two-plane) or no surface (camera)
   Plane,     // [0, 1]^2 x {0}, looking along the smallest spread
   Cylinder,  // radius 1 about z, z in [0, 1]
-  Ball,      // the unit ball (sphere, octahedral, shrink wrap)
+  Ball,      // the unit ball (the sphere, and the maps of its directions)
   Cube,      // [-1, 1]^3, each axis to its own extent
   Box,       // the mesh's box scaled by its largest extent, from its low corner (triplanar)
 };

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "apps/cli_test.h"
+#include "param/projector_names.h"
 #include "options/cli_values.h"
 
 namespace uvtk {
@@ -111,13 +112,15 @@ TEST_F(CliManners, ABadChoiceListsTheNames) {
   const std::string map = "map " + sphereMesh() + " -o " + path("o.obj");
   const CliRun r = uvtk(map + " --projector sphera");
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err,
-            "uvtk: error: --projector: 'sphera' is not one of: plane, two-plane, cylinder, sphere, cube, camera, triplanar, octahedral, shrink-wrap, atlas, lscm, arap; did you mean "
-            "'sphere'?\n");
+  // Every surface's name, in the order of the one list (param/placement.h).
+  std::string surfaces;
+  for (const auto& [name, kind] : param::kSurfaceNames) surfaces += (surfaces.empty() ? "" : ", ") + name;
+  EXPECT_EQ(surfaces.rfind("plane, two-plane, cylinder, sphere, cube, camera, triplanar, ", 0), 0u) << surfaces;
+  EXPECT_EQ(r.err, "uvtk: error: --projector: 'sphera' is not one of: " + surfaces + "; did you mean 'sphere'?\n");
   // The numbers behind the names are not names.
   const CliRun number = uvtk(map + " --projector 3");
   EXPECT_EQ(number.status, 2);
-  EXPECT_EQ(number.err, "uvtk: error: --projector: '3' is not one of: plane, two-plane, cylinder, sphere, cube, camera, triplanar, octahedral, shrink-wrap, atlas, lscm, arap\n");
+  EXPECT_EQ(number.err, "uvtk: error: --projector: '3' is not one of: " + surfaces + "\n");
   EXPECT_EQ(uvtk(map + " --axis 2").err, "uvtk: error: --axis: '2' is not one of: x, y, z\n");    // an int choice
   EXPECT_EQ(uvtk(map + " --uv-digits 1").err, "uvtk: error: --uv-digits: '1' is not one of: double, float\n");  // a bool
   EXPECT_FALSE(std::filesystem::exists(path("o.obj")));

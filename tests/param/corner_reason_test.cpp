@@ -4,6 +4,8 @@
 // cylinder's caps decided in object space (§5).
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <cmath>
 #include <string>
 
@@ -14,9 +16,15 @@
 namespace uvtk::param {
 namespace {
 
-constexpr SurfaceKind kSurfaces[] = {SurfaceKind::Plane,  SurfaceKind::TwoPlane,   SurfaceKind::Cylinder,
-                                     SurfaceKind::Sphere, SurfaceKind::Cube,       SurfaceKind::Octahedral,
-                                     SurfaceKind::ShrinkWrap};
+// Every surface with a formula of a point (see projector_test.cpp), as the list grows.
+const std::vector<SurfaceKind> kSurfaces = [] {
+  std::vector<SurfaceKind> surfaces;
+  for (const SurfaceKind s : param::kSurfaces) {
+    const SurfaceTraits& t = traitsOf(s);
+    if (!t.isPerspective && !t.blendsProjections && !t.chartsFromMesh) surfaces.push_back(s);
+  }
+  return surfaces;
+}();
 
 struct NamedMesh {
   const char* name;
@@ -68,28 +76,13 @@ Vec2 uvBound(const ProjectorOptions& o, const Eigen::AlignedBox3d& box) {
     const Vec3 n = plane.head<3>() / plane.head<3>().norm();
     return std::fabs(n.dot(c) + plane[3] / plane.head<3>().norm()) + n.cwiseAbs().sum() * reach;
   };
-  switch (o.surface) {
-    case SurfaceKind::Plane:
-      return {std::fabs(c.x()) + reach, std::fabs(c.y()) + reach};
-    case SurfaceKind::TwoPlane:
-      return {planeBound(o.planeU), planeBound(o.planeV)};
-    case SurfaceKind::Cylinder:
-      return {1.5, std::fabs(c.z()) + reach};
-    case SurfaceKind::Sphere:
-      return {1.5, 1.0};
-    case SurfaceKind::Cube:
-      return Vec2::Constant((1.0 + c.cwiseAbs().maxCoeff() + reach) / 2.0);
-    case SurfaceKind::Octahedral:  // directions on the square [0, 1]^2
-    case SurfaceKind::ShrinkWrap:
-      return {1.0, 1.0};
-    case SurfaceKind::Camera:  // no range rule (camera_projector_test.cpp, triplanar_test.cpp); not among kSurfaces
-    case SurfaceKind::Triplanar:
-    case SurfaceKind::Atlas:  // [0, 1]^2 by construction (atlas_test.cpp)
-    case SurfaceKind::Lscm:
-    case SurfaceKind::Arap:
-      break;
-  }
-  return Vec2::Zero();
+  if (o.surface == SurfaceKind::Plane) return {std::fabs(c.x()) + reach, std::fabs(c.y()) + reach};
+  if (o.surface == SurfaceKind::TwoPlane) return {planeBound(o.planeU), planeBound(o.planeV)};
+  if (o.surface == SurfaceKind::Cylinder) return {1.5, std::fabs(c.z()) + reach};
+  if (o.surface == SurfaceKind::Sphere) return {1.5, 1.0};
+  if (o.surface == SurfaceKind::Cube) return Vec2::Constant((1.0 + c.cwiseAbs().maxCoeff() + reach) / 2.0);
+  // The maps of directions lie in [0, 1]^2 whatever the hit (direction_maps_test.cpp states it).
+  return Vec2::Constant(std::numeric_limits<double>::infinity());
 }
 
 TEST(CornerReason, EveryCombinationKeepsValidUvsWithinTheRangeBoundAndCountsItsInvalidCornersPerReason) {

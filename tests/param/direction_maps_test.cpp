@@ -94,5 +94,27 @@ TEST(DirectionMaps, TakeEveryRayMappingAndBothPrecisions) {
   }
 }
 
+TEST(DirectionMaps, EveryValidUvLiesInTheUnitSquareUnderEveryRayMapping) {
+  // A direction's (u, v) whatever the hit: the octahedron's square, the shrink wrap's disc of radius 1/2.
+  const Mesh knot = meshes::torusKnot(2, 3, 96, 8, 0.3), box = meshes::cube(3);
+  for (const SurfaceKind s : {SurfaceKind::Octahedral, SurfaceKind::ShrinkWrap})
+    for (const RayKind ray : {RayKind::SurfaceNormal, RayKind::Centroid, RayKind::ObjectNormal, RayKind::Reflection})
+      for (const Mesh* mesh : {&knot, &box}) {
+        ProjectorOptions o;
+        o.surface = s;
+        o.ray = ray;
+        o.eye = Vec3(0.3, -0.2, 5.0);
+        const Projection p = project(*mesh, o);
+        std::size_t valid = 0;
+        for (std::size_t i = 0; i < p.uv.uv.size(); ++i) {
+          if (p.uv.cornerInvalid[i] != kCornerValid) continue;
+          ++valid;
+          ASSERT_GE(p.uv.uv[i].minCoeff(), 0.0) << int(s) << " " << int(ray) << " corner " << i;
+          ASSERT_LE(p.uv.uv[i].maxCoeff(), 1.0) << int(s) << " " << int(ray) << " corner " << i;
+        }
+        EXPECT_GT(valid, p.uv.uv.size() / 2) << int(s) << " " << int(ray);
+      }
+}
+
 }  // namespace
 }  // namespace uvtk::param

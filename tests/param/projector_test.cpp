@@ -16,9 +16,16 @@
 namespace uvtk::param {
 namespace {
 
-constexpr SurfaceKind kSurfaces[] = {SurfaceKind::Plane,  SurfaceKind::TwoPlane,   SurfaceKind::Cylinder,
-                                     SurfaceKind::Sphere, SurfaceKind::Cube,       SurfaceKind::Octahedral,
-                                     SurfaceKind::ShrinkWrap};
+// Every surface with a formula of a point (not the camera's perspective, triplanar's blend or the
+// charts made from the whole mesh): a surface added to the list is tested here as it comes.
+const std::vector<SurfaceKind> kSurfaces = [] {
+  std::vector<SurfaceKind> surfaces;
+  for (const SurfaceKind s : param::kSurfaces) {
+    const SurfaceTraits& t = traitsOf(s);
+    if (!t.isPerspective && !t.blendsProjections && !t.chartsFromMesh) surfaces.push_back(s);
+  }
+  return surfaces;
+}();
 constexpr RayKind kRays[] = {RayKind::SurfaceNormal, RayKind::Centroid, RayKind::ObjectNormal, RayKind::Reflection};
 
 ProjectorOptions optionsFor(SurfaceKind surface, RayKind ray = RayKind::SurfaceNormal) {

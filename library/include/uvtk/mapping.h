@@ -48,8 +48,8 @@ struct OptionDescription {
 // The options of `uvtk map` (docs/conventions.md): each field is the option of that name, with
 // its default; a choice is spelled as on the command line.
 struct MapOptions {
-  std::string projector = "sphere";  // --projector: plane, two-plane, cylinder, sphere, cube, camera, triplanar,
-                                     // octahedral, shrink-wrap, atlas
+  std::string projector = "sphere";  // --projector: a surface's name (plane, cylinder, sphere, cube, camera,
+                                     // triplanar, atlas, ...: docs/conventions.md §3)
   std::string omap = "isn";          // --omap: isn, centroid, normal, reflection
   std::optional<std::string> fit;    // --fit: none, bbox, center, pca, obb (unset: bbox; triplanar none)
   std::string axis = "z";            // --axis: x, y, z, the object axis that becomes local z (bbox fit)
