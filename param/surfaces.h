@@ -241,6 +241,34 @@ struct SphereSurfaceT {  // radius 1 about the origin
   double uPerTurn() const { return preset == SpherePreset::Glu ? -1.0 : 1.0; }  // gluSphere's s runs clockwise
 };
 
+// The octahedral map of the direction of q (Cigolle, Donow, Evangelakos, Mara, McGuire, Meyer, "A
+// Survey of Efficient Representations for Independent Unit Vectors", JCGT 3(2), 2014): p = q / |q|_1;
+// where p_z < 0 the lower half folds out over the corners, (p_x, p_y) <- ((1 - |p_y|) sign p_x,
+// (1 - |p_x|) sign p_y) with sign(0) = +1; (u, v) = (p_x, p_y)/2 + 1/2. Any positive scale of q.
+template <class T>
+Vec2T<T> octahedralUv(const Vec3T<T>& q) {
+  const T l1 = std::fabs(q.x()) + std::fabs(q.y()) + std::fabs(q.z());
+  T px = q.x() / l1, py = q.y() / l1;
+  if (q.z() < T(0)) {
+    const T sx = px < T(0) ? T(-1) : T(1), sy = py < T(0) ? T(-1) : T(1);  // -0 counts as 0: +1
+    const T foldedX = (T(1) - std::fabs(py)) * sx, foldedY = (T(1) - std::fabs(px)) * sy;
+    px = foldedX, py = foldedY;
+  }
+  return {px * T(0.5) + T(0.5), py * T(0.5) + T(0.5)};
+}
+
+// The unit sphere's directions on the square (docs/conventions.md §3). No angle.
+template <class T>
+struct OctahedralSurfaceT {
+  static constexpr SurfaceTraits kTraits{"octahedral", false, false, true, false, false, false, false, UnitShape::Ball};
+  static constexpr Singular kSingular = Singular::None;
+  static constexpr int kAngles = 0;
+  HitT<T> resolve(const ProbeT<T>& probe) const { return SphereSurfaceT<T>{}.resolve(probe); }
+  std::array<AtanArguments<T>, 0> angleArguments(const Vec3T<T>&) const { return {}; }
+  Vec2T<T> uvFromAngles(const Vec3T<T>& q, const T*) const { return octahedralUv(q); }
+  Vec2T<T> uvAt(const Vec3T<T>& q) const { return octahedralUv(q); }
+};
+
 // The box [-1, 1]^3. Faces are chosen per triangle (chooseFace); each corner is then projected
 // onto that face's plane by its own probe (projectOnFace), then to (s, t) (faceSt).
 template <class T>
@@ -298,6 +326,13 @@ struct SurfaceOf<SurfaceKind::Cube, T> {
   template <class Options>
   static type make(const Options& o) { return {o.cubeConvention, o.cubeLayout}; }
 };
+template <class T>
+struct SurfaceOf<SurfaceKind::Octahedral, T> {
+  using type = OctahedralSurfaceT<T>;
+  template <class Options>
+  static type make(const Options&) { return {}; }
+};
+
 namespace detail {
 // std::variant of the types among Ts that are not void, in their order.
 template <class Variant, class... Ts>
