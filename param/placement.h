@@ -19,7 +19,7 @@ namespace uvtk::param {
 // whole mesh.
 #define UVTK_SURFACE_KINDS(SURFACE)                                                                          \
   SURFACE(Plane) SURFACE(TwoPlane) SURFACE(Cylinder) SURFACE(Sphere) SURFACE(Cube) SURFACE(Camera)           \
-  SURFACE(Triplanar) SURFACE(Octahedral) SURFACE(Atlas) SURFACE(Lscm) SURFACE(Arap)
+  SURFACE(Triplanar) SURFACE(Octahedral) SURFACE(ShrinkWrap) SURFACE(Atlas) SURFACE(Lscm) SURFACE(Arap)
 
 #define UVTK_SURFACE_ENUMERATOR(kind) kind,
 enum class SurfaceKind { UVTK_SURFACE_KINDS(UVTK_SURFACE_ENUMERATOR) };

@@ -269,6 +269,35 @@ struct OctahedralSurfaceT {
   Vec2T<T> uvAt(const Vec3T<T>& q) const { return octahedralUv(q); }
 };
 
+// 3ds Max's shrink wrap, the azimuthal equidistant projection about the -z pole: theta the angle
+// of q from +z (atan2(hypot(x, y), z), in [0, pi]), phi its azimuth from +x; (u, v) = (1/2 + (theta
+// / pi) cos phi / 2, 1/2 + (theta / pi) sin phi / 2), with cos phi = x / hypot(x, y), sin phi = y /
+// hypot(x, y). +z maps to the centre (1/2, 1/2); -z, the one singular point, to the unit circle
+// about it, here at phi = 0: (1, 1/2).
+template <class T>
+Vec2T<T> shrinkWrapUv(const Vec3T<T>& q, T theta) {
+  const T r = radialDistance(q.x(), q.y());
+  const T radius = theta / T(kPi) * T(0.5);
+  if (!(r > T(0))) return {T(0.5) + radius, T(0.5)};
+  return {T(0.5) + radius * (q.x() / r), T(0.5) + radius * (q.y() / r)};
+}
+
+// One singular point (-z) instead of two poles (docs/conventions.md §3). One angle: theta from +z.
+template <class T>
+struct ShrinkWrapSurfaceT {
+  static constexpr SurfaceTraits kTraits{"shrink-wrap", false, false, true, false, false, false, false, UnitShape::Ball};
+  static constexpr Singular kSingular = Singular::BelowOnly;
+  static constexpr int kAngles = 1;
+  HitT<T> resolve(const ProbeT<T>& probe) const { return SphereSurfaceT<T>{}.resolve(probe); }
+  std::array<AtanArguments<T>, 1> angleArguments(const Vec3T<T>& q) const {
+    return {{{radialDistance(q.x(), q.y()), q.z()}}};
+  }
+  Vec2T<T> uvFromAngles(const Vec3T<T>& q, const T* angles) const { return shrinkWrapUv(q, angles[0]); }
+  Vec2T<T> uvAt(const Vec3T<T>& q) const {
+    return shrinkWrapUv(q, std::atan2(radialDistance(q.x(), q.y()), q.z()));
+  }
+};
+
 // The box [-1, 1]^3. Faces are chosen per triangle (chooseFace); each corner is then projected
 // onto that face's plane by its own probe (projectOnFace), then to (s, t) (faceSt).
 template <class T>
@@ -329,6 +358,13 @@ struct SurfaceOf<SurfaceKind::Cube, T> {
 template <class T>
 struct SurfaceOf<SurfaceKind::Octahedral, T> {
   using type = OctahedralSurfaceT<T>;
+  template <class Options>
+  static type make(const Options&) { return {}; }
+};
+
+template <class T>
+struct SurfaceOf<SurfaceKind::ShrinkWrap, T> {
+  using type = ShrinkWrapSurfaceT<T>;
   template <class Options>
   static type make(const Options&) { return {}; }
 };

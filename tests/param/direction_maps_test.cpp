@@ -1,5 +1,5 @@
-// The maps of directions added as surfaces (docs/conventions.md §3): the octahedral map at
-// hand-computed directions, and its seams.
+// The maps of directions added as surfaces (docs/conventions.md §3): the octahedral map and 3ds
+// Max's shrink wrap, at hand-computed directions, their seams and their singular point.
 #include <gtest/gtest.h>
 
 #include "meshes/generators.h"
@@ -8,7 +8,7 @@
 namespace uvtk::param {
 namespace {
 
-constexpr SurfaceKind kDirectionMaps[] = {SurfaceKind::Octahedral};
+constexpr SurfaceKind kDirectionMaps[] = {SurfaceKind::Octahedral, SurfaceKind::ShrinkWrap};
 
 // The surface's (u, v) and state at object-space points, in object coordinates (no fit).
 std::vector<VertexUv> at(SurfaceKind surface, const std::vector<Vec3>& points, RayKind ray = RayKind::SurfaceNormal) {
@@ -52,6 +52,34 @@ TEST(Octahedral, ItsSeamsAreTheFourLowerEdges) {
   EXPECT_NEAR(r[0].uv.x(), r[1].uv.x(), 1e-8);
 }
 
+TEST(ShrinkWrap, TheFormulaAtHandComputedDirections) {
+  // theta from +z, phi from +x: (u, v) = (1/2 + (theta/pi) cos phi / 2, 1/2 + (theta/pi) sin phi / 2).
+  const std::vector<VertexUv> r =
+      at(SurfaceKind::ShrinkWrap, {{0, 0, 2}, {3, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, 1, -1}, {1, 1, 0}});
+  expectUv(r[0], 0.5, 0.5);    // +z: the centre, whatever phi
+  expectUv(r[1], 0.75, 0.5);   // theta = pi/2, phi = 0
+  expectUv(r[2], 0.5, 0.75);   // phi = pi/2
+  expectUv(r[3], 0.25, 0.5);   // phi = pi
+  expectUv(r[4], 0.5, 0.875);  // theta = 3 pi/4
+  expectUv(r[5], 0.5 + 0.25 * std::sqrt(0.5), 0.5 + 0.25 * std::sqrt(0.5));
+}
+
+TEST(ShrinkWrap, ItsOneSingularPointIsTheSouthPole) {
+  // -z: every azimuth's limit lies on the circle of radius 1/2; the corner is a pole, written at
+  // phi = 0. +z is an ordinary point (the centre). The cylinder's and sphere's two poles are not.
+  const std::vector<VertexUv> r = at(SurfaceKind::ShrinkWrap, {{0, 0, -1}, {0, 0, 1}, {1e-9, 0, -1}});
+  expectUv(r[0], 1.0, 0.5, CornerState::Pole);
+  expectUv(r[1], 0.5, 0.5, CornerState::Ok);
+  EXPECT_EQ(r[2].state, CornerState::Pole);  // within --pole-eps of the axis
+  // A mesh's faces around -z carry the pole flag; those around +z do not.
+  ProjectorOptions o;
+  o.surface = SurfaceKind::ShrinkWrap;
+  const Projection p = project(meshes::latLongSphere(16, 8), o);
+  EXPECT_GT(p.summary.poleFaces, 0u);
+  for (const int f : p.summary.poleFaceList)
+    for (int k = 0; k < 3; ++k) EXPECT_LT(p.mesh.positions[std::size_t(p.mesh.triangles[std::size_t(f)][k])].z(), 0.9);
+}
+
 TEST(DirectionMaps, TakeEveryRayMappingAndBothPrecisions) {
   // The central ray and the isn foot see the same direction from the origin; float within 1e-6.
   for (const SurfaceKind s : kDirectionMaps) {
@@ -69,7 +97,7 @@ TEST(DirectionMaps, TakeEveryRayMappingAndBothPrecisions) {
 }
 
 TEST(DirectionMaps, EveryValidUvLiesInTheUnitSquareUnderEveryRayMapping) {
-  // A direction's (u, v) whatever the hit: the octahedron's square.
+  // A direction's (u, v) whatever the hit: the octahedron's square, the shrink wrap's disc of radius 1/2.
   const Mesh knot = meshes::torusKnot(2, 3, 96, 8, 0.3), box = meshes::cube(3);
   for (const SurfaceKind s : kDirectionMaps)
     for (const RayKind ray : {RayKind::SurfaceNormal, RayKind::Centroid, RayKind::ObjectNormal, RayKind::Reflection})
