@@ -361,7 +361,6 @@ struct SurfaceOf<SurfaceKind::Octahedral, T> {
   template <class Options>
   static type make(const Options&) { return {}; }
 };
-
 template <class T>
 struct SurfaceOf<SurfaceKind::ShrinkWrap, T> {
   using type = ShrinkWrapSurfaceT<T>;

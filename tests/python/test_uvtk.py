@@ -938,3 +938,23 @@ def test_keywords_are_typed_as_python_users_expect():
         uvtk.map(mesh, projector="plane", seam_place=90)
     np.testing.assert_array_equal(uvtk.map(mesh, texture_size=512).summary["judgement"]["texel_density"]["texture_size"],
                                   [512, 512])
+
+
+def test_the_direction_maps_work_on_every_face():
+    # Octahedral: p = d / |d|_1, the lower half folded out; shrink wrap: one singular point at -z.
+    r = uvtk.eval([[1, 2, -1], [0, 0, 1], [0, 0, -1]], projector="octahedral")
+    assert r.u.tolist() == [0.75, 0.5, 1.0] and r.v.tolist() == [0.875, 0.5, 1.0]
+    assert r.status.tolist() == [uvtk.POINT_OK] * 3
+    s = uvtk.eval([[0, 1, -1], [0, 0, 3], [0, 0, -1]], projector="shrink-wrap")
+    np.testing.assert_allclose(s.u, [0.5, 0.5, 1.0], rtol=0, atol=1e-15)
+    np.testing.assert_allclose(s.v, [0.875, 0.5, 0.5], rtol=0, atol=1e-15)
+    assert s.status.tolist() == [uvtk.POINT_OK, uvtk.POINT_OK, uvtk.POINT_POLE]
+    # map: the octahedron's own vertices, and the south pole's faces flagged for the shrink wrap
+    mesh = uvtk.Mesh(*octahedron())
+    m = uvtk.map(mesh, projector="octahedral", fit="none")
+    assert m.uv[0].tolist() == [[1.0, 0.5], [0.5, 1.0], [0.5, 0.5]]  # +x, +y, +z
+    assert m.uv[4].tolist() == [[0.5, 1.0], [1.0, 0.5], [1.0, 1.0]]  # +y, +x, -z folded to the corner
+    w = uvtk.map(mesh, projector="shrink-wrap", fit="none")
+    assert w.summary["pole_faces"] == 4 and w.summary["pole_vertex_list"] == [5]
+    with pytest.raises(ValueError, match="^seam_place: only the wrapping projectors"):
+        uvtk.map(mesh, projector="octahedral", seam_place=90)
