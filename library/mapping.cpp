@@ -179,10 +179,11 @@ Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thre
   for (std::size_t c = 0; c < corners; ++c) mapping.uv[c] = {m.uv.uv[c].x(), m.uv.uv[c].y()};
   mapping.w = m.uv.w;
   mapping.q = m.q;
-  static_assert(api::kFaceTurnedAway == uvtk::kFaceTurnedAway && api::kFaceSphereMapSingular == uvtk::kFaceSphereMapSingular &&
-                api::kFaceCap == uvtk::kFaceCap && api::kFaceCubeSeam == uvtk::kFaceCubeSeam &&
-                api::kFaceSeamStraddle == uvtk::kFaceSeamStraddle && api::kFacePole == uvtk::kFacePole &&
-                api::kFaceInvalid == uvtk::kFaceInvalid);  // the bits are copied as they are
+  constexpr auto same = [](auto a, auto b) { return int(a) == int(b); };  // two enums, one bit each
+  static_assert(same(api::kFaceTurnedAway, uvtk::kFaceTurnedAway) &&
+                same(api::kFaceSphereMapSingular, uvtk::kFaceSphereMapSingular) && same(api::kFaceCap, uvtk::kFaceCap) &&
+                same(api::kFaceCubeSeam, uvtk::kFaceCubeSeam) && same(api::kFaceSeamStraddle, uvtk::kFaceSeamStraddle) &&
+                same(api::kFacePole, uvtk::kFacePole) && same(api::kFaceInvalid, uvtk::kFaceInvalid));  // the bits are copied as they are
   mapping.faceFlags = m.uv.faceFlags;
   mapping.invalidReason.resize(corners);
   mapping.state.resize(corners, CornerState::Ok);

@@ -388,6 +388,16 @@ auto surfaceVariant(std::index_sequence<I...>) ->
 template <class T>
 using SurfaceT = decltype(detail::surfaceVariant<T>(std::make_index_sequence<std::size(kSurfaces)>()));
 
+// Whether `surface` has a formula of a point (a struct above), rather than a camera's perspective,
+// triplanar's blend or charts made from the whole mesh.
+template <std::size_t... I>
+constexpr bool hasPointFormula(SurfaceKind surface, std::index_sequence<I...>) {
+  return ((surface == kSurfaces[I] && !std::is_void_v<typename SurfaceOf<kSurfaces[I], double>::type>) || ...);
+}
+constexpr bool hasPointFormula(SurfaceKind surface) {
+  return hasPointFormula(surface, std::make_index_sequence<std::size(kSurfaces)>());
+}
+
 using Probe = ProbeT<double>;
 using Sample = SampleT<double>;
 using SurfaceNormalRay = SurfaceNormalRayT<double>;

@@ -71,7 +71,9 @@ TEST(Judgement, ALayoutOfAHandfulOfTexelsDoesNotPass) {
     const double texels = side * side * 1024 * 1024;
     EXPECT_NEAR(j.values[std::size_t(Rule::LayoutTexels)], texels, 1e-9 * texels) << side;
     EXPECT_EQ(j.verdict, verdict) << side;
-    if (!text.empty()) EXPECT_EQ(j.reasonsText().substr(0, text.size()), text) << side;
+    if (!text.empty()) {
+      EXPECT_EQ(j.reasonsText().substr(0, text.size()), text) << side;
+    }
   }
 }
 
@@ -89,7 +91,9 @@ TEST(Judgement, FacesFarBelowATexelDoNotPass) {
     const Judgement j = judge(l.mesh, l.uv, o);
     EXPECT_DOUBLE_EQ(j.values[std::size_t(Rule::TexelsPerFace)], 128.0 / (n * n)) << n;
     EXPECT_EQ(j.verdict, verdict) << n << ": " << j.reasonsText();
-    if (!text.empty()) EXPECT_EQ(j.reasonsText(), text) << n;
+    if (!text.empty()) {
+      EXPECT_EQ(j.reasonsText(), text) << n;
+    }
   }
 }
 

@@ -4,9 +4,10 @@
 // cylinder's caps decided in object space (§5).
 #include <gtest/gtest.h>
 
-#include <limits>
-
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <limits>
 #include <string>
 
 #include "meshes/generators.h"
@@ -19,10 +20,8 @@ namespace {
 // Every surface with a formula of a point (see projector_test.cpp), as the list grows.
 const std::vector<SurfaceKind> kSurfaces = [] {
   std::vector<SurfaceKind> surfaces;
-  for (const SurfaceKind s : param::kSurfaces) {
-    const SurfaceTraits& t = traitsOf(s);
-    if (!t.isPerspective && !t.blendsProjections && !t.chartsFromMesh) surfaces.push_back(s);
-  }
+  std::copy_if(std::begin(param::kSurfaces), std::end(param::kSurfaces), std::back_inserter(surfaces),
+               [](SurfaceKind s) { return hasPointFormula(s); });
   return surfaces;
 }();
 

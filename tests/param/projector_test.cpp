@@ -6,24 +6,24 @@
 
 #include "core/seam_edges.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <set>
 
 #include "core/cancel.h"
 #include "core/error.h"
+#include "param/surfaces.h"
 #include "meshes/generators.h"
 
 namespace uvtk::param {
 namespace {
 
-// Every surface with a formula of a point (not the camera's perspective, triplanar's blend or the
-// charts made from the whole mesh): a surface added to the list is tested here as it comes.
+// Every surface with a formula of a point: a surface added to the list is tested here as it comes.
 const std::vector<SurfaceKind> kSurfaces = [] {
   std::vector<SurfaceKind> surfaces;
-  for (const SurfaceKind s : param::kSurfaces) {
-    const SurfaceTraits& t = traitsOf(s);
-    if (!t.isPerspective && !t.blendsProjections && !t.chartsFromMesh) surfaces.push_back(s);
-  }
+  std::copy_if(std::begin(param::kSurfaces), std::end(param::kSurfaces), std::back_inserter(surfaces),
+               [](SurfaceKind s) { return hasPointFormula(s); });
   return surfaces;
 }();
 constexpr RayKind kRays[] = {RayKind::SurfaceNormal, RayKind::Centroid, RayKind::ObjectNormal, RayKind::Reflection};
