@@ -21,7 +21,9 @@ TEST(SimdTargets, AreTheOnesTheProcessorAndTheSystemSupport) {
   EXPECT_EQ((targets & HWY_SSE4) != 0, sse4);
   EXPECT_EQ((targets & HWY_AVX2) != 0, avx2);
   EXPECT_EQ((targets & HWY_AVX3) != 0, avx3);
-  if (targets & HWY_AVX3_DL) EXPECT_TRUE(avx3);
+  if (targets & HWY_AVX3_DL) {
+    EXPECT_TRUE(avx3);
+  }
 #endif
   // The dispatch picks the best of them that the build compiled.
   hwy::GetChosenTarget().Update(targets);

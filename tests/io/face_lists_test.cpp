@@ -29,7 +29,9 @@ Faces lineOf(std::string_view line, bool ply, std::size_t list = 0) {
   for (Faces& faces : lists) faces = {99};
   const bool read = readFaceListLine(line, ply, lists);
   for (std::size_t i = 0; i < lists.size(); ++i)
-    if (i != list || !read) EXPECT_EQ(lists[i], Faces{99}) << line;
+    if (i != list || !read) {
+      EXPECT_EQ(lists[i], Faces{99}) << line;
+    }
   return read ? Faces(lists[list].begin() + 1, lists[list].end()) : Faces{};
 }
 Faces objLine(std::string_view line, std::size_t list = 0) { return lineOf(line, false, list); }
