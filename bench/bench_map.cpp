@@ -97,9 +97,10 @@ void map_vertices(benchmark::State& state, SurfaceKind surface, Precision precis
   const param::ProjectorOptions options = kernelOptions(surface, precision, math);
   const Affine3 frame = param::fitPlacement(mesh.positions, surface, options.placement);
   std::vector<param::VertexUv> out;
-  param::mapVertices(options, frame, mesh.positions, {}, out);
+  const param::Projector projector(options, frame);
+  projector.mapVertices(mesh.positions, {}, out);
   for (auto _ : state) {
-    param::mapVertices(options, frame, mesh.positions, {}, out, int(state.range(0)));
+    projector.mapVertices(mesh.positions, {}, out, int(state.range(0)));
     benchmark::DoNotOptimize(out.data());
   }
   setPerVertex(state, mesh.vertexCount());

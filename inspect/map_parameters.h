@@ -13,7 +13,7 @@
 namespace uvtk::inspect {
 
 struct MapSettings {
-  param::Projector projector;
+  param::ProjectorRequest projector;
   analysis::Thresholds thresholds;        // fail-on, warn-on (RULE=VALUE; "warn" and "fail" are the command's)
   int overlapResolution = 1024;           // 1 to 16384 pixels
   analysis::TextureSize textureSize;      // W,H (or N: N,N) texels, 1 to 16384 each

@@ -126,20 +126,19 @@ render::PixelMapping atlasPixelMapping(const std::shared_ptr<const param::Atlas>
 render::PixelMapping projectorPixelMapping(const param::ProjectorOptions& options, const param::Projection& projection,
                                            const Mesh& mesh, const UvMap& uv) {
   if (projection.atlas) return atlasPixelMapping(projection.atlas, options.uvTransform, mesh, uv);
-  const Affine3& localFromObject = projection.localFromObject;
-  if (param::traitsOf(options.surface).blendsProjections) {  // three lookups blended by the pixel's normal
+  // The range rule as project() applied it, so that per-pixel and per-vertex values agree on it.
+  auto projector = std::make_shared<const param::Projector>(options, projection.localFromObject,
+                                                            param::sensibleBox(mesh.positions, options,
+                                                                               projection.localFromObject));
+  if (projector->traits().blendsProjections) {  // three lookups blended by the pixel's normal
     render::PixelMapping blend;
     blend.needsNormal = true;
-    blend.blendAt = [mapping = param::TriplanarMapping(options, localFromObject)](const Vec3& p, const Vec3& n,
-                                                                                 std::int32_t) {
-      const param::TriplanarSample s = mapping.at(p, n);
+    blend.blendAt = [projector](const Vec3& p, const Vec3& n, std::int32_t) {
+      const param::TriplanarSample s = projector->blendAt(p, n);
       return render::TexcoordBlend{s.uv, s.weights};
     };
     return blend;
   }
-  // The range rule as project() applied it, so that per-pixel and per-vertex values agree on it.
-  auto mapping = std::make_shared<param::PointMapping>(options, localFromObject,
-                                                       param::sensibleBox(mesh.positions, options, localFromObject));
   // A cap face maps by the side its own normal faces, as project() decided (param/projector.h).
   // Empty when no face is a cap: a zero normal per face would be 24 bytes a face written for nothing.
   auto capNormals = std::make_shared<std::vector<Vec3>>();
@@ -151,17 +150,16 @@ render::PixelMapping projectorPixelMapping(const param::ProjectorOptions& option
     }
   // The cube's faces layout keeps the face id as r: per pixel the face of the pixel's own probe.
   const bool faceIds = writesCubeFaceIds(options);
-  return render::PixelMapping{[mapping, capNormals, faceIds](const Vec3& p, const Vec3& n, std::int32_t face) -> Vec4 {
+  return render::PixelMapping{[projector, capNormals, faceIds](const Vec3& p, const Vec3& n, std::int32_t face) -> Vec4 {
                                 const Vec3 capNormal = capNormals->empty() ? Vec3::Zero() : (*capNormals)[std::size_t(face)];
                                 const bool cap = !capNormal.isZero();
-                                const param::VertexUv mapped = mapping->at(p, cap ? capNormal : n, cap);
+                                const param::PointUv mapped = projector->at(p, cap ? capNormal : n, cap);
                                 const double nan = std::numeric_limits<double>::quiet_NaN();
                                 if (mapped.state == param::CornerState::Invalid) return Vec4(nan, nan, 0, 1);
                                 if (!faceIds) return Vec4(mapped.uv.x(), mapped.uv.y(), 0, 1);
-                                const std::optional<CubeFace> cubeFace = mapping->cubeFaceAt(p, n);
-                                return Vec4(mapped.uv.x(), mapped.uv.y(), cubeFace ? double(*cubeFace) : nan, 1);
+                                return Vec4(mapped.uv.x(), mapped.uv.y(), mapped.cubeFace ? double(*mapped.cubeFace) : nan, 1);
                               },
-                              mapping->wrapsU(), mapping->needsNormal()};
+                              projector->traits().wraps, projector->needsNormal()};
 }
 
 }  // namespace

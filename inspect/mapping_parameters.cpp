@@ -100,7 +100,7 @@ ResolvedMapping readMapping(const param::ParameterDictionary& p, param::Fit defa
   if (!asksForTexgen(p, "texgen")) {
     for (const char* name : kTexgenOnly)
       if (p.given(name)) throw UsageError(p.spelled(name) + " goes with " + texgenParameters(p) + " only");
-    const param::Projector projector = param::makeProjector(p, context);
+    const param::ProjectorRequest projector = param::makeProjector(p, context);
     out.projector = projector.options;
     out.seamPlaceAuto = projector.seamPlaceAuto;
     return out;

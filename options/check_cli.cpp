@@ -125,7 +125,7 @@ inspect::ImageCheckRun checkImageFile(CheckArguments a) {
   if (projectorGiven) {  // the reflection O-mapping sees from the camera's eye, as in `uvtk render`
     if (projector.options.ray == param::RayKind::Reflection)
       projector.options.eye = (worldFromObject.inverse() * view.eye().homogeneous()).head<3>();
-    const param::Projector resolved = projector.resolve();
+    const param::ProjectorRequest resolved = projector.resolve();
     mapped = inspect::mapByProjector(std::move(input.mesh), resolved.options, resolved.seamPlaceAuto);
   } else if (a.mapping.isTexgen()) {
     a.mapping.texgen.arithmetic = projector.options.arithmetic;

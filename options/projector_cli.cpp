@@ -205,7 +205,7 @@ ParameterDictionary ProjectorArguments::parameters() const {
   return p;
 }
 
-param::Projector ProjectorArguments::resolve() const { return makeProjector(parameters(), context); }
+param::ProjectorRequest ProjectorArguments::resolve() const { return makeProjector(parameters(), context); }
 
 ProjectorOptions projectorNamed(const std::string& projector, const std::string& omap) {
   ProjectorOptions o;

@@ -33,7 +33,7 @@ struct ProjectorArguments {
   // The options given on the command line, typed, each at its option's name.
   param::ParameterDictionary parameters() const;
   // param::makeProjector of parameters(): throws UsageError.
-  param::Projector resolve() const;
+  param::ProjectorRequest resolve() const;
 };
 
 // Default options for the projector and O-mapping of these names (as --projector and --omap take

@@ -214,7 +214,7 @@ RenderResult renderMeshFile(RenderJob a) {
   MappedMesh mapped;
   if (projectorGiven) {
     a.projector.options.eye = (worldFromObject.inverse() * camera.eye().homogeneous()).head<3>();
-    const param::Projector projector = a.projector.resolve();
+    const param::ProjectorRequest projector = a.projector.resolve();
     mapped = mapByProjector(std::move(input.mesh), projector.options, projector.seamPlaceAuto);
   } else if (a.texgen.given()) {
     a.texgen.arithmetic = a.projector.options.arithmetic;  // render's --precision serves both

@@ -107,8 +107,8 @@ std::vector<std::string> projectorParameterNames(const ProjectorContext& c) {
   return names;
 }
 
-Projector makeProjector(const ParameterDictionary& p, const ProjectorContext& c) {
-  Projector result;
+ProjectorRequest makeProjector(const ParameterDictionary& p, const ProjectorContext& c) {
+  ProjectorRequest result;
   ProjectorOptions& o = result.options;
   o.surface = p.getChoice("projector", kSurfaceNames, SurfaceKind::Sphere);
   o.ray = p.getChoice("omap", kRayNames, RayKind::SurfaceNormal);

@@ -30,9 +30,10 @@ struct ProjectorContext {
   Fit defaultFit = Fit::BBox;  // `uvtk eval` without a mesh: none
 };
 
-// A projector as the parameters ask for it. `seamPlaceAuto`: --seam-place auto, which the caller
-// (who has the mesh) carries out (inspect::mapByProjector).
-struct Projector {
+// A projector as the parameters ask for it, before it is placed on a mesh (param::Projector).
+// `seamPlaceAuto`: --seam-place auto, which the caller (who has the mesh) carries out
+// (inspect::mapByProjector).
+struct ProjectorRequest {
   ProjectorOptions options;
   bool seamPlaceAuto = false;
 };
@@ -42,7 +43,7 @@ struct Projector {
 std::optional<std::array<int, 2>> readTextureSize(const ParameterDictionary& parameters);
 
 // Throws UsageError (ParameterTypeError for a value of the wrong kind) naming the parameter.
-Projector makeProjector(const ParameterDictionary& parameters, const ProjectorContext& context = {});
+ProjectorRequest makeProjector(const ParameterDictionary& parameters, const ProjectorContext& context = {});
 
 // The names makeProjector reads under `context`, for ParameterDictionary::checkAllRead.
 std::vector<std::string> projectorParameterNames(const ProjectorContext& context = {});

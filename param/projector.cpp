@@ -48,6 +48,12 @@ struct Evaluated {
   std::optional<Atlas> atlas;                   // the atlas: its charts (its uv moved into corners)
 };
 
+template <class T>
+void mapVerticesThroughKernel(const ProjectorOptions& o, const Affine3& localFromObject,
+                              const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
+                              std::vector<VertexUv>& out, int threads,
+                              const std::optional<Eigen::AlignedBox3d>& sensible);
+
 // The cube: a face per triangle, then each corner projected onto it by its own probe.
 template <class T, class M>
 void evaluateCube(const CubeSurfaceT<T>& surface, const M& mapping, const Mesh& mesh, const LocalFrameT<T>& frame,
@@ -132,7 +138,7 @@ Evaluated evaluateCorners(const S& surface, const M& mapping, const Mesh& mesh, 
         progress.advance(count);
       }
     } else {  // the narrow kernel on every vertex, the same bits as `evaluate`
-      mapVertices(o, localFromObject, mesh.positions, normals, samples, threads, sensible);
+      mapVerticesThroughKernel<T>(o, localFromObject, mesh.positions, normals, samples, threads, sensible);
     }
     // Spread the samples over the corners and mark invalid and pole faces on the way.
     const int chunks = int((faceCount + kSamplesPerReport - 1) / kSamplesPerReport);
@@ -176,10 +182,28 @@ Vec2 capUv(const Vec3T<T>& local, bool top, CapLayout layout) {
   return Vec2((top ? 0.0 : 0.5) + 0.5 * square.x(), 0.5 + 0.5 * square.y());
 }
 
-// Cylinder caps: the faces CylinderCaps takes are mapped by capUv, whatever the mapping said; the
+// The cylinder's caps (Projector::isCap): faces whose object-space normal makes an angle of at
+// most the cap angle with the axis.
+struct CapTest {
+  Vec3 axis;  // unit, object space
+  double cosLimit;
+  static CapTest of(const Affine3& localFromObject, double capAngleDegrees) {
+    return {(inverseAtAnyScale(localFromObject.linear()) * Vec3::UnitZ()).stableNormalized(),
+            std::cos(capAngleDegrees * (kPi / 180.0))};
+  }
+  bool isCap(const Vec3& objectNormal) const {
+    // The cosine of the angle with the axis line, |n.a| / |n|; stableNorm: an area normal of a mesh
+    // at 1e150 or 1e-150 has a norm whose square overflows or underflows.
+    const double length = objectNormal.stableNorm();
+    return length > 0.0 && std::fabs(objectNormal.dot(axis)) >= cosLimit * length;
+  }
+  bool isTop(const Vec3& objectNormal) const { return objectNormal.dot(axis) > 0.0; }  // else the bottom cap
+};
+
+// Cylinder caps: the faces CapTest takes are mapped by capUv, whatever the mapping said; the
 // others are the side, placed by capSideUv.
 template <class T>
-void applyCaps(const Mesh& mesh, const LocalFrameT<T>& frame, const CylinderCaps& caps, CapLayout layout,
+void applyCaps(const Mesh& mesh, const LocalFrameT<T>& frame, const CapTest& caps, CapLayout layout,
                CornerField& c) {
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const Triangle& t = mesh.triangles[f];
@@ -350,7 +374,7 @@ Evaluated evaluateMesh(const Mesh& mesh, const Affine3& localFromObject, const P
     return evaluateCorners<T>(s, m, mesh, localFromObject, o, sensible, threads);
   });
   if (o.surface == SurfaceKind::Cylinder && o.cylinderCaps) {
-    applyCaps(mesh, frame, CylinderCaps(localFromObject, o.capAngleDegrees), o.capLayout, evaluated.corners);
+    applyCaps(mesh, frame, CapTest::of(localFromObject, o.capAngleDegrees), o.capLayout, evaluated.corners);
     // Points on the seam that --seam cut adds lie on the side.
     evaluated.evaluateAt = [side = std::move(evaluated.evaluateAt), layout = o.capLayout](const Vec3& p, const Vec3& n) {
       VertexUv out = side(p, n);
@@ -440,39 +464,6 @@ std::optional<Eigen::AlignedBox3d> sensibleBox(const std::vector<Vec3>& position
   return box;
 }
 
-CylinderCaps::CylinderCaps(const Affine3& localFromObject, double capAngleDegrees)
-    : axis_((inverseAtAnyScale(localFromObject.linear()) * Vec3::UnitZ()).stableNormalized()),
-      cosLimit_(std::cos(capAngleDegrees * (kPi / 180.0))) {}
-
-bool CylinderCaps::isCap(const Vec3& objectNormal) const {
-  // The cosine of the angle with the axis line, |n.a| / |n|; stableNorm: an area normal of a mesh
-  // at 1e150 or 1e-150 has a norm whose square overflows or underflows.
-  const double length = objectNormal.stableNorm();
-  return length > 0.0 && std::fabs(objectNormal.dot(axis_)) >= cosLimit_ * length;
-}
-
-void mapVertices(const ProjectorOptions& o, const Affine3& localFromObject, const std::vector<Vec3>& positions,
-                 const std::vector<Vec3>& normals, std::vector<VertexUv>& out, int threads,
-                 const std::optional<Eigen::AlignedBox3d>& sensible) {
-  checkOptions(o);
-  if (o.surface == SurfaceKind::Camera) {
-    const CameraTransform camera(o.camera);
-    resizeOnHugePages(out, positions.size(), threads);
-    parallelFor(threadCount(threads), threads, [&](int chunk) {
-      const std::size_t n = positions.size(), chunks = std::size_t(threadCount(threads));
-      for (std::size_t i = n * std::size_t(chunk) / chunks; i < n * (std::size_t(chunk) + 1) / chunks; ++i)
-        out[i] = cameraVertexUv(camera, positions[i]);
-    });
-    return;
-  }
-  refuseCharts(o, "mapVertices");
-  if (o.surface == SurfaceKind::Triplanar)
-    throw UsageError("mapVertices: triplanar chooses a projection per triangle; use project() or PointMapping");
-  withPrecision(o.arithmetic.precision, [&](auto zero) {
-    mapVerticesThroughKernel<decltype(zero)>(o, localFromObject, positions, normals, out, threads, sensible);
-  });
-}
-
 VertexUv triplanarVertexUv(const TriplanarOptions& options, int axis, const Vec3& local) {
   return finiteVertexUv(triplanarUv(options, axis, local));
 }
@@ -491,19 +482,32 @@ VertexUv cameraVertexUv(const CameraTransform& camera, const Vec3& position) {
   return finiteVertexUv(Vec2(h.x() / h.w(), h.y() / h.w()));  // not finite: a q so small that the divide overflows
 }
 
-PointMapping::PointMapping(const ProjectorOptions& o, const Affine3& localFromObject,
-                           const std::optional<Eigen::AlignedBox3d>& sensible)
-    : uvTransform_(o.uvTransform) {
+Projector::Projector(const ProjectorOptions& o, const Affine3& localFromObject,
+                     const std::optional<Eigen::AlignedBox3d>& sensible)
+    : options_(o), localFromObject_(localFromObject), sensible_(sensible) {
   checkOptions(o);
-  refuseCharts(o, "a point");
+  refuseCharts(o, "a projector of points");
+  const CapTest caps = CapTest::of(localFromObject, o.capAngleDegrees);
+  capAxis_ = caps.axis;
+  capCosLimit_ = caps.cosLimit;
+  const auto ofVertex = [](const VertexUv& v) { return PointUv{v.uv, v.uv, v.axial, v.state, v.reason, std::nullopt}; };
   if (o.surface == SurfaceKind::Camera) {
-    evaluate_ = [camera = CameraTransform(o.camera)](const Vec3& p, const Vec3&) { return cameraVertexUv(camera, p); };
+    point_ = [ofVertex, camera = CameraTransform(o.camera)](const Vec3& p, const Vec3&) {
+      return ofVertex(cameraVertexUv(camera, p));
+    };
     return;
   }
   if (o.surface == SurfaceKind::Triplanar) {
     needsNormal_ = true;
-    evaluate_ = [frame = LocalFrameT<double>(localFromObject), options = o.triplanar](const Vec3& p, const Vec3& n) {
-      return triplanarVertexUv(options, dominantAxis(frame.normal(n)), frame.point(p));
+    const LocalFrameT<double> frame(localFromObject);
+    point_ = [ofVertex, frame, options = o.triplanar](const Vec3& p, const Vec3& n) {
+      return ofVertex(triplanarVertexUv(options, dominantAxis(frame.normal(n)), frame.point(p)));
+    };
+    blend_ = [frame, options = o.triplanar, transform = o.uvTransform](const Vec3& p, const Vec3& n) {
+      TriplanarSample s = triplanarAt(options, frame.point(p), frame.normal(n));
+      if (!transform.isIdentity())
+        for (Vec2& uv : s.uv) uv = transform.apply(uv);
+      return s;
     };
     return;
   }
@@ -516,77 +520,93 @@ PointMapping::PointMapping(const ProjectorOptions& o, const Affine3& localFromOb
       using M = std::decay_t<decltype(m)>;
       needsNormal_ = M::kNeedsNormal;
       if constexpr (std::is_same_v<S, CubeSurfaceT<T>>) {
-        evaluate_ = [s, m, frame, range](const Vec3& position, const Vec3& normal) {
-          VertexUv out;
+        point_ = [s, m, frame, range](const Vec3& position, const Vec3& normal) {
+          PointUv out;
           const ProbeT<T> probe = m.probe(SampleT<T>{frame.point(position), frame.normal(normal)});
-          const std::optional<CubeFace> face = s.cornerFace(probe);
-          if (!face) return out;  // a miss
-          const HitT<T> hit = s.projectOnFace(probe, *face);
+          out.cubeFace = s.cornerFace(probe);
+          if (!out.cubeFace) return out;  // a miss
+          const HitT<T> hit = s.projectOnFace(probe, *out.cubeFace);
           out.reason = judgeHit(hit, range);
           if (out.reason != kCornerValid) return out;
-          const Vec2 uv = s.uvAt(s.faceSt(hit.q, *face), *face).template cast<double>();
+          const Vec2T<T> st = s.faceSt(hit.q, *out.cubeFace);
+          const Vec2 uv = s.uvAt(st, *out.cubeFace).template cast<double>();
           if (!uv.allFinite()) {
             out.reason = kCornerNotFinite;
             return out;
           }
           out.uv = uv;
+          out.unplaced = st.template cast<double>();
           out.state = CornerState::Ok;
           return out;
         };
-        cubeFace_ = [s, m, frame](const Vec3& position, const Vec3& normal) {
-          return s.cornerFace(m.probe(SampleT<T>{frame.point(position), frame.normal(normal)}));
-        };
       } else {
-        wrapsU_ = S::kTraits.wraps;
         const SampleEvaluator<T, S, M> evaluate(s, m, frame, PoleTest(o.poleEpsilon), o.arithmetic.math, range);
-        evaluate_ = [evaluate](const Vec3& position, const Vec3& normal) { return evaluate.at(position, normal); };
+        point_ = [ofVertex, evaluate](const Vec3& position, const Vec3& normal) {
+          return ofVertex(evaluate.at(position, normal));
+        };
       }
     });
     if (o.surface == SurfaceKind::Cylinder && o.cylinderCaps)
-      cap_ = [frame, caps = CylinderCaps(localFromObject, o.capAngleDegrees), layout = o.capLayout](
-                 const Vec3& position, const Vec3& normal) { return capUv(frame.point(position), caps.isTop(normal), layout); };
-    capLayout_ = o.capLayout;
+      cap_ = [frame, caps, layout = o.capLayout](const Vec3& position, const Vec3& normal) {
+        return capUv(frame.point(position), caps.isTop(normal), layout);
+      };
   });
 }
 
-VertexUv PointMapping::at(const Vec3& position, const Vec3& normal, bool capFace) const {
-  VertexUv out;
+Vec2 Projector::period() const {
+  if (!traits().wraps) return Vec2::Zero();
+  return options_.uvTransform.apply(Vec2(1, 0)) - options_.uvTransform.apply(Vec2(0, 0));
+}
+
+bool Projector::isCap(const Vec3& objectNormal) const {
+  return CapTest{capAxis_, capCosLimit_}.isCap(objectNormal);
+}
+
+void Projector::mapVertices(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
+                            std::vector<VertexUv>& out, int threads) const {
+  const ProjectorOptions& o = options_;
+  if (o.surface == SurfaceKind::Camera) {
+    const CameraTransform camera(o.camera);
+    resizeOnHugePages(out, positions.size(), threads);
+    parallelFor(threadCount(threads), threads, [&](int chunk) {
+      const std::size_t n = positions.size(), chunks = std::size_t(threadCount(threads));
+      for (std::size_t i = n * std::size_t(chunk) / chunks; i < n * (std::size_t(chunk) + 1) / chunks; ++i)
+        out[i] = cameraVertexUv(camera, positions[i]);
+    });
+    return;
+  }
+  if (o.surface == SurfaceKind::Triplanar)
+    throw UsageError("mapVertices: triplanar chooses a projection per triangle; map the mesh, or evaluate points");
+  withPrecision(o.arithmetic.precision, [&](auto zero) {
+    mapVerticesThroughKernel<decltype(zero)>(o, localFromObject_, positions, normals, out, threads, sensible_);
+  });
+}
+
+PointUv Projector::at(const Vec3& position, const Vec3& normal, bool capFace) const {
+  PointUv out;
   if (capFace && cap_) {
     out.uv = cap_(position, normal);
     const bool finite = out.uv.allFinite();
     out.state = finite ? CornerState::Ok : CornerState::Invalid;
     out.reason = finite ? kCornerValid : kCornerNotFinite;
     if (!finite) out.uv = Vec2::Zero();
+    out.unplaced = out.uv;
   } else {
-    out = evaluate_(position, normal);
-    if (cap_ && out.state != CornerState::Invalid) out.uv = capSideUv(out.uv, capLayout_);
+    out = point_(position, normal);
+    if (cap_ && out.state != CornerState::Invalid) out.uv = out.unplaced = capSideUv(out.uv, options_.capLayout);
   }
   if (out.state == CornerState::Invalid) return out;
-  if (!uvTransform_.isIdentity()) out.uv = uvTransform_.apply(out.uv);
+  if (!options_.uvTransform.isIdentity()) out.uv = options_.uvTransform.apply(out.uv);
   if (!out.uv.allFinite()) {
-    out = VertexUv{};
+    out = PointUv{};
     out.reason = kCornerNotFinite;
   }
   return out;
 }
 
-std::optional<CubeFace> PointMapping::cubeFaceAt(const Vec3& position, const Vec3& normal) const {
-  return cubeFace_ ? cubeFace_(position, normal) : std::nullopt;
-}
-
-TriplanarMapping::TriplanarMapping(const ProjectorOptions& o, const Affine3& localFromObject) {
-  checkTriplanarOptions(o.triplanar);
-  evaluate_ = [frame = LocalFrameT<double>(localFromObject), options = o.triplanar, transform = o.uvTransform](
-                  const Vec3& p, const Vec3& n) {
-    TriplanarSample s = triplanarAt(options, frame.point(p), frame.normal(n));
-    if (!transform.isIdentity())
-      for (Vec2& uv : s.uv) uv = transform.apply(uv);
-    return s;
-  };
-}
-
-TriplanarSample TriplanarMapping::at(const Vec3& position, const Vec3& normal) const {
-  return evaluate_(position, normal);
+TriplanarSample Projector::blendAt(const Vec3& position, const Vec3& normal) const {
+  UVTK_CHECK(blend_ != nullptr);  // triplanar only
+  return blend_(position, normal);
 }
 
 Projection project(Mesh mesh, const ProjectorOptions& o, int threads) {

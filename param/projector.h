@@ -135,8 +135,7 @@ struct Projection {
 // the box of the mesh's local positions united with the surface's unit shape (plane [0,1]^2 x {0};
 // cylinder radius 1, z in [0, 1]; sphere the unit ball; cube [-1,1]^3; two-plane nothing, it works
 // in object space). Nothing when it has no finite, non-zero extent (then there is no range check).
-// project() computes it from its mesh; callers of mapVertices and PointMapping that have the mesh
-// pass it in.
+// project() computes it from its mesh; a Projector of points takes it from the caller that has the mesh.
 std::optional<Eigen::AlignedBox3d> sensibleBox(const std::vector<Vec3>& positions, const ProjectorOptions& options,
                                                const Affine3& localFromObject);
 
@@ -151,69 +150,70 @@ VertexUv cameraVertexUv(const CameraTransform& camera, const Vec3& position);
 // kCornerNotFinite where they are not finite. A face gets one projection: a box mapping.
 VertexUv triplanarVertexUv(const TriplanarOptions& options, int axis, const Vec3& local);
 
-// The two-stage mapping of single vertices in object space: placement, O-mapping, surface,
-// S-mapping, no seam or pole repair and no UV transform. `normals` is read only by the normal
-// and reflection O-mappings (then it has one unit normal per position). `out` is resized, so a
-// caller that maps repeatedly reuses its memory. The cube and triplanar choose per triangle and are
-// a UsageError here. `threads` (0: one per core) split the positions into contiguous ranges. Hits
-// beyond the range of `sensible` (sensibleBox) are kCornerOutOfRange; without it nothing is.
-void mapVertices(const ProjectorOptions& options, const Affine3& localFromObject, const std::vector<Vec3>& positions,
-                 const std::vector<Vec3>& normals, std::vector<VertexUv>& out, int threads = 1,
-                 const std::optional<Eigen::AlignedBox3d>& sensible = std::nullopt);
+// A projector's value at one object-space point: what `uvtk eval` reports and the renderer
+// evaluates at every pixel.
+struct PointUv {
+  Vec2 uv = Vec2::Zero();        // the (u, v) a mesh would carry there: caps laid out, the cube's layout, the UV transform
+  Vec2 unplaced = Vec2::Zero();  // before the cube's layout and the UV transform: u in its period, a cube face's (s, t)
+  Vec2 axial = Vec2::Zero();     // the hit point projected along the surface's axis (VertexUv::axial)
+  CornerState state = CornerState::Invalid;
+  CornerInvalid reason = kCornerMiss;  // kCornerValid exactly when state is not Invalid
+  std::optional<CubeFace> cubeFace;    // the cube: the face of the point's own probe
+};
 
-// Which faces the cylinder's caps take (§5): those whose object-space normal makes an angle of at
-// most capAngleDegrees with the projector's axis, the object-space direction of local +z. Decided
-// in object space because a fit scales non-uniformly: a long mesh squeezed to height 1 would tilt
-// every side normal towards the axis. The one test behind project() and point::PointEvaluator.
-class CylinderCaps {
+// One projector, made once from its options, placement (fitPlacement) and sensible box
+// (sensibleBox of the mesh; without one there is no range check): the one source of UVs behind
+// per-vertex mapping (`uvtk map` through project(), mapVertices), per-point evaluation (`uvtk eval`,
+// the point API, Python's eval) and per-pixel evaluation (the renderer's exact UVs, views, `check
+// --image`). The SIMD kernel (param/uv_kernel.h) and the per-sample templates (sample_evaluator.h)
+// are how it evaluates, not other sources. Throws UsageError for inconsistent options
+// (reflection without an eye, parallel two-plane planes, ...) and for the atlas, LSCM and ARAP,
+// whose charts come from a whole mesh (project() maps those).
+class Projector {
  public:
-  CylinderCaps(const Affine3& localFromObject, double capAngleDegrees);
+  Projector(const ProjectorOptions& options, const Affine3& localFromObject,
+            const std::optional<Eigen::AlignedBox3d>& sensible = std::nullopt);
+
+  const ProjectorOptions& options() const { return options_; }
+  const Affine3& localFromObject() const { return localFromObject_; }
+  const SurfaceTraits& traits() const { return traitsOf(options_.surface); }
+  bool needsNormal() const { return needsNormal_; }  // at() and blendAt() read the normal (the O-mapping, triplanar)
+  // One turn of u in the final UVs (the UV transform of (1, 0) less that of (0, 0)); zero unless it wraps.
+  Vec2 period() const;
+
+  // Per vertex: object-space positions through both stages (placement, O-mapping, surface,
+  // S-mapping), no seam or pole repair and no UV transform. `normals` is read only by the normal
+  // and reflection O-mappings (then one unit normal per position). `out` is resized, so a caller
+  // that maps repeatedly reuses its memory. The cube and triplanar choose per triangle and are a
+  // UsageError here (project() maps them). `threads` (0: one per core) split the positions into
+  // contiguous ranges; the result does not depend on them.
+  void mapVertices(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals, std::vector<VertexUv>& out,
+                   int threads = 1) const;
+
+  // Per point and per pixel: the exact mapping, without seam or pole repair (u stays in its period;
+  // a pole gets u = 0). The cube takes the face of the point's own probe (exact, where project()
+  // chooses one face per triangle). With `capFace` (a face project() mapped by a cylinder cap) the
+  // cap projection, mirrored by the sign of `normal` along the axis (pass the face normal).
+  // Triplanar gives the projection of the normal's dominant axis; blendAt gives all three.
+  PointUv at(const Vec3& position, const Vec3& normal, bool capFace = false) const;
+  // Triplanar: the three projections (UV transform applied) and their weights at a point.
+  TriplanarSample blendAt(const Vec3& position, const Vec3& normal) const;
+  // Whether a cylinder with caps maps a face of this object-space normal by a cap: an angle of at
+  // most capAngleDegrees with the axis (the object-space direction of local +z). Decided in object
+  // space because a fit scales non-uniformly: a long mesh squeezed to height 1 would tilt every
+  // side normal towards the axis. The one test behind project() and per-point evaluation.
   bool isCap(const Vec3& objectNormal) const;
-  bool isTop(const Vec3& objectNormal) const { return objectNormal.dot(axis_) > 0.0; }  // else the bottom cap
 
  private:
-  Vec3 axis_;  // unit, object space
-  double cosLimit_;
-};
-
-// The exact mapping at single object-space points, for evaluation at every pixel: placement,
-// O-mapping, surface, S-mapping and the UV transform, without seam or pole repair (u stays in its
-// period; a pole gets u = 0). The cube takes the face of each point's own probe (exact, where
-// project() chooses one face per triangle); a face project() mapped by a cylinder cap maps by the
-// cap projection, mirrored by the sign of the given normal along the axis (pass the face normal).
-// A hit beyond the range of `sensible` (sensibleBox of the mesh) is kCornerOutOfRange; without a
-// box nothing is. Triplanar gives the dominant projection of the given normal (point::PointEvaluator
-// and the renderer read all three and the weights through triplanarAt).
-class PointMapping {
- public:
-  // Throws UsageError like project() for inconsistent options.
-  PointMapping(const ProjectorOptions& options, const Affine3& localFromObject,
-               const std::optional<Eigen::AlignedBox3d>& sensible = std::nullopt);
-  VertexUv at(const Vec3& position, const Vec3& normal, bool capFace = false) const;
-  // The cube face at() projects onto; nothing where the probe misses or for other surfaces.
-  std::optional<CubeFace> cubeFaceAt(const Vec3& position, const Vec3& normal) const;
-  bool wrapsU() const { return wrapsU_; }            // u has period 1 (cylinder, sphere)
-  bool needsNormal() const { return needsNormal_; }  // the O-mapping reads the normal
-
- private:
-  std::function<VertexUv(const Vec3&, const Vec3&)> evaluate_;
-  std::function<Vec2(const Vec3&, const Vec3&)> cap_;
-  CapLayout capLayout_ = CapLayout::Beside;  // where cap_ puts the caps and the side
-  std::function<std::optional<CubeFace>(const Vec3&, const Vec3&)> cubeFace_;
-  UvTransform uvTransform_;
-  bool wrapsU_ = false, needsNormal_ = false;
-};
-
-// The triplanar projector at object-space points: the point and normal carried into the
-// projector's frame, its three projections with their weights (triplanarAt), and the UV transform
-// applied to each projection. What `uvtk eval` reports and the renderer blends per pixel.
-class TriplanarMapping {
- public:
-  TriplanarMapping(const ProjectorOptions& options, const Affine3& localFromObject);  // checks the options
-  TriplanarSample at(const Vec3& position, const Vec3& normal) const;
-
- private:
-  std::function<TriplanarSample(const Vec3&, const Vec3&)> evaluate_;
+  ProjectorOptions options_;
+  Affine3 localFromObject_;
+  std::optional<Eigen::AlignedBox3d> sensible_;
+  std::function<PointUv(const Vec3&, const Vec3&)> point_;  // the surface's own value, before caps and the UV transform
+  std::function<Vec2(const Vec3&, const Vec3&)> cap_;       // a cap face's (u, v), laid out
+  std::function<TriplanarSample(const Vec3&, const Vec3&)> blend_;  // triplanar's three projections
+  Vec3 capAxis_ = Vec3::UnitZ();                            // unit, object space
+  double capCosLimit_ = 0.0;
+  bool needsNormal_ = false;
 };
 
 // Seam placement (`--seam-place auto`): the turn of a wrapping projector about its axis

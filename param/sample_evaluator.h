@@ -56,7 +56,7 @@ struct LocalFrameT {
 };
 
 // The surface of `o`, which has a formula of a point (the camera, triplanar and the charts go
-// round this: project(), mapVertices and PointMapping).
+// round this: project() and Projector).
 template <class T, std::size_t... I>
 SurfaceT<T> makeSurface(const ProjectorOptions& o, std::index_sequence<I...>) {
   std::optional<SurfaceT<T>> made;

@@ -46,17 +46,10 @@ PointEvaluator::PointEvaluator(const inspect::ResolvedMapping& mapping, const Af
     texgen::texgenAt(Vec3::Zero(), Vec3::UnitZ(), *texgen_);  // throws now for what would fail at every point
     return;
   }
-  projector_ = mapping.projector;
-  const param::SurfaceTraits& traits = param::traitsOf(projector_->surface);
-  if (traits.isPerspective) camera_.emplace(projector_->camera);
-  if (traits.blendsProjections) triplanar_.emplace(*projector_, localFromObject);
-  param::ProjectorOptions raw = *projector_;
-  raw.uvTransform = param::UvTransform{};
-  raw.cubeLayout = CubeLayout::Faces;
-  raw_.emplace(raw, localFromObject, sensible);
-  needsNormal_ = raw_->needsNormal() || projector_->cylinderCaps;
-  if (raw.cylinderCaps) caps_.emplace(localFromObject, raw.capAngleDegrees);
-  if (raw_->wrapsU()) period_ = projector_->uvTransform.apply(Vec2(1, 0)) - projector_->uvTransform.apply(Vec2(0, 0));
+  projector_.emplace(*mapping.projector, localFromObject, sensible);
+  if (projector_->traits().isPerspective) camera_.emplace(mapping.projector->camera);
+  // A cylinder's caps are chosen by the normal given with the point.
+  needsNormal_ = projector_->needsNormal() || mapping.projector->cylinderCaps;
 }
 
 Result PointEvaluator::at(const Vector3& position, const Vector3& normal) const noexcept {
@@ -75,44 +68,42 @@ Result PointEvaluator::at(const Vector3& position, const Vector3& normal) const 
 }
 
 Result PointEvaluator::projectorAt(const Vec3& p, const Vec3& n, Result out) const {
-  const param::ProjectorOptions& o = *projector_;
-  if (triplanar_) return triplanarAt(p, n, out);
-  const bool cap = caps_ && caps_->isCap(n);  // as project() decides it
-  const param::VertexUv raw = raw_->at(p, n, cap);
-  if (raw.state == CornerState::Invalid) return invalid(out, param::invalidReasonText(o, raw.reason));
-  Vec2 uv = raw.uv;
+  const param::Projector& projector = *projector_;
+  const param::ProjectorOptions& o = projector.options();
+  if (projector.traits().blendsProjections) return triplanarAt(p, n, out);
+  const bool cap = o.cylinderCaps && projector.isCap(n);  // as project() decides it
+  const param::PointUv mapped = projector.at(p, n, cap);
+  if (mapped.state == CornerState::Invalid) return invalid(out, param::invalidReasonText(o, mapped.reason));
+  const bool wraps = projector.traits().wraps;
   out.status = Status::Ok;
   if (camera_) out.q = camera_->homogeneous(p).w();  // (u, v) are s/q, t/q: q is w_c, the divisor
-  if (raw.state == CornerState::Pole) {
+  if (mapped.state == CornerState::Pole) {
     out.status = Status::Pole;
-    out.reason = raw_->wrapsU() ? "on the axis: u is undefined there (written as 0), v is exact"
-                                : "at the singular point: (u, v) is undefined there (written at azimuth 0)";
-  } else if (raw_->wrapsU() && !cap) {
+    out.reason = wraps ? "on the axis: u is undefined there (written as 0), v is exact"
+                       : "at the singular point: (u, v) is undefined there (written at azimuth 0)";
+  } else if (wraps && !cap) {
     const double start = *param::uPeriodStartOf(o);
-    if (uv.x() == start || uv.x() == start + 1.0) {
+    if (mapped.unplaced.x() == start || mapped.unplaced.x() == start + 1.0) {
       out.status = Status::OnSeam;
       out.reason = "on the seam: u and u + 1 are the same point";
     }
-  } else if (param::traitsOf(o.surface).hasFaceIds) {
-    const std::optional<CubeFace> face = raw_->cubeFaceAt(p, n);
-    if (!face) return invalid(out, param::invalidReasonText(o, kCornerMiss));
-    if (uv.x() == 0.0 || uv.x() == 1.0 || uv.y() == 0.0 || uv.y() == 1.0) {
+  } else if (mapped.cubeFace) {
+    const Vec2& st = mapped.unplaced;
+    if (st.x() == 0.0 || st.x() == 1.0 || st.y() == 0.0 || st.y() == 1.0) {
       out.status = Status::OnSeam;
       out.reason = "on an edge of the cube: the face follows the tie rule (x before y before z)";
     }
-    if (o.cubeLayout == CubeLayout::Faces) out.w = static_cast<double>(*face);
-    uv = param::cubeAtlasUv(uv, *face, o.cubeConvention, o.cubeLayout);
+    if (o.cubeLayout == CubeLayout::Faces) out.w = static_cast<double>(*mapped.cubeFace);
   }
-  if (!o.uvTransform.isIdentity()) uv = o.uvTransform.apply(uv);
-  if (!uv.allFinite()) return invalid(out, "the result is not finite");
-  out.u = uv.x();
-  out.v = uv.y();
-  out.period = {cap ? 0.0 : period_.x(), cap ? 0.0 : period_.y()};
+  out.u = mapped.uv.x();
+  out.v = mapped.uv.y();
+  const Vec2 period = cap ? Vec2::Zero() : projector.period();
+  out.period = {period.x(), period.y()};
   return out;
 }
 
 Result PointEvaluator::triplanarAt(const Vec3& p, const Vec3& n, Result out) const {
-  const param::TriplanarSample s = triplanar_->at(p, n);
+  const param::TriplanarSample s = projector_->blendAt(p, n);
   if (!s.weights.allFinite()) return invalid(out, "the normal is zero: the weights need its direction");
   for (const Vec2& uv : s.uv)
     if (!uv.allFinite()) return invalid(out, "the result is not finite");

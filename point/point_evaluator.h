@@ -30,13 +30,9 @@ class PointEvaluator {
   Result texgenAt(const Vec3& p, const Vec3& n, Result out) const;
   Result triplanarAt(const Vec3& p, const Vec3& n, Result out) const;
 
-  std::optional<param::ProjectorOptions> projector_;
-  std::optional<param::PointMapping> raw_;  // without the UV transform, cube faces unlaid: seams are visible
-  std::optional<param::CylinderCaps> caps_;  // with --caps on the cylinder
+  std::optional<param::Projector> projector_;
   std::optional<param::CameraTransform> camera_;  // --projector camera: its q
-  std::optional<param::TriplanarMapping> triplanar_;  // --projector triplanar: all three projections
   std::optional<texgen::TexgenOptions> texgen_;
-  Vec2 period_ = Vec2::Zero();
   std::string description_;
   bool needsNormal_ = false;
 };

@@ -234,8 +234,8 @@ class SceneReader {
     if (kind == "projector") {
       m.kind = SceneMapping::Kind::Projector;
       const param::ParameterDictionary parameters = sceneParameters(j, {"kind", "name"}, pointer);
-      const param::Projector projector = at(pointer, [&] {
-        param::Projector made = param::makeProjector(parameters);
+      const param::ProjectorRequest projector = at(pointer, [&] {
+        param::ProjectorRequest made = param::makeProjector(parameters);
         parameters.checkAllRead(param::projectorParameterNames());
         return made;
       });

@@ -114,7 +114,7 @@ std::vector<nlohmann::json> benchMapping(const BenchOptions& a, const Mesh& mesh
         param::ProjectorOptions options = base;
         options.arithmetic = {precision, wraps ? math : MathMode::Exact};
         std::vector<param::VertexUv> out;
-        param::mapVertices(options, frame, mesh.positions, normals, out);
+        param::Projector(options, frame).mapVertices(mesh.positions, normals, out);
         const param::MappingError error = param::mappingError(out, reference, precision, wraps);
         for (int threads : threadCounts) {
           MappingCase c{options, threads, "map/" + std::to_string(cases.size()), error};

@@ -35,7 +35,7 @@ void runReport(const ReportCommandArguments& a) {
   a.report.check();
   a.verdict.check();
   const bool projectorGiven = given(a.projector.app, "--projector");
-  const param::Projector projector = a.projector.resolve();
+  const param::ProjectorRequest projector = a.projector.resolve();
 
   StageClock clock("uvtk report");
   clock.start("reading", a.input);

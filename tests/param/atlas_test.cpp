@@ -258,9 +258,9 @@ TEST(Atlas, TheSameBitsWhateverTheThreads) {
 TEST(Atlas, AProjectorOfAPointAloneIsRefused) {
   ProjectorOptions o;
   o.surface = SurfaceKind::Atlas;
-  EXPECT_THROW(PointMapping(o, Affine3::Identity()), UsageError);
+  EXPECT_THROW(Projector(o, Affine3::Identity()), UsageError);
   std::vector<VertexUv> out;
-  EXPECT_THROW(mapVertices(o, Affine3::Identity(), {Vec3::Zero()}, {}, out), UsageError);
+  EXPECT_THROW(Projector(o, Affine3::Identity()).mapVertices({Vec3::Zero()}, {}, out), UsageError);
 }
 
 }  // namespace

@@ -168,18 +168,18 @@ TEST(CameraProjector, MapVerticesAndPointMappingAgreeWithProject) {
   const std::vector<Vec3> points = {Vec3(1, 0, 0), Vec3(0.25, -0.5, 2), Vec3(0, 0, 9)};
   std::vector<VertexUv> out;
   ProjectorOptions o = cameraOptions(frontCamera());
-  mapVertices(o, Affine3::Identity(), points, {}, out, 2);
+  Projector(o, Affine3::Identity()).mapVertices(points, {}, out, 2);
   ASSERT_EQ(out.size(), 3u);
   EXPECT_NEAR(out[0].uv.x(), 0.6, 1e-15);
   EXPECT_NEAR(out[1].uv.x(), 0.5 + 0.125 / 3.0, 1e-15);
   EXPECT_NEAR(out[1].uv.y(), 0.5 - 0.25 / 3.0, 1e-15);
   EXPECT_EQ(out[2].reason, kCornerBehind);
-  // PointMapping adds the UV transform: u -> 1 - u.
+  // Projector adds the UV transform: u -> 1 - u.
   o.uvTransform.flipU = true;
-  const PointMapping mapping(o, Affine3::Identity());
+  const Projector mapping(o, Affine3::Identity());
   EXPECT_NEAR(mapping.at(points[0], Vec3::Zero()).uv.x(), 0.4, 1e-15);
   EXPECT_EQ(mapping.at(points[2], Vec3::Zero()).reason, kCornerBehind);
-  EXPECT_FALSE(mapping.wrapsU());
+  EXPECT_FALSE(mapping.traits().wraps);
   EXPECT_FALSE(mapping.needsNormal());
   EXPECT_FALSE(sensibleBox(points, o, Affine3::Identity()));
 }

@@ -147,13 +147,13 @@ ProjectorOptions unplaced(SurfaceKind surface, RayKind ray) {
   return o;
 }
 
-// One point through mapVertices and PointMapping (which must agree), with the sensible box of
+// One point through mapVertices and Projector (which must agree), with the sensible box of
 // `mesh` (fit none: local = object).
 VertexUv mapOne(const ProjectorOptions& o, const std::vector<Vec3>& mesh, const Vec3& position, const Vec3& normal) {
   const std::optional<Eigen::AlignedBox3d> box = sensibleBox(mesh, o, Affine3::Identity());
   std::vector<VertexUv> out;
-  mapVertices(o, Affine3::Identity(), {position}, {normal}, out, 1, box);
-  const VertexUv atPoint = PointMapping(o, Affine3::Identity(), box).at(position, normal);
+  Projector(o, Affine3::Identity(), box).mapVertices({position}, {normal}, out, 1);
+  const PointUv atPoint = Projector(o, Affine3::Identity(), box).at(position, normal);
   EXPECT_EQ(atPoint.state, out[0].state);
   EXPECT_EQ(atPoint.reason, out[0].reason);
   EXPECT_EQ(atPoint.uv, out[0].uv);
@@ -190,7 +190,7 @@ TEST(CornerReason, ANearlyParallelRayIsOutOfRange) {
   EXPECT_NEAR(edge.uv.x(), 1.5, 1e-15);
   // Without a box there is no range check: the far hit is valid.
   std::vector<VertexUv> out;
-  mapVertices(o, Affine3::Identity(), {Vec3(0.5, 0.5, 0.1)}, {grazing}, out);
+  Projector(o, Affine3::Identity()).mapVertices({Vec3(0.5, 0.5, 0.1)}, {grazing}, out);
   EXPECT_EQ(out[0].reason, kCornerValid);
   EXPECT_NEAR(out[0].uv.x(), 0.5 + 1e5, 1e-5);
 }
@@ -264,12 +264,13 @@ TEST(CornerReason, CylinderCapsAreDecidedInObjectSpaceOnAnElongatedMesh) {
     const bool cap = std::fabs(normal.z()) >= std::cos(kPi / 4) * normal.norm();
     EXPECT_EQ(p.uv.faceHas(f, kFaceCap), cap) << "face " << f;
   }
-  // The same test decides per point (PointMapping's cap side, point::PointEvaluator).
-  const CylinderCaps caps(p.localFromObject, 45.0);
+  // The same test decides per point (Projector::isCap, point::PointEvaluator), and the sign of the
+  // normal along the axis picks the cap: beside the side band, the top's square has u in [0, 1/2].
+  const Projector caps(o, p.localFromObject);
   EXPECT_TRUE(caps.isCap(Vec3(0, 0.9, 1)));   // 42 degrees from +z
   EXPECT_FALSE(caps.isCap(Vec3(0, 1.1, 1)));  // 48 degrees
-  EXPECT_TRUE(caps.isTop(Vec3(0, 0.9, 1)));
-  EXPECT_FALSE(caps.isTop(Vec3(0, 0.9, -1)));
+  EXPECT_LT(caps.at(bone.positions[0], Vec3(0, 0.9, 1), true).uv.x(), 0.5);
+  EXPECT_GE(caps.at(bone.positions[0], Vec3(0, 0.9, -1), true).uv.x(), 0.5);
 }
 
 }  // namespace

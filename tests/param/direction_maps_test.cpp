@@ -17,7 +17,7 @@ std::vector<VertexUv> at(SurfaceKind surface, const std::vector<Vec3>& points, R
   o.ray = ray;
   o.placement.fit = Fit::None;
   std::vector<VertexUv> out;
-  mapVertices(o, Affine3::Identity(), points, std::vector<Vec3>(points.size(), Vec3::UnitZ()), out);
+  Projector(o, Affine3::Identity()).mapVertices(points, std::vector<Vec3>(points.size(), Vec3::UnitZ()), out);
   return out;
 }
 
@@ -91,7 +91,7 @@ TEST(DirectionMaps, TakeEveryRayMappingAndBothPrecisions) {
     o.placement.fit = Fit::None;
     o.arithmetic.precision = Precision::Float;
     std::vector<VertexUv> single;
-    mapVertices(o, Affine3::Identity(), points, {}, single);
+    Projector(o, Affine3::Identity()).mapVertices(points, {}, single);
     for (std::size_t i = 0; i < points.size(); ++i) EXPECT_NEAR((single[i].uv - foot[i].uv).norm(), 0.0, 1e-6);
   }
 }

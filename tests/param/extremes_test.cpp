@@ -282,9 +282,9 @@ TEST_P(PointExtremes, FiniteOrTheDocumentedStatus) {
       const ProjectorOptions o = optionsOf(row, precision, math);
       const Affine3 frame = fitPlacement({}, row.surface, o.placement);
       std::vector<VertexUv> out;
-      mapVertices(o, frame, {row.position}, {row.normal}, out);
+      Projector(o, frame).mapVertices({row.position}, {row.normal}, out);
       expectOutcome(out[0], precision == Precision::Double ? row.inDouble : row.inFloat, usesArctangent(row.surface));
-      const VertexUv atPoint = PointMapping(o, frame).at(row.position, row.normal);
+      const PointUv atPoint = Projector(o, frame).at(row.position, row.normal);
       EXPECT_EQ(atPoint.state, out[0].state) << "PointMapping";
       EXPECT_EQ(atPoint.uv, out[0].uv) << "PointMapping";
     }
@@ -456,13 +456,13 @@ TEST(ParamExtremes, NearlyParallelPlanesBelowTheLimitAreRefused) {
       o.arithmetic.precision = precision;
       std::vector<VertexUv> out;
       if (row.accepted) {
-        mapVertices(o, Affine3::Identity(), {Vec3(1, 2, 3)}, {}, out);
+        Projector(o, Affine3::Identity()).mapVertices({Vec3(1, 2, 3)}, {}, out);
         EXPECT_EQ(out[0].state, CornerState::Ok);
         EXPECT_TRUE(out[0].uv.allFinite());
         continue;
       }
       try {
-        mapVertices(o, Affine3::Identity(), {Vec3(1, 2, 3)}, {}, out);
+        Projector(o, Affine3::Identity()).mapVertices({Vec3(1, 2, 3)}, {}, out);
         ADD_FAILURE() << "accepted";
       } catch (const UsageError& e) {
         EXPECT_EQ(std::string(e.what()), "two-plane: the planes are parallel (the sine of their angle is below 1e-12)");
@@ -539,7 +539,7 @@ TEST(ParamExtremes, AUnitMesh1e8AwayKeepsItsDigitsInTheLocalFrame) {
         SCOPED_TRACE(std::string(row.expected) + " [" + nameOf(precision) + ", " + nameOf(math) + "]");
         o.arithmetic = {precision, math};
         std::vector<VertexUv> out;
-        mapVertices(o, frame, mesh.positions, {}, out);
+        Projector(o, frame).mapVertices(mesh.positions, {}, out);
         EXPECT_LE(worstDifference(out, reference, usesArctangent(row.surface)),
                   precision == Precision::Double ? 1e-9 : 1e-6);
       }
@@ -566,7 +566,7 @@ TEST(ParamExtremes, ARandomCloudStaysWithinTheDocumentedBoundsOfTheReference) {
                      ", " + nameOf(math) + "]");
         o.arithmetic = {precision, math};
         std::vector<VertexUv> out;
-        mapVertices(o, Affine3::Identity(), cloud, {}, out);
+        Projector(o, Affine3::Identity()).mapVertices(cloud, {}, out);
         EXPECT_LE(worstDifference(out, reference, true), bound);
       }
   }

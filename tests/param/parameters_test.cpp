@@ -122,7 +122,7 @@ TEST(MakeProjector, ReadsEachParameterIntoTheTypedProjector) {
   p.add("seam-place", std::string("auto"));
   p.add("uv-scale", std::vector<double>{2, 0.5});
   p.add("precision", std::string("float"));
-  const Projector made = makeProjector(p);
+  const ProjectorRequest made = makeProjector(p);
   const ProjectorOptions& o = made.options;
   EXPECT_EQ(o.surface, SurfaceKind::Cylinder);
   EXPECT_TRUE(o.cylinderCaps);
@@ -205,7 +205,7 @@ TEST(MakeProjector, TheSeamIsPlacedByDegreesOrAuto) {
   ParameterDictionary degrees(ParameterFace::CommandLine);
   degrees.add("projector", std::string("cylinder"));
   degrees.add("seam-place", 30.0);
-  const Projector turned = makeProjector(degrees);
+  const ProjectorRequest turned = makeProjector(degrees);
   EXPECT_EQ(turned.options.placement.turnDegrees, 30.0);
   EXPECT_FALSE(turned.seamPlaceAuto);
   ParameterDictionary automatic(ParameterFace::Keyword);

@@ -34,7 +34,7 @@ TEST(SeamPlacement, ATurnMovesTheSeamToThatAzimuth) {
   o.surface = SurfaceKind::Cylinder;
   o.placement.fit = Fit::None;
   o.placement.turnDegrees = 45.0;
-  const PointMapping mapping(o, fitPlacement({}, o.surface, o.placement));
+  const Projector mapping(o, fitPlacement({}, o.surface, o.placement));
   // The point at azimuth 90 degrees lies an eighth of a turn past the seam at 45 degrees.
   EXPECT_NEAR(mapping.at(Vec3(0, 1, 0.5), Vec3(0, 1, 0)).uv.x(), 0.125, 1e-15);
   EXPECT_NEAR(mapping.at(Vec3(0, 1, 0.5), Vec3(0, 1, 0)).uv.y(), 0.5, 1e-15);

@@ -152,7 +152,7 @@ TEST(TriplanarProject, EachFaceCarriesItsDominantAxisProjectionOfItsCorners) {
   EXPECT_EQ(projection.summary.invalidFaces, 0u);
   // mapVertices maps single vertices, which have no face to choose by.
   std::vector<VertexUv> out;
-  EXPECT_THROW(mapVertices(o, Affine3::Identity(), mesh.positions, {}, out), UsageError);
+  EXPECT_THROW(Projector(o, Affine3::Identity()).mapVertices(mesh.positions, {}, out), UsageError);
 }
 
 TEST(TriplanarProject, TheBboxFitIsUniformAndTheMappingFollowsThePlacement) {
@@ -167,8 +167,8 @@ TEST(TriplanarProject, TheBboxFitIsUniformAndTheMappingFollowsThePlacement) {
   EXPECT_NEAR(local.x(), 1.0, 1e-15);
   EXPECT_NEAR(local.y(), 0.5, 1e-15);
   EXPECT_NEAR(local.z(), 0.25, 1e-15);
-  const TriplanarMapping mapping(o, projection.localFromObject);
-  const TriplanarSample s = mapping.at(Vec3(5, 3, 2), Vec3(0, 0, 1));
+  const Projector mapping(o, projection.localFromObject);
+  const TriplanarSample s = mapping.blendAt(Vec3(5, 3, 2), Vec3(0, 0, 1));
   EXPECT_NEAR(s.uv[2].x(), 1.0, 1e-15);
   EXPECT_NEAR(s.uv[2].y(), 0.5, 1e-15);
   expectNear(s.weights, Vec3(0, 0, 1), 0.0);

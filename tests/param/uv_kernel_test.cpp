@@ -72,7 +72,7 @@ std::vector<Vec3> unitNormals(const std::vector<Vec3>& positions) {
   return normals;
 }
 
-// mapVertices (which runs on the kernel) and mapUvs against PointMapping, which evaluates each
+// Projector::mapVertices (which runs on the kernel) and mapUvs against Projector::at, which evaluates each
 // point alone through the per-vertex templates: every bit of uv and axial, state and reason.
 template <class T>
 void expectKernelEqualsPerVertex(Precision precision, MathMode math) {
@@ -91,15 +91,15 @@ void expectKernelEqualsPerVertex(Precision precision, MathMode math) {
                                   std::to_string(int(c.ray)) + " preset " + std::to_string(int(c.preset)) +
                                   (fitted ? " fitted" : " identity");
         std::vector<VertexUv> wide;
-        mapVertices(o, frame, positions, normals, wide, 1, box);
+        Projector(o, frame, box).mapVertices(positions, normals, wide, 1);
         LocalPoints<T> points;
         toLocal(frame, positions, normals, points);
         UvArrays<T> narrow;
         mapUvs(o, frame, points, narrow, 1, box);
-        const PointMapping mapping(o, frame, box);
+        const Projector mapping(o, frame, box);
         std::size_t e = 0;
         for (std::size_t i = 0; i < positions.size(); ++i) {
-          const VertexUv expected = mapping.at(positions[i], normals[i]);
+          const PointUv expected = mapping.at(positions[i], normals[i]);
           const VertexUv& got = wide[i];
           ASSERT_EQ(int(got.state), int(expected.state)) << where << " vertex " << i;
           ASSERT_EQ(int(got.reason), int(expected.reason)) << where << " vertex " << i;
@@ -176,8 +176,8 @@ TEST(UvKernel, TwoThreadsGiveTheSameArraysAndListAsOne) {
       EXPECT_EQ(one.exceptions.size(), 2u);  // the sphere's and the cylinder's two pole vertices
       for (std::size_t i = 0; i < one.exceptions.size(); ++i) EXPECT_EQ(one.exceptions[i].index, two.exceptions[i].index);
       std::vector<VertexUv> wide1, wide2;
-      mapVertices(o, frame, mesh.positions, {}, wide1, 1);
-      mapVertices(o, frame, mesh.positions, {}, wide2, 2);
+      Projector(o, frame).mapVertices(mesh.positions, {}, wide1, 1);
+      Projector(o, frame).mapVertices(mesh.positions, {}, wide2, 2);
       ASSERT_EQ(wide1.size(), wide2.size());
       for (std::size_t i = 0; i < wide1.size(); ++i) {
         ASSERT_TRUE(sameBits(wide1[i].uv.x(), wide2[i].uv.x()) && sameBits(wide1[i].uv.y(), wide2[i].uv.y())) << i;
@@ -197,7 +197,7 @@ TEST(UvKernel, FastFloatStaysWithinASixtyFourthOfATexelAt4096) {
       mapVerticesReference(o, frame, mesh.positions, {}, reference);
       o.arithmetic = {Precision::Float, math};
       std::vector<VertexUv> out;
-      mapVertices(o, frame, mesh.positions, {}, out, 2);
+      Projector(o, frame).mapVertices(mesh.positions, {}, out, 2);
       const MappingError error = mappingError(out, reference, Precision::Float, true);
       EXPECT_EQ(error.stateMismatches, 0u);
       EXPECT_EQ(error.compared, mesh.positions.size());

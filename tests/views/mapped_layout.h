@@ -46,15 +46,15 @@ inline Mapped mapWith(Mesh mesh, const param::ProjectorOptions& options) {
   m.mesh = std::move(projection.mesh);
   m.uv = std::move(projection.uv);
   m.analyse();
-  auto mapping = std::make_shared<param::PointMapping>(options, projection.localFromObject);
-  m.wrapsU = mapping->wrapsU();
+  auto mapping = std::make_shared<param::Projector>(options, projection.localFromObject);
+  m.wrapsU = mapping->traits().wraps;
   m.exact = render::PixelMapping{[mapping](const Vec3& p, const Vec3& n, std::int32_t) -> Vec4 {
-                                   const param::VertexUv uv = mapping->at(p, n);
+                                   const param::PointUv uv = mapping->at(p, n);
                                    const double nan = std::numeric_limits<double>::quiet_NaN();
                                    return uv.state == param::CornerState::Invalid ? Vec4(nan, nan, 0, 1)
                                                                                   : Vec4(uv.uv.x(), uv.uv.y(), 0, 1);
                                  },
-                                 mapping->wrapsU(), mapping->needsNormal()};
+                                 mapping->traits().wraps, mapping->needsNormal()};
   return m;
 }
 
