@@ -86,7 +86,6 @@ struct Reason {
 
 // What the judgement needs to know about where the UVs came from.
 struct JudgementOptions {
-  std::optional<std::vector<int>> poleVertices;  // the source's own pole vertices; else the fanned poles found in the UVs
   bool wrapsU = false;                       // u has period uPeriod (cylinder, sphere): seams are expected, not failed
   double uPeriod = 1.0;                      // 1, or what `uvtk map --density` scaled the UVs by
   int overlapResolution = 1024;              // pixels across the raster that measures overlap

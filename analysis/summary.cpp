@@ -40,7 +40,7 @@ void unscale(TexelDensity& d) {
 }  // namespace
 
 Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDistortion>& faces, int overlapResolution,
-                  const std::vector<int>* poleVertices, int threads, TextureSize textureSize) {
+                  int threads, TextureSize textureSize) {
   UVTK_CHECK(faces.size() == mesh.triangles.size() && uv.uv.size() == 3 * faces.size() &&
              uv.faceFlags.size() == faces.size() && textureSize.width >= 1 && textureSize.height >= 1);
   Summary s;
@@ -110,7 +110,7 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
   s.density.exponent = std::ilogb(measureLengthScale(mesh, threads)) - std::ilogb(measureUvScale(s.uvBounds));
   // The longest first (the seam edges sort every half-edge), so that the last task to start is a short one.
   const std::function<void(std::vector<double>&)> measures[] = {
-      [&](std::vector<double>&) { s.seams = classifySeamEdges(mesh, uv, s.poleVertices); },
+      [&](std::vector<double>&) { s.seams = classifySeamEdges(mesh, uv); },
       [&](std::vector<double>&) { s.overlap = measureOverlap(uv, faces, overlapResolution); },
       [&](std::vector<double>& values) {
         s.density.scaled = statistics(
@@ -131,8 +131,7 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
         s.linfStretches =
             statistics(values, [&](const FaceDistortion& f) { return f.linfStretch() * normalisation; }, BinSpacing::Log2);
       }};
-  s.poleVertices = poleVertices ? *poleVertices : fannedPoleVertices(mesh, uv);
-  std::sort(s.poleVertices.begin(), s.poleVertices.end());
+  s.poleVertices = poleVerticesOf(mesh, uv);
   // Seven independent measures side by side: the seams, the overlap, the density, the statistics.
   const int count = int(std::size(measures));
   std::vector<std::vector<double>> values(std::size_t(workerCount(count, threads)));

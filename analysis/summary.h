@@ -60,18 +60,16 @@ struct Summary {
   // Ratios get log2-spaced bins (angle, L2, Linf); area distortion, already a log2, linear bins.
   Statistics angleDistortion, areaDistortion, l2Stretches, linfStretches;
   TexelDensity density;
-  SeamEdges seams;                 // classifySeamEdges with the pole vertices
+  SeamEdges seams;                 // classifySeamEdges: pole corners (UvMap::cornerPole) compare nothing
   std::size_t poleFaces = 0;       // faces flagged kFacePole, whatever their status
-  std::vector<int> poleVertices;   // the given pole vertices, or fannedPoleVertices
+  std::vector<int> poleVertices;   // poleVerticesOf: the vertices with a corner at a pole, ascending
   Eigen::AlignedBox2d uvBounds;    // over every valid corner; empty when there is none
   Overlap overlap;
 };
 
-// The report for `faces` = measureFaces(mesh, uv, ...). `poleVertices`: the source's own pole
-// vertices (a projector knows them); null: the fanned poles found in the UVs (fannedPoleVertices).
-// Preconditions: matching sizes, a texture of at least 1 x 1 texels.
+// The report for `faces` = measureFaces(mesh, uv, ...), with the poles the UVs' source marked
+// (UvMap::cornerPole). Preconditions: matching sizes, a texture of at least 1 x 1 texels.
 Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDistortion>& faces,
-                  int overlapResolution = 1024, const std::vector<int>* poleVertices = nullptr, int threads = 0,
-                  TextureSize textureSize = {});
+                  int overlapResolution = 1024, int threads = 0, TextureSize textureSize = {});
 
 }  // namespace uvtk::analysis

@@ -93,14 +93,4 @@ UvCheck checkUvs(const UvMap& expected, const UvMap& found, const UvCheckOptions
   return out;
 }
 
-std::vector<std::uint8_t> poleCornerMask(const Mesh& mesh, const std::vector<int>& poleVertices) {
-  std::vector<std::uint8_t> isPole(mesh.vertexCount(), 0);
-  for (int v : poleVertices)
-    if (v >= 0 && std::size_t(v) < isPole.size()) isPole[std::size_t(v)] = 1;
-  std::vector<std::uint8_t> mask(3 * mesh.faceCount(), 0);
-  for (std::size_t f = 0; f < mesh.faceCount(); ++f)
-    for (int k = 0; k < 3; ++k) mask[3 * f + std::size_t(k)] = isPole[std::size_t(mesh.triangles[f][k])];
-  return mask;
-}
-
 }  // namespace uvtk::analysis

@@ -48,7 +48,7 @@ struct UvCheckOptions {
   // cylinder or sphere without a transform; zero where nothing wraps (plane, cube, texgen, files).
   // Faces flagged kFaceCap never wrap.
   Vec2 period = Vec2::Zero();
-  std::vector<std::uint8_t> poleCorners;  // per corner, 1 at a pole vertex; empty: none
+  std::vector<std::uint8_t> poleCorners;  // per corner, 1 at a pole (the reference's UvMap::cornerPole); empty: none
   std::size_t worst = 10;                 // the length of UvCheck::worst and worstPole
 };
 
@@ -73,7 +73,5 @@ struct UvCheck {
 // are Pole all the same.
 UvCheck checkUvs(const UvMap& expected, const UvMap& found, const UvCheckOptions& options);
 
-// Per corner of `mesh`, 1 where the corner's vertex is in `poleVertices` (vertex indices).
-std::vector<std::uint8_t> poleCornerMask(const Mesh& mesh, const std::vector<int>& poleVertices);
 
 }  // namespace uvtk::analysis

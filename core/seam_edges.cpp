@@ -92,13 +92,11 @@ std::vector<int> standInsByPosition(const Mesh& mesh, std::vector<int> vertices)
 
 // seamEdgeList with the vertices taken through `standIn`; the vertices of the edges that only
 // one face has are added to `boundary` when it is given.
-std::vector<SeamEdge> seamEdgesThrough(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices,
-                                       const std::vector<int>& standIn, std::vector<int>* boundary) {
+std::vector<SeamEdge> seamEdgesThrough(const Mesh& mesh, const UvMap& uv, const std::vector<int>& standIn,
+                                       std::vector<int>* boundary) {
   std::vector<char> isPole(mesh.positions.size(), 0);
-  for (int v : poleVertices) {
-    UVTK_CHECK(v >= 0 && static_cast<std::size_t>(v) < isPole.size());
-    isPole[static_cast<std::size_t>(standInOf(standIn, v))] = 1;
-  }
+  for (std::size_t corner = 0; corner < uv.cornerPole.size(); ++corner)
+    if (uv.cornerPole[corner] != 0) isPole[std::size_t(standInOf(standIn, mesh.triangles[corner / 3][corner % 3]))] = 1;
 
   // Two corners of a vertex differ beyond kUvTolerance times the layout's extent: UVs in object
   // units, 1e-3 or 1e3 wide, cut where a unit layout cuts (the wrap tests stay in units of the period).
@@ -174,20 +172,43 @@ std::vector<int> fannedPoleVertices(const Mesh& mesh, const UvMap& uv) {
   return poles;
 }
 
-std::vector<SeamEdge> seamEdgeList(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices) {
+void markFannedPoles(const Mesh& mesh, UvMap& uv) {
+  const std::vector<int> poles = fannedPoleVertices(mesh, uv);
+  if (poles.empty()) return;
+  std::vector<char> isPole(mesh.positions.size(), 0);
+  for (int v : poles) isPole[std::size_t(v)] = 1;
+  uv.cornerPole.assign(uv.uv.size(), 0);
+  for (std::size_t corner = 0; corner < uv.cornerPole.size(); ++corner)
+    uv.cornerPole[corner] = isPole[std::size_t(mesh.triangles[corner / 3][corner % 3])];
+}
+
+std::vector<int> poleVerticesOf(const Mesh& mesh, const UvMap& uv) {
+  if (uv.cornerPole.empty()) return {};
+  UVTK_CHECK(uv.cornerPole.size() == 3 * mesh.triangles.size());
+  std::vector<char> isPole(mesh.positions.size(), 0);
+  for (std::size_t corner = 0; corner < uv.cornerPole.size(); ++corner)
+    if (uv.cornerPole[corner] != 0) isPole[std::size_t(mesh.triangles[corner / 3][corner % 3])] = 1;
+  std::vector<int> poles;
+  for (std::size_t v = 0; v < isPole.size(); ++v)
+    if (isPole[v]) poles.push_back(int(v));
+  return poles;
+}
+
+std::vector<SeamEdge> seamEdgeList(const Mesh& mesh, const UvMap& uv) {
   UVTK_CHECK(uv.uv.size() == 3 * mesh.triangles.size());
+  UVTK_CHECK(uv.cornerPole.empty() || uv.cornerPole.size() == uv.uv.size());
   std::vector<int> boundary;
-  std::vector<SeamEdge> seams = seamEdgesThrough(mesh, uv, poleVertices, {}, &boundary);
+  std::vector<SeamEdge> seams = seamEdgesThrough(mesh, uv, {}, &boundary);
   // A file split at its seams (PLY, glTF: io/split_vertices.h) has them as boundary edges whose
   // vertices repeat positions; welded there, they are edges of two faces again.
   const std::vector<int> standIn = standInsByPosition(mesh, std::move(boundary));
   if (standIn.empty()) return seams;
-  return seamEdgesThrough(mesh, uv, poleVertices, standIn, nullptr);
+  return seamEdgesThrough(mesh, uv, standIn, nullptr);
 }
 
-SeamEdges classifySeamEdges(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices) {
+SeamEdges classifySeamEdges(const Mesh& mesh, const UvMap& uv) {
   SeamEdges seams;
-  for (const SeamEdge& e : seamEdgeList(mesh, uv, poleVertices)) {
+  for (const SeamEdge& e : seamEdgeList(mesh, uv)) {
     const double length = (mesh.positions[e.a] - mesh.positions[e.b]).stableNorm();  // norm() squares 1e200 to inf
     if (e.wrap) ++seams.wrapEdges, seams.wrapLength += length;
     else ++seams.cutEdges, seams.cutLength += length;

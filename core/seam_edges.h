@@ -46,12 +46,17 @@ struct SeamEdge {
 // PoleMode::None (u = 0 everywhere) is not detected, and needs no exclusion. Ascending order.
 std::vector<int> fannedPoleVertices(const Mesh& mesh, const UvMap& uv);
 
-// The seam edges in ascending (a, b) order, leaving out the endpoints listed in `poleVertices`
-// (any order), for example fannedPoleVertices(mesh, uv) or a projector's own list.
-// Precondition: `uv` has 3 corners per triangle.
-std::vector<SeamEdge> seamEdgeList(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices);
+// What a file's UVs cannot say but show: uv.cornerPole set on every corner of fannedPoleVertices.
+void markFannedPoles(const Mesh& mesh, UvMap& uv);
 
-// The counts and lengths of seamEdgeList(mesh, uv, poleVertices) per class.
-SeamEdges classifySeamEdges(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices);
+// The vertices with a corner at a pole (uv.cornerPole), ascending: what summaries list and count.
+std::vector<int> poleVerticesOf(const Mesh& mesh, const UvMap& uv);
+
+// The seam edges in ascending (a, b) order, leaving out endpoints at a pole (uv.cornerPole: a
+// vertex with any corner there). Precondition: `uv` has 3 corners per triangle.
+std::vector<SeamEdge> seamEdgeList(const Mesh& mesh, const UvMap& uv);
+
+// The counts and lengths of seamEdgeList(mesh, uv) per class.
+SeamEdges classifySeamEdges(const Mesh& mesh, const UvMap& uv);
 
 }  // namespace uvtk

@@ -47,10 +47,15 @@ struct UvMap {
   std::vector<double> w;                    // optional third component per corner (cube face index), or empty
   std::vector<std::uint8_t> faceFlags;      // one FaceFlag set per triangle
   std::vector<std::uint8_t> cornerInvalid;  // a CornerInvalid per corner, non-zero where it has no valid UV (written as 0, 0)
+  // 1 per corner at a pole of the source (a wrapping projector's axis, a singular point, a file's
+  // fanned pole): v is defined there, u is not (§5). Empty: no corner is. The source says it, as it
+  // says cornerInvalid: nothing downstream rebuilds it.
+  std::vector<std::uint8_t> cornerPole;
 
   std::size_t faceCount() const { return faceFlags.size(); }
   bool faceHas(std::size_t f, FaceFlag flag) const { return (faceFlags[f] & flag) != 0; }
   bool cornerValid(std::size_t c) const { return cornerInvalid.empty() || cornerInvalid[c] == kCornerValid; }
+  bool cornerAtPole(std::size_t c) const { return !cornerPole.empty() && cornerPole[c] != 0; }
   // The UV a file holds at corner c: (0, 0) where the corner has no valid UV, whatever is stored
   // there (every writer lists such faces, io/face_lists.h).
   Vec2 writtenUv(std::size_t c) const { return cornerValid(c) ? uv[c] : Vec2::Zero(); }

@@ -61,8 +61,7 @@ UvMap storedUvs(const io::ReadMeshResult& read, const std::string& path, bool pa
 
 // What the stored UVs are compared with.
 struct Reference {
-  UvMap uv;  // the expected UVs, with the faces' flags and the corners without a value
-  std::vector<int> poleVertices;
+  UvMap uv;  // the expected UVs, with the faces' flags, the corners without a value and those at a pole
   Vec2 period = Vec2::Zero();
   nlohmann::json record;    // "expected" in the JSON
   std::string description;  // one line of text
@@ -87,7 +86,6 @@ Reference byMapping(const Mesh& mesh, const CheckOptions& mapping, const std::st
   MappedMesh mapped = mapByProjector(mesh, o, mapping.seamPlaceAuto);
   printMappingNotes(inputPath, MeshWarnings{}, mapped);
   r.uv = std::move(mapped.uv);
-  r.poleVertices = mapped.projection->summary.poleVertexList;
   const bool wraps = param::traitsOf(o.surface).wraps;
   if (wraps) r.period = o.uvTransform.apply(Vec2(1, 0)) - o.uvTransform.apply(Vec2(0, 0));
   r.noValue = "the mapping has no value (the ray misses the surface, or the result is not finite)";
@@ -238,7 +236,7 @@ std::string checkText(const CheckOptions& a, const Report& report, const analysi
   appendf(text,
           "pole corners: %zu, set apart (%zu at %zu pole vertices, u not compared; %zu other corners of %zu pole "
           "faces)\n",
-          check.poleCorners + check.poleFaceCorners, check.poleCorners, report.reference.poleVertices.size(),
+          check.poleCorners + check.poleFaceCorners, check.poleCorners, poleVerticesOf(mesh, report.reference.uv).size(),
           check.poleFaceCorners, check.poleFaces);
   if (check.pole.count > 0) appendStatistics(text, check.pole, texels);
   appendf(text, "invalid corners: %zu (%zu where the reference has no value, %zu without vt)\n",
@@ -277,7 +275,7 @@ CheckRun checkStoredUvs(const CheckOptions& a) {
 
   analysis::UvCheckOptions options;
   options.period = reference.period;
-  options.poleCorners = analysis::poleCornerMask(mesh, reference.poleVertices);
+  options.poleCorners = reference.uv.cornerPole;
   options.worst = a.worst;
   const analysis::UvCheck check = analysis::checkUvs(reference.uv, found, options);
   // The stored UVs judged as any layout: their flips, overlap and seams, whatever the reference says.
@@ -304,7 +302,7 @@ CheckRun checkStoredUvs(const CheckOptions& a) {
     nlohmann::json pole = errorStatisticsJson(check.pole, texels);
     pole["pole_vertex_corners"] = check.poleCorners;
     pole["pole_face_corners"] = check.poleFaceCorners;
-    pole["pole_vertices"] = reference.poleVertices;
+    pole["pole_vertices"] = poleVerticesOf(mesh, reference.uv);
     pole["pole_faces"] = check.poleFaces;
     pole["worst"] = worstPole;
     const nlohmann::json j = {{"tool", {{"name", "uvtk"}, {"version", UVTK_VERSION}}},

@@ -35,7 +35,6 @@ analysis::ProjectionDirections MappedMesh::projectionDirections() const {
 analysis::Judgement MappedMesh::judge(const analysis::Thresholds& thresholds, int overlapResolution,
                                       int threads, analysis::TextureSize textureSize) const {
   analysis::JudgementOptions options;
-  if (projection) options.poleVertices = projection->summary.poleVertexList;
   options.wrapsU = projector && exact && exact->wrapsS;  // a wrapping projector's seam is expected
   options.uPeriod = uvScale;
   options.overlapResolution = overlapResolution;
@@ -186,6 +185,7 @@ UvMap fileUvs(const Mesh& mesh, const std::string& path) {
         uv.faceFlags[f] |= kFaceInvalid;
       }
     }
+  markFannedPoles(mesh, uv);
   return uv;
 }
 

@@ -331,7 +331,7 @@ std::string meshViewHtml(const MappedMesh& mapped, const analysis::Judgement& ju
   // Seams: each edge between its two shown vertices (an edge a decimation collapsed is left out).
   std::vector<float> seamPoints;
   std::vector<std::uint8_t> seamWrap;
-  const views::SeamMarks marks = views::seamMarks(mapped.mesh, mapped.uv, judgement.summary.poleVertices);
+  const views::SeamMarks marks = views::seamMarks(mapped.mesh, mapped.uv);
   for (const SeamEdge& edge : marks.edges) {
     const int a = shown.vertexOf[std::size_t(edge.a)], b = shown.vertexOf[std::size_t(edge.b)];
     if (a == b) continue;

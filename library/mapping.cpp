@@ -1,5 +1,6 @@
 // Mapping a public mesh: the options of `uvtk map` and `uvtk texgen` as structs and as command
 // lines, and map(), texgen(), fileUvs() over the engine's mapped-mesh step.
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -187,14 +188,11 @@ Mapping makeMapping(inspect::MappedMesh mapped, const analysis::Thresholds& thre
   mapping.faceFlags = m.uv.faceFlags;
   mapping.invalidReason.resize(corners);
   mapping.state.resize(corners, CornerState::Ok);
-  std::vector<bool> pole(m.mesh.vertexCount(), false);
-  for (const int v : judgement.summary.poleVertices)
-    if (v >= 0 && std::size_t(v) < pole.size()) pole[std::size_t(v)] = true;
   for (std::size_t c = 0; c < corners; ++c) {
     mapping.invalidReason[c] = InvalidReason(m.uv.cornerInvalid[c]);
     if (m.uv.cornerInvalid[c] != kCornerValid)
       mapping.state[c] = CornerState::Invalid;
-    else if (pole[std::size_t(m.mesh.triangles[c / 3][c % 3])])
+    else if (m.uv.cornerAtPole(c))
       mapping.state[c] = CornerState::Pole;
   }
   mapping.source = m.source;
@@ -244,6 +242,10 @@ Mapping restoreMapping(Mapping data) {
   mapped.uv.faceFlags = data.faceFlags;
   mapped.uv.cornerInvalid.resize(corners);
   for (std::size_t c = 0; c < corners; ++c) mapped.uv.cornerInvalid[c] = std::uint8_t(data.invalidReason[c]);
+  if (std::find(data.state.begin(), data.state.end(), CornerState::Pole) != data.state.end()) {
+    mapped.uv.cornerPole.resize(corners);
+    for (std::size_t c = 0; c < corners; ++c) mapped.uv.cornerPole[c] = data.state[c] == CornerState::Pole;
+  }
   mapped.q = data.q;
   mapped.source = data.source;
   data.detail = std::move(detail);

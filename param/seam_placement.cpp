@@ -25,7 +25,7 @@ namespace {
 // The seam edges' total length as the judgement measures it (the one seam rule), with the
 // projection's own pole vertices.
 double seamLength(const Projection& projection) {
-  return classifySeamEdges(projection.mesh, projection.uv, projection.summary.poleVertexList).length();
+  return classifySeamEdges(projection.mesh, projection.uv).length();
 }
 
 struct SeamCandidate {

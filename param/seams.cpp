@@ -29,13 +29,16 @@ UvMap CornerField::toUvMap() && {
   map.w = std::move(w);
   map.faceFlags = std::move(faceFlags);
   map.cornerInvalid.resize(state.size());
+  map.cornerPole.resize(state.size());
   for (std::size_t i = 0; i < state.size(); ++i) {
+    map.cornerPole[i] = state[i] == CornerState::Pole;
     const bool invalid = state[i] == CornerState::Invalid;
     UVTK_CHECK(invalid == (reason[i] != kCornerValid));
     map.cornerInvalid[i] = reason[i];
     if (invalid) map.uv[i] = Vec2::Zero();
     if (invalid) map.faceFlags[i / 3] |= kFaceInvalid;
   }
+  if (std::find(map.cornerPole.begin(), map.cornerPole.end(), 1) == map.cornerPole.end()) map.cornerPole = {};
   return map;
 }
 

@@ -74,7 +74,7 @@ DrawnView drawLayout(const ViewInput& in, const ViewOptions& options) {
     drawSegment(image, layoutImagePoint(grid, square[k]), layoutImagePoint(grid, square[(k + 1) % 4]), kFrameWidth, kFrameColour);
 
   // Each seam edge on both of its faces' sides.
-  const SeamMarks seams = seamMarks(*in.mesh, uv, judgement.summary.poleVertices);
+  const SeamMarks seams = seamMarks(*in.mesh, uv);
   for (const SeamEdge& edge : seams.edges)
     for (int side = 0; side < 2; ++side)
       drawSegment(image, layoutImagePoint(grid, uv.uv[edge.cornerA[side]]), layoutImagePoint(grid, uv.uv[edge.cornerB[side]]),

@@ -18,9 +18,9 @@ std::string overlapText(const analysis::Overlap& overlap) {
   return text;
 }
 
-SeamMarks seamMarks(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices) {
+SeamMarks seamMarks(const Mesh& mesh, const UvMap& uv) {
   SeamMarks marks;
-  marks.edges = seamEdgeList(mesh, uv, poleVertices);
+  marks.edges = seamEdgeList(mesh, uv);
   std::stable_partition(marks.edges.begin(), marks.edges.end(), [](const SeamEdge& e) { return e.wrap; });
   return marks;
 }

@@ -25,7 +25,7 @@ std::vector<LegendEntry> seamLegendEntries(const SeamEdges& counts);
 // "0.42 % of 123456 covered pixels (1024 x 1024 raster)": the judgement's overlap, as the JSON has it.
 std::string overlapText(const analysis::Overlap& overlap);
 
-// seamEdgeList(mesh, uv, poleVertices) in drawing order.
-SeamMarks seamMarks(const Mesh& mesh, const UvMap& uv, const std::vector<int>& poleVertices);
+// seamEdgeList(mesh, uv) in drawing order.
+SeamMarks seamMarks(const Mesh& mesh, const UvMap& uv);
 
 }  // namespace uvtk::views

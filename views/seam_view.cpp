@@ -113,7 +113,7 @@ DrawnView drawSeams(const ViewInput& in, const ViewOptions& options) {
   Image image = shadeFaces(scene, colours, options.render.background);
 
   const std::vector<int>& poleVertices = judgement.summary.poleVertices;
-  const SeamMarks seams = seamMarks(mesh, *in.uv, poleVertices);
+  const SeamMarks seams = seamMarks(mesh, *in.uv);
   for (const SeamEdge& edge : seams.edges) {
     const auto clipped = clipSegment(scene.clip[std::size_t(edge.a)], scene.clip[std::size_t(edge.b)]);
     if (!clipped) continue;

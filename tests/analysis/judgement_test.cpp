@@ -253,7 +253,6 @@ TEST(Judgement, AnUnrepairedSeamFailsWhileARepairedOneIsOnlyReported) {
   for (const param::SeamMode mode : {param::SeamMode::Shift, param::SeamMode::None}) {
     o.seam = mode;
     const param::Projection p = param::project(sphere, o);
-    options.poleVertices = p.summary.poleVertexList;
     const Judgement j = judge(p.mesh, p.uv, options);
     // The seam crosses the faces of one meridian gap (the poles' fans apart).
     EXPECT_EQ(j.straddlingFaces, p.summary.straddlingFaces);
@@ -331,7 +330,6 @@ TEST(Judgement, NothingThatPassesOnRealLookingMeshesHasAMirroredFaceOrAFarUv) {
         o.eye = Vec3(3, -20, 8);
         const param::Projection p = param::project(mesh, o);
         JudgementOptions options;
-        options.poleVertices = p.summary.poleVertexList;
         options.wrapsU = surface == SurfaceKind::Cylinder || surface == SurfaceKind::Sphere;
         options.overlapResolution = 256;
         const Judgement j = judge(p.mesh, p.uv, options);

@@ -386,33 +386,35 @@ Layout twoTriangles(const Vec2& offset) {
 
 TEST(SeamEdges, HandMadeWrapAndCut) {
   const Layout wrap = twoTriangles({1, 0});
-  const SeamEdges w = classifySeamEdges(wrap.mesh, wrap.uv, {});
+  const SeamEdges w = classifySeamEdges(wrap.mesh, wrap.uv);
   EXPECT_EQ(w.wrapEdges, 1u);
   EXPECT_EQ(w.cutEdges, 0u);
   EXPECT_DOUBLE_EQ(w.wrapLength, std::sqrt(2.0));
 
   for (const Vec2& offset : {Vec2(0.3, 0), Vec2(1, 0.5), Vec2(0, 1)}) {
     const Layout cut = twoTriangles(offset);
-    const SeamEdges c = classifySeamEdges(cut.mesh, cut.uv, {});
+    const SeamEdges c = classifySeamEdges(cut.mesh, cut.uv);
     EXPECT_EQ(c.wrapEdges, 0u);
     EXPECT_EQ(c.cutEdges, 1u);
     EXPECT_DOUBLE_EQ(c.cutLength, std::sqrt(2.0));
   }
 
   const Layout none = twoTriangles({0, 0});  // continuous: no seam; boundary edges never are
-  const SeamEdges n = classifySeamEdges(none.mesh, none.uv, {});
+  const SeamEdges n = classifySeamEdges(none.mesh, none.uv);
   EXPECT_EQ(n.wrapEdges + n.cutEdges, 0u);
 
   // Endpoints at different integer offsets, (1, 0) at one and (2, 0) at the other: not a translation.
   Layout twisted = twoTriangles({1, 0});
   twisted.uv.uv[4].x() += 1.0;
-  EXPECT_EQ(classifySeamEdges(twisted.mesh, twisted.uv, {}).cutEdges, 1u);
+  EXPECT_EQ(classifySeamEdges(twisted.mesh, twisted.uv).cutEdges, 1u);
 
   // A pole endpoint is left out: only the other endpoint's offset decides.
   Layout polar = twoTriangles({1, 0});
   polar.uv.uv[3].x() += 0.25;  // vertex 2 fanned
-  EXPECT_EQ(classifySeamEdges(polar.mesh, polar.uv, {}).cutEdges, 1u);
-  EXPECT_EQ(classifySeamEdges(polar.mesh, polar.uv, {2}).wrapEdges, 1u);
+  EXPECT_EQ(classifySeamEdges(polar.mesh, polar.uv).cutEdges, 1u);
+  polar.uv.cornerPole.assign(polar.uv.uv.size(), 0);
+  for (std::size_t c = 0; c < polar.uv.uv.size(); ++c) polar.uv.cornerPole[c] = polar.mesh.triangles[c / 3][c % 3] == 2;
+  EXPECT_EQ(classifySeamEdges(polar.mesh, polar.uv).wrapEdges, 1u);
 }
 
 // The mesh with a vertex per distinct (vertex, u, v) of its corners, as a PLY or glTF file holds
@@ -442,9 +444,15 @@ TEST(SeamEdges, AMeshSplitAtItsSeamsHasTheSameSeamsAndPoles) {
   const param::Projection p = projectSphere(16, 8, param::SeamMode::Shift);
   const Mesh split = splitAtUvs(p.mesh, p.uv);
   ASSERT_EQ(split.positions.size(), p.mesh.positions.size() + 7 + 2 * 15);  // the 7 rings' seam vertices; 16 - 1 pole copies each
-  const std::vector<int> poles = fannedPoleVertices(split, p.uv);
-  EXPECT_EQ(poles, (std::vector<int>{0, 113}));
-  const std::vector<SeamEdge> whole = seamEdgeList(p.mesh, p.uv, poles), parts = seamEdgeList(split, p.uv, poles);
+  EXPECT_EQ(fannedPoleVertices(split, p.uv), (std::vector<int>{0, 113}));
+  EXPECT_EQ(poleVerticesOf(p.mesh, p.uv), (std::vector<int>{0, 113}));
+  // As a file's UVs: the poles found in them (markFannedPoles) mark the corners of vertices 0 and 113 only.
+  UvMap found = p.uv;
+  found.cornerPole.clear();
+  markFannedPoles(split, found);
+  EXPECT_EQ(poleVerticesOf(split, found), (std::vector<int>{0, 113}));
+  const std::vector<SeamEdge> whole = seamEdgeList(p.mesh, p.uv), parts = seamEdgeList(split, p.uv);
+  EXPECT_EQ(seamEdgeList(split, found).size(), parts.size());
   ASSERT_EQ(parts.size(), 8u);
   ASSERT_EQ(parts.size(), whole.size());
   for (std::size_t i = 0; i < whole.size(); ++i) {
@@ -452,17 +460,17 @@ TEST(SeamEdges, AMeshSplitAtItsSeamsHasTheSameSeamsAndPoles) {
     EXPECT_EQ(parts[i].b, whole[i].b);
     EXPECT_EQ(parts[i].wrap, whole[i].wrap);
   }
-  const SeamEdges s = classifySeamEdges(split, p.uv, poles);
+  const SeamEdges s = classifySeamEdges(split, found);
   EXPECT_EQ(s.wrapEdges, 8u);
   EXPECT_EQ(s.cutEdges, 0u);
-  EXPECT_EQ(s.wrapLength, classifySeamEdges(p.mesh, p.uv, poles).wrapLength);
+  EXPECT_EQ(s.wrapLength, classifySeamEdges(p.mesh, p.uv).wrapLength);
 
   // Two triangles that share no vertex but meet along an edge at the same positions: one edge, a wrap seam.
   Layout apart = twoTriangles({1, 0});
   apart.mesh.positions.push_back(apart.mesh.positions[2]);
   apart.mesh.positions.push_back(apart.mesh.positions[1]);
   apart.mesh.triangles[1] = {4, 5, 3};
-  EXPECT_EQ(classifySeamEdges(apart.mesh, apart.uv, {}).wrapEdges, 1u);
+  EXPECT_EQ(classifySeamEdges(apart.mesh, apart.uv).wrapEdges, 1u);
   // Vertices in closed fans are never copies: the sphere twice over at the same positions (two
   // closed shells, as a doubled scan might be) has each shell's seams, where welding every
   // coincident vertex would give every edge four faces and no seam.
@@ -474,7 +482,8 @@ TEST(SeamEdges, AMeshSplitAtItsSeamsHasTheSameSeamsAndPoles) {
   twiceUv.uv.insert(twiceUv.uv.end(), p.uv.uv.begin(), p.uv.uv.end());
   twiceUv.faceFlags.insert(twiceUv.faceFlags.end(), p.uv.faceFlags.begin(), p.uv.faceFlags.end());
   twiceUv.cornerInvalid.insert(twiceUv.cornerInvalid.end(), p.uv.cornerInvalid.begin(), p.uv.cornerInvalid.end());
-  EXPECT_EQ(classifySeamEdges(twice, twiceUv, {0, 113, n, n + 113}).wrapEdges, 16u);
+  twiceUv.cornerPole.insert(twiceUv.cornerPole.end(), p.uv.cornerPole.begin(), p.uv.cornerPole.end());
+  EXPECT_EQ(classifySeamEdges(twice, twiceUv).wrapEdges, 16u);
 }
 
 // ---- Overlap ----

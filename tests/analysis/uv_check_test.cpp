@@ -9,6 +9,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/seam_edges.h"
 #include "meshes/generators.h"
 #include "param/projector.h"
 
@@ -212,12 +213,25 @@ TEST(CheckUvs, CapFacesAndPlanesDoNotWrap) {
   EXPECT_NEAR(check.error[0], 1.0, 1e-15);
 }
 
-TEST(CheckUvs, PoleCornerMaskMarksEveryCornerOfThePoleVertices) {
-  Mesh mesh;
-  mesh.positions.assign(4, Vec3::Zero());
-  mesh.triangles = {{0, 1, 2}, {2, 1, 3}};
-  EXPECT_EQ(poleCornerMask(mesh, {2}), (std::vector<std::uint8_t>{0, 0, 1, 1, 0, 0}));
-  EXPECT_EQ(poleCornerMask(mesh, {}), (std::vector<std::uint8_t>(6, 0)));
+// The projector marks its pole corners as it marks invalid ones: exactly the corners on the axis
+// (x = y = 0 for the sphere at the origin), and poleVerticesOf lists the summary's pole vertices.
+TEST(CheckUvs, TheProjectorMarksExactlyTheCornersOnItsAxis) {
+  const Mesh sphere = meshes::latLongSphere(16, 9);
+  param::ProjectorOptions o;
+  o.surface = param::SurfaceKind::Sphere;
+  o.placement.fit = param::Fit::None;
+  const param::Projection p = param::project(sphere, o);
+  ASSERT_EQ(p.uv.cornerPole.size(), p.uv.uv.size());
+  std::size_t onAxis = 0;
+  for (std::size_t c = 0; c < p.uv.uv.size(); ++c) {
+    const Vec3& q = p.mesh.positions[std::size_t(p.mesh.triangles[c / 3][c % 3])];
+    const bool axis = q.x() == 0.0 && q.y() == 0.0;
+    onAxis += axis;
+    EXPECT_EQ(p.uv.cornerAtPole(c), axis) << "corner " << c;
+  }
+  EXPECT_EQ(onAxis, 2u * 16u);  // one fan of 16 triangles at each pole
+  EXPECT_EQ(poleVerticesOf(p.mesh, p.uv), p.summary.poleVertexList);
+  EXPECT_EQ(p.summary.poleVertexList.size(), 2u);
 }
 
 // A sphere mapped with the seam shifted and with the raw u, and with a scaled UV transform: the
@@ -236,7 +250,7 @@ TEST(CheckUvs, SeamRepairsDifferByWholePeriodsOnly) {
     UvCheckOptions options;
     options.period = o.uvTransform.apply(Vec2(1, 0)) - o.uvTransform.apply(Vec2(0, 0));
     EXPECT_EQ(options.period, Vec2(scale.x(), 0));
-    options.poleCorners = poleCornerMask(sphere, shifted.summary.poleVertexList);
+    options.poleCorners = shifted.uv.cornerPole;
     const UvCheck check = checkUvs(raw.uv, shifted.uv, options);
     EXPECT_EQ(check.main.max, 0.0) << "scale " << scale.x();
     EXPECT_EQ(check.pole.max, 0.0);

@@ -160,7 +160,7 @@ TEST(CameraProjector, ProjectMapsEveryCornerByTheFormula) {
   EXPECT_FALSE(p.uv.faceHas(0, kFaceInvalid));
   EXPECT_EQ(p.summary.invalidCorners[kCornerBehind], 1u);
   EXPECT_EQ(p.summary.invalidVertices, 1u);
-  const SeamEdges seams = classifySeamEdges(p.mesh, p.uv, p.summary.poleVertexList);
+  const SeamEdges seams = classifySeamEdges(p.mesh, p.uv);
   EXPECT_EQ(seams.wrapEdges + seams.cutEdges + p.summary.poleVertices + p.summary.straddlingFaces, 0u);
 }
 

@@ -188,18 +188,18 @@ TEST(SeamEdgeList, GivesTheCornersOfBothSides) {
   UvMap uv;
   uv.uv = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {2, 0}, {2, 1}};
   uv.faceFlags.assign(2, kFaceOk);
-  const std::vector<SeamEdge> edges = seamEdgeList(mesh, uv, {});
+  const std::vector<SeamEdge> edges = seamEdgeList(mesh, uv);
   ASSERT_EQ(edges.size(), 1u);
   EXPECT_EQ(edges[0].a, 1);
   EXPECT_EQ(edges[0].b, 2);
   EXPECT_TRUE(edges[0].wrap);
   EXPECT_EQ(edges[0].cornerA, (std::array<std::size_t, 2>{1, 4}));
   EXPECT_EQ(edges[0].cornerB, (std::array<std::size_t, 2>{2, 3}));
-  EXPECT_EQ(classifySeamEdges(mesh, uv, {}).wrapEdges, 1u);
+  EXPECT_EQ(classifySeamEdges(mesh, uv).wrapEdges, 1u);
 
   uv.uv[4].y() += 0.5;  // vertex 1 no longer a whole turn apart: a cut
-  ASSERT_EQ(seamEdgeList(mesh, uv, {}).size(), 1u);
-  EXPECT_FALSE(seamEdgeList(mesh, uv, {})[0].wrap);
+  ASSERT_EQ(seamEdgeList(mesh, uv).size(), 1u);
+  EXPECT_FALSE(seamEdgeList(mesh, uv)[0].wrap);
 }
 
 // Unit right triangles at (0, 0) and moved by (1/4, 1/4), on an 8 x 8 grid over [0, 2]^2: cell
