@@ -369,10 +369,9 @@ ImageCheckResult checkImage(const Image& shot, const Reference& reference, const
     }
     double low = aovs.at(x, row, 4), high = low;
     const auto widen = [&](double lambda) { low = std::min(low, lambda), high = std::max(high, lambda); };
-    bool edge = false;
     for (int ny = std::max(0, row - 1); ny <= std::min(height - 1, row + 1); ++ny)
       for (int nx = std::max(0, x - 1); nx <= std::min(width - 1, x + 1); ++nx)
-        face(nx, ny) == f ? widen(aovs.at(nx, ny, 4)) : void(edge = true);
+        if (face(nx, ny) == f) widen(aovs.at(nx, ny, 4));
     for (const Image& quad : reference.quadAovs)
       if (quad.at(x, row, 3) == f) widen(quad.at(x, row, 4));
     low += rhoApproximation(aovs, x, row, options.texture->width(), options.texture->height());

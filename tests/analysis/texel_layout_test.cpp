@@ -149,7 +149,9 @@ void expectSame(const TexelStatistics& s, const Brute& b) {
     EXPECT_EQ(x.overwritten, y.overwritten);
     EXPECT_EQ(x.clashes, y.clashes);
   }
-  if (std::isfinite(b.gutter)) EXPECT_NEAR(s.gutters.betweenCharts, b.gutter, 1e-9 * (1 + b.gutter));
+  if (std::isfinite(b.gutter)) {
+    EXPECT_NEAR(s.gutters.betweenCharts, b.gutter, 1e-9 * (1 + b.gutter));
+  }
 }
 
 TEST(TexelLayout, TwoSquaresBleedAtTheLevelWhereTheirGutterCloses) {

@@ -192,10 +192,10 @@ TEST(SceneBenchSchema, HasTheBenchOptionsButRenderingAndTheEndToEndMap) {
     if (key == "kind" || key == "mesh" || key == "mapping" || key == "path") continue;
     schemaKeys.insert(key);
     ASSERT_TRUE(options.count(key)) << key << " is no option of uvtk bench";
-    std::string name = key;
-    std::replace(name.begin(), name.end(), '_', '-');
+    std::string parameter = key;
+    std::replace(parameter.begin(), parameter.end(), '_', '-');
     const std::vector<std::string> read = timing::benchParameterNames();
-    EXPECT_NE(std::find(read.begin(), read.end(), name), read.end()) << key << " is no parameter the bench reads";
+    EXPECT_NE(std::find(read.begin(), read.end(), parameter), read.end()) << key << " is no parameter the bench reads";
     const nlohmann::json& choices = value.contains("items") ? value["items"] : value;
     if (!choices.contains("enum")) continue;
     std::set<std::string> names;

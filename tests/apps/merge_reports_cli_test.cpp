@@ -53,7 +53,7 @@ TEST_F(MergeReportsCli, MergesMapSummariesAndAFolderWithTotals) {
   EXPECT_EQ(merged["totals"]["failed"], 1);  // bad.off, in batch.json
   // The sphere and the torus, twice each (a.json, b.json and the batch's summaries): verdicts recounted.
   std::map<std::string, int> verdicts{{"pass", 0}, {"warn", 0}, {"fail", 0}};
-  for (const std::string& file : {"a.json", "b.json", "batch/sphere.json", "batch/torus.json"})
+  for (const char* file : {"a.json", "b.json", "batch/sphere.json", "batch/torus.json"})
     ++verdicts[readJson(path(file))["verdict"].get<std::string>()];
   EXPECT_EQ(merged["totals"]["verdicts"], nlohmann::json(verdicts));
   EXPECT_DOUBLE_EQ(merged["totals"]["milliseconds"]["read"].get<double>(), read);

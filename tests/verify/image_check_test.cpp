@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "core/error.h"
 
@@ -41,7 +42,9 @@ Reference reference(int width, int height, F aov) {
       r.aovs.at(x, row, 0) = float(a.u), r.aovs.at(x, row, 1) = float(a.v), r.aovs.at(x, row, 2) = 0.5f;
       r.aovs.at(x, row, 3) = float(a.face), r.aovs.at(x, row, 4) = float(a.lambda);
     }
-  return {r, {}};
+  Reference out;
+  out.analytic = std::move(r);
+  return out;
 }
 
 render::RenderOptions optionsFor(const render::Texture& texture, Filter filter, Wrap wrap = Wrap::Repeat) {

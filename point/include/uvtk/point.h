@@ -66,7 +66,7 @@ using ParameterValue =
 struct Parameter {
   std::string name;
   ParameterValue value;
-  std::string place;
+  std::string place{};  // where it came from; empty: the caller does not say
 };
 
 // Who gave the parameters, which decides how a message names one: capAngle (Library), cap_angle
