@@ -17,4 +17,21 @@ void addMergeReportsCommand(CLI::App& root);
 void addEvalCommand(CLI::App& root);
 void addCheckCommand(CLI::App& root);
 
+// The subcommands by the name each registers, in the order `uvtk --help` lists them. A run names
+// one first (`uvtk map ...`) and needs only that one built: each registers a hundred options or
+// more, which costs a millisecond of a small mesh's ten (tests/apps/cli_manners_test.cpp checks
+// the names against what the functions register).
+struct Command {
+  const char* name;
+  void (*add)(CLI::App& root);
+};
+inline constexpr Command kCommands[] = {
+    {"map", addMapCommand},         {"texgen", addTexgenCommand},
+    {"render", addRenderCommand},   {"report", addReportCommand},
+    {"compare", addCompareCommand}, {"bench", addBenchCommand},
+    {"run", addRunCommand},         {"schema", addSchemaCommand},
+    {"merge-reports", addMergeReportsCommand}, {"eval", addEvalCommand},
+    {"check", addCheckCommand},
+};
+
 }  // namespace uvtk::cli

@@ -80,17 +80,11 @@ int main(int argc, char** argv) {
   CLI::App app{"uvtk: texture coordinates for triangle meshes, and proof that they are right"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "uvtk " UVTK_VERSION, "Print the version and exit");
-  uvtk::cli::addMapCommand(app);
-  uvtk::cli::addTexgenCommand(app);
-  uvtk::cli::addRenderCommand(app);
-  uvtk::cli::addReportCommand(app);
-  uvtk::cli::addCompareCommand(app);
-  uvtk::cli::addBenchCommand(app);
-  uvtk::cli::addRunCommand(app);
-  uvtk::cli::addSchemaCommand(app);
-  uvtk::cli::addMergeReportsCommand(app);
-  uvtk::cli::addEvalCommand(app);
-  uvtk::cli::addCheckCommand(app);
+  // The command named first, alone; without one (--help, a typo) every command, to list them.
+  const auto named = [&](const uvtk::cli::Command& c) { return argc > 1 && std::string(argv[1]) == c.name; };
+  const bool one = std::any_of(std::begin(uvtk::cli::kCommands), std::end(uvtk::cli::kCommands), named);
+  for (const uvtk::cli::Command& command : uvtk::cli::kCommands)
+    if (!one || named(command)) command.add(app);
   // -q everywhere, for the commands that do not bring their own.
   for (CLI::App* command : app.get_subcommands({}))
     if (!command->get_option_no_throw("-q") && !command->get_option_no_throw("--quiet"))

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "apps/cli_test.h"
+#include "apps/uvtk/commands.h"
 #include "param/projector_names.h"
 #include "options/cli_values.h"
 
@@ -47,6 +48,25 @@ class CliManners : public CliTest {
 
   std::string sphereMesh() const { return std::string(UVTK_SOURCE_DIR) + "/meshes/sphere_latlong.obj"; }
 };
+
+// `uvtk NAME` builds only the command of that name (apps/uvtk/commands.h): each entry of the table
+// registers the name it is listed by, and `uvtk --help`, which builds them all, lists the same.
+TEST_F(CliManners, EachCommandOfTheTableRegistersTheNameItIsListedBy) {
+  std::vector<std::string> names;
+  for (const cli::Command& command : cli::kCommands) {
+    CLI::App root;
+    command.add(root);
+    const std::vector<CLI::App*> registered = root.get_subcommands({});
+    ASSERT_EQ(registered.size(), 1u) << command.name;
+    EXPECT_EQ(registered[0]->get_name(), command.name);
+    names.push_back(command.name);
+    // Built alone it parses its own options as when every command is built.
+    const CliRun help = stdoutOf(std::string(command.name) + " --help");
+    EXPECT_EQ(help.status, 0) << command.name;
+    EXPECT_NE(help.err.find(std::string("Usage: ")), std::string::npos) << command.name;
+  }
+  EXPECT_EQ(commands(), names);
+}
 
 TEST_F(CliManners, VersionPrintsTheProjectVersion) {
   std::ifstream cmake(std::string(UVTK_SOURCE_DIR) + "/CMakeLists.txt");
