@@ -16,7 +16,9 @@ namespace uvtk {
 
 inline int threadCount(int requested) {
   if (requested > 0) return requested;
-  return std::max(1, int(std::thread::hardware_concurrency()));
+  // Asked once: glibc reads /sys/devices/system/cpu/online on every call, 26 times in a small map.
+  static const int cores = std::max(1, int(std::thread::hardware_concurrency()));
+  return cores;
 }
 
 // The threads parallelFor(count, threads, ...) runs on.
