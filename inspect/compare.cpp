@@ -100,7 +100,10 @@ std::vector<std::pair<std::string, param::ProjectorOptions>> configurations(cons
   for (const SurfaceKind surface : kSurfaces) {
     const SurfaceTraits& traits = traitsOf(surface);
     if (traits.isPerspective || traits.blendsProjections) continue;  // a view's and the engines' blend, not a layout
-    if (traits.chartsFromMesh) continue;  // the atlas and the baselines: one each, below
+    if (traits.chartsFromMesh) {  // the atlas, one configuration; the flattening baselines apart (addBaselines)
+      if (traits.chartMap == ChartMap::Plane) out.emplace_back(traits.name, atlasOptions(surface, a));
+      continue;
+    }
     for (const auto& [rayName, ray] : rays)
       for (const auto& [fitName, fit] : fits) {
         if (!traits.fitsToMesh && fitName != std::string("bbox-z")) continue;
@@ -113,7 +116,6 @@ std::vector<std::pair<std::string, param::ProjectorOptions>> configurations(cons
         out.emplace_back(std::string(traits.name) + "/" + rayName + "/" + fitLabel, o);
       }
   }
-  out.emplace_back("atlas", atlasOptions(SurfaceKind::Atlas, a));
   return out;
 }
 
@@ -124,8 +126,10 @@ std::vector<std::pair<std::string, param::ProjectorOptions>> configurations(cons
 // --baseline-max-faces or when the atlas cannot be made.
 void addBaselines(const Mesh& mesh, const CompareOptions& a, std::vector<RankedMapping>& baselines,
                   nlohmann::json& skipped) {
-  for (const param::SurfaceKind surface : {param::SurfaceKind::Lscm, param::SurfaceKind::Arap}) {
-    const std::string name = param::traitsOf(surface).name;
+  for (const param::SurfaceKind surface : param::kSurfaces) {
+    const param::SurfaceTraits& traits = param::traitsOf(surface);
+    if (!traits.chartsFromMesh || traits.chartMap == param::ChartMap::Plane) continue;  // LSCM and ARAP
+    const std::string name = traits.name;
     if (mesh.faceCount() > std::size_t(a.baselineMaxFaces)) {
       skipped.push_back({{"name", name}, {"reason", "more than --baseline-max-faces " + std::to_string(a.baselineMaxFaces) + " faces"}});
       continue;

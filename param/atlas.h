@@ -14,12 +14,12 @@
 
 #include "core/math.h"
 #include "core/mesh.h"
+#include "param/surface_traits.h"
 
 namespace uvtk::param {
 
 // How each chart is flattened: its plane projection, or CGAL's LSCM or ARAP (param/baseline.h) of
 // the chart, which fall back to the plane where they fail, flip or overlap themselves.
-enum class ChartMap { Plane, Lscm, Arap };
 
 struct AtlasOptions {
   ChartMap chartMap = ChartMap::Plane;

@@ -344,9 +344,7 @@ Evaluated evaluateTriplanar(const Mesh& mesh, const Affine3& localFromObject, co
 
 // The atlas's charts at every corner: each valid, the chart's own plane (param/atlas.h).
 Evaluated evaluateAtlas(const Mesh& mesh, SurfaceKind surface, AtlasOptions options, int threads) {
-  options.chartMap = surface == SurfaceKind::Lscm   ? ChartMap::Lscm
-                     : surface == SurfaceKind::Arap ? ChartMap::Arap
-                                                    : ChartMap::Plane;
+  options.chartMap = traitsOf(surface).chartMap;
   Evaluated result;
   CornerField& c = result.corners;
   result.atlas = makeAtlas(mesh, options, threads);

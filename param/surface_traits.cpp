@@ -17,8 +17,8 @@ const SurfaceTraits& tableTraits(SurfaceKind surface) {
   static const SurfaceTraits kCamera{"camera", false, false, false, false, false, true, false, S::None};
   static const SurfaceTraits kTriplanar{"triplanar", false, true, true, false, true, false, false, S::Box};
   static const SurfaceTraits kAtlas{"atlas", false, true, false, false, false, false, false, S::None, true};
-  static const SurfaceTraits kLscm{"lscm", false, true, false, false, false, false, false, S::None, true};
-  static const SurfaceTraits kArap{"arap", false, true, false, false, false, false, false, S::None, true};
+  static const SurfaceTraits kLscm{"lscm", false, true, false, false, false, false, false, S::None, true, ChartMap::Lscm};
+  static const SurfaceTraits kArap{"arap", false, true, false, false, false, false, false, S::None, true, ChartMap::Arap};
   if (surface == SurfaceKind::Camera) return kCamera;
   if (surface == SurfaceKind::Triplanar) return kTriplanar;
   if (surface == SurfaceKind::Atlas) return kAtlas;

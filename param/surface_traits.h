@@ -16,6 +16,10 @@ enum class UnitShape {
   Box,       // the mesh's box scaled by its largest extent, from its low corner (triplanar)
 };
 
+// How the charts made from a whole mesh are laid flat (param/atlas.h): each by its projection
+// direction (the atlas, Smart UV Project's way), or flattened by LSCM or ARAP (the baselines).
+enum class ChartMap { Plane, Lscm, Arap };
+
 // What a surface is. A surface with a formula of a point declares its own (surfaces.h, kTraits).
 struct SurfaceTraits {
   const char* name;         // as every face spells it (param/projector_names.h)
@@ -30,6 +34,7 @@ struct SurfaceTraits {
   // Charts made from the whole mesh (the atlas, param/atlas.h): no formula of a point alone, so no
   // per-vertex evaluation without the mesh; each face's chart is linear, so it is exact per pixel.
   bool chartsFromMesh = false;
+  ChartMap chartMap = ChartMap::Plane;  // with chartsFromMesh: how its charts are laid flat
 };
 
 const SurfaceTraits& traitsOf(SurfaceKind surface);
