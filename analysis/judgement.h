@@ -88,7 +88,7 @@ struct Reason {
 struct JudgementOptions {
   bool wrapsU = false;                       // u has period uPeriod (cylinder, sphere): seams are expected, not failed
   double uPeriod = 1.0;                      // 1, or what `uvtk map --density` scaled the UVs by
-  int overlapResolution = 1024;              // pixels across the raster that measures overlap
+  int overlapResolution = kOverlapFollowsMesh;  // pixels across the overlap raster, or follows the mesh
   TextureSize textureSize;                   // the texels a texel density counts, and the texel rules
   // The charts are meant to stay apart in the texture (an atlas): the texel clash and gutter rules
   // are on by default. Elsewhere charts are meant to tile across their seams.

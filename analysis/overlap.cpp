@@ -222,6 +222,14 @@ int overlapResolution(const UvMap& uv, const std::vector<FaceDistortion>& faces,
   return resolution;
 }
 
+int judgedOverlapResolution(const std::vector<FaceDistortion>& faces, int asked) {
+  UVTK_CHECK(asked >= 0);
+  if (asked > 0) return asked;
+  const auto measured = std::count_if(faces.begin(), faces.end(), [](const FaceDistortion& f) { return isMeasured(f.status); });
+  const double follow = std::ceil(std::sqrt(kOverlapPixelsPerFace * double(measured)));
+  return int(std::clamp(follow, double(kOverlapMinResolution), double(kOverlapMaxFollowingResolution)));
+}
+
 Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces, int resolution) {
   UVTK_CHECK(uv.uv.size() == 3 * faces.size());
   UVTK_CHECK(resolution >= 1 && resolution <= 65536);

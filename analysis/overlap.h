@@ -84,6 +84,19 @@ constexpr double kOverlapWorkPerFace = 256.0;
 int overlapResolution(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& unitGrid,
                       int resolution);
 
+// The judgement's raster follows the mesh unless a resolution is asked: sqrt(kOverlapPixelsPerFace F)
+// pixels a side for F measured faces, from kOverlapMinResolution to kOverlapMaxFollowingResolution.
+// Measured on 42 mappings of like-real meshes (docs/benchmarks.md, issue 45), sixteen pixels a face
+// keep the overlapped fraction within 0.002 of a 1024 grid's, and a layout without overlap at 0.
+constexpr int kOverlapFollowsMesh = 0;  // the resolution that asks for it
+constexpr int kOverlapMinResolution = 256;
+constexpr int kOverlapMaxFollowingResolution = 1024;
+constexpr double kOverlapPixelsPerFace = 16.0;
+
+// `asked` when positive (`--overlap-resolution N`); for 0, that raster for `faces` (from
+// measureFaces): min(1024, max(256, ceil(sqrt(16 F)))).
+int judgedOverlapResolution(const std::vector<FaceDistortion>& faces, int asked);
+
 // Covered and overlapped pixels from the coverageCounts of those faces over their own UV bounding
 // box at overlapResolution, and the faces that cover an overlapped pixel. Preconditions: `faces` from measureFaces on the same UVs, resolution in [1, 65536].
 Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces, int resolution = 1024);

@@ -27,7 +27,7 @@ MapSettings readMapSettings(const param::ParameterDictionary& p) {
   MapSettings s;
   s.projector = param::makeProjector(p);
   s.thresholds = readThresholds(p);
-  s.overlapResolution = p.getInteger("overlap-resolution", 1024, 1, 16384);
+  s.overlapResolution = p.getInteger("overlap-resolution", 0, 0, 16384);
   s.textureSize = textureSizeOf(p);
   if (p.given("density")) {
     const double density = p.getNumber("density", 0.0);

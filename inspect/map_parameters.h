@@ -15,7 +15,7 @@ namespace uvtk::inspect {
 struct MapSettings {
   param::ProjectorRequest projector;
   analysis::Thresholds thresholds;        // fail-on, warn-on (RULE=VALUE; "warn" and "fail" are the command's)
-  int overlapResolution = 1024;           // 1 to 16384 pixels
+  int overlapResolution = 0;              // 1 to 16384 pixels, or 0: follows the mesh
   analysis::TextureSize textureSize;      // W,H (or N: N,N) texels, 1 to 16384 each
   std::optional<double> density;          // positive and finite
   int threads = 0;                        // 0 to 1024; 0: one per hardware thread

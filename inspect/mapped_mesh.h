@@ -48,7 +48,7 @@ struct MappedMesh {
   // The judgement of these UVs (analysis/judgement.h): per-face measures, counts, the summary
   // with the projector's own pole vertices (for other sources the fanned poles found in the UVs),
   // and the verdict under `thresholds`; texel densities counted in `textureSize` texels.
-  analysis::Judgement judge(const analysis::Thresholds& thresholds = {}, int overlapResolution = 1024,
+  analysis::Judgement judge(const analysis::Thresholds& thresholds = {}, int overlapResolution = analysis::kOverlapFollowsMesh,
                             int threads = 0, analysis::TextureSize textureSize = {}) const;
   // How far apart the atlas's charts lie in its texture (analysis::measureGutters); nothing
   // unless an atlas (or LSCM, ARAP) made the UVs.

@@ -26,6 +26,13 @@ std::vector<std::string> splitList(const std::string& text) {
   return items;
 }
 
+CLI::Option* addOverlapResolutionOption(CLI::App& app, int& overlapResolution) {
+  return app
+      .add_option("--overlap-resolution", overlapResolution,
+                  "Pixels across the raster that measures overlap; 0: sixteen a face, 256 to 1024")
+      ->capture_default_str();
+}
+
 CLI::Option* addThreadsOption(CLI::App& app, int& threads, const std::string& help) {
   return app.add_option("--threads", threads, help)->check(CLI::Range(0, 1024))->default_str("0");
 }

@@ -32,6 +32,10 @@ CLI::Validator nameCheck(std::vector<std::string> names);
 // --threads: 0 to 1024, 0 being one per hardware thread; `help` says what they do.
 CLI::Option* addThreadsOption(CLI::App& app, int& threads, const std::string& help);
 
+// --overlap-resolution: the pixels across the judgement's overlap raster, 0 (the default) for a
+// raster that follows the mesh (analysis::judgedOverlapResolution); `map`, `report` and `compare`.
+CLI::Option* addOverlapResolutionOption(CLI::App& app, int& overlapResolution);
+
 // A named choice: the help shows the names (a|b|c), not the enumerators they map to. Only the
 // names are accepted (in any case): not the numbers behind them.
 template <class Enum>

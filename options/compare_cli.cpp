@@ -26,8 +26,7 @@ void addCompareOptions(CLI::App& app, CompareArguments& arguments) {
   app.add_option("--top", a.top, "How many of the best the contact sheet shows")->capture_default_str();
   app.add_option("--tile-size", a.tileSize, "Pixels across each picture of the sheet")->capture_default_str();
   addViewCameraOptions(app, arguments.camera);
-  app.add_option("--overlap-resolution", a.overlapResolution, "Pixels across the layout raster that measures overlap")
-      ->capture_default_str();
+  addOverlapResolutionOption(app, a.overlapResolution);
   app.add_option("--texture-size", arguments.textureSize, "Texels W,H (or N: N,N) of the texture texel density counts in")
       ->capture_default_str();
   app.add_flag("--seam-place-auto", a.seamPlaceAuto, "Place the seam of cylinder and sphere (as --seam-place auto)");

@@ -231,7 +231,7 @@ RenderResult renderMeshFile(RenderJob a) {
   clock.start(a.frame.view.empty() ? "rendering" : "drawing", a.frame.size);
   analysis::Judgement judgement;
   const auto measured = [&]() -> const analysis::Judgement& { 
-    return judgement = mapped.judge({}, 1024, 0, frameSettings.densityTexture);
+    return judgement = mapped.judge({}, analysis::kOverlapFollowsMesh, 0, frameSettings.densityTexture);
   };
   io::OutputSet outputs;  // the picture, its AOVs and the record, published together
   // A triplanar blend exists per pixel only: drawn so unless --uv asks for the box mapping an OBJ holds.

@@ -25,8 +25,7 @@ void addReportOptions(CLI::App& app, ReportArguments& a) {
   app.add_option("--texture-size", a.textureSize,
                  "Texels W,H (or N: N,N) of the texture that texel density and uverror count in")
       ->capture_default_str();
-  app.add_option("--overlap-resolution", a.overlapResolution, "Pixels across the layout raster that measures overlap")
-      ->capture_default_str();
+  addOverlapResolutionOption(app, a.overlapResolution);
   app.add_option("--threads", a.threads, "Threads for the views (0: one per hardware thread)")->capture_default_str();
   app.add_option("--view3d-faces", a.view3dFaces, "Faces the page's 3D view shows before it decimates (0: no 3D view)")
       ->capture_default_str();

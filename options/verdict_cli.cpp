@@ -46,9 +46,7 @@ void addMapThreadsOption(CLI::App& app, int& threads) {
 
 void addMapJudgementOptions(CLI::App& app, int& overlapResolution, std::string& textureSize,
                             std::optional<double>& density) {
-  app.add_option("--overlap-resolution", overlapResolution,
-                 "Pixels across the layout raster that measures overlap for the verdict")
-      ->capture_default_str();
+  addOverlapResolutionOption(app, overlapResolution);
   app.add_option("--texture-size", textureSize, "Texels W,H (or N: N,N) of the texture that texel density counts in")
       ->capture_default_str();
   app.add_option("--density", density,

@@ -35,8 +35,8 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 // The overlap raster of the judgement the views, the OBJ summaries and the gallery read
-// (MappedMesh::judge's default).
-constexpr int kViewsOverlapResolution = 1024;
+// (MappedMesh::judge's default: the raster follows the mesh).
+constexpr int kViewsOverlapResolution = analysis::kOverlapFollowsMesh;
 
 // The faces each 3D view of the gallery shows before it decimates: the page holds every report's.
 constexpr std::size_t kGalleryViewFaces = 50000;
@@ -503,7 +503,7 @@ std::vector<Stage> planScene(const Scene& s) {
                           resolution,
                           m,
                           s.mappings[k].name,
-                          {"distortion", "overlap on " + std::to_string(resolution) + "^2 pixels", "verdict"},
+                          {"distortion", resolution == analysis::kOverlapFollowsMesh ? "overlap on a raster that follows the mesh" : "overlap on " + std::to_string(resolution) + "^2 pixels", "verdict"},
                           {mapStage[k]}});
         }
     for (std::size_t i = 0; i < s.outputs.size(); ++i) {

@@ -31,7 +31,7 @@ struct MapArguments {
   int jobs = 0, threads = 0;
   ProjectorArguments projector;
   VerdictArguments verdict;
-  int overlapResolution = 1024;
+  int overlapResolution = 0;
   std::string textureSize = "1024,1024";
   std::optional<double> density;
 };

@@ -216,5 +216,25 @@ TEST(OverlapSpans, AStackOfFacesIsMeasuredAtAResolutionItsFaceCountPays) {
   EXPECT_EQ(o.overlappedFaces, std::size_t(copies));
 }
 
+// By default the judgement's raster follows the mesh, sixteen pixels a measured face: 256 to 1024
+// a side; a resolution asked for is kept.
+TEST(OverlapSpans, TheJudgementsRasterFollowsTheMeasuredFaces) {
+  const auto faces = [](std::size_t measured, std::size_t degenerate) {
+    std::vector<FaceDistortion> f(measured + degenerate);
+    for (std::size_t i = 0; i < measured; ++i) f[i].status = FaceStatus::Ok;
+    for (std::size_t i = measured; i < f.size(); ++i) f[i].status = FaceStatus::ZeroAreaUv;
+    return f;
+  };
+  EXPECT_EQ(judgedOverlapResolution(faces(0, 0), 0), 256);
+  EXPECT_EQ(judgedOverlapResolution(faces(4096, 0), 0), 256);      // sqrt(16 * 4096) = 256
+  EXPECT_EQ(judgedOverlapResolution(faces(4097, 9000), 0), 257);   // 256.03, up; degenerate faces not counted
+  EXPECT_EQ(judgedOverlapResolution(faces(7680, 0), 0), 351);      // the knot: sqrt(122880) = 350.5
+  EXPECT_EQ(judgedOverlapResolution(faces(10000, 0), 0), 400);
+  EXPECT_EQ(judgedOverlapResolution(faces(65536, 0), 0), 1024);
+  EXPECT_EQ(judgedOverlapResolution(faces(1000000, 0), 0), 1024);
+  EXPECT_EQ(judgedOverlapResolution(faces(10000, 0), 8), 8);
+  EXPECT_EQ(judgedOverlapResolution(faces(10, 0), 4096), 4096);
+}
+
 }  // namespace
 }  // namespace uvtk::analysis

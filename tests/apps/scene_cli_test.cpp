@@ -68,7 +68,7 @@ TEST_F(SceneCli, AnObjOnlySceneReadsMapsAndWritesAndComputesNothingElse) {
   const json p = plan(scene);
   // The OBJ's summary is `uvtk map --json`'s, verdict included: one judgement, nothing else.
   EXPECT_EQ(stages(p), (std::vector<std::string>{"read", "map", "measure", "obj"}));
-  EXPECT_EQ(computed(p), (std::set<std::string>{"distortion", "overlap on 1024^2 pixels", "verdict"}));
+  EXPECT_EQ(computed(p), (std::set<std::string>{"distortion", "overlap on a raster that follows the mesh", "verdict"}));
   EXPECT_TRUE(written() == std::vector<std::string>{"plan.json"}) << "--plan runs nothing";
 
   const CliRun r = run(scene, "--json " + path("run.json"));

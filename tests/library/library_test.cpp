@@ -178,9 +178,12 @@ TEST(MapOptions, TheOverlapResolutionTakesWhatTheCommandLineTakes) {
   o.overlapResolution = 8;  // refused (16 to 8192) when the library parsed a command line of its own
   EXPECT_NE(map(triangle(), o).summaryJson.find("\"resolution\":8}"), std::string::npos);
   o.overlapResolution = 16385;
-  EXPECT_EQ(messageOf([&] { map(triangle(), o); }), "overlapResolution: expected 1 to 16384, got 16385");
-  EXPECT_EQ(messageOf([] { MapOptions::parse("--overlap-resolution 0"); }),
-            "--overlap-resolution: expected 1 to 16384, got 0");
+  EXPECT_EQ(messageOf([&] { map(triangle(), o); }), "overlapResolution: expected 0 to 16384, got 16385");
+  EXPECT_EQ(messageOf([] { MapOptions::parse("--overlap-resolution -1"); }),
+            "--overlap-resolution: expected 0 to 16384, got -1");
+  // 0, the default, follows the mesh: a triangle at the 256 pixels of the smallest raster.
+  o.overlapResolution = 0;
+  EXPECT_NE(map(triangle(), o).summaryJson.find("\"resolution\":256}"), std::string::npos);
 }
 
 TEST(Map, TypedParametersAreCheckedWhereTheyCameFrom) {

@@ -75,7 +75,7 @@ def test_map_signature_is_the_option_table(cli):
     assert keywords["cap_angle"].annotation is float and keywords["cap_angle"].default == 45.0
     assert keywords["caps"].annotation is bool and keywords["caps"].default is False
     assert keywords["threads"].annotation is int and keywords["threads"].default == 0
-    assert keywords["overlap_resolution"].default == 1024
+    assert keywords["overlap_resolution"].default == 0
     assert keywords["projector"].default == "sphere"
     # every surface of the one list, in its order: the first seven, any since, the charts last
     surfaces = typing.get_args(keywords["projector"].annotation)

@@ -932,7 +932,7 @@ def test_keywords_are_typed_as_python_users_expect():
     np.testing.assert_array_equal(uvtk.map(mesh, threads=1).uv, uvtk.map(mesh).uv)
     coarse = uvtk.map(mesh, overlap_resolution=8)
     assert coarse.summary["judgement"]["overlap"]["resolution"] == 8
-    with pytest.raises(ValueError, match="^overlap_resolution: expected 1 to 16384, got 16385"):
+    with pytest.raises(ValueError, match="^overlap_resolution: expected 0 to 16384, got 16385"):
         uvtk.map(mesh, overlap_resolution=16385)
     with pytest.raises(ValueError, match="^seam_place: only the wrapping projectors"):
         uvtk.map(mesh, projector="plane", seam_place=90)

@@ -23,7 +23,7 @@ struct ReportOptions {
   Vector3 viewDir{1, -1.5, 0.8};  // --view-dir: the direction from the mesh to the views' camera
   Vector3 up{0, 0, 1};            // --up: the views' camera's up
   int textureSize = 1024;        // --texture-size: texels N (N x N) of the texture texel density and uverror count in
-  int overlapResolution = 1024;  // --overlap-resolution: the mapping is judged again when it differs from map()'s
+  int overlapResolution = 0;  // --overlap-resolution: the mapping is judged again when it differs from map()'s
   int threads = 0;               // --threads: 0, one per hardware thread
 
   // From `uvtk report`'s syntax, e.g. "--views checker,seams --size 256x256".
@@ -107,7 +107,7 @@ struct CompareOptions {
   int tileSize = 256;             // --tile-size: pixels across each picture of the contact sheet
   Vector3 viewDir{1, -1.5, 0.8};  // --view-dir: the sheet's camera
   Vector3 up{0, 0, 1};            // --up
-  int overlapResolution = 1024;   // --overlap-resolution: pixels across the overlap raster (as map)
+  int overlapResolution = 0;   // --overlap-resolution: pixels across the overlap raster (as map)
   bool seamPlaceAuto = false;     // --seam-place-auto: every wrapping projector with its seam placed
   int baselineMaxFaces = 200000;  // --baseline-max-faces: LSCM and ARAP only up to this many faces
   std::vector<std::string> failOn, warnOn;  // --fail-on, --warn-on: the verdict's thresholds

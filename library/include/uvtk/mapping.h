@@ -90,7 +90,7 @@ struct MapOptions {
   std::string convention = "uvtk";   // --convention: uvtk, blender, assimp, notes
   std::vector<std::string> failOn;   // --fail-on: RULE=VALUE thresholds of the verdict (docs/conventions.md §11)
   std::vector<std::string> warnOn;   // --warn-on: RULE=VALUE
-  int overlapResolution = 1024;      // --overlap-resolution: pixels across the overlap raster
+  int overlapResolution = 0;         // --overlap-resolution: pixels across the overlap raster; 0 follows the mesh (256 to 1024)
   std::array<int, 2> textureSize{1024, 1024};  // --texture-size: texels W, H that texel density counts in
   std::optional<double> density;     // --density: scale the UVs to this mean texel density (unset: leave them)
   int threads = 0;                   // --threads: 0 is one per hardware thread
