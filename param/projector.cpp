@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <memory>
 
 #include "core/error.h"
 #include "core/huge_pages.h"
@@ -404,15 +405,18 @@ void mapVerticesThroughKernel(const ProjectorOptions& o, const Affine3& localFro
     constexpr std::size_t kRun = 4096;
     const std::size_t begin = std::min(n, std::size_t(chunk) * size);
     const std::size_t end = chunk + 1 == chunks ? n : std::min(n, begin + size);
-    std::vector<T> scratch(10 * kRun);
+    // Ten arrays of a run, left unset (every value is written before it is read): a small mesh's
+    // map touches only the pages its vertices need.
+    const std::size_t run = std::min(kRun, end - begin);
+    const std::unique_ptr<T[]> scratch(new T[10 * run]);
     std::vector<UvException> exceptions;
-    for (std::size_t start = begin; start < end; start += kRun) {
+    for (std::size_t start = begin; start < end; start += run) {
       KernelSpan<T> span;
-      span.count = std::min(kRun, end - start);
-      T* x = scratch.data();
-      T *y = x + kRun, *z = y + kRun, *nx = z + kRun, *ny = nx + kRun, *nz = ny + kRun;
+      span.count = std::min(run, end - start);
+      T* x = scratch.get();
+      T *y = x + run, *z = y + run, *nx = z + run, *ny = nx + run, *nz = ny + run;
       span.x = x, span.y = y, span.z = z;
-      span.u = nz + kRun, span.v = span.u + kRun, span.axialX = span.v + kRun, span.axialY = span.axialX + kRun;
+      span.u = nz + run, span.v = span.u + run, span.axialX = span.v + run, span.axialY = span.axialX + run;
       for (std::size_t i = 0; i < span.count; ++i) {
         const Vec3T<T> p = frame.point(positions[start + i]);
         x[i] = p.x(), y[i] = p.y(), z[i] = p.z();
