@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -84,6 +85,9 @@ double scaleToTexelDensity(MappedMesh& mapped, const analysis::Judgement& judgem
   return factor;
 }
 
+// Below this many faces `uvtk map` writes the file while it judges the mapping (mapMesh).
+constexpr std::size_t kWriteWhileJudgingFaces = std::size_t(1) << 16;
+
 MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   const auto start = std::chrono::steady_clock::now();
   StageClock clock("uvtk map", showStages);
@@ -100,7 +104,27 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   const double mapMs = clock.stop();
   const param::MappingSummary& s = mapped.projection->summary;
 
-  clock.start("judging", std::to_string(mapped.mesh.faceCount()) + " faces");
+  io::MeshWriteOptions write = job.write;
+  write.header = "uvtk map " + paths.input;
+  write.threads = job.settings.threads;
+  io::OutputSet outputs;
+  double writeMs = 0.0;
+  const auto writeOutput = [&] {
+    const auto begin = std::chrono::steady_clock::now();
+    io::writeMesh(outputs, paths.output, mapped.mesh, &mapped.uv, write);
+    writeMs = millisecondsSince(begin);
+  };
+  // Without --density the file does not depend on the judgement, and both only read `mapped`. A
+  // small mesh's judging and writing each run mostly on one thread (their loops share out chunks
+  // of 2^16 faces), so its file is written on another while it is judged: the 10 k-face sphere
+  // 13.1 to 11.8 ms. A large mesh's stages already fill every core; together they took as long
+  // and 35 MB more (the 4 M-face lat-long sphere, docs/benchmarks.md). The future's destructor
+  // waits for the writing, so an exception from the judgement leaves nothing running (and nothing
+  // published: `outputs` is published only at the end).
+  const bool writeWhileJudging = !settings.density && mapped.mesh.faceCount() < kWriteWhileJudgingFaces;
+  std::future<void> writing;
+  if (writeWhileJudging) writing = std::async(std::launch::async, writeOutput);
+  clock.start(writeWhileJudging ? "judging and writing" : "judging", std::to_string(mapped.mesh.faceCount()) + " faces");
   analysis::Judgement judgement = mapped.judge(settings.thresholds, settings.overlapResolution, settings.threads, settings.textureSize);
   double densityFactor = 1.0;
   if (settings.density) {  // judged again: the summary and the verdict are those of the UVs written
@@ -121,13 +145,13 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
                         io::collapsesInGltfTexcoords(mapped.uv.uv[3 * f], mapped.uv.uv[3 * f + 1], mapped.uv.uv[3 * f + 2]);
   std::vector<analysis::FaceDistortion>().swap(judgement.faces);  // every face's measures: not needed while writing
 
-  clock.start("writing", paths.output);
-  io::MeshWriteOptions write = job.write;
-  write.header = "uvtk map " + paths.input;
-  write.threads = job.settings.threads;
-  io::OutputSet outputs;
-  io::writeMesh(outputs, paths.output, mapped.mesh, &mapped.uv, write);
-  const double writeMs = clock.stop();
+  if (writing.valid()) {
+    writing.get();
+  } else {
+    clock.start("writing", paths.output);
+    writeOutput();
+    clock.stop();
+  }
   if (gltf && !paths.json.empty()) summary["output_collapsed_uv_faces"] = collapsedUvFaces;
 
   if (!paths.json.empty()) {
