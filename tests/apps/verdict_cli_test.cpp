@@ -67,6 +67,23 @@ TEST_F(VerdictCli, BadThresholdsAreOneLineUsageErrorsAndWriteNothing) {
   }
 }
 
+// The overlap raster follows the mesh unless one is asked: the torus's 2304 faces at the floor of
+// 256 (sqrt(16 x 2304) = 192), a 100 x 50 torus's 10,000 at sqrt(160000) = 400; --overlap-resolution
+// N gives N.
+TEST_F(VerdictCli, TheOverlapRasterFollowsTheMeshUnlessOneIsAsked) {
+  io::writeObj(path("torus10k.obj"), meshes::torus(100, 50, 1.0, 0.35), nullptr);
+  const auto resolution = [&](const std::string& mesh, const std::string& options) {
+    const CliRun r = uvtk("map " + path(mesh) + " --projector cube -o " + path("o.obj") + " --json " + path("o.json") +
+                          " " + options);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return json("o.json")["judgement"]["overlap"]["resolution"].get<int>();
+  };
+  EXPECT_EQ(resolution("torus.obj", ""), 256);
+  EXPECT_EQ(resolution("torus10k.obj", ""), 400);
+  EXPECT_EQ(resolution("torus10k.obj", "--overlap-resolution 1024"), 1024);
+  EXPECT_EQ(resolution("torus10k.obj", "--overlap-resolution 100"), 100);
+}
+
 // The number after "label: " in a legend line, or -1.
 double legendNumber(const std::vector<std::string>& lines, const std::string& label) {
   for (const std::string& line : lines)
