@@ -200,7 +200,7 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, int 
   };
 
   // Faces in fixed chunks, so that the vote adds up in the same order whatever the thread count.
-  constexpr std::size_t kChunk = std::size_t(1) << 16;
+  constexpr std::size_t kChunk = kFacesPerChunk;
   const int chunks = int((faceCount + kChunk - 1) / kChunk);
   const auto forEachChunk = [&](auto&& work) {
     parallelFor(chunks, threads, [&](int c) {

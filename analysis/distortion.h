@@ -49,6 +49,10 @@ constexpr bool isMeasured(FaceStatus status) {
          status == FaceStatus::Flipped;
 }
 
+// The judgement's loops over faces take them in fixed chunks of this many, so that what they add
+// up adds up in the same order whatever the threads.
+constexpr std::size_t kFacesPerChunk = std::size_t(1) << 16;
+
 // The measures of one face. area3d is always set, areaUv unless the face is invalid; the
 // Jacobian's measures only where isMeasured(status), else they are 0. Nothing is NaN or infinite.
 // The measures that follow from the singular values and the areas are computed when read: stored,

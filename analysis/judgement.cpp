@@ -259,7 +259,7 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
 
   // Faces by status and by flag, their 3D areas, and the invalid corners by reason: tallied in
   // fixed chunks on threads and added up in chunk order, so the sums do not depend on the threads.
-  constexpr std::size_t kChunk = std::size_t(1) << 16;
+  constexpr std::size_t kChunk = kFacesPerChunk;
   const int chunks = int((mesh.faceCount() + kChunk - 1) / kChunk);
   std::vector<FaceTally> tallies(static_cast<std::size_t>(chunks));
   parallelFor(chunks, options.threads, [&](int c) {

@@ -89,6 +89,7 @@ int overlapResolution(const UvMap& uv, const std::vector<FaceDistortion>& faces,
 // Measured on 42 mappings of like-real meshes (docs/benchmarks.md, issue 45), sixteen pixels a face
 // keep the overlapped fraction within 0.002 of a 1024 grid's, and a layout without overlap at 0.
 constexpr int kOverlapFollowsMesh = 0;  // the resolution that asks for it
+constexpr int kMaxOverlapResolution = 16384;  // the most `--overlap-resolution` may ask for
 constexpr int kOverlapMinResolution = 256;
 constexpr int kOverlapMaxFollowingResolution = 1024;
 constexpr double kOverlapPixelsPerFace = 16.0;

@@ -213,7 +213,7 @@ CompareOptions readCompareOptions(const param::ParameterDictionary& p) {
   o.tileSize = p.getInteger("tile-size", o.tileSize, kMinTileSize, kMaxTileSize);
   o.camera.viewDir = p.getVector<3>("view-dir").value_or(o.camera.viewDir);
   o.camera.up = p.getVector<3>("up").value_or(o.camera.up);
-  o.overlapResolution = p.getInteger("overlap-resolution", o.overlapResolution, 0, 16384);
+  o.overlapResolution = readOverlapResolution(p, o.overlapResolution);
   if (const std::optional<std::array<int, 2>> size = param::readTextureSize(p))
     o.textureSize = {(*size)[0], (*size)[1]};
   o.seamPlaceAuto = p.getBool("seam-place-auto", o.seamPlaceAuto);
@@ -237,8 +237,7 @@ void CompareOptions::check() const {
   if (tileSize < kMinTileSize || tileSize > kMaxTileSize)
     throw UsageError("--tile-size: expected " + std::to_string(kMinTileSize) + " to " + std::to_string(kMaxTileSize) +
                      " pixels");
-  if (overlapResolution < 0 || overlapResolution > 16384)
-    throw UsageError("--overlap-resolution: expected 0 to 16384 pixels");
+  checkOverlapResolution(overlapResolution);
   if (!sheet.empty()) io::checkImageType(sheet, io::PixelType::UInt8);
   if (!writeBest.empty()) io::checkMeshOutput(writeBest, io::MeshWriteOptions{}, "--write-best");
   if (!(margin >= 0 && 2 * margin < std::min(textureSize.width, textureSize.height)))

@@ -28,7 +28,7 @@ struct CompareOptions {
   RankBy by = RankBy::StretchL2;    // the measure that ranks within a verdict
   int top = 8;                      // candidates on the contact sheet
   int tileSize = 256;               // pixels across each picture of the sheet
-  int overlapResolution = 0;        // pixels across the overlap raster; 0 follows the mesh (as uvtk map)
+  int overlapResolution = analysis::kOverlapFollowsMesh;  // or pixels across the overlap raster (as uvtk map)
   analysis::TextureSize textureSize;  // the texture texel density counts in
   int baselineMaxFaces = 200000;    // LSCM and ARAP only on meshes up to this size
   int margin = 4;                   // the atlas's (and LSCM's and ARAP's) gutter in texels of textureSize

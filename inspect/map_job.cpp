@@ -85,8 +85,9 @@ double scaleToTexelDensity(MappedMesh& mapped, const analysis::Judgement& judgem
   return factor;
 }
 
-// Below this many faces `uvtk map` writes the file while it judges the mapping (mapMesh).
-constexpr std::size_t kWriteWhileJudgingFaces = std::size_t(1) << 16;
+// Below this many faces (one chunk of the judgement's loops) `uvtk map` writes the file while it
+// judges the mapping (mapMesh).
+constexpr std::size_t kWriteWhileJudgingFaces = analysis::kFacesPerChunk;
 
 MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   const auto start = std::chrono::steady_clock::now();
@@ -116,7 +117,7 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   };
   // Without --density the file does not depend on the judgement, and both only read `mapped`. A
   // small mesh's judging and writing each run mostly on one thread (their loops share out chunks
-  // of 2^16 faces), so its file is written on another while it is judged: the 10 k-face sphere
+  // of kFacesPerChunk faces), so its file is written on another while it is judged: the 10 k-face sphere
   // 13.1 to 11.8 ms. A large mesh's stages already fill every core; together they took as long
   // and 35 MB more (the 4 M-face lat-long sphere, docs/benchmarks.md). The future's destructor
   // waits for the writing, so an exception from the judgement leaves nothing running (and nothing

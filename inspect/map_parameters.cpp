@@ -23,11 +23,21 @@ analysis::Thresholds readThresholds(const param::ParameterDictionary& p) {
   return t;
 }
 
+int readOverlapResolution(const param::ParameterDictionary& p, int fallback) {
+  return p.getInteger("overlap-resolution", fallback, analysis::kOverlapFollowsMesh, analysis::kMaxOverlapResolution);
+}
+
+void checkOverlapResolution(int overlapResolution) {
+  if (overlapResolution < analysis::kOverlapFollowsMesh || overlapResolution > analysis::kMaxOverlapResolution)
+    throw UsageError("--overlap-resolution: expected " + std::to_string(analysis::kOverlapFollowsMesh) + " to " +
+                     std::to_string(analysis::kMaxOverlapResolution) + " pixels");
+}
+
 MapSettings readMapSettings(const param::ParameterDictionary& p) {
   MapSettings s;
   s.projector = param::makeProjector(p);
   s.thresholds = readThresholds(p);
-  s.overlapResolution = p.getInteger("overlap-resolution", 0, 0, 16384);
+  s.overlapResolution = readOverlapResolution(p, analysis::kOverlapFollowsMesh);
   s.textureSize = textureSizeOf(p);
   if (p.given("density")) {
     const double density = p.getNumber("density", 0.0);

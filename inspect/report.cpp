@@ -11,6 +11,7 @@
 #include "core/number_text.h"
 #include "param/make_projector.h"
 #include "inspect/html_report.h"
+#include "inspect/map_parameters.h"
 #include "inspect/mesh_view.h"
 #include "inspect/projector_json.h"
 #include "inspect/measures_json.h"
@@ -24,8 +25,7 @@
 namespace uvtk::inspect {
 
 void ReportOptions::check() const {
-  if (overlapResolution < 0 || overlapResolution > 16384)
-    throw UsageError("--overlap-resolution: expected 0 to 16384 pixels");
+  checkOverlapResolution(overlapResolution);
   if (textureSize.width < 1 || textureSize.height < 1 || textureSize.width > 16384 || textureSize.height > 16384)
     throw UsageError("--texture-size: expected 1 to 16384 texels");
 }
@@ -59,7 +59,7 @@ ReportOptions readReportOptions(const param::ParameterDictionary& p) {
   o.camera.up = p.getVector<3>("up").value_or(o.camera.up);
   if (const std::optional<std::array<int, 2>> size = param::readTextureSize(p))
     o.textureSize = {(*size)[0], (*size)[1]};
-  o.overlapResolution = p.getInteger("overlap-resolution", o.overlapResolution, 0, 16384);
+  o.overlapResolution = readOverlapResolution(p, o.overlapResolution);
   o.threads = p.getInteger("threads", o.threads, 0, 1024);
   o.view3dFaces = std::size_t(p.getInteger("view3d-faces", int(o.view3dFaces), 0, std::numeric_limits<int>::max()));
   return o;

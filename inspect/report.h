@@ -23,7 +23,7 @@ struct ReportOptions {
       views::View::Angle,   views::View::Area,   views::View::Seams,   views::View::Layout};
   int width = 384, height = 384;    // pixels of each view
   ViewCamera camera;                // the views' camera
-  int overlapResolution = 0;        // pixels across the overlap raster; 0 follows the mesh
+  int overlapResolution = analysis::kOverlapFollowsMesh;  // or pixels across the overlap raster
   analysis::TextureSize textureSize;  // the texture texel density (the judgement's) and uverror count in
   int threads = 0;                  // threads for the views (0: one per hardware thread)
   std::size_t view3dFaces = 200000;  // the page's 3D view: faces shown before it decimates; 0: no 3D view

@@ -22,7 +22,7 @@ namespace uvtk::api {
 struct MappingDetail {
   inspect::MappedMesh mapped;
   analysis::Judgement judgement;
-  int overlapResolution = 0;  // the judgement's (0: follows the mesh)
+  int overlapResolution = analysis::kOverlapFollowsMesh;  // the judgement's
   nlohmann::json input;          // the summaries' "input" record: the input mesh's counts
   std::optional<texgen::TexgenOptions> texgen;  // the options of a texgen mapping: its OBJ's r and q
   bool restored = false;  // made by restoreMapping(): `mapped` holds the mesh and the UVs, nothing judged

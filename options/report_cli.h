@@ -16,7 +16,7 @@ struct ReportArguments {
   std::string size = "384x384";
   ViewCameraArguments camera;
   std::string textureSize = "1024,1024";  // W,H or N
-  int overlapResolution = 0, threads = 0;  // 0: the raster follows the mesh
+  int overlapResolution = analysis::kOverlapFollowsMesh, threads = 0;
   std::size_t view3dFaces = 200000;
 
   void check() const { options(); }  // throws UsageError before any work

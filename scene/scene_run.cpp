@@ -503,7 +503,10 @@ std::vector<Stage> planScene(const Scene& s) {
                           resolution,
                           m,
                           s.mappings[k].name,
-                          {"distortion", resolution == analysis::kOverlapFollowsMesh ? "overlap on a raster that follows the mesh" : "overlap on " + std::to_string(resolution) + "^2 pixels", "verdict"},
+                          {"distortion",
+                           resolution == analysis::kOverlapFollowsMesh ? "overlap on a raster that follows the mesh"
+                                                                       : "overlap on " + std::to_string(resolution) + "^2 pixels",
+                           "verdict"},
                           {mapStage[k]}});
         }
     for (std::size_t i = 0; i < s.outputs.size(); ++i) {

@@ -31,7 +31,7 @@ struct MapArguments {
   int jobs = 0, threads = 0;
   ProjectorArguments projector;
   VerdictArguments verdict;
-  int overlapResolution = 0;
+  int overlapResolution = analysis::kOverlapFollowsMesh;
   std::string textureSize = "1024,1024";
   std::optional<double> density;
 };
