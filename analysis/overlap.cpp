@@ -202,19 +202,28 @@ std::vector<std::uint8_t> coverageCounts(const UvMap& uv, const std::vector<Face
   return counts;
 }
 
+int followingOverlapResolution(std::size_t measuredFaces, double boxShare) {
+  if (!(boxShare > 0.0)) return kOverlapMaxFollowingResolution;
+  const double side = std::sqrt(kOverlapPixelsPerFace * double(measuredFaces) / boxShare);
+  return int(std::clamp(std::round(side), double(kOverlapMinResolution), double(kOverlapMaxFollowingResolution)));
+}
+
 int overlapResolution(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& unitGrid,
                       int resolution) {
-  // The faces' heights as fractions of the grid's box (the grid's own scaling keeps them finite).
-  const double origin = unitGrid.bounds.min().y(), size = unitGrid.bounds.sizes().y();
-  double height = 0.0;
+  // The faces' heights and areas as fractions of the grid's box (the grid's own scaling keeps them finite).
+  const Vec2 origin = unitGrid.bounds.min(), size = unitGrid.bounds.sizes();
+  double height = 0.0, share = 0.0;
   std::size_t measured = 0;
   for (std::size_t f = 0; f < faces.size(); ++f) {
     if (!isMeasured(faces[f].status)) continue;
     ++measured;
-    double v[3];
-    for (int k = 0; k < 3; ++k) v[k] = (uv.uv[3 * f + std::size_t(k)].y() * unitGrid.scale - origin) / size;
-    height += std::max({v[0], v[1], v[2]}) - std::min({v[0], v[1], v[2]});
+    Vec2 p[3];
+    for (int k = 0; k < 3; ++k) p[k] = (uv.uv[3 * f + std::size_t(k)] * unitGrid.scale - origin).cwiseQuotient(size);
+    height += std::max({p[0].y(), p[1].y(), p[2].y()}) - std::min({p[0].y(), p[1].y(), p[2].y()});
+    const Vec2 a = p[1] - p[0], b = p[2] - p[0];
+    share += 0.5 * std::fabs(a.x() * b.y() - a.y() * b.x());
   }
+  if (resolution == kOverlapFollowsMesh) resolution = followingOverlapResolution(measured, share);
   const double budget = kOverlapWorkBase + kOverlapWorkPerFace * double(measured);
   // The grid's scan, each face's spans twice (counted, then asked), one step per face.
   auto work = [&](double r) { return r * r + 2.0 * height * r + double(measured); };
@@ -222,19 +231,11 @@ int overlapResolution(const UvMap& uv, const std::vector<FaceDistortion>& faces,
   return resolution;
 }
 
-int judgedOverlapResolution(const std::vector<FaceDistortion>& faces, int asked) {
-  UVTK_CHECK(asked >= 0);
-  if (asked > 0) return asked;
-  const auto measured = std::count_if(faces.begin(), faces.end(), [](const FaceDistortion& f) { return isMeasured(f.status); });
-  const double follow = std::ceil(std::sqrt(kOverlapPixelsPerFace * double(measured)));
-  return int(std::clamp(follow, double(kOverlapMinResolution), double(kOverlapMaxFollowingResolution)));
-}
-
 Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces, int resolution) {
   UVTK_CHECK(uv.uv.size() == 3 * faces.size());
-  UVTK_CHECK(resolution >= 1 && resolution <= 65536);
+  UVTK_CHECK(resolution >= kOverlapFollowsMesh && resolution <= 65536);
   Overlap overlap;
-  overlap.resolution = resolution;
+  overlap.resolution = resolution == kOverlapFollowsMesh ? kOverlapMinResolution : resolution;
   const Eigen::AlignedBox2d bounds = measuredUvBounds(uv, faces);
   if (bounds.isEmpty()) return overlap;
   resolution = overlap.resolution = overlapResolution(uv, faces, uvGridOver(bounds, 1), resolution);

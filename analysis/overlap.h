@@ -79,27 +79,31 @@ std::vector<std::uint8_t> coverageCounts(const UvMap& uv, const std::vector<Face
 constexpr double kOverlapWorkBase = double(1 << 23);
 constexpr double kOverlapWorkPerFace = 256.0;
 
-// `resolution`, halved until the raster's estimated work (the grid's pixels, the faces' rows twice, one
-// step per face) is within the budget above. `unitGrid`: uvGridOver(measuredUvBounds(uv, faces), 1).
+// `resolution` (for kOverlapFollowsMesh, followingOverlapResolution of these faces), halved until the
+// raster's estimated work (the grid's pixels, the faces' rows twice, one step per face) is within the
+// budget above. `unitGrid`: uvGridOver(measuredUvBounds(uv, faces), 1).
 int overlapResolution(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& unitGrid,
                       int resolution);
 
-// The judgement's raster follows the mesh unless a resolution is asked: sqrt(kOverlapPixelsPerFace F)
-// pixels a side for F measured faces, from kOverlapMinResolution to kOverlapMaxFollowingResolution.
-// Measured on 42 mappings of like-real meshes (docs/benchmarks.md, issue 45), sixteen pixels a face
-// keep the overlapped fraction within 0.002 of a 1024 grid's, and a layout without overlap at 0.
+// The judgement's raster follows the mesh unless a resolution is asked (kOverlapFollowsMesh):
+// sixteen pixels for the mean measured face, R = sqrt(kOverlapPixelsPerFace F / share) for F faces
+// covering `share` of the layout's box (their UV areas summed, overlaps counted each time), rounded,
+// from kOverlapMinResolution to kOverlapMaxFollowingResolution. Measured on 42 mappings of like-real
+// meshes (docs/benchmarks.md, issue 45), sixteen pixels a face keep the overlapped fraction within
+// 0.002 of a 1024 grid's; counting the box's share keeps a sparse layout (a few faces in a wide box)
+// as fine as a full one.
 constexpr int kOverlapFollowsMesh = 0;  // the resolution that asks for it
 constexpr int kMaxOverlapResolution = 16384;  // the most `--overlap-resolution` may ask for
 constexpr int kOverlapMinResolution = 256;
 constexpr int kOverlapMaxFollowingResolution = 1024;
 constexpr double kOverlapPixelsPerFace = 16.0;
 
-// `asked` when positive (`--overlap-resolution N`); for 0, that raster for `faces` (from
-// measureFaces): min(1024, max(256, ceil(sqrt(16 F)))).
-int judgedOverlapResolution(const std::vector<FaceDistortion>& faces, int asked);
+// That rule: round(sqrt(16 F / boxShare)) clamped to 256 .. 1024; 1024 when boxShare is 0.
+int followingOverlapResolution(std::size_t measuredFaces, double boxShare);
 
 // Covered and overlapped pixels from the coverageCounts of those faces over their own UV bounding
-// box at overlapResolution, and the faces that cover an overlapped pixel. Preconditions: `faces` from measureFaces on the same UVs, resolution in [1, 65536].
+// box at overlapResolution, and the faces that cover an overlapped pixel. Preconditions: `faces` from
+// measureFaces on the same UVs, resolution kOverlapFollowsMesh or in [1, 65536].
 Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces, int resolution = 1024);
 
 }  // namespace uvtk::analysis

@@ -111,7 +111,7 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
   // The longest first (the seam edges sort every half-edge), so that the last task to start is a short one.
   const std::function<void(std::vector<double>&)> measures[] = {
       [&](std::vector<double>&) { s.seams = classifySeamEdges(mesh, uv); },
-      [&](std::vector<double>&) { s.overlap = measureOverlap(uv, faces, judgedOverlapResolution(faces, overlapResolution)); },
+      [&](std::vector<double>&) { s.overlap = measureOverlap(uv, faces, overlapResolution); },
       [&](std::vector<double>& values) {
         s.density.scaled = statistics(
             values, [&](const FaceDistortion& f) { return scaledTexelDensity(f, textureSize); }, BinSpacing::Log2);

@@ -68,7 +68,7 @@ struct Summary {
 };
 
 // The report for `faces` = measureFaces(mesh, uv, ...), with the poles the UVs' source marked
-// (UvMap::cornerPole); the overlap at judgedOverlapResolution(faces, overlapResolution). Preconditions: matching sizes, a texture of at least 1 x 1 texels.
+// (UvMap::cornerPole); the overlap at measureOverlap(uv, faces, overlapResolution). Preconditions: matching sizes, a texture of at least 1 x 1 texels.
 Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDistortion>& faces,
                   int overlapResolution = kOverlapFollowsMesh, int threads = 0, TextureSize textureSize = {});
 

@@ -33,7 +33,7 @@ CLI::Validator nameCheck(std::vector<std::string> names);
 CLI::Option* addThreadsOption(CLI::App& app, int& threads, const std::string& help);
 
 // --overlap-resolution: the pixels across the judgement's overlap raster, 0 (the default) for a
-// raster that follows the mesh (analysis::judgedOverlapResolution); `map`, `report` and `compare`.
+// raster that follows the mesh (analysis::followingOverlapResolution); `map`, `report` and `compare`.
 CLI::Option* addOverlapResolutionOption(CLI::App& app, int& overlapResolution);
 
 // A named choice: the help shows the names (a|b|c), not the enumerators they map to. Only the

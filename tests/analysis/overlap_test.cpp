@@ -11,6 +11,8 @@
 #include "analysis/distortion.h"
 #include "analysis/overlap.h"
 #include "layout.h"
+#include "meshes/generators.h"
+#include "param/projector.h"
 
 namespace uvtk::analysis {
 namespace {
@@ -216,24 +218,39 @@ TEST(OverlapSpans, AStackOfFacesIsMeasuredAtAResolutionItsFaceCountPays) {
   EXPECT_EQ(o.overlappedFaces, std::size_t(copies));
 }
 
-// By default the judgement's raster follows the mesh, sixteen pixels a measured face: 256 to 1024
-// a side; a resolution asked for is kept.
-TEST(OverlapSpans, TheJudgementsRasterFollowsTheMeasuredFaces) {
-  const auto faces = [](std::size_t measured, std::size_t degenerate) {
-    std::vector<FaceDistortion> f(measured + degenerate);
-    for (std::size_t i = 0; i < measured; ++i) f[i].status = FaceStatus::Ok;
-    for (std::size_t i = measured; i < f.size(); ++i) f[i].status = FaceStatus::ZeroAreaUv;
-    return f;
-  };
-  EXPECT_EQ(judgedOverlapResolution(faces(0, 0), 0), 256);
-  EXPECT_EQ(judgedOverlapResolution(faces(4096, 0), 0), 256);      // sqrt(16 * 4096) = 256
-  EXPECT_EQ(judgedOverlapResolution(faces(4097, 9000), 0), 257);   // 256.03, up; degenerate faces not counted
-  EXPECT_EQ(judgedOverlapResolution(faces(7680, 0), 0), 351);      // the knot: sqrt(122880) = 350.5
-  EXPECT_EQ(judgedOverlapResolution(faces(10000, 0), 0), 400);
-  EXPECT_EQ(judgedOverlapResolution(faces(65536, 0), 0), 1024);
-  EXPECT_EQ(judgedOverlapResolution(faces(1000000, 0), 0), 1024);
-  EXPECT_EQ(judgedOverlapResolution(faces(10000, 0), 8), 8);
-  EXPECT_EQ(judgedOverlapResolution(faces(10, 0), 4096), 4096);
+// By default the judgement's raster follows the mesh: sixteen pixels for the mean face, from the
+// faces' count and the share of the layout's box they cover; 256 to 1024 a side.
+TEST(OverlapSpans, TheJudgementsRasterFollowsTheMeasuredFacesAndTheirShareOfTheBox) {
+  EXPECT_EQ(followingOverlapResolution(0, 0.0), 1024);
+  EXPECT_EQ(followingOverlapResolution(2, 1.0), 256);        // sqrt(32), up to the floor
+  EXPECT_EQ(followingOverlapResolution(4096, 1.0), 256);     // sqrt(16 x 4096) = 256
+  EXPECT_EQ(followingOverlapResolution(4097, 1.0), 256);     // 256.03, rounded
+  EXPECT_EQ(followingOverlapResolution(7680, 1.0), 351);     // sqrt(122880) = 350.5
+  EXPECT_EQ(followingOverlapResolution(10000, 1.0), 400);
+  EXPECT_EQ(followingOverlapResolution(10000, 0.25), 800);   // a quarter of the box: twice as fine
+  EXPECT_EQ(followingOverlapResolution(10000, 0.01), 1024);  // at most 1024
+  EXPECT_EQ(followingOverlapResolution(65536, 1.0), 1024);
+
+  // On layouts: a 100 x 50 grid of quads fills its box (10,000 faces: 400); the same grid in a
+  // quarter of a box that one small far triangle widens: 800; a resolution asked for is kept.
+  param::ProjectorOptions o;
+  o.surface = param::SurfaceKind::Plane;
+  o.placement.fit = param::Fit::None;
+  const param::Projection grid = param::project(meshes::planeGrid(100, 50, 1.0, 1.0), o);
+  const std::vector<FaceDistortion> faces = measureFaces(grid.mesh, grid.uv);
+  EXPECT_EQ(measureOverlap(grid.uv, faces, kOverlapFollowsMesh).resolution, 400);
+  EXPECT_EQ(measureOverlap(grid.uv, faces, 8).resolution, 8);
+  std::vector<Vec3> positions = grid.mesh.positions;
+  std::vector<Triangle> triangles = grid.mesh.triangles;
+  std::vector<Vec2> uvs;
+  const Vec2 low = measuredUvBounds(grid.uv, faces).min(), size = measuredUvBounds(grid.uv, faces).sizes();
+  for (const Vec2& uv : grid.uv.uv) uvs.push_back(low + 0.5 * (uv - low));
+  const int n = int(positions.size());
+  positions.insert(positions.end(), {{5, 5, 0}, {5.001, 5, 0}, {5, 5.001, 0}});
+  triangles.push_back({n, n + 1, n + 2});
+  for (const Vec2& corner : {Vec2(0, 0), Vec2(1e-6, 0), Vec2(0, 1e-6)}) uvs.push_back(low + size - Vec2(1e-6, 1e-6) + corner);
+  const Layout sparse = makeLayout(positions, triangles, uvs);
+  EXPECT_EQ(measureOverlap(sparse.uv, measureFaces(sparse.mesh, sparse.uv), kOverlapFollowsMesh).resolution, 800);
 }
 
 }  // namespace

@@ -67,21 +67,22 @@ TEST_F(VerdictCli, BadThresholdsAreOneLineUsageErrorsAndWriteNothing) {
   }
 }
 
-// The overlap raster follows the mesh unless one is asked: the torus's 2304 faces at the floor of
-// 256 (sqrt(16 x 2304) = 192), a 100 x 50 torus's 10,000 at sqrt(160000) = 400; --overlap-resolution
-// N gives N.
+// The overlap raster follows the mesh unless one is asked: a plane projection of a 48 x 24 grid of
+// quads fills its box with 2304 faces, at the floor of 256 (sqrt(16 x 2304) = 192), a 100 x 50
+// one's 10,000 at sqrt(160000) = 400; --overlap-resolution N gives N.
 TEST_F(VerdictCli, TheOverlapRasterFollowsTheMeshUnlessOneIsAsked) {
-  io::writeObj(path("torus10k.obj"), meshes::torus(100, 50, 1.0, 0.35), nullptr);
+  io::writeObj(path("grid2k.obj"), meshes::planeGrid(48, 24, 2.0, 1.0), nullptr);
+  io::writeObj(path("grid10k.obj"), meshes::planeGrid(100, 50, 2.0, 1.0), nullptr);
   const auto resolution = [&](const std::string& mesh, const std::string& options) {
-    const CliRun r = uvtk("map " + path(mesh) + " --projector cube -o " + path("o.obj") + " --json " + path("o.json") +
+    const CliRun r = uvtk("map " + path(mesh) + " --projector plane -o " + path("o.obj") + " --json " + path("o.json") +
                           " " + options);
     EXPECT_EQ(r.status, 0) << r.err;
     return json("o.json")["judgement"]["overlap"]["resolution"].get<int>();
   };
-  EXPECT_EQ(resolution("torus.obj", ""), 256);
-  EXPECT_EQ(resolution("torus10k.obj", ""), 400);
-  EXPECT_EQ(resolution("torus10k.obj", "--overlap-resolution 1024"), 1024);
-  EXPECT_EQ(resolution("torus10k.obj", "--overlap-resolution 100"), 100);
+  EXPECT_EQ(resolution("grid2k.obj", ""), 256);
+  EXPECT_EQ(resolution("grid10k.obj", ""), 400);
+  EXPECT_EQ(resolution("grid10k.obj", "--overlap-resolution 1024"), 1024);
+  EXPECT_EQ(resolution("grid10k.obj", "--overlap-resolution 100"), 100);
 }
 
 // The number after "label: " in a legend line, or -1.
