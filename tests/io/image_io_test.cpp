@@ -245,6 +245,33 @@ TEST_F(ImageIoTest, ChecksAPngsChunksBeforeLibpngReadsIt) {
             path("first.png") + ": error: cannot read: corrupted PNG (the first chunk is not IHDR)");
 }
 
+TEST_F(ImageIoTest, WalksAnOpenExrsHeadersBeforeOpenExrReadsThem) {
+  writeImage(path("good.exr"), gradient(4, 4, 3), PixelType::Float);
+  const std::string exr = readText(path("good.exr"));
+  const std::string attribute = std::string("compression\0compression\0", 24);
+  const std::size_t at = exr.find(attribute);
+  ASSERT_NE(at, std::string::npos);
+  ASSERT_EQ(exr.substr(at + 24, 4), std::string("\1\0\0\0", 4));
+  EXPECT_EQ(readImage(path("good.exr")).image.channels, 3);
+  // A 1.7 GB value declared in a small file: OpenEXR would allocate it before finding the file short.
+  std::string huge = exr;
+  huge.replace(at + 24, 4, std::string("\x13\x00\x6e\x64", 4));
+  const std::string hugeFile = writeText("huge.exr", huge);
+  const std::string left = std::to_string(exr.size() - (at + 28));
+  EXPECT_EQ(messageOf<InputError>([&] { readImage(hugeFile); }),
+            hugeFile + ": error: cannot read: corrupted OpenEXR (header 0's attribute compression declares "
+                       "1684930579 bytes, " + left + " are left in the file)");
+  // The check goes by the magic number, not the extension.
+  const std::string cut = writeText("cut.png", exr.substr(0, at + 20));
+  EXPECT_EQ(messageOf<InputError>([&] { readImage(cut); }),
+            cut + ": error: cannot read: truncated OpenEXR (header 0 is cut off)");
+  std::string longName = exr;
+  longName.replace(at, 11, std::string(40, 'c'));
+  const std::string longFile = writeText("long.exr", longName);
+  EXPECT_EQ(messageOf<InputError>([&] { readImage(longFile); }),
+            longFile + ": error: cannot read: corrupted OpenEXR (header 0 has a name longer than 31 characters)");
+}
+
 TEST_F(ImageIoTest, WriteErrors) {
   const Image image = gradient(2, 2, 3);
   const std::string nowhere = path("no/such/folder/a.png");
