@@ -32,6 +32,14 @@ bool ownsCentresOnIt(const Point& a, const Point& b) { return b.y < a.y || (b.y 
 
 std::int64_t floorDiv(std::int64_t a, std::int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
 
+// std::llround (halves away from zero) for |x| < 2^63, inline: the libm call was a quarter of the
+// raster's time, six a face and each face snapped up to three times. x - trunc(x) is exact.
+std::int64_t roundHalfAway(double x) {
+  const std::int64_t whole = static_cast<std::int64_t>(x);  // toward zero
+  const double fraction = x - static_cast<double>(whole);
+  return whole + (fraction >= 0.5) - (fraction <= -0.5);
+}
+
 // One edge ab of a counter-clockwise triangle as a bound on the pixel columns x of a row whose
 // centres it keeps: N - 256 dy x >= 0, N = (b - a) x (c - a) at c = (128, centreY) less the tie rule's
 // t (0 where the edge owns the centres on it, else 1). A horizontal edge keeps all or none.
@@ -133,7 +141,7 @@ class GridSnap {
   Point point(const Vec2& uvPoint) const {
     const Vec2 relative = (uvPoint * scale_ - origin_).cwiseQuotient(size_);  // in [0, 1] over the grid
     UVTK_CHECK(relative.x() >= -1.0 && relative.x() <= 2.0 && relative.y() >= -1.0 && relative.y() <= 2.0);
-    return Point{std::llround(relative.x() * subpixels_), std::llround(relative.y() * subpixels_)};
+    return Point{roundHalfAway(relative.x() * subpixels_), roundHalfAway(relative.y() * subpixels_)};
   }
 
   Vec2 origin_, size_;

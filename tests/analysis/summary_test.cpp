@@ -294,6 +294,22 @@ TEST(WeightedStatistics, PercentilesEqualAnExactRecountOnRandomAndAdversarialSet
   }
 }
 
+// Most items in one bucket of the first digit, which then splits only the exponents (an angle
+// distortion from 1 - 2^-52 to 100): that bucket is refined by another pass rather than gathered.
+TEST(WeightedStatistics, PercentilesEqualAnExactRecountWhereOneExponentHoldsMostItems) {
+  std::mt19937_64 random(4507);
+  const auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(random); };
+  for (const std::size_t n : {300, 3000, 9800, 40000}) {
+    std::vector<double> values(n), weights(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const int kind = int(random() % 20);
+      values[i] = kind == 0 ? 1.0 - 0x1p-52 : kind == 1 ? std::ldexp(uniform(1.0, 2.0), int(random() % 7)) : uniform(1.0, 2.0);
+      weights[i] = std::ldexp(uniform(0.5, 1.0), int(random() % 21) - 10);
+    }
+    expectPercentilesRecounted(values, weights, std::to_string(n) + " items");
+  }
+}
+
 // Weights whose rounded running sum reaches the target one value early: 0.5 - 2^-54 then 3 2^-56
 // round to 0.5, exactly half the total, while their exact sum 0.5 - 2^-56 stays short of it.
 TEST(WeightedStatistics, APercentileIsTheExactLowerInverseWhereRoundingWouldTieTheTarget) {
