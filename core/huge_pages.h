@@ -27,11 +27,18 @@ inline void adviseHugePages(const void* data, std::size_t bytes) {
 // kernel's clearing of fresh pages, a fifth of `uvtk map`'s CPU time on a paravirtualised guest, is
 // shared by the cores instead of falling on the one thread that constructs the elements. Where the
 // kernel lacks MADV_POPULATE_WRITE (before Linux 5.14) the first touch faults them as before.
+// A smaller block (from 64 KiB) is faulted in by one call on this thread: 0.46 us a page instead of
+// 1 us a fault (a 480 KB block, 122 to 55 us).
 inline void prefaultPages(const void* data, std::size_t bytes, int threads) {
-  constexpr std::uintptr_t kHugePage = std::uintptr_t(1) << 21, kPiece = std::uintptr_t(1) << 24;
+  constexpr std::uintptr_t kPage = 4096, kHugePage = std::uintptr_t(1) << 21, kPiece = std::uintptr_t(1) << 24;
+  constexpr std::size_t kOneCallBytes = std::size_t(1) << 16;
   const int workers = threadCount(threads);
-  if (workers <= 1 || bytes < 2 * kPiece) return;  // small blocks: one thread is as fast
   const auto start = reinterpret_cast<std::uintptr_t>(data);
+  if (workers <= 1 || bytes < 2 * kPiece) {
+    const std::uintptr_t begin = (start + kPage - 1) & ~(kPage - 1), end = (start + bytes) & ~(kPage - 1);
+    if (bytes >= kOneCallBytes && end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_WRITE);
+    return;
+  }
   const std::uintptr_t begin = (start + kHugePage - 1) & ~(kHugePage - 1), end = (start + bytes) & ~(kHugePage - 1);
   const int pieces = int((end - begin + kPiece - 1) / kPiece);
   parallelFor(pieces, workers, [&](int i) {

@@ -6,6 +6,7 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -99,11 +100,49 @@ void checkPngChunks(const std::string& path) {
   }
 }
 
+// What a read may take: the caller's limits on values and pixels, and on channels (a texture's 4).
+struct ReadLimits {
+  std::int64_t maxValues, maxPixels;
+  int maxChannels;
+};
+
+// The limits checked on a header's numbers: OpenImageIO's, or an OpenEXR header's before OpenEXR
+// allocates by them. `channelNames` in the order the reader gives them.
+void checkDimensions(const std::string& path, std::int64_t width, std::int64_t height,
+                     const std::vector<std::string>& channelNames, const ReadLimits& limits) {
+  if (width > kMaxSide || height > kMaxSide)
+    throw readFailure(path, "image is " + std::to_string(width) + " x " + std::to_string(height) + ", larger than the " +
+                                std::to_string(kMaxSide) + " x " + std::to_string(kMaxSide) + " limit");
+  const std::int64_t channelCount = std::int64_t(channelNames.size());
+  if (channelCount > limits.maxChannels) {
+    std::string names;
+    for (std::size_t c = 0; c < channelNames.size(); ++c) names += (c ? ", " : "") + channelNames[c];
+    throw readFailure(path, "image has " + std::to_string(channelCount) + " channels (" + printable(names) +
+                                "); a texture takes 1 to 4 (grey, grey and alpha, RGB, RGBA)");
+  }
+  const std::int64_t channels = std::min<std::int64_t>(channelCount, kMaxChannels);
+  const std::int64_t pixelCount = width * height, values = pixelCount * channels;
+  if (pixelCount > limits.maxPixels)
+    throw readFailure(path, "image is " + std::to_string(width) + " x " + std::to_string(height) + ", " +
+                                std::to_string(pixelCount) + " pixels, more than the limit of " +
+                                std::to_string(limits.maxPixels));
+  if (values > limits.maxValues) {
+    std::ostringstream message;
+    message << "image is " << width << " x " << height << " x " << channels << " channels, "
+            << double(values) * sizeof(float) / double(1 << 30) << " GiB as float, more than the "
+            << double(limits.maxValues) * sizeof(float) / double(1 << 30) << " GiB limit";
+    throw readFailure(path, message.str());
+  }
+}
+
 // An OpenEXR file (by its magic number) has its headers walked before OpenImageIO reads it:
-// OpenEXR 3.1 allocates and fills each attribute's declared size before it finds the file too
-// short, so a 1 KB file declaring a 1.7 GB string took 2.5 s and 1.8 GB (found by fuzzing, CI
-// 2026-12-07). Checked: each attribute's name and type end, and its value fits in the file.
-void checkExrHeaders(const std::string& path) {
+// OpenEXR 3.1 allocates by the numbers it finds before it checks them, so a 1 KB file declaring a
+// 1.7 GB string took 2.5 s and 1.8 GB, and a 486-byte one a data window 196,609 pixels wide a
+// line buffer that timed the fuzzer out (CI, 2026-12-07). Checked in every part's header: each
+// attribute's name and type end and its value fits in the file; the data window and channels keep
+// the read's limits (checkDimensions; the channels named R, G, B, A first, as OpenImageIO orders
+// them); and a tile holds no more pixels than an image may.
+void checkExrHeaders(const std::string& path, const ReadLimits& limits) {
   std::ifstream in(path, std::ios::binary);
   unsigned char head[8];
   static constexpr unsigned char kMagic[4] = {0x76, 0x2f, 0x31, 0x01};
@@ -117,32 +156,67 @@ void checkExrHeaders(const std::string& path) {
   const auto cutOff = [&](int part) {
     return readFailure(path, "cannot read: truncated OpenEXR (header " + std::to_string(part) + " is cut off)");
   };
+  const auto corrupted = [&](int part, const std::string& what) {
+    return readFailure(path, "cannot read: corrupted OpenEXR (header " + std::to_string(part) + what + ")");
+  };
   // A name or type: up to maxName characters and a zero; empty at the end of a header.
   const auto readName = [&](int part) {
     std::string name;
     for (char c; in.get(c);) {
       if (c == '\0') return name;
       if (name.size() == maxName)
-        throw readFailure(path, "cannot read: corrupted OpenEXR (header " + std::to_string(part) +
-                                    " has a name longer than " + std::to_string(maxName) + " characters)");
+        throw corrupted(part, " has a name longer than " + std::to_string(maxName) + " characters");
       name += c;
     }
     throw cutOff(part);
   };
+  const auto int32At = [](const std::string& bytes, std::size_t at) {
+    return std::int32_t(std::uint32_t(std::uint8_t(bytes[at])) | std::uint32_t(std::uint8_t(bytes[at + 1])) << 8 |
+                        std::uint32_t(std::uint8_t(bytes[at + 2])) << 16 | std::uint32_t(std::uint8_t(bytes[at + 3])) << 24);
+  };
   for (int part = 0;; ++part) {
+    std::optional<std::array<std::int64_t, 2>> window, tile;  // width and height
+    std::vector<std::string> channels;
     for (std::string name = readName(part); !name.empty(); name = readName(part)) {
-      readName(part);  // the attribute's type
-      unsigned char size[4];
-      if (!in.read(reinterpret_cast<char*>(size), 4)) throw cutOff(part);
-      const std::int64_t bytes = std::int32_t(std::uint32_t(size[0]) | std::uint32_t(size[1]) << 8 |
-                                              std::uint32_t(size[2]) << 16 | std::uint32_t(size[3]) << 24);
+      const std::string type = readName(part);
+      char size[4];
+      if (!in.read(size, 4)) throw cutOff(part);
+      const std::int64_t bytes = int32At(std::string(size, 4), 0);
       const std::int64_t left = fileSize - std::int64_t(in.tellg());
       if (bytes < 0 || bytes > left)
-        throw readFailure(path, "cannot read: corrupted OpenEXR (header " + std::to_string(part) + "'s attribute " +
-                                    printable(name) + " declares " + std::to_string(bytes) + " bytes, " +
-                                    std::to_string(left) + " are left in the file)");
-      in.seekg(bytes, std::ios::cur);
+        throw corrupted(part, "'s attribute " + printable(name) + " declares " + std::to_string(bytes) + " bytes, " +
+                                  std::to_string(left) + " are left in the file");
+      const bool read = (name == "dataWindow" && type == "box2i" && bytes == 16) ||
+                        (name == "tiles" && type == "tiledesc" && bytes == 9) || (name == "channels" && type == "chlist");
+      if (!read) {
+        in.seekg(bytes, std::ios::cur);
+        continue;
+      }
+      std::string value(std::size_t(bytes), '\0');
+      if (!in.read(value.data(), bytes)) throw cutOff(part);
+      if (name == "dataWindow") {  // xMin, yMin, xMax, yMax
+        window = {{std::int64_t(int32At(value, 8)) - int32At(value, 0) + 1, std::int64_t(int32At(value, 12)) - int32At(value, 4) + 1}};
+      } else if (name == "tiles") {  // xSize, ySize (unsigned), mode
+        tile = {{std::int64_t(std::uint32_t(int32At(value, 0))), std::int64_t(std::uint32_t(int32At(value, 4)))}};
+      } else {  // each channel: its name, a zero and 16 bytes; a zero after the last
+        for (std::size_t at = 0; at < value.size() && value[at] != '\0';) {
+          const std::size_t end = value.find('\0', at);
+          if (end == std::string::npos) break;  // OpenEXR refuses it
+          channels.push_back(value.substr(at, end - at));
+          at = end + 17;
+        }
+      }
     }
+    // A window that is empty or inverted OpenEXR refuses itself.
+    if (window && (*window)[0] > 0 && (*window)[1] > 0) {
+      const auto rank = [](const std::string& c) { return c.size() == 1 ? std::string("RGBA").find(c[0]) : std::string::npos; };
+      std::stable_sort(channels.begin(), channels.end(), [&](const std::string& a, const std::string& b) { return rank(a) < rank(b); });
+      checkDimensions(path, (*window)[0], (*window)[1], channels, limits);
+    }
+    if (tile && (*tile)[0] * (*tile)[1] > limits.maxPixels)
+      throw readFailure(path, "tiles are " + std::to_string((*tile)[0]) + " x " + std::to_string((*tile)[1]) + ", " +
+                                  std::to_string((*tile)[0] * (*tile)[1]) + " pixels, more than the limit of " +
+                                  std::to_string(limits.maxPixels));
     // A multi-part file's headers end with an empty one.
     if (!multipart || in.peek() == 0) return;
     if (in.peek() == std::char_traits<char>::eof()) throw cutOff(part + 1);
@@ -180,10 +254,10 @@ const backend::Functions& writerFor(const std::string& path, PixelType type) {
 
 namespace {
 
-ImageFile readLimited(const std::string& path, std::int64_t maxValues, std::int64_t maxPixels, int maxChannels) {
+ImageFile readLimited(const std::string& path, const ReadLimits& limits) {
   checkReadable(path);
   checkPngChunks(path);
-  checkExrHeaders(path);
+  checkExrHeaders(path, limits);
   const backend::Functions& functions =
       plugin([&](const std::string& why) { return readFailure(path, "cannot read: " + why); });
   backend::Header spec;  // the first subimage, level 0
@@ -196,30 +270,9 @@ ImageFile readLimited(const std::string& path, std::int64_t maxValues, std::int6
     throw readFailure(path, "image is empty or not two-dimensional (" + std::to_string(spec.width) + " x " +
                                 std::to_string(spec.height) + " x " + std::to_string(spec.depth) + ", " +
                                 std::to_string(spec.channels) + " channels)");
-  if (spec.width > kMaxSide || spec.height > kMaxSide)
-    throw readFailure(path, "image is " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
-                                ", larger than the " + std::to_string(kMaxSide) + " x " + std::to_string(kMaxSide) +
-                                " limit");
-
-  if (spec.channels > maxChannels) {
-    std::string names;
-    for (int c = 0; c < spec.channels; ++c) names += (c ? ", " : "") + spec.channelNames[std::size_t(c)];
-    throw readFailure(path, "image has " + std::to_string(spec.channels) + " channels (" + printable(names) +
-                                "); a texture takes 1 to 4 (grey, grey and alpha, RGB, RGBA)");
-  }
+  checkDimensions(path, spec.width, spec.height, spec.channelNames, limits);
   const int channels = std::min(spec.channels, kMaxChannels);
-  const std::int64_t pixelCount = std::int64_t(spec.width) * spec.height, values = pixelCount * channels;
-  if (pixelCount > maxPixels)
-    throw readFailure(path, "image is " + std::to_string(spec.width) + " x " + std::to_string(spec.height) + ", " +
-                                std::to_string(pixelCount) + " pixels, more than the limit of " +
-                                std::to_string(maxPixels));
-  if (values > maxValues) {
-    std::ostringstream message;
-    message << "image is " << spec.width << " x " << spec.height << " x " << channels << " channels, "
-            << double(values) * sizeof(float) / double(1 << 30) << " GiB as float, more than the "
-            << double(maxValues) * sizeof(float) / double(1 << 30) << " GiB limit";
-    throw readFailure(path, message.str());
-  }
+  const std::int64_t values = std::int64_t(spec.width) * spec.height * channels;
   // Within the limit, a small compressed file may still decode to more than this process may take.
   const std::uint64_t bytes = std::uint64_t(values) * sizeof(float);
   const std::optional<std::uint64_t> available = availableMemory();
@@ -240,11 +293,11 @@ ImageFile readLimited(const std::string& path, std::int64_t maxValues, std::int6
 }  // namespace
 
 ImageFile readImage(const std::string& path, std::int64_t maxValues, std::int64_t maxPixels) {
-  return readLimited(path, maxValues, maxPixels, std::numeric_limits<int>::max());
+  return readLimited(path, {maxValues, maxPixels, std::numeric_limits<int>::max()});
 }
 
 ImageFile readTexture(const std::string& path, std::int64_t maxPixels) {
-  return readLimited(path, kMaxImageValues, maxPixels, 4);
+  return readLimited(path, {kMaxImageValues, maxPixels, 4});
 }
 
 void checkImageType(const std::string& path, PixelType type) { writerFor(path, type); }

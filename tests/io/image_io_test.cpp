@@ -265,6 +265,21 @@ TEST_F(ImageIoTest, WalksAnOpenExrsHeadersBeforeOpenExrReadsThem) {
   const std::string cut = writeText("cut.png", exr.substr(0, at + 20));
   EXPECT_EQ(messageOf<InputError>([&] { readImage(cut); }),
             cut + ": error: cannot read: truncated OpenEXR (header 0 is cut off)");
+  // A data window beyond the limits, and tiles larger than an image may be: refused from the header,
+  // before OpenEXR allocates a line or a tile by them (a 486-byte file's 196,609-pixel-wide line
+  // timed the fuzzer out).
+  const std::size_t window = exr.find(std::string("dataWindow\0box2i\0\x10\0\0\0", 21));
+  ASSERT_NE(window, std::string::npos);
+  std::string wide = exr;
+  wide.replace(window + 21 + 8, 4, std::string("\x00\x00\x03\x00", 4));  // xMax 196608
+  const std::string wideFile = writeText("wide.exr", wide);
+  EXPECT_EQ(messageOf<InputError>([&] { readImage(wideFile); }),
+            wideFile + ": error: image is 196609 x 4, larger than the 16384 x 16384 limit");
+  std::string tiled = exr;
+  tiled.insert(at, std::string("tiles\0tiledesc\0\x09\0\0\0\0\0\x01\0\0\0\x01\0\0", 28));  // 65536 x 65536
+  const std::string tiledFile = writeText("tiles.exr", tiled);
+  EXPECT_EQ(messageOf<InputError>([&] { readTexture(tiledFile, 1 << 18); }),
+            tiledFile + ": error: tiles are 65536 x 65536, 4294967296 pixels, more than the limit of 262144");
   std::string longName = exr;
   longName.replace(at, 11, std::string(40, 'c'));
   const std::string longFile = writeText("long.exr", longName);
