@@ -135,6 +135,48 @@ void checkDimensions(const std::string& path, std::int64_t width, std::int64_t h
   }
 }
 
+std::int32_t littleInt32(const std::string& bytes, std::size_t at) {
+  return std::int32_t(std::uint32_t(std::uint8_t(bytes[at])) | std::uint32_t(std::uint8_t(bytes[at + 1])) << 8 |
+                      std::uint32_t(std::uint8_t(bytes[at + 2])) << 16 | std::uint32_t(std::uint8_t(bytes[at + 3])) << 24);
+}
+
+// Whether `value` is exactly one value of the OpenEXR attribute type `type`, as OpenEXR 3.1 reads
+// it: a type of fixed size is read whole and a channel list up to its end whatever size the file
+// declares, and a preview's or a string vector's own sizes are allocated, so each must agree with
+// the declared one. Types it does not know (and strings) are read as their declared bytes.
+bool holdsExrValue(const std::string& type, const std::string& value) {
+  static const std::pair<const char*, std::size_t> kFixedSizes[] = {
+      {"box2i", 16},    {"box2f", 16},    {"chromaticities", 32}, {"compression", 1}, {"double", 8}, {"envmap", 1},
+      {"float", 4},     {"int", 4},       {"keycode", 28},        {"lineOrder", 1},   {"m33f", 36},  {"m33d", 72},
+      {"m44f", 64},     {"m44d", 128},    {"rational", 8},        {"tiledesc", 9},    {"timecode", 8}, {"v2i", 8},
+      {"v2f", 8},       {"v2d", 16},      {"v3i", 12},            {"v3f", 12},        {"v3d", 24},   {"deepImageState", 1}};
+  for (const auto& [name, size] : kFixedSizes)
+    if (type == name) return value.size() == size;
+  const std::size_t size = value.size();
+  if (type == "chlist") {  // (name, 0, 16 bytes)*, 0
+    std::size_t at = 0;
+    while (at < size && value[at] != '\0') {
+      const std::size_t end = value.find('\0', at);
+      if (end == std::string::npos || end - at > 255) return false;
+      at = end + 17;
+    }
+    return at + 1 == size;
+  }
+  if (type == "preview") {  // width, height, then 4 bytes a pixel
+    return size >= 8 &&
+           std::uint64_t(std::uint32_t(littleInt32(value, 0))) * std::uint32_t(littleInt32(value, 4)) * 4 + 8 == size;
+  }
+  if (type == "stringvector") {  // (length, characters)*
+    for (std::size_t at = 0; at < size;) {
+      if (size - at < 4 || littleInt32(value, at) < 0 || std::size_t(littleInt32(value, at)) > size - at - 4) return false;
+      at += 4 + std::size_t(littleInt32(value, at));
+    }
+    return true;
+  }
+  if (type == "floatvector") return size % 4 == 0;
+  return true;
+}
+
 // An OpenEXR file (by its magic number) has its headers walked before OpenImageIO reads it:
 // OpenEXR 3.1 allocates by the numbers it finds before it checks them, so a 1 KB file declaring a
 // 1.7 GB string took 2.5 s and 1.8 GB, and a 486-byte one a data window 196,609 pixels wide a
@@ -170,10 +212,6 @@ void checkExrHeaders(const std::string& path, const ReadLimits& limits) {
     }
     throw cutOff(part);
   };
-  const auto int32At = [](const std::string& bytes, std::size_t at) {
-    return std::int32_t(std::uint32_t(std::uint8_t(bytes[at])) | std::uint32_t(std::uint8_t(bytes[at + 1])) << 8 |
-                        std::uint32_t(std::uint8_t(bytes[at + 2])) << 16 | std::uint32_t(std::uint8_t(bytes[at + 3])) << 24);
-  };
   for (int part = 0;; ++part) {
     std::optional<std::array<std::int64_t, 2>> window, tile;  // width and height
     std::vector<std::string> channels;
@@ -181,36 +219,33 @@ void checkExrHeaders(const std::string& path, const ReadLimits& limits) {
       const std::string type = readName(part);
       char size[4];
       if (!in.read(size, 4)) throw cutOff(part);
-      const std::int64_t bytes = int32At(std::string(size, 4), 0);
+      const std::int64_t bytes = littleInt32(std::string(size, 4), 0);
       const std::int64_t left = fileSize - std::int64_t(in.tellg());
       if (bytes < 0 || bytes > left)
         throw corrupted(part, "'s attribute " + printable(name) + " declares " + std::to_string(bytes) + " bytes, " +
                                   std::to_string(left) + " are left in the file");
-      const bool read = (name == "dataWindow" && type == "box2i" && bytes == 16) ||
-                        (name == "tiles" && type == "tiledesc" && bytes == 9) || (name == "channels" && type == "chlist");
-      if (!read) {
-        in.seekg(bytes, std::ios::cur);
-        continue;
-      }
       std::string value(std::size_t(bytes), '\0');
       if (!in.read(value.data(), bytes)) throw cutOff(part);
-      if (name == "dataWindow") {  // xMin, yMin, xMax, yMax
-        window = {{std::int64_t(int32At(value, 8)) - int32At(value, 0) + 1, std::int64_t(int32At(value, 12)) - int32At(value, 4) + 1}};
-      } else if (name == "tiles") {  // xSize, ySize (unsigned), mode
-        tile = {{std::int64_t(std::uint32_t(int32At(value, 0))), std::int64_t(std::uint32_t(int32At(value, 4)))}};
-      } else {  // each channel: its name, a zero and 16 bytes; a zero after the last
-        for (std::size_t at = 0; at < value.size() && value[at] != '\0';) {
-          const std::size_t end = value.find('\0', at);
-          if (end == std::string::npos) break;  // OpenEXR refuses it
-          channels.push_back(value.substr(at, end - at));
-          at = end + 17;
-        }
+      if (!holdsExrValue(type, value))
+        throw corrupted(part, "'s attribute " + printable(name) + " is not a valid " + printable(type) + " of " +
+                                  std::to_string(bytes) + " bytes");
+      if (name == "dataWindow" && type == "box2i") {  // xMin, yMin, xMax, yMax
+        window = {{std::int64_t(littleInt32(value, 8)) - littleInt32(value, 0) + 1,
+                   std::int64_t(littleInt32(value, 12)) - littleInt32(value, 4) + 1}};
+      } else if (name == "tiles" && type == "tiledesc") {  // xSize, ySize (unsigned), mode
+        tile = {{std::int64_t(std::uint32_t(littleInt32(value, 0))), std::int64_t(std::uint32_t(littleInt32(value, 4)))}};
+      } else if (name == "channels" && type == "chlist") {  // each channel: its name, a zero and 16 bytes
+        for (std::size_t at = 0; value[at] != '\0'; at = value.find('\0', at) + 17)
+          channels.push_back(value.substr(at, value.find('\0', at) - at));
       }
     }
     // A window that is empty or inverted OpenEXR refuses itself.
     if (window && (*window)[0] > 0 && (*window)[1] > 0) {
-      const auto rank = [](const std::string& c) { return c.size() == 1 ? std::string("RGBA").find(c[0]) : std::string::npos; };
-      std::stable_sort(channels.begin(), channels.end(), [&](const std::string& a, const std::string& b) { return rank(a) < rank(b); });
+      const auto rank = [](const std::string& c) {
+        return c.size() == 1 ? std::string("RGBA").find(c[0]) : std::string::npos;
+      };
+      std::stable_sort(channels.begin(), channels.end(),
+                       [&](const std::string& a, const std::string& b) { return rank(a) < rank(b); });
       checkDimensions(path, (*window)[0], (*window)[1], channels, limits);
     }
     if (tile && (*tile)[0] * (*tile)[1] > limits.maxPixels)
