@@ -280,6 +280,17 @@ TEST_F(ImageIoTest, WalksAnOpenExrsHeadersBeforeOpenExrReadsThem) {
   const std::string tiledFile = writeText("tiles.exr", tiled);
   EXPECT_EQ(messageOf<InputError>([&] { readTexture(tiledFile, 1 << 18); }),
             tiledFile + ": error: tiles are 65536 x 65536, 4294967296 pixels, more than the limit of 262144");
+  // A channel list declared shorter than it is: OpenEXR reads it to its end whatever the size, so a
+  // walk by the declared sizes would lose step with OpenEXR's reading.
+  const std::size_t list = exr.find(std::string("channels\0chlist\0", 16));
+  ASSERT_NE(list, std::string::npos);
+  const std::uint8_t listBytes = std::uint8_t(exr[list + 16]);
+  std::string shortList = exr;
+  shortList[list + 16] = char(listBytes - 4);
+  const std::string shortFile = writeText("short.exr", shortList);
+  EXPECT_EQ(messageOf<InputError>([&] { readImage(shortFile); }),
+            shortFile + ": error: cannot read: corrupted OpenEXR (header 0's attribute channels is not a valid chlist of " +
+                std::to_string(listBytes - 4) + " bytes)");
   std::string longName = exr;
   longName.replace(at, 11, std::string(40, 'c'));
   const std::string longFile = writeText("long.exr", longName);
