@@ -71,7 +71,10 @@ void checkPngChunks(const std::string& path) {
   static constexpr char kSignature[8] = {'\x89', 'P', 'N', 'G', '\r', '\n', '\x1A', '\n'};
   std::ifstream in(path, std::ios::binary);
   char head[8];
-  if (!in.read(head, 8) || !std::equal(head, head + 8, kSignature)) return;
+  if (!in.read(head, 8) || !std::equal(head, head + 4, kSignature)) return;
+  // The signature's line ends changed (a text-mode transfer): libpng would print its own line.
+  if (!std::equal(head + 4, head + 8, kSignature + 4))
+    throw readFailure(path, "cannot read: corrupted PNG (its signature's line ends were changed, as by a text-mode transfer)");
   const auto bigEndian = [](const char* p) {
     return std::uint32_t(std::uint8_t(p[0])) << 24 | std::uint32_t(std::uint8_t(p[1])) << 16 |
            std::uint32_t(std::uint8_t(p[2])) << 8 | std::uint32_t(std::uint8_t(p[3]));

@@ -239,6 +239,12 @@ TEST_F(ImageIoTest, ChecksAPngsChunksBeforeLibpngReadsIt) {
   // The check goes by the signature, not the extension.
   EXPECT_EQ(messageFor("cut.tif", png.substr(0, 30)),
             path("cut.tif") + ": error: cannot read: truncated PNG (chunk 0, IHDR, is cut off)");
+  // The signature's CR LF turned into LF, as a text-mode transfer does: libpng would print a line of its own.
+  std::string ascii = png;
+  ascii.erase(4, 1);
+  EXPECT_EQ(messageFor("ascii.png", ascii),
+            path("ascii.png") +
+                ": error: cannot read: corrupted PNG (its signature's line ends were changed, as by a text-mode transfer)");
   std::string noHeader = png;
   noHeader.replace(12, 4, "IHDX");
   EXPECT_EQ(messageFor("first.png", noHeader),
