@@ -165,9 +165,11 @@ bool holdsExrValue(const std::string& type, const std::string& value) {
     }
     return at + 1 == size;
   }
-  if (type == "preview") {  // width, height, then 4 bytes a pixel
-    return size >= 8 &&
-           std::uint64_t(std::uint32_t(littleInt32(value, 0))) * std::uint32_t(littleInt32(value, 4)) * 4 + 8 == size;
+  if (type == "preview") {  // width, height, then 4 bytes a pixel (counted without overflow)
+    if (size < 8 || (size - 8) % 4 != 0) return false;
+    const std::uint64_t width = std::uint32_t(littleInt32(value, 0)), height = std::uint32_t(littleInt32(value, 4));
+    const std::uint64_t pixels = (size - 8) / 4;
+    return width == 0 || height == 0 ? pixels == 0 : pixels % width == 0 && pixels / width == height;
   }
   if (type == "stringvector") {  // (length, characters)*
     for (std::size_t at = 0; at < size;) {

@@ -1,5 +1,6 @@
 #include "views/type.h"
 
+#include <dlfcn.h>
 #include <ft2build.h>
 #include FT_FREETYPE_H
 
@@ -12,6 +13,7 @@
 #include <mutex>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "core/error.h"
@@ -39,16 +41,55 @@ struct Line {
   TextMetrics metrics;
 };
 
+// FreeType, opened when the views first draw text rather than linked: loading it (and libpng and
+// Brotli, which it needs) took every uvtk process 0.15 to 0.25 ms at start, and most draw no text
+// (docs/benchmarks.md). Its soname has been libfreetype.so.6 since FreeType 2.0.
+struct FreeType {
+  decltype(&FT_Init_FreeType) initFreeType;
+  decltype(&FT_Done_FreeType) doneFreeType;
+  decltype(&FT_New_Face) newFace;
+  decltype(&FT_Set_Char_Size) setCharSize;
+  decltype(&FT_Get_Char_Index) getCharIndex;
+  decltype(&FT_Load_Glyph) loadGlyph;
+  decltype(&FT_Get_Kerning) getKerning;
+};
+
+const FreeType& freeType() {
+  static const FreeType loaded = [] {
+    constexpr const char* kLibrary = "libfreetype.so.6";
+    void* library = ::dlopen(kLibrary, RTLD_NOW | RTLD_LOCAL);  // never closed: the faces live to the end
+    const auto refuse = [&](const std::string& why) {
+      return InputError(std::string(kLibrary) + ": error: cannot load FreeType for the views' text (" + why +
+                        "); install libfreetype6");
+    };
+    if (!library) throw refuse(::dlerror());
+    const auto symbol = [&](auto& function, const char* name) {
+      function = reinterpret_cast<std::remove_reference_t<decltype(function)>>(::dlsym(library, name));
+      if (!function) throw refuse(std::string("no ") + name);
+    };
+    FreeType f{};
+    symbol(f.initFreeType, "FT_Init_FreeType");
+    symbol(f.doneFreeType, "FT_Done_FreeType");
+    symbol(f.newFace, "FT_New_Face");
+    symbol(f.setCharSize, "FT_Set_Char_Size");
+    symbol(f.getCharIndex, "FT_Get_Char_Index");
+    symbol(f.loadGlyph, "FT_Load_Glyph");
+    symbol(f.getKerning, "FT_Get_Kerning");
+    return f;
+  }();
+  return loaded;
+}
+
 // FreeType's library and faces are not thread-safe: every use of them, and of the cache they
 // fill, holds `mutex`. Glyphs are never evicted and std::map never moves its nodes, so a Glyph
 // found under the lock may be read after it is released.
 class Typeface {
  public:
   Typeface() {
-    if (FT_Error error = FT_Init_FreeType(&library_))
+    if (FT_Error error = ft_.initFreeType(&library_))
       throw InputError("FreeType: error: cannot initialise (FreeType error " + std::to_string(error) + ")");
   }
-  ~Typeface() { FT_Done_FreeType(library_); }  // also frees the faces
+  ~Typeface() { ft_.doneFreeType(library_); }  // also frees the faces
   Typeface(const Typeface&) = delete;
   Typeface& operator=(const Typeface&) = delete;
 
@@ -70,7 +111,7 @@ class Typeface {
         // Unfitted and rounded here: FT_KERNING_DEFAULT scales pairs down below 25 pixels per
         // em, to nothing for most pairs at the views' sizes (A V: -0.83 pixels at 13 gives 0).
         FT_Vector kerning{0, 0};
-        if (FT_Get_Kerning(face, previous, glyph.index, FT_KERNING_UNFITTED, &kerning) == 0)
+        if (ft_.getKerning(face, previous, glyph.index, FT_KERNING_UNFITTED, &kerning) == 0)
           pen += std::lround(kerning.x / 64.0);
       }
       line.glyphs.push_back({&glyph, pen});
@@ -97,12 +138,12 @@ class Typeface {
     const int w = weight == Weight::Bold ? 1 : 0;
     if (!faces_[w]) {
       const char* path = w == 1 ? UVTK_FONT_BOLD : UVTK_FONT_REGULAR;
-      if (FT_Error error = FT_New_Face(library_, path, 0, &faces_[w]))
+      if (FT_Error error = ft_.newFace(library_, path, 0, &faces_[w]))
         throw InputError(std::string(path) + ": error: cannot load the typeface of the views' text (FreeType error " +
                          std::to_string(error) + "); install fonts-dejavu-core");
     }
     if (sizes_[w] != size) {
-      if (FT_Error error = FT_Set_Char_Size(faces_[w], 0, size, 72, 72))  // at 72 dpi a point is a pixel
+      if (FT_Error error = ft_.setCharSize(faces_[w], 0, size, 72, 72))  // at 72 dpi a point is a pixel
         throw InputError(std::string(faces_[w]->family_name) + ": error: cannot scale to " +
                          std::to_string(size / 64.0) + " pixels (FreeType error " + std::to_string(error) + ")");
       sizes_[w] = size;
@@ -114,8 +155,8 @@ class Typeface {
     const auto key = std::make_tuple(c, size, weight);
     if (auto found = glyphs_.find(key); found != glyphs_.end()) return found->second;
     Glyph glyph;
-    glyph.index = FT_Get_Char_Index(face, FT_ULong(c));
-    if (FT_Error error = FT_Load_Glyph(face, glyph.index, FT_LOAD_RENDER | FT_LOAD_TARGET_NORMAL)) {
+    glyph.index = ft_.getCharIndex(face, FT_ULong(c));
+    if (FT_Error error = ft_.loadGlyph(face, glyph.index, FT_LOAD_RENDER | FT_LOAD_TARGET_NORMAL)) {
       char name[16];
       std::snprintf(name, sizeof name, "U+%04X", unsigned(c));
       throw InputError(std::string(face->family_name) + ": error: cannot draw " + name + " (FreeType error " +
@@ -136,6 +177,7 @@ class Typeface {
     return glyphs_.emplace(key, std::move(glyph)).first->second;
   }
 
+  const FreeType& ft_ = freeType();
   std::mutex mutex_;
   FT_Library library_ = nullptr;
   FT_Face faces_[2] = {nullptr, nullptr};  // Regular, Bold; loaded on first use
