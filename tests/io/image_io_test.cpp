@@ -297,17 +297,22 @@ TEST_F(ImageIoTest, WalksAnOpenExrsHeadersBeforeOpenExrReadsThem) {
   EXPECT_EQ(messageOf<InputError>([&] { readImage(shortFile); }),
             shortFile + ": error: cannot read: corrupted OpenEXR (header 0's attribute channels is not a valid chlist of " +
                 std::to_string(listBytes - 4) + " bytes)");
-  // A preview whose pixels are the bytes declared reads; one claiming more pixels than it holds
-  // would have OpenEXR allocate and read them past the attribute.
+  // A preview whose pixels are the bytes declared reads (in the place of screenWindowWidth, which
+  // is as long, so that the pixels' offsets stay); one claiming more pixels than it holds would
+  // have OpenEXR allocate and read them past the attribute.
+  const std::string width = std::string("screenWindowWidth\0float\0\x04\0\0\0\0\0\x80\x3f", 32);
+  const std::size_t widthAt = exr.find(width);
+  ASSERT_NE(widthAt, std::string::npos);
   const std::string preview = std::string("preview\0preview\0\x0c\0\0\0", 20);
   std::string withPreview = exr;
-  withPreview.insert(at, preview + std::string("\x01\0\0\0\x01\0\0\0\x10\x20\x30\xff", 12));
+  withPreview.replace(widthAt, 32, preview + std::string("\x01\0\0\0\x01\0\0\0\x10\x20\x30\xff", 12));
   EXPECT_EQ(readImage(writeText("preview.exr", withPreview)).image.channels, 3);
   std::string badPreview = exr;
-  badPreview.insert(at, preview + std::string("\x02\0\0\0\x02\0\0\0\x10\x20\x30\xff", 12));
+  badPreview.replace(widthAt, 32, preview + std::string("\x02\0\0\0\x02\0\0\0\x10\x20\x30\xff", 12));
   const std::string badPreviewFile = writeText("bad-preview.exr", badPreview);
   EXPECT_EQ(messageOf<InputError>([&] { readImage(badPreviewFile); }),
-            badPreviewFile + ": error: cannot read: corrupted OpenEXR (header 0's attribute preview is not a valid preview of 12 bytes)");
+            badPreviewFile +
+                ": error: cannot read: corrupted OpenEXR (header 0's attribute preview is not a valid preview of 12 bytes)");
   std::string longName = exr;
   longName.replace(at, 11, std::string(40, 'c'));
   const std::string longFile = writeText("long.exr", longName);
