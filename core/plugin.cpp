@@ -51,4 +51,15 @@ void* openPluginEntry(const std::string& path, const char* entry, const std::str
   return address;
 }
 
+OpenedLibrary::OpenedLibrary(const char* soname)
+    : soname_(soname), handle_(::dlopen(soname, RTLD_NOW | RTLD_LOCAL)) {
+  if (!handle_) error_ = ::dlerror();
+}
+
+void* OpenedLibrary::symbol(const char* name) {
+  void* address = handle_ ? ::dlsym(handle_, name) : nullptr;
+  if (!address && error_.empty()) error_ = soname_ + " has no " + name;
+  return address;
+}
+
 }  // namespace uvtk

@@ -17,4 +17,25 @@ std::string pluginPath(const char* variable, const std::string& installed, const
 // set to one line naming `what`, the path and why it failed.
 void* openPluginEntry(const std::string& path, const char* entry, const std::string& what, std::string& error);
 
+// A system library opened by its soname when first needed rather than linked (never closed,
+// symbols local), and its functions bound one by one: error() stays empty while every one is found,
+// else holds the first failure (dlerror's words, or "SONAME has no NAME"); a function not found is null.
+class OpenedLibrary {
+ public:
+  explicit OpenedLibrary(const char* soname);
+
+  template <class Function>
+  void bind(Function& function, const char* name) {
+    function = reinterpret_cast<Function>(symbol(name));
+  }
+  const std::string& error() const { return error_; }
+
+ private:
+  void* symbol(const char* name);
+
+  std::string soname_;
+  void* handle_;
+  std::string error_;
+};
+
 }  // namespace uvtk

@@ -1,15 +1,14 @@
 #include "io/checksum.h"
 
-#include <dlfcn.h>
 #include <openssl/evp.h>
 
 #include <cstdio>
 #include <memory>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 #include "core/error.h"
+#include "core/plugin.h"
 
 namespace uvtk::io {
 
@@ -29,21 +28,14 @@ struct Crypto {
 
 Crypto load() {
   Crypto crypto{};
-  void* library = ::dlopen(UVTK_LIBCRYPTO, RTLD_NOW | RTLD_LOCAL);  // never closed
-  if (!library) {
-    crypto.error = ::dlerror();
-    return crypto;
-  }
-  const auto bind = [&](auto& function, const char* name) {
-    function = reinterpret_cast<std::remove_reference_t<decltype(function)>>(::dlsym(library, name));
-    if (!function && crypto.error.empty()) crypto.error = std::string(UVTK_LIBCRYPTO " has no ") + name;
-  };
-  bind(crypto.newContext, "EVP_MD_CTX_new");
-  bind(crypto.freeContext, "EVP_MD_CTX_free");
-  bind(crypto.sha256, "EVP_sha256");
-  bind(crypto.init, "EVP_DigestInit_ex");
-  bind(crypto.update, "EVP_DigestUpdate");
-  bind(crypto.final, "EVP_DigestFinal_ex");
+  OpenedLibrary library(UVTK_LIBCRYPTO);
+  library.bind(crypto.newContext, "EVP_MD_CTX_new");
+  library.bind(crypto.freeContext, "EVP_MD_CTX_free");
+  library.bind(crypto.sha256, "EVP_sha256");
+  library.bind(crypto.init, "EVP_DigestInit_ex");
+  library.bind(crypto.update, "EVP_DigestUpdate");
+  library.bind(crypto.final, "EVP_DigestFinal_ex");
+  crypto.error = library.error();
   return crypto;
 }
 

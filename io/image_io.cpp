@@ -62,18 +62,19 @@ void checkReadable(const std::string& path) {
   if (isDirectory) throw readFailure(path, "cannot open: Is a directory");
 }
 
+constexpr char kPngSignature[8] = {'\x89', 'P', 'N', 'G', '\r', '\n', '\x1A', '\n'};
+constexpr char kExrMagic[4] = {'\x76', '\x2f', '\x31', '\x01'};
+
 // A PNG (by its signature, whatever the extension) is checked chunk by chunk before OpenImageIO
 // reads it: on a truncated or corrupted PNG, OpenImageIO 2.4's error handler returns to libpng,
 // which then prints "libpng error: ..." on stderr beside our message, and the read leaks. Checked:
 // each chunk's length fits the file, its CRC, IHDR first and IEND last. A deflate stream broken
 // under valid CRCs still reaches libpng.
-void checkPngChunks(const std::string& path) {
-  static constexpr char kSignature[8] = {'\x89', 'P', 'N', 'G', '\r', '\n', '\x1A', '\n'};
-  std::ifstream in(path, std::ios::binary);
-  char head[8];
-  if (!in.read(head, 8) || !std::equal(head, head + 4, kSignature)) return;
+// `in` after the file's first 8 bytes, `head` (also the chunks' buffer), which begin as a PNG
+// signature does.
+void checkPngChunks(const std::string& path, std::istream& in, char* head) {
   // The signature's line ends changed (a text-mode transfer): libpng would print its own line.
-  if (!std::equal(head + 4, head + 8, kSignature + 4))
+  if (!std::equal(head + 4, head + 8, kPngSignature + 4))
     throw readFailure(path, "cannot read: corrupted PNG (its signature's line ends were changed, as by a text-mode transfer)");
   const auto bigEndian = [](const char* p) {
     return std::uint32_t(std::uint8_t(p[0])) << 24 | std::uint32_t(std::uint8_t(p[1])) << 16 |
@@ -189,12 +190,9 @@ bool holdsExrValue(const std::string& type, const std::string& value) {
 // attribute's name and type end and its value fits in the file; the data window and channels keep
 // the read's limits (checkDimensions; the channels named R, G, B, A first, as OpenImageIO orders
 // them); and a tile holds no more pixels than an image may.
-void checkExrHeaders(const std::string& path, const ReadLimits& limits) {
-  std::ifstream in(path, std::ios::binary);
-  unsigned char head[8];
-  static constexpr unsigned char kMagic[4] = {0x76, 0x2f, 0x31, 0x01};
-  if (!in.read(reinterpret_cast<char*>(head), 8) || !std::equal(head, head + 4, kMagic)) return;
-  const std::uint32_t flags = std::uint32_t(head[5]) << 8 | std::uint32_t(head[6]) << 16;
+// `in` after the file's first 8 bytes, `head`: OpenEXR's magic number and version field.
+void checkExrHeaders(const std::string& path, std::istream& in, const char* head, const ReadLimits& limits) {
+  const std::uint32_t flags = std::uint32_t(std::uint8_t(head[5])) << 8 | std::uint32_t(std::uint8_t(head[6])) << 16;
   const bool multipart = (flags & 0x1000) != 0;
   const std::size_t maxName = (flags & 0x400) != 0 ? 255 : 31;
   in.seekg(0, std::ios::end);
@@ -263,6 +261,16 @@ void checkExrHeaders(const std::string& path, const ReadLimits& limits) {
   }
 }
 
+// The checks of a PNG's or an OpenEXR's own header, by the file's first bytes whatever its
+// extension, from one opening of the file.
+void checkFormatHeaders(const std::string& path, const ReadLimits& limits) {
+  std::ifstream in(path, std::ios::binary);
+  char head[8];
+  if (!in.read(head, 8)) return;  // shorter than either signature: OpenImageIO says what it is
+  if (std::equal(head, head + 4, kPngSignature)) checkPngChunks(path, in, head);
+  if (std::equal(head, head + 4, kExrMagic)) checkExrHeaders(path, in, head, limits);
+}
+
 std::uint8_t toUInt8(float c) {
   if (!(c > 0.0f)) return 0;  // also NaN
   if (c >= 1.0f) return 255;
@@ -296,8 +304,7 @@ namespace {
 
 ImageFile readLimited(const std::string& path, const ReadLimits& limits) {
   checkReadable(path);
-  checkPngChunks(path);
-  checkExrHeaders(path, limits);
+  checkFormatHeaders(path, limits);
   const backend::Functions& functions =
       plugin([&](const std::string& why) { return readFailure(path, "cannot read: " + why); });
   backend::Header spec;  // the first subimage, level 0

@@ -1,6 +1,5 @@
 #include "views/type.h"
 
-#include <dlfcn.h>
 #include <ft2build.h>
 #include FT_FREETYPE_H
 
@@ -13,10 +12,10 @@
 #include <mutex>
 #include <string>
 #include <tuple>
-#include <type_traits>
 #include <vector>
 
 #include "core/error.h"
+#include "core/plugin.h"
 
 namespace uvtk::views {
 
@@ -57,24 +56,18 @@ struct FreeType {
 const FreeType& freeType() {
   static const FreeType loaded = [] {
     constexpr const char* kLibrary = "libfreetype.so.6";
-    void* library = ::dlopen(kLibrary, RTLD_NOW | RTLD_LOCAL);  // never closed: the faces live to the end
-    const auto refuse = [&](const std::string& why) {
-      return InputError(std::string(kLibrary) + ": error: cannot load FreeType for the views' text (" + why +
-                        "); install libfreetype6");
-    };
-    if (!library) throw refuse(::dlerror());
-    const auto symbol = [&](auto& function, const char* name) {
-      function = reinterpret_cast<std::remove_reference_t<decltype(function)>>(::dlsym(library, name));
-      if (!function) throw refuse(std::string("no ") + name);
-    };
+    OpenedLibrary library(kLibrary);
     FreeType f{};
-    symbol(f.initFreeType, "FT_Init_FreeType");
-    symbol(f.doneFreeType, "FT_Done_FreeType");
-    symbol(f.newFace, "FT_New_Face");
-    symbol(f.setCharSize, "FT_Set_Char_Size");
-    symbol(f.getCharIndex, "FT_Get_Char_Index");
-    symbol(f.loadGlyph, "FT_Load_Glyph");
-    symbol(f.getKerning, "FT_Get_Kerning");
+    library.bind(f.initFreeType, "FT_Init_FreeType");
+    library.bind(f.doneFreeType, "FT_Done_FreeType");
+    library.bind(f.newFace, "FT_New_Face");
+    library.bind(f.setCharSize, "FT_Set_Char_Size");
+    library.bind(f.getCharIndex, "FT_Get_Char_Index");
+    library.bind(f.loadGlyph, "FT_Load_Glyph");
+    library.bind(f.getKerning, "FT_Get_Kerning");
+    if (!library.error().empty())
+      throw InputError(std::string(kLibrary) + ": error: cannot load FreeType for the views' text (" +
+                       library.error() + "); install libfreetype6");
     return f;
   }();
   return loaded;
