@@ -92,14 +92,12 @@ void faceSingularValues(const Edges& p, const std::array<Vec2, 3>& t, double& s1
   s2 = std::ldexp(s2, kUv - k3);
 }
 
-// log2 of r = (Auv / A3) (sum(A3) / sum(Auv)), by logarithms where the quotients overflow or
-// underflow (the sliver above: Auv / A3 = 1e308).
+}  // namespace
+
 double log2AreaRatio(double areaUv, double area3d, double surfacePerUv) {
   const double direct = std::log2(areaUv / area3d * surfacePerUv);
   return std::isfinite(direct) ? direct : std::log2(areaUv) - std::log2(area3d) + std::log2(surfacePerUv);
 }
-
-}  // namespace
 
 const char* toString(FaceStatus status) {
   switch (status) {
@@ -186,11 +184,19 @@ void markTurnedAwayFaces(const Mesh& mesh, const ProjectionDirections& direction
   });
 }
 
+MeasureScales measureScales(const Mesh& mesh, const UvMap& uv, int threads) {
+  return {measureLengthScale(mesh, threads), validUvBounds(uv, threads)};
+}
+
 std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, int threads) {
+  return measureFaces(mesh, uv, measureScales(mesh, uv, threads), threads);
+}
+
+std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const MeasureScales& scales, int threads) {
   const std::size_t faceCount = mesh.triangles.size();
   UVTK_CHECK(uv.uv.size() == 3 * faceCount && uv.faceFlags.size() == faceCount);
   UVTK_CHECK(uv.cornerInvalid.empty() || uv.cornerInvalid.size() == 3 * faceCount);
-  const double scale = measureLengthScale(mesh, threads), uvScale = measureUvScale(uv, threads);
+  const double scale = scales.length, uvScale = scales.uv();
   auto edges = [&](std::size_t f) {
     const Triangle& t = mesh.triangles[f];
     return Edges(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], scale);
@@ -263,13 +269,6 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, int 
     }
   });
 
-  // Third pass: the area ratio normalised by the ok faces' totals, r = (Auv/A3) (sum(A3)/sum(Auv)).
-  const double surfacePerUv = okAreaTotals(faces).surfacePerUv();
-  forEachChunk([&](int, std::size_t begin, std::size_t end) {
-    for (std::size_t f = begin; f < end; ++f)
-      if (isMeasured(faces[f].status))
-        faces[f].areaDistortion = log2AreaRatio(faces[f].areaUv, faces[f].area3d, surfacePerUv);
-  });
   return faces;
 }
 

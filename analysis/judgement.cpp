@@ -254,8 +254,9 @@ void setMeasuredRule(Judgement& j, Rule rule, double value, std::size_t faces) {
 Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& options) {
   UVTK_CHECK(uv.uv.size() == 3 * mesh.faceCount() && uv.faceFlags.size() == mesh.faceCount());
   Judgement j;
-  j.faces = measureFaces(mesh, uv, options.threads);
-  j.summary = summarize(mesh, uv, j.faces, options.overlapResolution, options.threads, options.textureSize);
+  const MeasureScales scales = measureScales(mesh, uv, options.threads);
+  j.faces = measureFaces(mesh, uv, scales, options.threads);
+  j.summary = summarize(mesh, uv, j.faces, scales, options.overlapResolution, options.threads, options.textureSize);
 
   // Faces by status and by flag, their 3D areas, and the invalid corners by reason: tallied in
   // fixed chunks on threads and added up in chunk order, so the sums do not depend on the threads.

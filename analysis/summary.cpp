@@ -41,6 +41,11 @@ void unscale(TexelDensity& d) {
 
 Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDistortion>& faces, int overlapResolution,
                   int threads, TextureSize textureSize) {
+  return summarize(mesh, uv, faces, measureScales(mesh, uv, threads), overlapResolution, threads, textureSize);
+}
+
+Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDistortion>& faces,
+                  const MeasureScales& scales, int overlapResolution, int threads, TextureSize textureSize) {
   UVTK_CHECK(faces.size() == mesh.triangles.size() && uv.uv.size() == 3 * faces.size() &&
              uv.faceFlags.size() == faces.size() && textureSize.width >= 1 && textureSize.height >= 1);
   Summary s;
@@ -104,10 +109,10 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
       if (face.status == FaceStatus::Ok) values.push_back(valueOf(face));
     return weightedStatistics(values, okAreas, spacing);
   };
-  // The bounds of the valid UVs, on threads: reported, and the UV scale of the densities.
-  s.uvBounds = validUvBounds(uv, threads);
+  // The bounds of the valid UVs: reported, and the UV scale of the densities.
+  s.uvBounds = scales.uvBounds;
   s.density.textureSize = textureSize;
-  s.density.exponent = std::ilogb(measureLengthScale(mesh, threads)) - std::ilogb(measureUvScale(s.uvBounds));
+  s.density.exponent = std::ilogb(scales.length) - std::ilogb(scales.uv());
   // The longest first (the seam edges sort every half-edge), so that the last task to start is a short one.
   const std::function<void(std::vector<double>&)> measures[] = {
       [&](std::vector<double>&) { s.seams = classifySeamEdges(mesh, uv); },
@@ -121,7 +126,8 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
         s.angleDistortion = statistics(values, [](const FaceDistortion& f) { return f.angleDistortion(); }, BinSpacing::Log2);
       },
       [&](std::vector<double>& values) {
-        s.areaDistortion = statistics(values, [](const FaceDistortion& f) { return f.areaDistortion; }, BinSpacing::Linear);
+        s.areaDistortion = statistics(
+            values, [&](const FaceDistortion& f) { return f.areaDistortion(totals.surfacePerUv()); }, BinSpacing::Linear);
       },
       [&](std::vector<double>& values) {
         s.l2Stretches =

@@ -42,28 +42,32 @@ HalfEdge halfEdge(const Mesh& mesh, const std::vector<int>& standIn, std::size_t
   return e;
 }
 
-// Every face's three half-edges ordered by (lower, higher, corner), so that the sides of one edge
-// are adjacent: a counting sort by the lower vertex, then each vertex's few half-edges sorted by
-// the key higher << 32 | corner. Linear where a comparison sort of 3 F half-edges is not. Each
-// entry is that key; its low half names the half-edge by its corner.
-std::vector<std::uint64_t> sortedHalfEdges(const Mesh& mesh, const std::vector<int>& standIn) {
+// Every face's three half-edges, named by the corner each leaves, ordered by (lower, higher,
+// corner), so that the sides of one edge are adjacent: a counting sort by the lower vertex, then
+// each vertex's few half-edges sorted by the key higher << 32 | corner. Linear where a comparison
+// sort of 3 F half-edges is not; 4 bytes a half-edge (96 MB at 4 M faces held twice as much with
+// the key in each entry).
+std::vector<std::uint32_t> sortedHalfEdges(const Mesh& mesh, const std::vector<int>& standIn) {
   const std::size_t corners = 3 * mesh.triangles.size();
   UVTK_CHECK(corners <= std::numeric_limits<std::uint32_t>::max());
   std::vector<std::uint32_t> start(mesh.positions.size() + 1, 0);
   for (std::size_t c = 0; c < corners; ++c) ++start[std::size_t(halfEdge(mesh, standIn, c).lower) + 1];
   for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
-  std::vector<std::uint64_t> order;
+  std::vector<std::uint32_t> order;
   resizeOnHugePages(order, corners);
   std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-  for (std::size_t c = 0; c < corners; ++c) {
-    const HalfEdge e = halfEdge(mesh, standIn, c);
-    order[next[std::size_t(e.lower)]++] = std::uint64_t(std::uint32_t(e.higher)) << 32 | c;
+  for (std::size_t c = 0; c < corners; ++c) order[next[std::size_t(halfEdge(mesh, standIn, c).lower)]++] = std::uint32_t(c);
+  std::vector<std::uint64_t> keys;  // one vertex's at a time
+  for (std::size_t v = 0; v + 1 < start.size(); ++v) {
+    const auto first = order.begin() + start[v], last = order.begin() + start[v + 1];
+    if (last - first < 2) continue;
+    keys.clear();
+    for (auto c = first; c != last; ++c) keys.push_back(std::uint64_t(std::uint32_t(halfEdge(mesh, standIn, *c).higher)) << 32 | *c);
+    std::sort(keys.begin(), keys.end());
+    std::transform(keys.begin(), keys.end(), first, [](std::uint64_t key) { return std::uint32_t(key); });
   }
-  for (std::size_t v = 0; v + 1 < start.size(); ++v) std::sort(order.begin() + start[v], order.begin() + start[v + 1]);
   return order;
 }
-
-std::size_t cornerOf(std::uint64_t key) { return std::size_t(key & 0xffffffffu); }
 
 // Stand-ins for `vertices` (any order, repeats allowed): each one at the position of a
 // lower-numbered one of them (equal coordinates) stands in for by the lowest such; every other
@@ -106,19 +110,21 @@ std::vector<SeamEdge> seamEdgesThrough(const Mesh& mesh, const UvMap& uv, const 
   const double extent = box.isEmpty() ? 0.0 : box.sizes().maxCoeff();
   const double cutTolerance = kUvTolerance * (extent > 0.0 && std::isfinite(extent) ? extent : 1.0);
 
-  const std::vector<std::uint64_t> halfEdges = sortedHalfEdges(mesh, standIn);
+  const std::vector<std::uint32_t> halfEdges = sortedHalfEdges(mesh, standIn);
   std::vector<SeamEdge> seams;
   for (std::size_t first = 0, end; first < halfEdges.size(); first = end) {
-    // The sides of one edge: the same higher vertex (the key's high half) among the lower vertex's entries.
-    const HalfEdge a = halfEdge(mesh, standIn, cornerOf(halfEdges[first]));
+    // The sides of one edge: the same lower and higher vertex.
+    const HalfEdge a = halfEdge(mesh, standIn, halfEdges[first]);
     end = first + 1;
-    while (end < halfEdges.size() && halfEdges[end] >> 32 == halfEdges[first] >> 32 &&
-           halfEdge(mesh, standIn, cornerOf(halfEdges[end])).lower == a.lower)
+    while (end < halfEdges.size()) {
+      const HalfEdge e = halfEdge(mesh, standIn, halfEdges[end]);
+      if (e.lower != a.lower || e.higher != a.higher) break;
       ++end;
+    }
     if (a.lower == a.higher) continue;  // two corners of one face at one vertex: no edge
     if (end - first == 1 && boundary) boundary->insert(boundary->end(), {a.lower, a.higher});
     if (end - first != 2) continue;  // a boundary or non-manifold edge
-    const HalfEdge b = halfEdge(mesh, standIn, cornerOf(halfEdges[first + 1]));
+    const HalfEdge b = halfEdge(mesh, standIn, halfEdges[first + 1]);
     if (!cornerValid(uv, a.cornerLower) || !cornerValid(uv, a.cornerHigher) || !cornerValid(uv, b.cornerLower) ||
         !cornerValid(uv, b.cornerHigher))
       continue;

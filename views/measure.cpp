@@ -63,7 +63,7 @@ double measureValue(View measure, const analysis::FaceDistortion& face, const an
   if (measure == View::Stretch) return face.l2Stretch() * normalisation;
   if (measure == View::Linf) return face.linfStretch() * normalisation;
   if (measure == View::Angle) return face.angleDistortion();
-  return face.areaDistortion;
+  return face.areaDistortion(totals.surfacePerUv());
 }
 
 ColourScale measureScale(View measure, const std::vector<analysis::FaceDistortion>& faces,
@@ -78,9 +78,10 @@ ColourScale measureScale(View measure, const std::vector<analysis::FaceDistortio
   }
   if (measure == View::Area) {
     std::vector<double> magnitudes, weights;
+    const double surfacePerUv = summary.okTotals.surfacePerUv();
     for (const analysis::FaceDistortion& face : faces)
       if (face.status == analysis::FaceStatus::Ok) {
-        magnitudes.push_back(std::fabs(face.areaDistortion));
+        magnitudes.push_back(std::fabs(face.areaDistortion(surfacePerUv)));
         weights.push_back(face.area3d);
       }
     const double p99 = analysis::weightedStatistics(magnitudes, weights, analysis::BinSpacing::Linear).p99;

@@ -127,9 +127,10 @@ TEST_P(SliverExtremes, FiniteMeasuresOrAZeroAreaStatus) {
   for (int f = 0; 3 * f < int(row.positions.size()); ++f) triangles.push_back({3 * f, 3 * f + 1, 3 * f + 2});
   const Layout layout = makeLayout(row.positions, triangles, row.uvs);
   const std::vector<FaceDistortion> faces = measureFaces(layout.mesh, layout.uv);
+  const double surfacePerUv = okAreaTotals(faces).surfacePerUv();
   for (const FaceDistortion& f : faces)
     for (double x : {f.area3d, f.areaUv, f.sigmaMax, f.sigmaMin, f.l2Stretch(), f.linfStretch(), f.angleDistortion(),
-                     f.areaRatio(), f.areaDistortion})
+                     f.areaRatio(), f.areaDistortion(surfacePerUv)})
       ASSERT_TRUE(std::isfinite(x)) << "a measure is " << x;
   const FaceDistortion& f = faces[0];
   const Expected& want = row.first;
@@ -192,7 +193,9 @@ void expectSameJudgement(const Judgement& j, const Judgement& reference) {
   ASSERT_EQ(j.faces.size(), reference.faces.size());
   for (std::size_t f = 0; f < j.faces.size(); ++f) {
     EXPECT_EQ(j.faces[f].status, reference.faces[f].status) << "face " << f;
-    EXPECT_EQ(j.faces[f].areaDistortion, reference.faces[f].areaDistortion) << "face " << f;
+    EXPECT_EQ(j.faces[f].areaDistortion(j.summary.okTotals.surfacePerUv()),
+              reference.faces[f].areaDistortion(reference.summary.okTotals.surfacePerUv()))
+        << "face " << f;
   }
   EXPECT_EQ(j.summary.l2Stretch, reference.summary.l2Stretch);
 }
@@ -253,11 +256,13 @@ TEST(AnalysisExtremes, SliversOfATinyMeshAreMeasuredAsAtUnitScale) {
   for (std::size_t f = 0; f < j.faces.size(); ++f) {
     const FaceDistortion &a = j.faces[f], &b = reference.faces[f];
     ASSERT_EQ(a.status, b.status) << "face " << f;
-    for (const double x : {a.l2Stretch(), a.linfStretch(), a.angleDistortion(), a.areaDistortion})
+    const double aArea = a.areaDistortion(j.summary.okTotals.surfacePerUv()),
+                 bArea = b.areaDistortion(reference.summary.okTotals.surfacePerUv());
+    for (const double x : {a.l2Stretch(), a.linfStretch(), a.angleDistortion(), aArea})
       ASSERT_TRUE(std::isfinite(x)) << "face " << f;
     // The slivers' areas are subnormal at 2^-990: a few digits are lost, no more.
     EXPECT_NEAR(a.angleDistortion(), b.angleDistortion(), 1e-9 * b.angleDistortion()) << "face " << f;
-    EXPECT_NEAR(a.areaDistortion, b.areaDistortion, 1e-6) << "face " << f;
+    EXPECT_NEAR(aArea, bArea, 1e-6) << "face " << f;
   }
   EXPECT_EQ(j.verdict, reference.verdict);
   ASSERT_EQ(j.reasons.size(), reference.reasons.size());

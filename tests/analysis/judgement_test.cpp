@@ -388,7 +388,7 @@ TEST(Judgement, DoesNotDependOnTheThreadCount) {
     for (std::size_t f = 0; f < j.faces.size(); ++f) {
       const FaceDistortion &a = j.faces[f], &b = one.faces[f];
       differentFaces += a.status != b.status || a.area3d != b.area3d || a.areaUv != b.areaUv ||
-                        a.sigmaMax != b.sigmaMax || a.sigmaMin != b.sigmaMin || a.areaDistortion != b.areaDistortion;
+                        a.sigmaMax != b.sigmaMax || a.sigmaMin != b.sigmaMin;
     }
     EXPECT_EQ(differentFaces, 0u);
     EXPECT_EQ(j.summary.statusCounts.faces, one.summary.statusCounts.faces);
