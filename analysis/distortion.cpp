@@ -217,7 +217,7 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
 
   // First pass: areas, and the statuses that need no mesh-wide decision.
   std::vector<FaceDistortion> faces;
-  resizeOnHugePages(faces, faceCount, threads);
+  resizeFaultedIn(faces, faceCount, threads);
   enum : std::uint8_t { kCounterClockwise = 1, kClockwise = 2, kTurnedAway = 4 };
   std::vector<std::uint8_t> orientation(faceCount, 0);  // of the ok faces, for the second pass
   std::vector<double> votes(std::size_t(chunks), 0.0);  // per chunk, 3D area voting for counter-clockwise UV winding minus area against it

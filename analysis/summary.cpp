@@ -95,7 +95,7 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
   // threads, each chunk's at its place), each measure's values where its statistic is computed, 8 bytes
   // a face (the statistic reads them a few times).
   std::vector<double> okAreas;
-  resizeOnHugePages(okAreas, okBefore[chunks], threads);
+  resizeFaultedIn(okAreas, okBefore[chunks], threads);
   parallelFor(int(chunks), threads, [&](int c) {
     double* out = okAreas.data() + okBefore[std::size_t(c)];
     for (std::size_t f = std::size_t(c) * kChunk; f < chunkEnd(std::size_t(c)); ++f)

@@ -54,7 +54,7 @@ std::vector<std::uint32_t> sortedHalfEdges(const Mesh& mesh, const std::vector<i
   for (std::size_t c = 0; c < corners; ++c) ++start[std::size_t(halfEdge(mesh, standIn, c).lower) + 1];
   for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
   std::vector<std::uint32_t> order;
-  resizeOnHugePages(order, corners);
+  resizeFaultedIn(order, corners);
   std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
   for (std::size_t c = 0; c < corners; ++c) order[next[std::size_t(halfEdge(mesh, standIn, c).lower)]++] = std::uint32_t(c);
   std::vector<std::uint64_t> keys;  // one vertex's at a time

@@ -786,14 +786,14 @@ ReadMeshResult joinObjChunks(std::vector<ObjChunk>& chunks, const std::string& n
     mesh.cornerTexcoords = std::move(c.cornerTexcoords);
     mesh.cornerNormals = std::move(c.cornerNormals);
   } else {
-    resizeOnHugePages(mesh.positions, before[n][kPositionTable], threads);
-    resizeOnHugePages(mesh.texcoords, before[n][kTexcoordTable], threads);
-    resizeOnHugePages(mesh.normals, before[n][kNormalTable], threads);
-    resizeOnHugePages(mesh.triangles, trianglesBefore[n], threads);
+    resizeFaultedIn(mesh.positions, before[n][kPositionTable], threads);
+    resizeFaultedIn(mesh.texcoords, before[n][kTexcoordTable], threads);
+    resizeFaultedIn(mesh.normals, before[n][kNormalTable], threads);
+    resizeFaultedIn(mesh.triangles, trianglesBefore[n], threads);
     const bool texcoords = anyCornerTable(chunks, &ObjChunk::cornerTexcoords);
     const bool normals = anyCornerTable(chunks, &ObjChunk::cornerNormals);
-    if (texcoords) resizeOnHugePages(mesh.cornerTexcoords, trianglesBefore[n], threads);
-    if (normals) resizeOnHugePages(mesh.cornerNormals, trianglesBefore[n], threads);
+    if (texcoords) resizeFaultedIn(mesh.cornerTexcoords, trianglesBefore[n], threads);
+    if (normals) resizeFaultedIn(mesh.cornerNormals, trianglesBefore[n], threads);
     // Each chunk's memory is given back as soon as it is copied, so the mesh is never held twice whole.
     parallelFor(n, threads, [&](int i) {
       ObjChunk& c = chunks[i];

@@ -398,7 +398,7 @@ void mapVerticesThroughKernel(const ProjectorOptions& o, const Affine3& localFro
     throw UsageError("this O-mapping needs one normal per position");
   const LocalFrameT<T> frame(localFromObject);
   const std::size_t n = positions.size();
-  resizeOnHugePages(out, n, threads);
+  resizeFaultedIn(out, n, threads);
   const int chunks = threadCount(threads);
   const std::size_t size = (n / std::size_t(chunks) + 255) / 256 * 256;
   parallelFor(chunks, chunks, [&](int chunk) {
@@ -569,7 +569,7 @@ void Projector::mapVertices(const std::vector<Vec3>& positions, const std::vecto
   const ProjectorOptions& o = options_;
   if (o.surface == SurfaceKind::Camera) {
     const CameraTransform camera(o.camera);
-    resizeOnHugePages(out, positions.size(), threads);
+    resizeFaultedIn(out, positions.size(), threads);
     parallelFor(threadCount(threads), threads, [&](int chunk) {
       const std::size_t n = positions.size(), chunks = std::size_t(threadCount(threads));
       for (std::size_t i = n * std::size_t(chunk) / chunks; i < n * (std::size_t(chunk) + 1) / chunks; ++i)

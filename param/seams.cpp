@@ -10,7 +10,7 @@
 namespace uvtk::param {
 
 void CornerField::resize(std::size_t faceCount, int threads) {
-  resizeOnHugePages(uv, 3 * faceCount, threads);
+  resizeFaultedIn(uv, 3 * faceCount, threads);
   state.assign(3 * faceCount, CornerState::Invalid);
   reason.assign(3 * faceCount, kCornerMiss);
   faceFlags.assign(faceCount, kFaceOk);
