@@ -188,11 +188,26 @@ MeasureScales measureScales(const Mesh& mesh, const UvMap& uv, int threads) {
   return {measureLengthScale(mesh, threads), validUvBounds(uv, threads)};
 }
 
-std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, int threads) {
+FaceMeasures::FaceMeasures(std::size_t count, int threads) {
+  status.assign(count, FaceStatus::Invalid);
+  for (std::vector<double>* measure : {&area3d, &areaUv, &sigmaMax, &sigmaMin}) resizeFaultedIn(*measure, count, threads);
+}
+
+FaceMeasures::FaceMeasures(const std::vector<FaceDistortion>& faces) {
+  for (const FaceDistortion& face : faces) {
+    status.push_back(face.status);
+    area3d.push_back(face.area3d);
+    areaUv.push_back(face.areaUv);
+    sigmaMax.push_back(face.sigmaMax);
+    sigmaMin.push_back(face.sigmaMin);
+  }
+}
+
+FaceMeasures measureFaces(const Mesh& mesh, const UvMap& uv, int threads) {
   return measureFaces(mesh, uv, measureScales(mesh, uv, threads), threads);
 }
 
-std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const MeasureScales& scales, int threads) {
+FaceMeasures measureFaces(const Mesh& mesh, const UvMap& uv, const MeasureScales& scales, int threads) {
   const std::size_t faceCount = mesh.triangles.size();
   UVTK_CHECK(uv.uv.size() == 3 * faceCount && uv.faceFlags.size() == faceCount);
   UVTK_CHECK(uv.cornerInvalid.empty() || uv.cornerInvalid.size() == 3 * faceCount);
@@ -216,8 +231,10 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
   };
 
   // First pass: areas, and the statuses that need no mesh-wide decision.
-  std::vector<FaceDistortion> faces;
-  resizeFaultedIn(faces, faceCount, threads);
+  FaceMeasures faces(faceCount, threads);
+  FaceStatus* const status = faces.status.data();
+  double *const area3d = faces.area3d.data(), *const areaUv = faces.areaUv.data();
+  double *const sigmaMax = faces.sigmaMax.data(), *const sigmaMin = faces.sigmaMin.data();
   enum : std::uint8_t { kCounterClockwise = 1, kClockwise = 2, kTurnedAway = 4 };
   std::vector<std::uint8_t> orientation(faceCount, 0);  // of the ok faces, for the second pass
   std::vector<double> votes(std::size_t(chunks), 0.0);  // per chunk, 3D area voting for counter-clockwise UV winding minus area against it
@@ -227,17 +244,16 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
       const TriangleAreas a = triangleAreas(edges(f), t[0], t[1], t[2]);
       bool invalid = uv.faceHas(f, kFaceInvalid);
       for (int k = 0; k < 3 && !uv.cornerInvalid.empty(); ++k) invalid = invalid || uv.cornerInvalid[3 * f + k] != 0;
-      FaceDistortion& face = faces[f];
-      face.area3d = a.area3d;
-      face.areaUv = invalid ? 0.0 : std::fabs(a.signedAreaUv);
+      area3d[f] = a.area3d;
+      areaUv[f] = invalid ? 0.0 : std::fabs(a.signedAreaUv);
       if (invalid) {
-        face.status = FaceStatus::Invalid;
+        status[f] = FaceStatus::Invalid;
       } else if (a.area3d <= kZeroAreaRelative * a.longestEdge3d) {
-        face.status = FaceStatus::ZeroArea3d;
-      } else if (face.areaUv <= kZeroAreaRelative * a.longestEdgeUv) {
-        face.status = FaceStatus::ZeroAreaUv;
+        status[f] = FaceStatus::ZeroArea3d;
+      } else if (areaUv[f] <= kZeroAreaRelative * a.longestEdgeUv) {
+        status[f] = FaceStatus::ZeroAreaUv;
       } else {
-        face.status = FaceStatus::Ok;  // until the majority winding is known
+        status[f] = FaceStatus::Ok;  // until the majority winding is known
         const bool away = uv.faceHas(f, kFaceTurnedAway);  // mirrored by design
         votes[std::size_t(c)] += (a.signedAreaUv > 0.0) != away ? a.area3d : -a.area3d;
         orientation[f] = std::uint8_t((a.signedAreaUv > 0.0 ? kCounterClockwise : 0) |
@@ -252,30 +268,31 @@ std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, cons
   // Second pass: pole and mirrored faces, and the measures of every face with a Jacobian.
   forEachChunk([&](int, std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
-      FaceDistortion& face = faces[f];
-      if (face.status != FaceStatus::Ok) continue;
+      if (status[f] != FaceStatus::Ok) continue;
       const std::array<Vec2, 3> t = uvCorners(f);
       const bool mirrored = (orientation[f] & (majority > 0.0 ? kClockwise : kCounterClockwise)) != 0;
-      if (uv.faceHas(f, kFacePole)) face.status = FaceStatus::PoleFace;
-      else if (mirrored) face.status = orientation[f] & kTurnedAway ? FaceStatus::Backfacing : FaceStatus::Flipped;
-      faceSingularValues(edges(f), t, face.sigmaMax, face.sigmaMin);
-      face.sigmaMin *= majority;
+      if (uv.faceHas(f, kFacePole)) status[f] = FaceStatus::PoleFace;
+      else if (mirrored) status[f] = orientation[f] & kTurnedAway ? FaceStatus::Backfacing : FaceStatus::Flipped;
+      double s1 = 0.0, s2 = 0.0;
+      faceSingularValues(edges(f), t, s1, s2);
+      s2 *= majority;
       // Beyond the doubles even at the face's own scale: its UV triangle is degenerate beside its
       // 3D one (s2 underflows), or the other way round (s1 overflows); it is counted as such.
-      if (!std::isnormal(face.sigmaMin) || !std::isfinite(1.0 / face.sigmaMin))
-        face.status = FaceStatus::ZeroAreaUv, face.sigmaMax = face.sigmaMin = 0.0;
-      else if (!std::isfinite(face.sigmaMax))
-        face.status = FaceStatus::ZeroArea3d, face.sigmaMax = face.sigmaMin = 0.0;
+      if (!std::isnormal(s2) || !std::isfinite(1.0 / s2))
+        status[f] = FaceStatus::ZeroAreaUv, s1 = s2 = 0.0;
+      else if (!std::isfinite(s1))
+        status[f] = FaceStatus::ZeroArea3d, s1 = s2 = 0.0;
+      sigmaMax[f] = s1, sigmaMin[f] = s2;
     }
   });
 
   return faces;
 }
 
-AreaTotals okAreaTotals(const std::vector<FaceDistortion>& faces) {
+AreaTotals okAreaTotals(const FaceMeasures& faces) {
   AreaTotals totals;
-  for (const FaceDistortion& face : faces)
-    if (face.status == FaceStatus::Ok) totals.surface += face.area3d, totals.uv += face.areaUv;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    if (faces.status[f] == FaceStatus::Ok) totals.surface += faces.area3d[f], totals.uv += faces.areaUv[f];
   return totals;
 }
 

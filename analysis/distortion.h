@@ -26,7 +26,9 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <optional>
 #include <vector>
 
@@ -144,11 +146,52 @@ struct MeasureScales {
 };
 MeasureScales measureScales(const Mesh& mesh, const UvMap& uv, int threads = 1);
 
-// One FaceDistortion per triangle of `mesh`, at `scales` = measureScales(mesh, uv) (the second form
+// Every face's measures, an array per measure: 33 bytes a face (the status apart from the four
+// doubles; as FaceDistortions, padded, 40), and each array contiguous for the loops that read one
+// measure (the statistics' weights are `area3d` itself). faces[f] is face f's FaceDistortion.
+class FaceMeasures {
+ public:
+  std::vector<FaceStatus> status;
+  std::vector<double> area3d, areaUv, sigmaMax, sigmaMin;
+
+  FaceMeasures() = default;
+  // `count` faces, each invalid with zero measures; the arrays faulted in on `threads` threads.
+  explicit FaceMeasures(std::size_t count, int threads = 1);
+  // The measures `faces` list (a test's hand-made faces, a part of a mesh's).
+  FaceMeasures(const std::vector<FaceDistortion>& faces);  // NOLINT: converts, as a container of them
+
+  std::size_t size() const { return status.size(); }
+  bool empty() const { return status.empty(); }
+  FaceDistortion operator[](std::size_t f) const { return {status[f], area3d[f], areaUv[f], sigmaMax[f], sigmaMin[f]}; }
+
+  // Face by face, each read as a FaceDistortion (a value, not a reference into the arrays).
+  class Iterator {
+   public:
+    using iterator_category = std::input_iterator_tag;
+    using value_type = FaceDistortion;
+    using difference_type = std::ptrdiff_t;
+    using pointer = void;
+    using reference = FaceDistortion;
+    Iterator(const FaceMeasures& faces, std::size_t f) : faces_(&faces), f_(f) {}
+    FaceDistortion operator*() const { return (*faces_)[f_]; }
+    Iterator& operator++() { return ++f_, *this; }
+    Iterator operator++(int) { Iterator before = *this; ++f_; return before; }
+    bool operator==(const Iterator& other) const { return f_ == other.f_; }
+    bool operator!=(const Iterator& other) const { return f_ != other.f_; }
+
+   private:
+    const FaceMeasures* faces_;
+    std::size_t f_;
+  };
+  Iterator begin() const { return {*this, 0}; }
+  Iterator end() const { return {*this, size()}; }
+};
+
+// The measures of every triangle of `mesh`, at `scales` = measureScales(mesh, uv) (the second form
 // takes them). Precondition: `uv` has 3 corners per triangle. `threads` (0: one per core) share the
 // faces; the result does not depend on them.
-std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, const MeasureScales& scales, int threads = 0);
-std::vector<FaceDistortion> measureFaces(const Mesh& mesh, const UvMap& uv, int threads = 0);
+FaceMeasures measureFaces(const Mesh& mesh, const UvMap& uv, const MeasureScales& scales, int threads = 0);
+FaceMeasures measureFaces(const Mesh& mesh, const UvMap& uv, int threads = 0);
 
 // The sums sum(A3) and sum(Auv) over the status-ok faces: the normalisation of every mesh-wide
 // value. Faces of any other status are reported by count only.
@@ -158,6 +201,6 @@ struct AreaTotals {
   // sum(A3) / sum(Auv): multiplies Auv/A3 into the normalised ratio r; 1 when there is no ok face.
   double surfacePerUv() const { return surface > 0.0 && uv > 0.0 ? surface / uv : 1.0; }
 };
-AreaTotals okAreaTotals(const std::vector<FaceDistortion>& faces);
+AreaTotals okAreaTotals(const FaceMeasures& faces);
 
 }  // namespace uvtk::analysis

@@ -98,7 +98,7 @@ struct JudgementOptions {
 };
 
 struct Judgement {
-  std::vector<FaceDistortion> faces;  // measureFaces
+  FaceMeasures faces;  // measureFaces
   Summary summary;                    // summarize, with the pole vertices of the options
   double surfaceArea = 0.0;           // sum(A3) over every face: the denominator of the area shares
   std::array<std::size_t, kCornerInvalidCount> invalidCorners{};  // per CornerInvalid (entry 0: valid corners)

@@ -85,10 +85,10 @@ class EdgeBound {
 
 }  // namespace
 
-Eigen::AlignedBox2d measuredUvBounds(const UvMap& uv, const std::vector<FaceDistortion>& faces) {
+Eigen::AlignedBox2d measuredUvBounds(const UvMap& uv, const FaceMeasures& faces) {
   Eigen::AlignedBox2d box;
   for (std::size_t f = 0; f < faces.size(); ++f)
-    if (isMeasured(faces[f].status))
+    if (isMeasured(faces.status[f]))
       for (std::size_t corner = 3 * f; corner < 3 * f + 3; ++corner) box.extend(uv.uv[corner]);
   return box;
 }
@@ -174,12 +174,12 @@ void forEachRowSpan(const SnappedFace& face, std::int64_t from, std::int64_t to,
 
 // forEachCoveredSpan with the visit inlined: the raster's loops call it once a row.
 template <class Visit>
-void forEachSpan(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid, Visit&& visit) {
+void forEachSpan(const UvMap& uv, const FaceMeasures& faces, const UvGrid& grid, Visit&& visit) {
   UVTK_CHECK(uv.uv.size() == 3 * faces.size());
   const GridSnap snap(grid);
   SnappedFace face;
   for (std::size_t f = 0; f < faces.size(); ++f)
-    if (isMeasured(faces[f].status) && snap.snap(uv, f, face))
+    if (isMeasured(faces.status[f]) && snap.snap(uv, f, face))
       forEachRowSpan(face, 0, grid.resolution - 1, [&](int y, int x0, int x1) { visit(f, y, x0, x1); });
 }
 
@@ -190,19 +190,19 @@ void countSpan(std::uint8_t* row, int x0, int x1) {
 
 }  // namespace
 
-void forEachCoveredSpan(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid,
+void forEachCoveredSpan(const UvMap& uv, const FaceMeasures& faces, const UvGrid& grid,
                         const std::function<void(std::size_t face, int y, int x0, int x1)>& visit) {
   forEachSpan(uv, faces, grid, visit);
 }
 
-void forEachCoveredPixel(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid,
+void forEachCoveredPixel(const UvMap& uv, const FaceMeasures& faces, const UvGrid& grid,
                          const std::function<void(std::size_t face, int x, int y)>& visit) {
   forEachCoveredSpan(uv, faces, grid, [&](std::size_t face, int y, int x0, int x1) {
     for (int x = x0; x <= x1; ++x) visit(face, x, y);
   });
 }
 
-std::vector<std::uint8_t> coverageCounts(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid) {
+std::vector<std::uint8_t> coverageCounts(const UvMap& uv, const FaceMeasures& faces, const UvGrid& grid) {
   const auto n = static_cast<std::size_t>(grid.resolution);
   std::vector<std::uint8_t> counts(n * n, 0);
   forEachSpan(uv, faces, grid,
@@ -216,14 +216,14 @@ int followingOverlapResolution(std::size_t measuredFaces, double boxShare) {
   return int(std::clamp(std::round(side), double(kOverlapMinResolution), double(kOverlapMaxFollowingResolution)));
 }
 
-int overlapResolution(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& unitGrid,
+int overlapResolution(const UvMap& uv, const FaceMeasures& faces, const UvGrid& unitGrid,
                       int resolution) {
   // The faces' heights and areas as fractions of the grid's box (the grid's own scaling keeps them finite).
   const Vec2 origin = unitGrid.bounds.min(), size = unitGrid.bounds.sizes();
   double height = 0.0, share = 0.0;
   std::size_t measured = 0;
   for (std::size_t f = 0; f < faces.size(); ++f) {
-    if (!isMeasured(faces[f].status)) continue;
+    if (!isMeasured(faces.status[f])) continue;
     ++measured;
     Vec2 p[3];
     for (int k = 0; k < 3; ++k) p[k] = (uv.uv[3 * f + std::size_t(k)] * unitGrid.scale - origin).cwiseQuotient(size);
@@ -239,7 +239,7 @@ int overlapResolution(const UvMap& uv, const std::vector<FaceDistortion>& faces,
   return resolution;
 }
 
-Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces, int resolution) {
+Overlap measureOverlap(const UvMap& uv, const FaceMeasures& faces, int resolution) {
   UVTK_CHECK(uv.uv.size() == 3 * faces.size());
   UVTK_CHECK(resolution >= kOverlapFollowsMesh && resolution <= 65536);
   Overlap overlap;
@@ -256,12 +256,13 @@ Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces
   // its rows reach (compressed rows: a count per band, then the faces).
   const std::int64_t bandRows = std::max<std::int64_t>(1, 32768 / (n + 1));
   const std::size_t bands = std::size_t((n + bandRows - 1) / bandRows);
-  std::vector<std::array<std::int32_t, 2>> faceBands(faces.size(), {0, -1});
+  // A face's first and last band (at most 65536 bands: 16 bits each; {1, 0}: none).
+  std::vector<std::array<std::uint16_t, 2>> faceBands(faces.size(), {1, 0});
   std::vector<std::uint32_t> bandStart(bands + 1, 0);
   SnappedFace face;
   for (std::size_t f = 0; f < faces.size(); ++f)
-    if (isMeasured(faces[f].status) && snap.snap(uv, f, face) && face.x0 <= face.x1 && face.y0 <= face.y1) {
-      faceBands[f] = {std::int32_t(face.y0 / bandRows), std::int32_t(face.y1 / bandRows)};
+    if (isMeasured(faces.status[f]) && snap.snap(uv, f, face) && face.x0 <= face.x1 && face.y0 <= face.y1) {
+      faceBands[f] = {std::uint16_t(face.y0 / bandRows), std::uint16_t(face.y1 / bandRows)};
       for (std::int32_t band = faceBands[f][0]; band <= faceBands[f][1]; ++band) ++bandStart[std::size_t(band) + 1];
     }
   for (std::size_t band = 0; band < bands; ++band) bandStart[band + 1] += bandStart[band];

@@ -45,7 +45,7 @@ struct UvGrid {
 };
 
 // The UV bounding box of the faces the overlap raster draws (isMeasured), the box measureOverlap's grid spans.
-Eigen::AlignedBox2d measuredUvBounds(const UvMap& uv, const std::vector<FaceDistortion>& faces);
+Eigen::AlignedBox2d measuredUvBounds(const UvMap& uv, const FaceMeasures& faces);
 
 // The grid of `resolution` pixels a side over `uvBounds` (non-empty, finite), with its scale.
 UvGrid uvGridOver(const Eigen::AlignedBox2d& uvBounds, int resolution);
@@ -54,22 +54,22 @@ UvGrid uvGridOver(const Eigen::AlignedBox2d& uvBounds, int resolution);
 // empty) a face covers: the rows of forEachCoveredPixel's pixels, each solved exactly in integers from
 // the three edge functions, so the cost is one call per row and face plus the pixels themselves.
 // Preconditions as forEachCoveredPixel.
-void forEachCoveredSpan(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid,
+void forEachCoveredSpan(const UvMap& uv, const FaceMeasures& faces, const UvGrid& grid,
                         const std::function<void(std::size_t face, int y, int x0, int x1)>& visit);
 
 // Calls visit(face, x, y) for every pixel centre of `grid` that a face covers, face by face in
-// index order, for the faces with a non-degenerate Jacobian (isMeasured(faces[f].status): ok,
+// index order, for the faces with a non-degenerate Jacobian (isMeasured(faces.status[f]): ok,
 // pole, backfacing and flipped faces, whatever their winding). Preconditions: `faces` from
 // measureFaces on the same UVs; bounds of positive finite size; resolution in [1, 65536]; every
 // corner of a drawn face within the bounds enlarged by their size on every side, which keeps the
 // exact integer arithmetic far from overflow (the grid may show part of a layout: pixels outside
 // it are skipped).
-void forEachCoveredPixel(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid,
+void forEachCoveredPixel(const UvMap& uv, const FaceMeasures& faces, const UvGrid& grid,
                          const std::function<void(std::size_t face, int x, int y)>& visit);
 
 // Per pixel of `grid` (index y * resolution + x), how many faces cover its centre, saturating at
 // 255. Preconditions as forEachCoveredPixel.
-std::vector<std::uint8_t> coverageCounts(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& grid);
+std::vector<std::uint8_t> coverageCounts(const UvMap& uv, const FaceMeasures& faces, const UvGrid& grid);
 
 // The raster's work is bounded by the input: at most kOverlapWorkBase plus kOverlapWorkPerFace per
 // measured face. Its work is the grid's scan (resolution^2) and a step per span of a face's row
@@ -82,7 +82,7 @@ constexpr double kOverlapWorkPerFace = 256.0;
 // `resolution` (for kOverlapFollowsMesh, followingOverlapResolution of these faces), halved until the
 // raster's estimated work (the grid's pixels, the faces' rows twice, one step per face) is within the
 // budget above. `unitGrid`: uvGridOver(measuredUvBounds(uv, faces), 1).
-int overlapResolution(const UvMap& uv, const std::vector<FaceDistortion>& faces, const UvGrid& unitGrid,
+int overlapResolution(const UvMap& uv, const FaceMeasures& faces, const UvGrid& unitGrid,
                       int resolution);
 
 // The judgement's raster follows the mesh unless a resolution is asked (kOverlapFollowsMesh):
@@ -104,6 +104,6 @@ int followingOverlapResolution(std::size_t measuredFaces, double boxShare);
 // Covered and overlapped pixels from the coverageCounts of those faces over their own UV bounding
 // box at overlapResolution, and the faces that cover an overlapped pixel. Preconditions: `faces` from
 // measureFaces on the same UVs, resolution kOverlapFollowsMesh or in [1, 65536].
-Overlap measureOverlap(const UvMap& uv, const std::vector<FaceDistortion>& faces, int resolution = 1024);
+Overlap measureOverlap(const UvMap& uv, const FaceMeasures& faces, int resolution = 1024);
 
 }  // namespace uvtk::analysis

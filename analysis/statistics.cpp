@@ -118,6 +118,18 @@ class SumFormat {
   std::size_t limbs_;
 };
 
+// ---- The items: values and weights, and which of them enter
+
+struct Items {
+  const double* values;
+  const double* weights;
+  const std::uint8_t* included;  // null: all of them
+  std::size_t size;              // of the arrays
+  std::size_t count = 0;         // the items that enter
+
+  bool in(std::size_t i) const { return !included || included[i] != 0; }
+};
+
 // ---- Weighted percentiles by radix selection
 
 // A double's bits as an unsigned key in the order of the values (negative values' bits flipped,
@@ -193,8 +205,10 @@ struct DigitTally {
 // but the last bucket's few items.
 // `first`, when given, is the first pass already counted (with another pass over the items) for the
 // range every search starts in.
-void findPercentiles(const double* values, const double* weights, std::size_t count, const SumFormat& format,
-                     std::vector<Search>& searches, DigitTally* first = nullptr) {
+void findPercentiles(const Items& items, const SumFormat& format, std::vector<Search>& searches,
+                     DigitTally* first = nullptr) {
+  const double *values = items.values, *weights = items.weights;
+  const std::size_t count = items.count;
   const std::size_t limbs = format.limbs();
   std::vector<std::uint64_t> running(limbs), after(limbs), start(limbs);
   std::vector<Search*> gather;
@@ -212,7 +226,8 @@ void findPercentiles(const double* values, const double* weights, std::size_t co
     UVTK_CHECK(!counted || (ranges.size() == 1 && ranges[0] == first->prefix && bits == first->bits));
     DigitTally tally = counted ? std::move(*first) : DigitTally(format, ranges[0], bits, ranges.size(), digitBitsFor(count));
     first = nullptr;
-    for (std::size_t i = 0; i < count && !counted; ++i) {
+    for (std::size_t i = 0; i < items.size && !counted; ++i) {
+      if (!items.in(i)) continue;
       const std::uint64_t key = orderKey(values[i]);
       for (std::size_t r = 0; r < ranges.size(); ++r)
         if (bits == 0 || (key ^ ranges[r]) >> (64 - bits) == 0) {
@@ -269,7 +284,8 @@ void findPercentiles(const double* values, const double* weights, std::size_t co
     double value, weight;
   };
   std::vector<std::vector<Item>> gathered(gather.size());
-  for (std::size_t i = 0; i < count; ++i) {
+  for (std::size_t i = 0; i < items.size; ++i) {
+    if (!items.in(i)) continue;
     const std::uint64_t key = orderKey(values[i]);
     for (std::size_t g = 0; g < gather.size(); ++g)
       if (gather[g]->holds(key) && (gather[g]->bits < 64 || gathered[g].empty()))
@@ -315,27 +331,32 @@ void findPercentiles(const double* values, const double* weights, std::size_t co
   }
   // Searches still open go on from where they are.
   if (std::any_of(searches.begin(), searches.end(), [](const Search& s) { return !s.found; }))
-    findPercentiles(values, weights, count, format, searches);
+    findPercentiles(items, format, searches);
 }
 
 }  // namespace
 
-Statistics weightedStatistics(const double* values, const double* weights, std::size_t count, BinSpacing spacing,
-                              int bins) {
+Statistics weightedStatistics(const double* values, const double* weights, const std::uint8_t* included,
+                              std::size_t size, BinSpacing spacing, int bins) {
   UVTK_CHECK(bins >= 1);
   Statistics s;
   s.histogram.spacing = spacing;
   s.histogram.weightFraction.assign(static_cast<std::size_t>(bins), 0.0);
-  if (count == 0) {
+  Items items{values, weights, included, size};
+  std::size_t first = 0;
+  while (first < size && !items.in(first)) ++first;
+  if (first == size) {
     s.histogram.spacing = BinSpacing::Linear;  // no values to space by log2: the edges of [0, 0] would be log2(0)
     return s;
   }
 
   // One pass for the extremes and the sums in the items' order, and the weights' exponents.
-  s.min = s.max = values[0];
+  s.min = s.max = values[first];
   double weightedSum = 0.0;
   int lowestExponent = 2047, highestExponent = 0;
-  for (std::size_t i = 0; i < count; ++i) {
+  for (std::size_t i = first; i < size; ++i) {
+    if (!items.in(i)) continue;
+    ++items.count;
     const double value = values[i], weight = weights[i];
     UVTK_CHECK(std::isfinite(value) && std::isfinite(weight) && weight >= 0.0);  // the precondition: a NaN derails the search
     if (value < s.min) s.min = value;   // the first of equal smallest values
@@ -346,6 +367,7 @@ Statistics weightedStatistics(const double* values, const double* weights, std::
       lowestExponent = std::min(lowestExponent, exponent), highestExponent = std::max(highestExponent, exponent);
     }
   }
+  const std::size_t count = items.count;
   // A log2 histogram needs positive values; where one underflowed to 0 (the measures of a mesh at the
   // edge of the doubles' range) its bins are linear, as its spacing says.
   if (spacing == BinSpacing::Log2 && !(s.min > 0.0)) spacing = s.histogram.spacing = BinSpacing::Linear;
@@ -366,21 +388,22 @@ Statistics weightedStatistics(const double* values, const double* weights, std::
   const SumFormat format(lowestExponent, highestExponent);
   const std::uint64_t lowest = orderKey(s.min), highest = orderKey(s.max);
   const int common = lowest == highest ? 64 : __builtin_clzll(lowest ^ highest);
-  std::optional<DigitTally> first;
-  if (common < 64) first.emplace(format, lowest, common, 1, digitBitsFor(count));
+  std::optional<DigitTally> firstDigit;
+  if (common < 64) firstDigit.emplace(format, lowest, common, 1, digitBitsFor(count));
   std::vector<std::uint64_t> whole(format.limbs(), 0);
-  for (std::size_t i = 0; i < count; ++i) {
+  for (std::size_t i = first; i < size; ++i) {
+    if (!items.in(i)) continue;
     const double t = width > 0.0 ? (scale * binScale(values[i], spacing) - origin) / width : 0.0;
     const int bin = std::clamp(static_cast<int>(t * bins), 0, bins - 1);
     h.weightFraction[static_cast<std::size_t>(bin)] += weights[i] / s.totalWeight;
-    if (first)
-      first->add(format, 0, orderKey(values[i]), weights[i]);
+    if (firstDigit)
+      firstDigit->add(format, 0, orderKey(values[i]), weights[i]);
     else
       format.add(whole.data(), weights[i]);
   }
   // The whole weight, the buckets' added (fewer than 2^32 items: no limb overflows before the carries).
-  for (std::size_t bucket = 0; first && bucket < first->buckets; ++bucket)
-    format.addSum(whole.data(), first->sums.data() + bucket * format.limbs());
+  for (std::size_t bucket = 0; firstDigit && bucket < firstDigit->buckets; ++bucket)
+    format.addSum(whole.data(), firstDigit->sums.data() + bucket * format.limbs());
   format.normalise(whole.data());
 
   // The percentiles, their targets a fraction of the total as summed in order above.
@@ -397,15 +420,20 @@ Statistics weightedStatistics(const double* values, const double* weights, std::
     // Rounding may leave the whole weight short of the target: then the largest value.
     if (!format.atLeast(whole.data(), search.target.data())) search.found = true, search.answer = s.max;
   }
-  findPercentiles(values, weights, count, format, searches, first ? &*first : nullptr);
+  findPercentiles(items, format, searches, firstDigit ? &*firstDigit : nullptr);
   for (int k = 0; k < 4; ++k) *percentiles[k] = searches[std::size_t(k)].answer;
   return s;
+}
+
+Statistics weightedStatistics(const double* values, const double* weights, std::size_t count, BinSpacing spacing,
+                              int bins) {
+  return weightedStatistics(values, weights, nullptr, count, spacing, bins);
 }
 
 Statistics weightedStatistics(const std::vector<double>& values, const std::vector<double>& weights,
                               BinSpacing spacing, int bins) {
   UVTK_CHECK(values.size() == weights.size());
-  return weightedStatistics(values.data(), weights.data(), values.size(), spacing, bins);
+  return weightedStatistics(values.data(), weights.data(), nullptr, values.size(), spacing, bins);
 }
 
 }  // namespace uvtk::analysis

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace uvtk::analysis {
@@ -39,6 +40,12 @@ struct Statistics {
 // summed without rounding).
 Statistics weightedStatistics(const double* values, const double* weights, std::size_t count, BinSpacing spacing,
                               int bins = 32);
+
+// The same over the items i < size with included[i] != 0 (null: every item), as if those had been
+// gathered in their order into arrays of their own: a caller whose values and weights lie in
+// per-face arrays skips the faces that do not enter without copying the others.
+Statistics weightedStatistics(const double* values, const double* weights, const std::uint8_t* included,
+                              std::size_t size, BinSpacing spacing, int bins = 32);
 
 // The same for values[i] with weights[i]. Precondition: equal sizes.
 Statistics weightedStatistics(const std::vector<double>& values, const std::vector<double>& weights,

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <iterator>
 #include <limits>
 
 #include "core/error.h"
-#include "core/huge_pages.h"
 #include "core/parallel.h"
 
 namespace uvtk::analysis {
@@ -39,32 +39,35 @@ void unscale(TexelDensity& d) {
 
 }  // namespace
 
-Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDistortion>& faces, int overlapResolution,
-                  int threads, TextureSize textureSize) {
-  return summarize(mesh, uv, faces, measureScales(mesh, uv, threads), overlapResolution, threads, textureSize);
+Summary summarize(const Mesh& mesh, const UvMap& uv, const FaceMeasures& faces, int overlapResolution, int threads,
+                  TextureSize textureSize) {
+  return summarize(mesh, uv, faces, measureScales(mesh, uv, threads), classifySeamEdges(mesh, uv), overlapResolution,
+                   threads, textureSize);
 }
 
-Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDistortion>& faces,
-                  const MeasureScales& scales, int overlapResolution, int threads, TextureSize textureSize) {
+Summary summarize(const Mesh& mesh, const UvMap& uv, const FaceMeasures& faces, const MeasureScales& scales,
+                  SeamEdges seams, int overlapResolution, int threads, TextureSize textureSize) {
   UVTK_CHECK(faces.size() == mesh.triangles.size() && uv.uv.size() == 3 * faces.size() &&
              uv.faceFlags.size() == faces.size() && textureSize.width >= 1 && textureSize.height >= 1);
   Summary s;
-  // The counts in fixed chunks on threads, and where each chunk's ok faces begin among all of them.
+  s.seams = std::move(seams);
+  // The counts in fixed chunks on threads, and which faces are ok (the statistics' items).
   constexpr std::size_t kChunk = std::size_t(1) << 16;
   const std::size_t chunks = (faces.size() + kChunk - 1) / kChunk;
   const auto chunkEnd = [&](std::size_t c) { return std::min(faces.size(), (c + 1) * kChunk); };
   std::vector<StatusCounts> chunkCounts(chunks);
-  std::vector<std::size_t> chunkPoleFaces(chunks), okBefore(chunks + 1, 0);
+  std::vector<std::size_t> chunkPoleFaces(chunks);
+  std::vector<std::uint8_t> ok(faces.size());
   parallelFor(int(chunks), threads, [&](int c) {
     for (std::size_t f = std::size_t(c) * kChunk; f < chunkEnd(std::size_t(c)); ++f) {
-      ++chunkCounts[std::size_t(c)].faces[static_cast<std::size_t>(faces[f].status)];
+      ++chunkCounts[std::size_t(c)].faces[static_cast<std::size_t>(faces.status[f])];
       chunkPoleFaces[std::size_t(c)] += uv.faceHas(f, kFacePole) ? 1 : 0;
+      ok[f] = faces.status[f] == FaceStatus::Ok;
     }
   });
   for (std::size_t c = 0; c < chunks; ++c) {
     for (std::size_t k = 0; k < kFaceStatusCount; ++k) s.statusCounts.faces[k] += chunkCounts[c].faces[k];
     s.poleFaces += chunkPoleFaces[c];
-    okBefore[c + 1] = okBefore[c] + chunkCounts[c][FaceStatus::Ok];
   }
 
   // Sander et al. 2001, "Texture stretch metric": L2(M) = sqrt(sum(A3 L2^2) / sum(A3)), Linf(M) = max Linf, each
@@ -72,10 +75,10 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
   // order; max(Linf) times the positive normalisation is max(Linf times it), rounding being monotonic.
   AreaTotals& totals = s.okTotals;
   double linfMax = 0.0;
-  for (const FaceDistortion& face : faces) {
-    if (face.status != FaceStatus::Ok) continue;
-    totals.surface += face.area3d, totals.uv += face.areaUv;
-    linfMax = std::max(linfMax, face.linfStretch());
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    if (!ok[f]) continue;
+    totals.surface += faces.area3d[f], totals.uv += faces.areaUv[f];
+    linfMax = std::max(linfMax, faces[f].linfStretch());
   }
   const double normalisation = std::sqrt(1.0 / totals.surfacePerUv());
   if (totals.surface > 0.0) {
@@ -83,39 +86,29 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
     // times the power of two that brings 1 / normalisation (a typical L2) to about 1; exact, undone below.
     const double unit = unitPowerOfTwo(1.0 / normalisation);
     double l2Squares = 0.0;
-    for (const FaceDistortion& face : faces)
-      if (face.status == FaceStatus::Ok) {
-        const double l2 = face.l2Stretch() * unit;
-        l2Squares += face.area3d * l2 * l2;
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      if (ok[f]) {
+        const double l2 = faces[f].l2Stretch() * unit;
+        l2Squares += faces.area3d[f] * l2 * l2;
       }
     s.l2Stretch = std::sqrt(l2Squares / totals.surface) / unit * normalisation;
     s.linfStretch = linfMax * normalisation;
   }
-  // Each statistic of the ok faces' values weighted by their 3D areas: the areas gathered once (on
-  // threads, each chunk's at its place), each measure's values where its statistic is computed, 8 bytes
-  // a face (the statistic reads them a few times).
-  std::vector<double> okAreas;
-  resizeFaultedIn(okAreas, okBefore[chunks], threads);
-  parallelFor(int(chunks), threads, [&](int c) {
-    double* out = okAreas.data() + okBefore[std::size_t(c)];
-    for (std::size_t f = std::size_t(c) * kChunk; f < chunkEnd(std::size_t(c)); ++f)
-      if (faces[f].status == FaceStatus::Ok) *out++ = faces[f].area3d;
-  });
-  // `values`: the worker's, reused from one statistic to the next (fresh pages cost more than filling them).
+  // Each statistic of the ok faces' values weighted by their 3D areas: the values of every face
+  // (those of the faces that are not ok unread) in the worker's buffer, 8 bytes a face, the weights
+  // the faces' own areas. A worker sizes its buffer when it first computes a statistic: the
+  // overlap's raster, started first, is given back before the other worker needs a second buffer.
   const auto statistics = [&](std::vector<double>& values, auto valueOf, BinSpacing spacing) {
-    values.clear();
-    values.reserve(okAreas.size());
-    for (const FaceDistortion& face : faces)
-      if (face.status == FaceStatus::Ok) values.push_back(valueOf(face));
-    return weightedStatistics(values, okAreas, spacing);
+    values.resize(faces.size());
+    for (std::size_t f = 0; f < faces.size(); ++f) values[f] = ok[f] ? valueOf(faces[f]) : 0.0;
+    return weightedStatistics(values.data(), faces.area3d.data(), ok.data(), faces.size(), spacing);
   };
   // The bounds of the valid UVs: reported, and the UV scale of the densities.
   s.uvBounds = scales.uvBounds;
   s.density.textureSize = textureSize;
   s.density.exponent = std::ilogb(scales.length) - std::ilogb(scales.uv());
-  // The longest first (the seam edges sort every half-edge), so that the last task to start is a short one.
+  // The longest first (the overlap raster), so that the last task to start is a short one.
   const std::function<void(std::vector<double>&)> measures[] = {
-      [&](std::vector<double>&) { s.seams = classifySeamEdges(mesh, uv); },
       [&](std::vector<double>&) { s.overlap = measureOverlap(uv, faces, overlapResolution); },
       [&](std::vector<double>& values) {
         s.density.scaled = statistics(
@@ -138,7 +131,7 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDisto
             statistics(values, [&](const FaceDistortion& f) { return f.linfStretch() * normalisation; }, BinSpacing::Log2);
       }};
   s.poleVertices = poleVerticesOf(mesh, uv);
-  // Seven independent measures side by side: the seams, the overlap, the density, the statistics.
+  // Six independent measures side by side: the overlap, the density, the statistics.
   const int count = int(std::size(measures));
   std::vector<std::vector<double>> values(std::size_t(workerCount(count, threads)));
   parallelForWorkers(count, threads, [&](int k, int worker) { measures[k](values[std::size_t(worker)]); });

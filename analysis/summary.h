@@ -68,11 +68,13 @@ struct Summary {
 };
 
 // The report for `faces` = measureFaces(mesh, uv, ...), with the poles the UVs' source marked
-// (UvMap::cornerPole); the overlap at measureOverlap(uv, faces, overlapResolution). Preconditions: matching sizes, a texture of at least 1 x 1 texels.
-// The first form with `scales` = measureScales(mesh, uv), the scales `faces` were measured at.
-Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDistortion>& faces,
+// (UvMap::cornerPole); the overlap at measureOverlap(uv, faces, overlapResolution). Preconditions:
+// matching sizes, a texture of at least 1 x 1 texels. The second form takes the scales `faces` were
+// measured at (measureScales) and the seam edges (classifySeamEdges(mesh, uv)) from its caller,
+// which may have classified them while the faces were measured.
+Summary summarize(const Mesh& mesh, const UvMap& uv, const FaceMeasures& faces,
                   int overlapResolution = kOverlapFollowsMesh, int threads = 0, TextureSize textureSize = {});
-Summary summarize(const Mesh& mesh, const UvMap& uv, const std::vector<FaceDistortion>& faces,
-                  const MeasureScales& scales, int overlapResolution, int threads, TextureSize textureSize);
+Summary summarize(const Mesh& mesh, const UvMap& uv, const FaceMeasures& faces, const MeasureScales& scales,
+                  SeamEdges seams, int overlapResolution, int threads, TextureSize textureSize);
 
 }  // namespace uvtk::analysis

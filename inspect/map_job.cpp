@@ -148,7 +148,7 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   for (std::size_t f = 0; gltf && f < judgement.faces.size(); ++f)
     collapsedUvFaces += analysis::isMeasured(judgement.faces[f].status) &&
                         io::collapsesInGltfTexcoords(mapped.uv.uv[3 * f], mapped.uv.uv[3 * f + 1], mapped.uv.uv[3 * f + 2]);
-  std::vector<analysis::FaceDistortion>().swap(judgement.faces);  // every face's measures: not needed while writing
+  judgement.faces = {};  // every face's measures: not needed while writing
 
   if (writing.valid()) {
     writing.get();

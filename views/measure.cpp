@@ -66,7 +66,7 @@ double measureValue(View measure, const analysis::FaceDistortion& face, const an
   return face.areaDistortion(totals.surfacePerUv());
 }
 
-ColourScale measureScale(View measure, const std::vector<analysis::FaceDistortion>& faces,
+ColourScale measureScale(View measure, const analysis::FaceMeasures& faces,
                          const analysis::Summary& summary) {
   UVTK_CHECK(isMeasure(measure));
   if (measure == View::Density) {
@@ -95,7 +95,7 @@ ColourScale measureScale(View measure, const std::vector<analysis::FaceDistortio
 }
 
 FaceColouring colourByMeasure(View measure, const analysis::Judgement& judgement) {
-  const std::vector<analysis::FaceDistortion>& faces = judgement.faces;
+  const analysis::FaceMeasures& faces = judgement.faces;
   const analysis::Summary& summary = judgement.summary;
   const ColourScale scale = measureScale(measure, faces, summary);
   const analysis::AreaTotals totals = analysis::okAreaTotals(faces);

@@ -35,7 +35,7 @@ double measureValue(View measure, const analysis::FaceDistortion& face, const an
 //                         densities: from min(m/2, p10) to max(2m, p90), so that a flat density is
 //                         the palette's middle and a factor of 2 either way is visible.
 // Values beyond the ends take the end colours.
-ColourScale measureScale(View measure, const std::vector<analysis::FaceDistortion>& faces,
+ColourScale measureScale(View measure, const analysis::FaceMeasures& faces,
                          const analysis::Summary& summary);
 
 // Per face: the measure's colour for ok faces, the status colour for every other status; and the

@@ -100,7 +100,7 @@ TEST(MeasureFaces, AMirroredFaceAmongUnmirroredOnesIsFlipped) {
   Layout l = planeLayout(3, 3);
   const std::size_t mirrored = 7;
   for (int k = 0; k < 3; ++k) l.uv.uv[3 * mirrored + k].x() *= -1.0;
-  const std::vector<FaceDistortion> faces = measureFaces(l.mesh, l.uv);
+  const FaceMeasures faces = measureFaces(l.mesh, l.uv);
   for (std::size_t f = 0; f < faces.size(); ++f) {
     expectFinite(faces[f], okAreaTotals(faces).surfacePerUv());
     EXPECT_EQ(faces[f].status, f == mirrored ? FaceStatus::Flipped : FaceStatus::Ok);
@@ -121,7 +121,7 @@ TEST(MeasureFaces, DegenerateAndInvalidFacesAreCountedApart) {
                          {0, 0}, {1, 0}, {1, 1}});        // zero 3D area and a pole flag: zero area wins
   l.uv.cornerInvalid[3 * 3 + 1] = 1;
   l.uv.faceFlags[4] = kFacePole;
-  const std::vector<FaceDistortion> faces = measureFaces(l.mesh, l.uv);
+  const FaceMeasures faces = measureFaces(l.mesh, l.uv);
   const FaceStatus expected[] = {FaceStatus::Ok, FaceStatus::ZeroArea3d, FaceStatus::ZeroAreaUv, FaceStatus::Invalid,
                                  FaceStatus::ZeroArea3d};
   for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -161,15 +161,15 @@ TEST(MeasureFaces, PlanarProjectionOfASphereMirrorsItsBackFaces) {
   o.surface = param::SurfaceKind::Plane;
   const param::Projection p = param::project(meshes::icosphere(2), o);
   const Vec3 direction = p.localFromObject.inverse().linear().col(2);
-  auto count = [](const std::vector<FaceDistortion>& faces, FaceStatus status) {
+  auto count = [](const FaceMeasures& faces, FaceStatus status) {
     std::size_t n = 0;
     for (const FaceDistortion& f : faces) n += f.status == status;
     return n;
   };
   UvMap marked = p.uv;
   markTurnedAwayFaces(p.mesh, {direction, {}}, marked);
-  const std::vector<FaceDistortion> seen = measureFaces(p.mesh, marked);
-  const std::vector<FaceDistortion> blind = measureFaces(p.mesh, p.uv);
+  const FaceMeasures seen = measureFaces(p.mesh, marked);
+  const FaceMeasures blind = measureFaces(p.mesh, p.uv);
   EXPECT_EQ(count(seen, FaceStatus::Flipped), 0u);
   EXPECT_EQ(count(blind, FaceStatus::Backfacing), 0u);
   EXPECT_GT(count(seen, FaceStatus::Backfacing), p.mesh.faceCount() / 3);
@@ -201,7 +201,7 @@ TEST(MeasureFaces, UnitSphereConvergesToTheClosedForm) {
     o.surface = param::SurfaceKind::Sphere;
     o.placement.fit = param::Fit::None;
     const param::Projection p = param::project(meshes::latLongSphere(n, n / 2), o);
-    const std::vector<FaceDistortion> faces = measureFaces(p.mesh, p.uv);
+    const FaceMeasures faces = measureFaces(p.mesh, p.uv);
     double weight = 0.0, areaError = 0.0, angleError = 0.0;
     std::size_t ok = 0, poles = 0;
     for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -247,7 +247,7 @@ TEST(MeasureFaces, CylinderIsIsometricUpToTheFittedScales) {
   for (double height : {2.0, segments * chord}) {  // the second: su = sv, angle distortion 1
     const param::Projection p = param::project(meshes::cylinder(segments, 3, radius, height, false), o);
     const double su = (1.0 / segments) / chord, sv = 1.0 / height;
-    const std::vector<FaceDistortion> faces = measureFaces(p.mesh, p.uv);
+    const FaceMeasures faces = measureFaces(p.mesh, p.uv);
     const double surfacePerUv = okAreaTotals(faces).surfacePerUv();
     for (const FaceDistortion& f : faces) {
       ASSERT_EQ(f.status, FaceStatus::Ok);
@@ -265,7 +265,7 @@ TEST(MeasureFaces, PlaneProjectionWithoutFitIsExactlyIsometric) {
   o.surface = param::SurfaceKind::Plane;
   o.placement.fit = param::Fit::None;
   const param::Projection p = param::project(meshes::planeGrid(7, 5, 2.5, 1.5), o);
-  const std::vector<FaceDistortion> faces = measureFaces(p.mesh, p.uv);
+  const FaceMeasures faces = measureFaces(p.mesh, p.uv);
   const double surfacePerUv = okAreaTotals(faces).surfacePerUv();
   for (const FaceDistortion& f : faces) {
     ASSERT_EQ(f.status, FaceStatus::Ok);

@@ -126,7 +126,7 @@ TEST_P(SliverExtremes, FiniteMeasuresOrAZeroAreaStatus) {
   std::vector<Triangle> triangles;
   for (int f = 0; 3 * f < int(row.positions.size()); ++f) triangles.push_back({3 * f, 3 * f + 1, 3 * f + 2});
   const Layout layout = makeLayout(row.positions, triangles, row.uvs);
-  const std::vector<FaceDistortion> faces = measureFaces(layout.mesh, layout.uv);
+  const FaceMeasures faces = measureFaces(layout.mesh, layout.uv);
   const double surfacePerUv = okAreaTotals(faces).surfacePerUv();
   for (const FaceDistortion& f : faces)
     for (double x : {f.area3d, f.areaUv, f.sigmaMax, f.sigmaMin, f.l2Stretch(), f.linfStretch(), f.angleDistortion(),

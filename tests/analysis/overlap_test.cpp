@@ -71,7 +71,7 @@ TEST(OverlapSpans, CoverExactlyThePixelCentresATestOfEachCentreFinds) {
   std::mt19937 random(20261202);
   for (int round = 0; round < 40; ++round) {
     const Layout l = randomLayout(random, 2 + round);
-    const std::vector<FaceDistortion> faces = measureFaces(l.mesh, l.uv);
+    const FaceMeasures faces = measureFaces(l.mesh, l.uv);
     const UvGrid grid = uvGridOver(measuredUvBounds(l.uv, faces), kResolution);
     ASSERT_EQ(grid.bounds.min(), Vec2(0, 0));
     ASSERT_EQ(grid.bounds.max(), Vec2(1, 1));
@@ -132,7 +132,7 @@ TEST(OverlapSpans, BandsGiveTheFiguresOfTheWholeGrid) {
       triangles.push_back({3 * f, 3 * f + 1, 3 * f + 2});
     }
     const Layout l = makeLayout(positions, triangles, uvs);
-    const std::vector<FaceDistortion> faces = measureFaces(l.mesh, l.uv);
+    const FaceMeasures faces = measureFaces(l.mesh, l.uv);
     const UvGrid grid = uvGridOver(measuredUvBounds(l.uv, faces), 1024);
     const std::vector<std::uint8_t> counts = coverageCounts(l.uv, faces, grid);
     std::size_t covered = 0, overlapped = 0;
@@ -163,7 +163,7 @@ TEST(OverlapSpans, CountsSaturateAt255) {
     triangles.push_back({3 * f, 3 * f + 1, 3 * f + 2});
   }
   const Layout l = makeLayout(positions, triangles, uvs);
-  const std::vector<FaceDistortion> faces = measureFaces(l.mesh, l.uv);
+  const FaceMeasures faces = measureFaces(l.mesh, l.uv);
   const std::vector<std::uint8_t> counts =
       coverageCounts(l.uv, faces, UvGrid{Eigen::AlignedBox2d(Vec2(0, 0), Vec2(1, 1)), 4});
   EXPECT_EQ(int(counts[0]), 255);   // centre (1/8, 1/8): inside
@@ -199,10 +199,11 @@ TEST(OverlapSpans, AStackOfFacesIsMeasuredAtAResolutionItsFaceCountPays) {
     triangles.push_back({3 * f, 3 * f + 1, 3 * f + 2});
   }
   const Layout stack = makeLayout(positions, triangles, uvs);
-  const std::vector<FaceDistortion> measured = measureFaces(stack.mesh, stack.uv);
+  const FaceMeasures measured = measureFaces(stack.mesh, stack.uv);
   // The centres ((x + 1/2) / R, (y + 1/2) / R) with x + y <= R - 2: (R - 1) R / 2 of them (those on
   // the hypotenuse are not the triangle's, as above).
-  const std::vector<FaceDistortion> thousand(measured.begin(), measured.begin() + 1000);
+  std::vector<FaceDistortion> thousand;
+  for (std::size_t f = 0; f < 1000; ++f) thousand.push_back(measured[f]);
   UvMap firstThousand = stack.uv;
   firstThousand.uv.resize(3000);
   const Overlap o1000 = measureOverlap(firstThousand, thousand);
@@ -237,7 +238,7 @@ TEST(OverlapSpans, TheJudgementsRasterFollowsTheMeasuredFacesAndTheirShareOfTheB
   o.surface = param::SurfaceKind::Plane;
   o.placement.fit = param::Fit::None;
   const param::Projection grid = param::project(meshes::planeGrid(100, 50, 1.0, 1.0), o);
-  const std::vector<FaceDistortion> faces = measureFaces(grid.mesh, grid.uv);
+  const FaceMeasures faces = measureFaces(grid.mesh, grid.uv);
   EXPECT_EQ(measureOverlap(grid.uv, faces, kOverlapFollowsMesh).resolution, 400);
   EXPECT_EQ(measureOverlap(grid.uv, faces, 8).resolution, 8);
   std::vector<Vec3> positions = grid.mesh.positions;

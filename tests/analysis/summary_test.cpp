@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <string>
@@ -84,7 +85,7 @@ TEST(Summarize, MeshStretchOfTwoDifferentlyScaledFaces) {
 // the report is finite.
 TEST(Summarize, SphereReportIsConsistent) {
   const param::Projection p = projectSphere(32, 16, param::SeamMode::Shift);
-  const std::vector<FaceDistortion> faces = measureFaces(p.mesh, p.uv);
+  const FaceMeasures faces = measureFaces(p.mesh, p.uv);
   const Summary s = summarize(p.mesh, p.uv, faces);
   EXPECT_EQ(s.statusCounts[FaceStatus::Ok], 2u * 32u * 14u);  // two per quad, 14 quad bands
   EXPECT_EQ(s.statusCounts[FaceStatus::PoleFace], 64u);
@@ -292,6 +293,45 @@ TEST(WeightedStatistics, PercentilesEqualAnExactRecountOnRandomAndAdversarialSet
     }
     expectPercentilesRecounted(values, weights, "trial " + std::to_string(trial));
   }
+}
+
+// Items left out by a mask count as if they had never been there: every field equals that of the
+// included items gathered into arrays of their own (the summary's statistics read the faces' own
+// arrays, skipping the faces that are not ok), whatever the left-out items hold (NaN included),
+// through sets small enough to sort and large enough to need several passes.
+TEST(WeightedStatistics, MaskedItemsGiveTheStatisticsOfTheIncludedOnesGathered) {
+  std::mt19937_64 random(5179);
+  const auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(random); };
+  for (const std::size_t n : {std::size_t(1), std::size_t(7), std::size_t(5000), std::size_t(70000), std::size_t(400000)})
+    for (const int keep : {0, 1, 3}) {  // of every 4 items: none, one, three
+      std::vector<double> values(n), weights(n), keptValues, keptWeights;
+      std::vector<std::uint8_t> included(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        included[i] = int(random() % 4) < keep;
+        values[i] = included[i] ? (random() % 3 == 0 ? 1.0 + double(random() % 8) * 0x1p-52 : uniform(0.5, 1e4))
+                                : std::numeric_limits<double>::quiet_NaN();
+        weights[i] = included[i] ? std::ldexp(uniform(0.5, 1.0), int(random() % 41) - 20) : -1.0;
+        if (included[i]) keptValues.push_back(values[i]), keptWeights.push_back(weights[i]);
+      }
+      for (const BinSpacing spacing : {BinSpacing::Linear, BinSpacing::Log2}) {
+        SCOPED_TRACE(std::to_string(n) + " items, " + std::to_string(keptValues.size()) + " kept");
+        const Statistics masked = weightedStatistics(values.data(), weights.data(), included.data(), n, spacing);
+        const Statistics gathered = weightedStatistics(keptValues, keptWeights, spacing);
+        EXPECT_EQ(masked.totalWeight, gathered.totalWeight);
+        EXPECT_EQ(masked.mean, gathered.mean);
+        EXPECT_EQ(masked.min, gathered.min);
+        EXPECT_EQ(masked.max, gathered.max);
+        EXPECT_EQ(masked.p10, gathered.p10);
+        EXPECT_EQ(masked.p50, gathered.p50);
+        EXPECT_EQ(masked.p90, gathered.p90);
+        EXPECT_EQ(masked.p99, gathered.p99);
+        EXPECT_EQ(masked.histogram.spacing, gathered.histogram.spacing);
+        EXPECT_EQ(masked.histogram.lo, gathered.histogram.lo);
+        EXPECT_EQ(masked.histogram.hi, gathered.histogram.hi);
+        EXPECT_EQ(masked.histogram.weightFraction, gathered.histogram.weightFraction);
+        if (!keptValues.empty()) EXPECT_EQ(masked.p50, recountedPercentile(keptValues, keptWeights, 0.50));
+      }
+    }
 }
 
 // Most items in one bucket of the first digit, which then splits only the exponents (an angle
@@ -523,7 +563,7 @@ TEST(Overlap, ATilingHasNoneExactly) {
   o.placement.fit = param::Fit::None;
   for (int n : {4, 7}) {
     const param::Projection p = param::project(meshes::planeGrid(n, n, 1.0, 1.0), o);
-    const std::vector<FaceDistortion> faces = measureFaces(p.mesh, p.uv);
+    const FaceMeasures faces = measureFaces(p.mesh, p.uv);
     for (int resolution : {10, 1024}) {
       const Overlap overlap = measureOverlap(p.uv, faces, resolution);
       EXPECT_EQ(overlap.overlappedPixels, 0u) << n << " " << resolution;

@@ -25,7 +25,7 @@ TEST(TriplanarStretch, AFaceIsStretchedByOneOverItsDominantNormalComponent) {
   }
   UvMap marked = projection.uv;
   markTurnedAwayFaces(mesh, options, marked, 1);
-  const std::vector<FaceDistortion> faces = measureFaces(mesh, marked, 1);
+  const FaceMeasures faces = measureFaces(mesh, marked, 1);
   std::size_t backfacing = 0, mirroredByDesign = 0;
   for (std::size_t f = 0; f < mesh.faceCount(); ++f) {
     const Triangle& t = mesh.triangles[f];
@@ -41,7 +41,7 @@ TEST(TriplanarStretch, AFaceIsStretchedByOneOverItsDominantNormalComponent) {
   EXPECT_EQ(backfacing, mirroredByDesign);  // an independent recount: the faces turned from their projection
   EXPECT_GT(backfacing, 0u);
   // Without the per-face directions the same faces are flipped: the directions are what decide it.
-  const std::vector<FaceDistortion> plain = measureFaces(mesh, projection.uv, 1);
+  const FaceMeasures plain = measureFaces(mesh, projection.uv, 1);
   std::size_t flipped = 0;
   for (const FaceDistortion& face : plain) flipped += face.status == FaceStatus::Flipped;
   EXPECT_EQ(flipped, std::min(backfacing, mesh.faceCount() - backfacing));

@@ -211,7 +211,7 @@ TEST(CoverageCounts, CountsEachCentreByTheFacesCoveringIt) {
   UvMap uv;
   for (const Vec3& p : mesh.positions) uv.uv.push_back(p.head<2>());
   uv.faceFlags.assign(2, kFaceOk);
-  const std::vector<analysis::FaceDistortion> faces = analysis::measureFaces(mesh, uv);
+  const analysis::FaceMeasures faces = analysis::measureFaces(mesh, uv);
   const analysis::UvGrid grid{Eigen::AlignedBox2d(Vec2(0, 0), Vec2(2, 2)), 8};
   const std::vector<std::uint8_t> counts = analysis::coverageCounts(uv, faces, grid);
   auto at = [&](int x, int y) { return int(counts[std::size_t(y * 8 + x)]); };
