@@ -8,6 +8,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "analysis/same_statistics.h"
 #include "core/error.h"
 #include "meshes/generators.h"
 #include "param/projector.h"
@@ -351,20 +352,8 @@ TEST(Judgement, NothingThatPassesOnRealLookingMeshesHasAMirroredFaceOrAFarUv) {
 }
 
 // Every part of a judgement is the same whatever the thread count: the faces, counted and summed in
-// fixed chunks; the bounds and the ok faces' areas, gathered in chunks on threads; the summary's
-// seven tasks, run side by side. The knot has 3 chunks of faces, flipped and stretched faces, seams.
-void expectSameStatistics(const Statistics& a, const Statistics& b) {
-  EXPECT_EQ(a.totalWeight, b.totalWeight);
-  EXPECT_EQ(a.mean, b.mean);
-  EXPECT_EQ(a.p10, b.p10);
-  EXPECT_EQ(a.p50, b.p50);
-  EXPECT_EQ(a.p90, b.p90);
-  EXPECT_EQ(a.p99, b.p99);
-  EXPECT_EQ(a.min, b.min);
-  EXPECT_EQ(a.max, b.max);
-  EXPECT_EQ(a.histogram.weightFraction, b.histogram.weightFraction);
-}
-
+// fixed chunks; the bounds and the ok mask, in chunks on threads; the seams beside the faces and the
+// summary's six tasks, run side by side. The knot has 3 chunks of faces, flipped and stretched faces, seams.
 TEST(Judgement, DoesNotDependOnTheThreadCount) {
   const Mesh knot = meshes::torusKnot(2, 3, 1200, 60);
   ASSERT_GT(knot.faceCount(), std::size_t(2) << 16);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "analysis/layout.h"
+#include "analysis/same_statistics.h"
 #include "meshes/generators.h"
 #include "param/projector.h"
 
@@ -317,18 +318,7 @@ TEST(WeightedStatistics, MaskedItemsGiveTheStatisticsOfTheIncludedOnesGathered) 
         SCOPED_TRACE(std::to_string(n) + " items, " + std::to_string(keptValues.size()) + " kept");
         const Statistics masked = weightedStatistics(values.data(), weights.data(), included.data(), n, spacing);
         const Statistics gathered = weightedStatistics(keptValues, keptWeights, spacing);
-        EXPECT_EQ(masked.totalWeight, gathered.totalWeight);
-        EXPECT_EQ(masked.mean, gathered.mean);
-        EXPECT_EQ(masked.min, gathered.min);
-        EXPECT_EQ(masked.max, gathered.max);
-        EXPECT_EQ(masked.p10, gathered.p10);
-        EXPECT_EQ(masked.p50, gathered.p50);
-        EXPECT_EQ(masked.p90, gathered.p90);
-        EXPECT_EQ(masked.p99, gathered.p99);
-        EXPECT_EQ(masked.histogram.spacing, gathered.histogram.spacing);
-        EXPECT_EQ(masked.histogram.lo, gathered.histogram.lo);
-        EXPECT_EQ(masked.histogram.hi, gathered.histogram.hi);
-        EXPECT_EQ(masked.histogram.weightFraction, gathered.histogram.weightFraction);
+        expectSameStatistics(masked, gathered);
         if (!keptValues.empty()) EXPECT_EQ(masked.p50, recountedPercentile(keptValues, keptWeights, 0.50));
       }
     }
