@@ -425,11 +425,6 @@ Statistics weightedStatistics(const double* values, const double* weights, const
   return s;
 }
 
-Statistics weightedStatistics(const double* values, const double* weights, std::size_t count, BinSpacing spacing,
-                              int bins) {
-  return weightedStatistics(values, weights, nullptr, count, spacing, bins);
-}
-
 Statistics weightedStatistics(const std::vector<double>& values, const std::vector<double>& weights,
                               BinSpacing spacing, int bins) {
   UVTK_CHECK(values.size() == weights.size());

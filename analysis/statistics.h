@@ -32,22 +32,18 @@ struct Statistics {
   Histogram histogram;  // `bins` bins over [min, max]; all the weight in bin 0 when min = max
 };
 
-// Statistics of values[i] with weights[i] >= 0, i < count, in any order (read, not reordered):
-// finite values, entries of zero weight counting for min and max. No items give zeros and empty
-// bins. Precondition: bins >= 1. Log2 spacing where every value is > 0, else linear (the histogram's
-// spacing says which). The mean, the total and the
-// histogram are summed in the items' order; the percentiles are exact (their running weights
-// summed without rounding).
-Statistics weightedStatistics(const double* values, const double* weights, std::size_t count, BinSpacing spacing,
-                              int bins = 32);
-
-// The same over the items i < size with included[i] != 0 (null: every item), as if those had been
-// gathered in their order into arrays of their own: a caller whose values and weights lie in
-// per-face arrays skips the faces that do not enter without copying the others.
+// Statistics of values[i] with weights[i] >= 0 over the items i < size with included[i] != 0 (null:
+// every item), in any order (read, not reordered): finite values, entries of zero weight counting
+// for min and max; the items left out are not read, as if the others had been gathered in their
+// order into arrays of their own (a caller whose values and weights lie in per-face arrays skips
+// the faces that do not enter without copying the others). No items give zeros and empty bins.
+// Precondition: bins >= 1. Log2 spacing where every value is > 0, else linear (the histogram's
+// spacing says which). The mean, the total and the histogram are summed in the items' order; the
+// percentiles are exact (their running weights summed without rounding).
 Statistics weightedStatistics(const double* values, const double* weights, const std::uint8_t* included,
                               std::size_t size, BinSpacing spacing, int bins = 32);
 
-// The same for values[i] with weights[i]. Precondition: equal sizes.
+// The same for every values[i] with weights[i]. Precondition: equal sizes.
 Statistics weightedStatistics(const std::vector<double>& values, const std::vector<double>& weights,
                               BinSpacing spacing, int bins = 32);
 
