@@ -1,6 +1,10 @@
 # Third-party packages, all from Debian. Their headers stay inside .cpp files.
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(OpenMesh REQUIRED)
+# zlib linked from its static archive (Debian builds it position-independent): as a shared library
+# it cost every process 0.06 ms of loading at start (docs/benchmarks.md, "Start-up"). Not GMP:
+# Debian's libgmp.a has objects that cannot go into a shared library (libuvtk, the Python module).
+set(ZLIB_USE_STATIC_LIBS ON)
 find_package(CGAL REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)

@@ -17,6 +17,11 @@ void atan2Block(MathMode math, const double* y, const double* x, double* out, st
 // References are computed in long double with libm's atan2l whatever the mode.
 void atan2Block(MathMode math, const long double* y, const long double* x, long double* out, std::size_t n);
 
+// Loads what atan2Block calls in `math` (SLEEF, for the fast modes: opened on first use), so that
+// its later calls allocate nothing and cannot fail; throws std::runtime_error when SLEEF cannot be
+// loaded. A projector does this when it is made.
+void prepareAtan2(MathMode math);
+
 // The instruction set SLEEF runs on here: "avx512f", "avx2" or "sse2".
 const char* fastMathInstructionSet();
 

@@ -7,11 +7,11 @@
 namespace uvtk::param {
 
 void atan2FloatAvx512(const float* y, const float* x, float* out, std::size_t n, bool oneUlp) {
-  sleefAtan2Block<float, __m512>(y, x, out, n, oneUlp ? Sleef_atan2f16_u10avx512f : Sleef_atan2f16_u35avx512f);
+  sleefAtan2Block<float, __m512>(y, x, out, n, oneUlp ? UVTK_SLEEF(Sleef_atan2f16_u10avx512f) : UVTK_SLEEF(Sleef_atan2f16_u35avx512f));
 }
 
 void atan2DoubleAvx512(const double* y, const double* x, double* out, std::size_t n, bool oneUlp) {
-  sleefAtan2Block<double, __m512d>(y, x, out, n, oneUlp ? Sleef_atan2d8_u10avx512f : Sleef_atan2d8_u35avx512f);
+  sleefAtan2Block<double, __m512d>(y, x, out, n, oneUlp ? UVTK_SLEEF(Sleef_atan2d8_u10avx512f) : UVTK_SLEEF(Sleef_atan2d8_u35avx512f));
 }
 
 }  // namespace uvtk::param

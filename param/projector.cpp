@@ -1,5 +1,7 @@
 #include "param/projector.h"
 
+#include "param/batch_atan2.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -489,6 +491,7 @@ Projector::Projector(const ProjectorOptions& o, const Affine3& localFromObject,
     : options_(o), localFromObject_(localFromObject), sensible_(sensible) {
   checkOptions(o);
   refuseCharts(o, "a projector of points");
+  prepareAtan2(o.arithmetic.math);
   const CapTest caps = CapTest::of(localFromObject, o.capAngleDegrees);
   capAxis_ = caps.axis;
   capCosLimit_ = caps.cosLimit;

@@ -9,6 +9,19 @@
 
 namespace uvtk::param {
 
+// The address of SLEEF's function `name`, from libsleef opened on the first --math fast rather than
+// linked: linked, the library cost every process 0.14 ms at start whether or not it took an
+// arctangent (docs/benchmarks.md, "Start-up"). Throws std::runtime_error, naming the library, when
+// it cannot be opened or has no such function.
+void* sleefSymbol(const char* name);
+
+// SLEEF's `function` (as sleef.h declares it), looked up once per use site.
+#define UVTK_SLEEF(function)                                                                           \
+  ([] {                                                                                                \
+    static const auto address = reinterpret_cast<decltype(&function)>(::uvtk::param::sleefSymbol(#function)); \
+    return address;                                                                                    \
+  }())
+
 // out[i] = atan2(y[i], x[i]) by `atan2` on vectors V of T: whole vectors, then the tail through a
 // zero-padded vector.
 template <class T, class V, class F>

@@ -3,13 +3,14 @@ standard library, so that `pip install .` and `pip wheel .` work offline, with o
 isolation (docs/python.md, "Installing with pip").
 
 It builds the library, the program and the Python package with CMake (the targets below) in a
-build directory, installs CMake's `python` component (libuvtk, libuvtk_point, the image plugin,
+build directory, installs CMake's `python` component (libuvtk, libuvtk_point, the image and benchmark plugins,
 the `uvtk` program and the package uvtk/) into a staging folder, and packs a wheel:
 
     uvtk/__init__.py, _uvtk.cpython-*.so, __init__.pyi, py.typed, ...   the package
     uvtk/lib/libuvtk.so.*, libuvtk_point.so.*    found by _uvtk through its RPATH $ORIGIN/lib
     uvtk/lib/uvtk/libuvtk_image_oiio.so          found by the library from its own folder
-    uvtk/bin/uvtk                                the program (its plugin: ../lib/uvtk from bin/)
+    uvtk/lib/uvtk/libuvtk_benchmark_runner.so    found by the program (uvtk bench) from bin/
+    uvtk/bin/uvtk                                the program (its plugins: ../lib/uvtk from bin/)
     uvtk-V.data/scripts/uvtk                     on the environment's PATH: runs uvtk/bin/uvtk
 
 The build directory: config setting `build-dir` (pip --config-settings build-dir=PATH), else the
@@ -29,7 +30,7 @@ import tempfile
 import zipfile
 
 SOURCE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-TARGETS = ["uvtk", "uvtk_python", "uvtk_library", "uvtk_point", "uvtk_image_oiio"]
+TARGETS = ["uvtk", "uvtk_python", "uvtk_library", "uvtk_point", "uvtk_image_oiio", "uvtk_benchmark_runner"]
 NAME = "uvtk"
 
 

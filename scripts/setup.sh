@@ -70,5 +70,5 @@ if [ ! -f "$build_dir/build.ninja" ]; then
   fi
 fi
 targets=()
-[ "${2:-}" = "--program" ] && targets=(--target uvtk uvtk_image_oiio)
+[ "${2:-}" = "--program" ] && targets=(--target uvtk uvtk_image_oiio uvtk_benchmark_runner)
 cmake --build "$build_dir" -j "$(nproc)" "${targets[@]}" >&2

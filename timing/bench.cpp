@@ -2,8 +2,6 @@
 
 #include "core/progress.h"
 
-#include <benchmark/benchmark.h>
-
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -19,6 +17,7 @@
 
 #include "core/error.h"
 #include "core/markup.h"
+#include "core/plugin.h"
 #include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "io/mesh_format.h"
@@ -35,6 +34,7 @@
 #include "param/uv_kernel.h"
 #include "param/reference.h"
 #include "peers/assimp_peer.h"
+#include "timing/benchmark_runner.h"
 #include "views/pareto.h"
 #include "views/pareto_svg.h"
 #include "io/json_text.h"
@@ -45,32 +45,23 @@ using namespace uvtk::inspect;
 
 namespace {
 
-// Collects Google Benchmark's runs: seconds of wall time per iteration, by benchmark name.
-class CollectingReporter : public benchmark::BenchmarkReporter {
- public:
-  bool ReportContext(const Context&) override { return true; }
-  void ReportRuns(const std::vector<Run>& runs) override {
-    for (const Run& run : runs)
-      if (!run.error_occurred && run.iterations > 0)
-        seconds_.emplace_back(run.benchmark_name(), run.real_accumulated_time / double(run.iterations));
-  }
-  // Google Benchmark appends the run's settings to the name ("map/3/min_time:0.300/real_time").
-  double secondsOf(const std::string& name) const {
-    for (const auto& [n, s] : seconds_)
-      if (n == name || n.rfind(name + "/", 0) == 0) return s;
-    throw std::logic_error("benchmark " + name + " did not run");
-  }
-
- private:
-  std::vector<std::pair<std::string, double>> seconds_;
-};
-
-// Runs the registered benchmarks (each for at least `minTime` seconds of wall time) and clears them.
-CollectingReporter runBenchmarks() {
-  CollectingReporter reporter;
-  benchmark::RunSpecifiedBenchmarks(&reporter);
-  benchmark::ClearRegisteredBenchmarks();
-  return reporter;
+// The benchmark plugin, opened on the first timing.
+const runner::Functions& benchmarkRunner() {
+  static const runner::Functions* const functions = [] {
+    const std::string path = pluginPath("UVTK_BENCHMARK_PLUGIN", UVTK_BENCHMARK_PLUGIN_INSTALLED,
+                                        UVTK_BENCHMARK_PLUGIN_BUILT, UVTK_BUILD_DIR);
+    std::string error;
+    using Entry = const runner::Functions* (*)();
+    const auto entry = reinterpret_cast<Entry>(openPluginEntry(path, UVTK_BENCHMARK_RUNNER_ENTRY, "benchmark plugin", error));
+    if (!entry) throw std::runtime_error(error);
+    const runner::Functions* loaded = entry();
+    if (loaded->version != runner::kVersion)
+      throw std::runtime_error("cannot load the benchmark plugin: " + path + " is version " +
+                               std::to_string(loaded->version) + ", this program needs version " +
+                               std::to_string(runner::kVersion));
+    return loaded;
+  }();
+  return *functions;
 }
 
 // ---- Mapping ----
@@ -87,6 +78,7 @@ std::vector<nlohmann::json> benchMapping(const BenchOptions& a, const Mesh& mesh
   const std::vector<MathMode>& maths = a.maths;
   const std::vector<int>& threadCounts = a.threads;
   std::vector<MappingCase> cases;
+  std::vector<runner::TimedCase> timed;  // one per case
   // One output per precision for every configuration (they run one after another), paged in by the
   // error run before timing.
   param::UvArrays<double> doubleUvs;
@@ -120,23 +112,21 @@ std::vector<nlohmann::json> benchMapping(const BenchOptions& a, const Mesh& mesh
           MappingCase c{options, threads, "map/" + std::to_string(cases.size()), error};
           cases.push_back(c);
           // The narrow kernel (param/uv_kernel.h): the same bits as `out`, whose error is above.
-          const auto time = [options, frame, threads](auto points, auto& uvs) {  // points: shared, outlives the loop
-            return [points, &uvs, options, frame, threads](benchmark::State& state) {
-              for (auto _ : state) {
-                param::mapUvs(options, frame, *points, uvs, threads);
-                benchmark::DoNotOptimize(uvs.u.data());
-              }
-            };
+          const auto iteration = [options, frame, threads](auto points, auto& uvs) {  // points: shared, outlives the loop
+            return std::function<const void*()>([points, &uvs, options, frame, threads] {
+              param::mapUvs(options, frame, *points, uvs, threads);
+              return static_cast<const void*>(uvs.u.data());
+            });
           };
-          auto* run = precision == Precision::Float
-                          ? benchmark::RegisterBenchmark(c.name.c_str(), time(floatPoints, floatUvs))
-                          : benchmark::RegisterBenchmark(c.name.c_str(), time(doublePoints, doubleUvs));
-          run->MinTime(a.minTime)->UseRealTime();
+          timed.push_back({c.name,
+                           precision == Precision::Float ? iteration(floatPoints, floatUvs)
+                                                         : iteration(doublePoints, doubleUvs),
+                           a.minTime});
         }
       }
   }
   if (!quiet()) std::fprintf(stderr, "uvtk bench: timing %zu mapping configurations ...\n", cases.size());
-  const CollectingReporter timings = runBenchmarks();
+  const std::vector<double> seconds = benchmarkRunner().run(timed);
 
   std::vector<nlohmann::json> records;
   const double vertices = double(mesh.vertexCount());
@@ -149,7 +139,7 @@ std::vector<nlohmann::json> benchMapping(const BenchOptions& a, const Mesh& mesh
                        {"math", param::mathName(o.arithmetic.math)},
                        {"threads", c.threads},
                        {"vertices", mesh.vertexCount()},
-                       {"ns_per_vertex", timings.secondsOf(c.name) * 1e9 / vertices},
+                       {"ns_per_vertex", seconds[std::size_t(&c - cases.data())] * 1e9 / vertices},
                        {"max_err_ulp", c.error.maxUlp},
                        {"p99_err_ulp", c.error.p99Ulp},
                        {"max_err_texels", c.error.maxUv * a.textureWidth},
@@ -304,6 +294,7 @@ std::vector<nlohmann::json> benchRendering(const BenchOptions& a, const Mesh& me
     double rmse = 0, maxError = 0;
   };
   std::vector<RenderCase> cases;
+  std::vector<runner::TimedCase> timed;  // one per case
   std::vector<std::unique_ptr<render::RenderOptions>> optionStore;
   auto add = [&](const std::string& uv, render::Filter filter, int spp, int threads) {
     auto options = std::make_unique<render::RenderOptions>(base);
@@ -314,14 +305,12 @@ std::vector<nlohmann::json> benchRendering(const BenchOptions& a, const Mesh& me
     const render::TexcoordSource* source = uv == "per-pixel" ? &perPixel : &perVertex;
     const render::RenderOptions* o = options.get();
     optionStore.push_back(std::move(options));
-    benchmark::RegisterBenchmark(cases.back().name.c_str(),
-                                 [&mapped, source, o](benchmark::State& state) {
-                                   for (auto _ : state)
-                                     benchmark::DoNotOptimize(render::render(mapped.mesh, *source, *o));
-                                 })
-        ->MinTime(a.minTime)
-        ->UseRealTime()
-        ->Unit(benchmark::kMillisecond);
+    timed.push_back({cases.back().name,
+                     [&mapped, source, o, frame = std::make_shared<render::Rendering>()] {
+                       *frame = render::render(mapped.mesh, *source, *o);
+                       return static_cast<const void*>(frame.get());
+                     },
+                     a.minTime});
   };
   // Per-vertex UVs (the default): every row interpolates them, and one row per thread count
   // evaluates them per pixel to show what exact UVs cost. --uv per-pixel: every row evaluates them,
@@ -362,7 +351,7 @@ std::vector<nlohmann::json> benchRendering(const BenchOptions& a, const Mesh& me
   }
 
   if (!quiet()) std::fprintf(stderr, "uvtk bench: timing %zu rendering configurations ...\n", cases.size());
-  const CollectingReporter timings = runBenchmarks();
+  const std::vector<double> seconds = benchmarkRunner().run(timed);
   const Vec3 eye = camera.eye();
   std::vector<nlohmann::json> records;
   for (const RenderCase& c : cases) {
@@ -386,7 +375,7 @@ std::vector<nlohmann::json> benchRendering(const BenchOptions& a, const Mesh& me
                        {"uv", c.uv},
                        {"spp", c.spp},
                        {"threads", c.threads},
-                       {"ms_per_frame", timings.secondsOf(c.name) * 1e3},
+                       {"ms_per_frame", seconds[std::size_t(&c - cases.data())] * 1e3},
                        {"rmse", c.rmse},
                        {"max_err", c.maxError},
                        {"uv_err_max_texels", perPixelUv ? 0.0 : uvError.max},
@@ -666,10 +655,6 @@ BenchResult measureBench(const BenchOptions& a) {
     mesh = io::readMesh(a.mesh).mesh;
     meshName = a.mesh;
   }
-  char* argv0 = const_cast<char*>("uvtk bench");
-  int argc = 1;
-  benchmark::Initialize(&argc, &argv0);
-
   for (nlohmann::json& r : benchMapping(a, mesh)) records.push_back(std::move(r));
   for (nlohmann::json& r : benchPeers(a, mesh)) records.push_back(std::move(r));
   if (a.rendering) {
