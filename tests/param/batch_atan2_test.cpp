@@ -3,8 +3,12 @@
 #include "param/batch_atan2.h"
 
 #include <gtest/gtest.h>
+#include <link.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
@@ -82,6 +86,41 @@ TEST(Atan2Block, ALongDoubleBlockIsAtan2l) {
   long double angle[3];
   atan2Block(MathMode::Fast, y, x, angle, 3);
   for (int i = 0; i < 3; ++i) EXPECT_EQ(angle[i], std::atan2(y[i], x[i]));
+}
+
+// SLEEF is opened on the first fast arctangent, not linked: a process that takes only libm's
+// never loads it. Each check in a fresh process (a "threadsafe" death test re-executes this
+// program), since the other tests load it.
+bool sleefLoaded() {
+  bool found = false;
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, std::size_t, void* data) {
+        if (info->dlpi_name && std::strstr(info->dlpi_name, "libsleef")) *static_cast<bool*>(data) = true;
+        return 0;
+      },
+      &found);
+  std::fprintf(stderr, "libsleef: %s\n", found ? "loaded" : "not loaded");
+  return found;
+}
+
+// Exit statuses of the checks' child processes: 0 when SLEEF is loaded exactly as expected.
+[[noreturn]] void exitAfterExactArctangents() {
+  const double y[] = {1.0, -2.0}, x[] = {0.5, 3.0};
+  double angle[2];
+  atan2Block(MathMode::Exact, y, x, angle, 2);
+  prepareAtan2(MathMode::Exact);
+  std::exit(!sleefLoaded() && angle[0] == std::atan2(1.0, 0.5) ? 0 : 1);
+}
+
+[[noreturn]] void exitAfterPreparingFastArctangents() {
+  prepareAtan2(MathMode::Fast);
+  std::exit(sleefLoaded() ? 0 : 1);
+}
+
+TEST(Atan2Loading, ExactArctangentsDoNotLoadSleefAndFastOnesDo) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(exitAfterExactArctangents(), ::testing::ExitedWithCode(0), "libsleef: not loaded");
+  EXPECT_EXIT(exitAfterPreparingFastArctangents(), ::testing::ExitedWithCode(0), "libsleef: loaded");
 }
 
 }  // namespace
