@@ -128,6 +128,7 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   // published: `outputs` is published only at the end).
   const bool writeWhileJudging = !settings.density && mapped.mesh.faceCount() < kWriteWhileJudgingFaces;
   std::future<void> writing;
+  if (writeWhileJudging) write.threads = 1;  // beside the judgement, which has the cores
   if (writeWhileJudging) writing = std::async(std::launch::async, writeOutput);
   clock.start(writeWhileJudging ? "judging and writing" : "judging", std::to_string(mapped.mesh.faceCount()) + " faces");
   analysis::Judgement judgement = mapped.judge(settings.thresholds, settings.overlapResolution, settings.threads, settings.textureSize);
