@@ -220,15 +220,17 @@ FaceMeasures measureFaces(const Mesh& mesh, const UvMap& uv, const MeasureScales
     return std::array<Vec2, 3>{uv.uv[3 * f] * uvScale, uv.uv[3 * f + 1] * uvScale, uv.uv[3 * f + 2] * uvScale};
   };
 
-  // Faces in fixed chunks, so that the vote adds up in the same order whatever the thread count.
-  constexpr std::size_t kChunk = kFacesPerChunk;
-  const int chunks = int((faceCount + kChunk - 1) / kChunk);
-  const auto forEachChunk = [&](auto&& work) {
-    parallelFor(chunks, threads, [&](int c) {
-      const std::size_t begin = std::size_t(c) * kChunk;
-      work(c, begin, std::min(faceCount, begin + kChunk));
+  // The faces measured in runs of kRun shared out to the threads (a 10 k-face mesh on every core);
+  // the vote added up in fixed chunks of kFacesPerChunk, in face order, whatever the thread count.
+  constexpr std::size_t kRun = 4096;
+  const auto forEachRun = [&](auto&& work) {
+    parallelFor(int((faceCount + kRun - 1) / kRun), threads, [&](int r) {
+      const std::size_t begin = std::size_t(r) * kRun;
+      work(begin, std::min(faceCount, begin + kRun));
     });
   };
+  constexpr std::size_t kChunk = kFacesPerChunk;
+  const int chunks = int((faceCount + kChunk - 1) / kChunk);
 
   // First pass: areas, and the statuses that need no mesh-wide decision.
   FaceMeasures faces(faceCount, threads);
@@ -237,8 +239,7 @@ FaceMeasures measureFaces(const Mesh& mesh, const UvMap& uv, const MeasureScales
   double *const sigmaMax = faces.sigmaMax.data(), *const sigmaMin = faces.sigmaMin.data();
   enum : std::uint8_t { kCounterClockwise = 1, kClockwise = 2, kTurnedAway = 4 };
   std::vector<std::uint8_t> orientation(faceCount, 0);  // of the ok faces, for the second pass
-  std::vector<double> votes(std::size_t(chunks), 0.0);  // per chunk, 3D area voting for counter-clockwise UV winding minus area against it
-  forEachChunk([&](int c, std::size_t begin, std::size_t end) {
+  forEachRun([&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
       const std::array<Vec2, 3> t = uvCorners(f);
       const TriangleAreas a = triangleAreas(edges(f), t[0], t[1], t[2]);
@@ -255,18 +256,28 @@ FaceMeasures measureFaces(const Mesh& mesh, const UvMap& uv, const MeasureScales
       } else {
         status[f] = FaceStatus::Ok;  // until the majority winding is known
         const bool away = uv.faceHas(f, kFaceTurnedAway);  // mirrored by design
-        votes[std::size_t(c)] += (a.signedAreaUv > 0.0) != away ? a.area3d : -a.area3d;
         orientation[f] = std::uint8_t((a.signedAreaUv > 0.0 ? kCounterClockwise : 0) |
                                       (a.signedAreaUv < 0.0 ? kClockwise : 0) | (away ? kTurnedAway : 0));
       }
     }
+  });
+  // Per chunk, the 3D area of the ok faces voting for counter-clockwise UV winding minus the area
+  // against it (a face turned away votes the other way: it is mirrored by design).
+  std::vector<double> votes(std::size_t(chunks), 0.0);
+  parallelFor(chunks, threads, [&](int c) {
+    const std::size_t begin = std::size_t(c) * kChunk;
+    for (std::size_t f = begin; f < std::min(faceCount, begin + kChunk); ++f)
+      if (status[f] == FaceStatus::Ok)
+        votes[std::size_t(c)] += ((orientation[f] & kCounterClockwise) != 0) != ((orientation[f] & kTurnedAway) != 0)
+                                     ? area3d[f]
+                                     : -area3d[f];
   });
   double vote = 0.0;
   for (double v : votes) vote += v;
   const double majority = vote >= 0.0 ? 1.0 : -1.0;
 
   // Second pass: pole and mirrored faces, and the measures of every face with a Jacobian.
-  forEachChunk([&](int, std::size_t begin, std::size_t end) {
+  forEachRun([&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
       if (status[f] != FaceStatus::Ok) continue;
       const std::array<Vec2, 3> t = uvCorners(f);

@@ -4,7 +4,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <future>
 #include <limits>
 
 #include "analysis/overlap.h"
@@ -259,9 +258,7 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
   // The seam edges need no per-face measure: classified on a thread of their own while the faces
   // are measured, so that their half-edge index (48 MB at 4 M faces) is given back before the
   // summary's measures take their memory.
-  std::future<SeamEdges> seams =
-      std::async(threadCount(options.threads) > 1 ? std::launch::async : std::launch::deferred,
-                 [&] { return classifySeamEdges(mesh, uv); });
+  WorkAside seams([&] { return classifySeamEdges(mesh, uv); }, threadCount(options.threads) > 1);
   j.faces = measureFaces(mesh, uv, scales, options.threads);
   j.summary = summarize(mesh, uv, j.faces, scales, seams.get(), options.overlapResolution, options.threads,
                         options.textureSize);

@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <future>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -123,13 +122,13 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
   // small mesh's judging and writing each run mostly on one thread (their loops share out chunks
   // of kFacesPerChunk faces), so its file is written on another while it is judged: the 10 k-face sphere
   // 13.1 to 11.8 ms. A large mesh's stages already fill every core; together they took as long
-  // and 35 MB more (the 4 M-face lat-long sphere, docs/benchmarks.md). The future's destructor
+  // and 35 MB more (the 4 M-face lat-long sphere, docs/benchmarks.md). WorkAside's destructor
   // waits for the writing, so an exception from the judgement leaves nothing running (and nothing
   // published: `outputs` is published only at the end).
   const bool writeWhileJudging = !settings.density && mapped.mesh.faceCount() < kWriteWhileJudgingFaces;
-  std::future<void> writing;
   if (writeWhileJudging) write.threads = 1;  // beside the judgement, which has the cores
-  if (writeWhileJudging) writing = std::async(std::launch::async, writeOutput);
+  std::optional<WorkAside<decltype(writeOutput)>> writing;
+  if (writeWhileJudging) writing.emplace(writeOutput, true);
   clock.start(writeWhileJudging ? "judging and writing" : "judging", std::to_string(mapped.mesh.faceCount()) + " faces");
   analysis::Judgement judgement = mapped.judge(settings.thresholds, settings.overlapResolution, settings.threads, settings.textureSize);
   double densityFactor = 1.0;
@@ -151,8 +150,8 @@ MeshResult mapMesh(const MeshPaths& paths, const MapJob& job, bool showStages) {
                         io::collapsesInGltfTexcoords(mapped.uv.uv[3 * f], mapped.uv.uv[3 * f + 1], mapped.uv.uv[3 * f + 2]);
   judgement.faces = {};  // every face's measures: not needed while writing
 
-  if (writing.valid()) {
-    writing.get();
+  if (writing) {
+    writing->get();
   } else {
     clock.start("writing", paths.output);
     writeOutput();
