@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 
 #include <Eigen/Geometry>
 
 #include "core/cancel.h"
+#include "core/parallel.h"
 #include "core/error.h"
 
 namespace uvtk::analysis {
@@ -150,7 +153,8 @@ class GridSnap {
   double subpixels_;
 };
 
-// Calls visit(y, x0, x1) for the rows y in [from, to] of `face` with covered centres x0..x1.
+// Calls visit(y, x0, x1) for the rows y in [from, to] of `face` with covered centres x0..x1; a
+// visit that returns bool ends the walk by returning true.
 // Each edge ab keeps the centres c of a row where its edge function (b - a) x (c - a), linear in
 // c.x = 256 x + 128, is positive (or zero on an edge that owns them): N - 256 dy x >= 0 with
 // N = K - t, solved for x exactly in integers; N grows by 256 dx a row, so each bound
@@ -168,7 +172,12 @@ void forEachRowSpan(const SnappedFace& face, std::int64_t from, std::int64_t to,
       bound.limit(x0, x1);
       bound.nextRow();
     }
-    if (x0 <= x1) visit(static_cast<int>(y), static_cast<int>(x0), static_cast<int>(x1));
+    if (x0 > x1) continue;
+    if constexpr (std::is_same_v<decltype(visit(0, 0, 0)), bool>) {
+      if (visit(static_cast<int>(y), static_cast<int>(x0), static_cast<int>(x1))) return;
+    } else {
+      visit(static_cast<int>(y), static_cast<int>(x0), static_cast<int>(x1));
+    }
   }
 }
 
@@ -239,7 +248,7 @@ int overlapResolution(const UvMap& uv, const FaceMeasures& faces, const UvGrid& 
   return resolution;
 }
 
-Overlap measureOverlap(const UvMap& uv, const FaceMeasures& faces, int resolution) {
+Overlap measureOverlap(const UvMap& uv, const FaceMeasures& faces, int resolution, int threads) {
   UVTK_CHECK(uv.uv.size() == 3 * faces.size());
   UVTK_CHECK(resolution >= kOverlapFollowsMesh && resolution <= 65536);
   Overlap overlap;
@@ -274,22 +283,32 @@ Overlap measureOverlap(const UvMap& uv, const FaceMeasures& faces, int resolutio
   // Per row, the faces' spans as differences (+1 at x0, -1 after x1: one step a span, not a pixel),
   // then one pass that sums them into counts and keeps the running number of overlapped pixels, so
   // that whether a span holds one is a difference of two of them.
+  // The bands are shared out to the threads, each with its own buffers; a face's flag may be set
+  // from any of its bands (relaxed atomics: only ever set to 1), the counts are summed per band.
   const std::size_t stride = std::size_t(n) + 1;
-  std::vector<std::int32_t> difference(std::size_t(bandRows) * stride), overlappedBefore(std::size_t(bandRows) * stride);
-  std::vector<std::uint8_t> overlapped(faces.size(), 0);
-  for (std::size_t band = 0; band < bands; ++band) {
-    throwIfCancelled();  // a band of a big mesh's faces can take a second
+  struct Buffers {
+    std::vector<std::int32_t> difference, overlappedBefore;
+  };
+  std::vector<Buffers> buffers(std::size_t(workerCount(int(bands), threads)));
+  std::vector<std::atomic<std::uint8_t>> overlapped(faces.size());
+  std::vector<std::array<std::size_t, 2>> bandPixels(bands, {0, 0});  // covered, overlapped
+  parallelForWorkers(int(bands), threads, [&](int bandIndex, int worker) {
+    const std::size_t band = std::size_t(bandIndex);
+    std::vector<std::int32_t>& difference = buffers[std::size_t(worker)].difference;
+    std::vector<std::int32_t>& overlappedBefore = buffers[std::size_t(worker)].overlappedBefore;
+    difference.assign(std::size_t(bandRows) * stride, 0);
+    overlappedBefore.resize(std::size_t(bandRows) * stride);
     const std::int64_t from = std::int64_t(band) * bandRows, to = std::min(n - 1, from + bandRows - 1);
     const std::uint32_t* first = bandFaces.data() + bandStart[band];
     const std::uint32_t* last = bandFaces.data() + bandStart[band + 1];
-    std::fill(difference.begin(), difference.end(), 0);
+    SnappedFace spanned;
     for (const std::uint32_t* f = first; f != last; ++f)
-      if (snap.snap(uv, *f, face))
-        forEachRowSpan(face, from, to, [&](int y, int x0, int x1) {
+      if (snap.snap(uv, *f, spanned))
+        forEachRowSpan(spanned, from, to, [&](int y, int x0, int x1) {
           std::int32_t* row = &difference[std::size_t(y - from) * stride];
           ++row[x0], --row[x1 + 1];
         });
-    std::size_t overlappedHere = 0;
+    std::size_t coveredHere = 0, overlappedHere = 0;
     for (std::int64_t y = from; y <= to; ++y) {
       const std::int32_t* row = &difference[std::size_t(y - from) * stride];
       std::int32_t* before = &overlappedBefore[std::size_t(y - from) * stride];
@@ -297,23 +316,27 @@ Overlap measureOverlap(const UvMap& uv, const FaceMeasures& faces, int resolutio
       for (std::int64_t x = 0; x < n; ++x) {
         count += row[x];
         before[x] = overlappedSoFar;
-        overlap.coveredPixels += count >= 1;
+        coveredHere += count >= 1;
         overlappedSoFar += count >= 2;
       }
       before[n] = overlappedSoFar;
       overlappedHere += std::size_t(overlappedSoFar);
     }
-    overlap.overlappedPixels += overlappedHere;
-    if (overlappedHere == 0) continue;
+    bandPixels[band] = {coveredHere, overlappedHere};
+    if (overlappedHere == 0) return;
     // The faces that cover a centre another face covers too: a second pass over the band's spans.
     for (const std::uint32_t* f = first; f != last; ++f)
-      if (!overlapped[*f] && snap.snap(uv, *f, face))
-        forEachRowSpan(face, from, to, [&](int y, int x0, int x1) {
+      if (!overlapped[*f].load(std::memory_order_relaxed) && snap.snap(uv, *f, spanned))
+        forEachRowSpan(spanned, from, to, [&](int y, int x0, int x1) {
           const std::int32_t* before = &overlappedBefore[std::size_t(y - from) * stride];
-          overlapped[*f] |= before[x1 + 1] > before[x0];
+          if (before[x1 + 1] == before[x0]) return false;
+          overlapped[*f].store(1, std::memory_order_relaxed);
+          return true;  // found: its other rows cannot change that
         });
-  }
-  overlap.overlappedFaces = static_cast<std::size_t>(std::count(overlapped.begin(), overlapped.end(), std::uint8_t(1)));
+  });
+  for (const std::array<std::size_t, 2>& pixels : bandPixels)
+    overlap.coveredPixels += pixels[0], overlap.overlappedPixels += pixels[1];
+  for (const std::atomic<std::uint8_t>& flag : overlapped) overlap.overlappedFaces += flag.load(std::memory_order_relaxed);
   return overlap;
 }
 

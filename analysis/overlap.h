@@ -103,7 +103,8 @@ int followingOverlapResolution(std::size_t measuredFaces, double boxShare);
 
 // Covered and overlapped pixels from the coverageCounts of those faces over their own UV bounding
 // box at overlapResolution, and the faces that cover an overlapped pixel. Preconditions: `faces` from
-// measureFaces on the same UVs, resolution kOverlapFollowsMesh or in [1, 65536].
-Overlap measureOverlap(const UvMap& uv, const FaceMeasures& faces, int resolution = 1024);
+// measureFaces on the same UVs, resolution kOverlapFollowsMesh or in [1, 65536]. Bands of the grid's
+// rows are shared out to `threads` (core/parallel.h's count).
+Overlap measureOverlap(const UvMap& uv, const FaceMeasures& faces, int resolution = 1024, int threads = 1);
 
 }  // namespace uvtk::analysis

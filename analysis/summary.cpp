@@ -109,7 +109,7 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const FaceMeasures& faces, 
   s.density.exponent = std::ilogb(scales.length) - std::ilogb(scales.uv());
   // The longest first (the overlap raster), so that the last task to start is a short one.
   const std::function<void(std::vector<double>&)> measures[] = {
-      [&](std::vector<double>&) { s.overlap = measureOverlap(uv, faces, overlapResolution); },
+      [&](std::vector<double>&) { s.overlap = measureOverlap(uv, faces, overlapResolution, threads); },
       [&](std::vector<double>& values) {
         s.density.scaled = statistics(
             values, [&](const FaceDistortion& f) { return scaledTexelDensity(f, textureSize); }, BinSpacing::Log2);

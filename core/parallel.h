@@ -81,13 +81,14 @@ void parallelForWorkers(int count, int threads, F&& work) {
     return;
   }
   struct Shared {
+    Shared(F& w, int c) : work(w), count(c) {}
     F& work;
     int count;
     std::atomic<int> next{0};
     std::atomic<bool> failed{false};
     std::exception_ptr failure;
     std::mutex failureLock;
-  } shared{work, count};
+  } shared(work, count);
   const auto run = [](void* context, int worker) {
     Shared& s = *static_cast<Shared*>(context);
     try {

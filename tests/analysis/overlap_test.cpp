@@ -112,8 +112,9 @@ TEST(OverlapSpans, CoverExactlyThePixelCentresATestOfEachCentreFinds) {
   }
 }
 
-// measureOverlap draws a small mesh in bands of rows (16 at 1024); its figures are those of the whole
-// grid's coverageCounts, which the test above recounts centre by centre.
+// measureOverlap draws a small mesh in bands of rows (32 at 1024), on one thread or shared out to
+// several; its figures are those of the whole grid's coverageCounts, which the test above recounts
+// centre by centre.
 TEST(OverlapSpans, BandsGiveTheFiguresOfTheWholeGrid) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> anywhere(0.0, 1.0);
@@ -141,11 +142,13 @@ TEST(OverlapSpans, BandsGiveTheFiguresOfTheWholeGrid) {
     forEachCoveredPixel(l.uv, faces, grid, [&](std::size_t f, int x, int y) {
       if (counts[std::size_t(y) * 1024 + std::size_t(x)] >= 2) overlappedFaces.insert(f);
     });
-    const Overlap overlap = measureOverlap(l.uv, faces, 1024);
-    ASSERT_EQ(overlap.resolution, 1024);
-    EXPECT_EQ(overlap.coveredPixels, covered) << round;
-    EXPECT_EQ(overlap.overlappedPixels, overlapped) << round;
-    EXPECT_EQ(overlap.overlappedFaces, overlappedFaces.size()) << round;
+    for (int threads : {1, 2, 5}) {
+      const Overlap overlap = measureOverlap(l.uv, faces, 1024, threads);
+      ASSERT_EQ(overlap.resolution, 1024);
+      EXPECT_EQ(overlap.coveredPixels, covered) << round << ", " << threads << " threads";
+      EXPECT_EQ(overlap.overlappedPixels, overlapped) << round << ", " << threads << " threads";
+      EXPECT_EQ(overlap.overlappedFaces, overlappedFaces.size()) << round << ", " << threads << " threads";
+    }
     EXPECT_GT(overlapped, 0u);
   }
 }

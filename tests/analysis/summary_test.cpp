@@ -319,7 +319,9 @@ TEST(WeightedStatistics, MaskedItemsGiveTheStatisticsOfTheIncludedOnesGathered) 
         const Statistics masked = weightedStatistics(values.data(), weights.data(), included.data(), n, spacing);
         const Statistics gathered = weightedStatistics(keptValues, keptWeights, spacing);
         expectSameStatistics(masked, gathered);
-        if (!keptValues.empty()) EXPECT_EQ(masked.p50, recountedPercentile(keptValues, keptWeights, 0.50));
+        if (!keptValues.empty()) {
+          EXPECT_EQ(masked.p50, recountedPercentile(keptValues, keptWeights, 0.50));
+        }
       }
     }
 }
