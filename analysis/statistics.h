@@ -34,9 +34,10 @@ struct Statistics {
 
 // Statistics of values[i] with weights[i] >= 0 over the items i < size with included[i] != 0 (null:
 // every item), in any order (read, not reordered): finite values, entries of zero weight counting
-// for min and max; the items left out are not read, as if the others had been gathered in their
-// order into arrays of their own (a caller whose values and weights lie in per-face arrays skips
-// the faces that do not enter without copying the others). No items give zeros and empty bins.
+// for min and max; the items left out count as if the others had been gathered in their order into
+// arrays of their own (a caller whose values and weights lie in per-face arrays skips the faces
+// that do not enter without copying the others): their weights are not read, their values may be
+// any doubles, NaN too (a log2 histogram takes their logarithms along, a block at a time, unused). No items give zeros and empty bins.
 // Precondition: bins >= 1. Log2 spacing where every value is > 0, else linear (the histogram's
 // spacing says which). The mean, the total and the histogram are summed in the items' order; the
 // percentiles are exact (their running weights summed without rounding).

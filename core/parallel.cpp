@@ -2,7 +2,8 @@
 
 #include <pthread.h>
 
-#include <system_error>
+#include <algorithm>
+#include <exception>
 
 namespace uvtk::detail {
 namespace {
@@ -17,12 +18,15 @@ class Pool {
     (last_ ? last_->next : first_) = &p;
     last_ = &p;
     p.listed = true;
-    for (int missing = p.job.workers - p.taken - idle_; missing > 0 && threads_ < kMaxThreads; --missing) {
+    // No more threads than the cores (or than this job's own workers, when it asks for more): a
+    // loop's worker that waits for a core holds back the caller, which waits for every worker.
+    const int limit = std::min(kMaxThreads, std::max(threadCount(0), p.job.workers - 1));
+    for (int missing = p.job.workers - p.taken - idle_; missing > 0 && threads_ < limit; --missing) {
       try {
         std::thread(&Pool::serve, this).detach();
         ++threads_;
-      } catch (const std::system_error&) {
-        break;  // no thread to give: the poster's slot does the work
+      } catch (const std::exception&) {
+        break;  // no thread to give (std::system_error, or no memory for its state): the poster's slot does the work
       }
     }
     wake_.notify_all();

@@ -105,27 +105,35 @@ std::vector<SeamEdge> seamEdgesThrough(const Mesh& mesh, const UvMap& uv, const 
 
   // Two corners of a vertex differ beyond kUvTolerance times the layout's extent: UVs in object
   // units, 1e-3 or 1e3 wide, cut where a unit layout cuts (the wrap tests stay in units of the period).
-  Eigen::AlignedBox2d box;
-  for (std::size_t corner = 0; corner < uv.uv.size(); ++corner)
-    if (cornerValid(uv, corner) && uv.uv[corner].allFinite()) box.extend(uv.uv[corner]);
-  const double extent = box.isEmpty() ? 0.0 : box.sizes().maxCoeff();
+  // (The box in four locals: an Eigen box extended in a loop stayed in memory, a sixth of this pass.)
+  double lowU = INFINITY, lowV = INFINITY, highU = -INFINITY, highV = -INFINITY;
+  for (std::size_t corner = 0; corner < uv.uv.size(); ++corner) {
+    const Vec2& p = uv.uv[corner];
+    if (!cornerValid(uv, corner) || !p.allFinite()) continue;
+    lowU = std::min(lowU, p.x()), highU = std::max(highU, p.x());
+    lowV = std::min(lowV, p.y()), highV = std::max(highV, p.y());
+  }
+  const double extent = lowU > highU ? 0.0 : std::max(highU - lowU, highV - lowV);
   const double cutTolerance = kUvTolerance * (extent > 0.0 && std::isfinite(extent) ? extent : 1.0);
 
   const std::vector<std::uint32_t> halfEdges = sortedHalfEdges(mesh, standIn);
   std::vector<SeamEdge> seams;
+  // Each half-edge made once: the one that ends a run of sides begins the next.
+  HalfEdge next = halfEdges.empty() ? HalfEdge{} : halfEdge(mesh, standIn, halfEdges[0]);
   for (std::size_t first = 0, end; first < halfEdges.size(); first = end) {
     // The sides of one edge: the same lower and higher vertex.
-    const HalfEdge a = halfEdge(mesh, standIn, halfEdges[first]);
+    const HalfEdge a = next;
+    HalfEdge b{};
     end = first + 1;
     while (end < halfEdges.size()) {
-      const HalfEdge e = halfEdge(mesh, standIn, halfEdges[end]);
-      if (e.lower != a.lower || e.higher != a.higher) break;
+      next = halfEdge(mesh, standIn, halfEdges[end]);
+      if (next.lower != a.lower || next.higher != a.higher) break;
+      if (end == first + 1) b = next;
       ++end;
     }
     if (a.lower == a.higher) continue;  // two corners of one face at one vertex: no edge
     if (end - first == 1 && boundary) boundary->insert(boundary->end(), {a.lower, a.higher});
     if (end - first != 2) continue;  // a boundary or non-manifold edge
-    const HalfEdge b = halfEdge(mesh, standIn, halfEdges[first + 1]);
     if (!cornerValid(uv, a.cornerLower) || !cornerValid(uv, a.cornerHigher) || !cornerValid(uv, b.cornerLower) ||
         !cornerValid(uv, b.cornerHigher))
       continue;
