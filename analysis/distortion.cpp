@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "core/error.h"
+#include "core/libm_simd.h"
 #include "core/huge_pages.h"
 #include "core/parallel.h"
 
@@ -63,14 +64,30 @@ Eigen::Matrix2d jacobian(const Edges& p, const Vec2& t0, const Vec2& t1, const V
 }
 
 // Singular values of a 2x2 matrix in closed form (Blinn, "Consider the Lowly 2x2 Matrix", IEEE
-// CG&A 1996): s1 = Q + R; s2 = det / s1 rather than Q - R, which keeps the sign of the
-// determinant and avoids the cancellation.
-void singularValues(const Eigen::Matrix2d& m, double& s1, double& s2) {
-  const double e = 0.5 * (m(0, 0) + m(1, 1)), f = 0.5 * (m(0, 0) - m(1, 1));
-  const double g = 0.5 * (m(1, 0) + m(0, 1)), h = 0.5 * (m(1, 0) - m(0, 1));
-  s1 = std::hypot(e, h) + std::hypot(f, g);
-  s2 = m.determinant() / s1;
+// CG&A 1996): s1 = Q + R with Q = hypot(e, h), R = hypot(f, g); s2 = det / s1 rather than Q - R,
+// which keeps the sign of the determinant and avoids the cancellation. The terms apart, so that
+// a block of faces takes its hypotenuses on vectors (core/libm_simd.h: glibc's bits).
+struct BlinnTerms {
+  double e, f, g, h, det;
+};
+
+BlinnTerms blinnTerms(const Eigen::Matrix2d& m) {
+  return {0.5 * (m(0, 0) + m(1, 1)), 0.5 * (m(0, 0) - m(1, 1)), 0.5 * (m(1, 0) + m(0, 1)), 0.5 * (m(1, 0) - m(0, 1)),
+          m.determinant()};
 }
+
+void singularValuesOf(double q, double r, double det, double& s1, double& s2) {
+  s1 = q + r;
+  s2 = det / s1;
+}
+
+void singularValues(const Eigen::Matrix2d& m, double& s1, double& s2) {
+  const BlinnTerms b = blinnTerms(m);
+  singularValuesOf(std::hypot(b.e, b.h), std::hypot(b.f, b.g), b.det, s1, s2);
+}
+
+// Whether singular values measured directly stand: else the face is measured again at unit scale.
+bool directlyMeasured(double s1, double s2) { return std::isfinite(s1) && std::isnormal(s2); }
 
 // The singular values of a face's Jacobian (s2 signed as its determinant). A face far smaller or
 // larger than the mesh (a sliver of a mesh 1e-149 across: a determinant of 1e-310 inverted, 1e310
@@ -79,7 +96,7 @@ void singularValues(const Eigen::Matrix2d& m, double& s1, double& s2) {
 // (exact), and the values scaled back. Faces measured directly keep their bits.
 void faceSingularValues(const Edges& p, const std::array<Vec2, 3>& t, double& s1, double& s2) {
   singularValues(jacobian(p, t[0], t[1], t[2]), s1, s2);
-  if (std::isfinite(s1) && std::isnormal(s2)) return;
+  if (directlyMeasured(s1, s2)) return;
   const int k3 = std::ilogb(std::max(p.e1.cwiseAbs().maxCoeff(), p.e2.cwiseAbs().maxCoeff()));
   const int kUv = std::ilogb(std::max((t[1] - t[0]).cwiseAbs().maxCoeff(), (t[2] - t[0]).cwiseAbs().maxCoeff()));
   // ldexp per coordinate rather than unitPowerOfTwo's factor: subnormal edges need 2^1074, no double.
@@ -276,24 +293,44 @@ FaceMeasures measureFaces(const Mesh& mesh, const UvMap& uv, const MeasureScales
   for (double v : votes) vote += v;
   const double majority = vote >= 0.0 ? 1.0 : -1.0;
 
-  // Second pass: pole and mirrored faces, and the measures of every face with a Jacobian.
+  // One face's status and values from its direct singular values' terms.
+  const auto measureFace = [&](std::size_t face, double q, double r, double det) {
+    const bool mirrored = (orientation[face] & (majority > 0.0 ? kClockwise : kCounterClockwise)) != 0;
+    if (uv.faceHas(face, kFacePole)) status[face] = FaceStatus::PoleFace;
+    else if (mirrored) status[face] = orientation[face] & kTurnedAway ? FaceStatus::Backfacing : FaceStatus::Flipped;
+    double s1 = 0.0, s2 = 0.0;
+    singularValuesOf(q, r, det, s1, s2);
+    if (!directlyMeasured(s1, s2)) faceSingularValues(edges(face), uvCorners(face), s1, s2);
+    s2 *= majority;
+    // Beyond the doubles even at the face's own scale: its UV triangle is degenerate beside its
+    // 3D one (s2 underflows), or the other way round (s1 overflows); it is counted as such.
+    if (!std::isnormal(s2) || !std::isfinite(1.0 / s2))
+      status[face] = FaceStatus::ZeroAreaUv, s1 = s2 = 0.0;
+    else if (!std::isfinite(s1))
+      status[face] = FaceStatus::ZeroArea3d, s1 = s2 = 0.0;
+    sigmaMax[face] = s1, sigmaMin[face] = s2;
+  };
+
+  // Second pass: pole and mirrored faces, and the measures of every face with a Jacobian, a block
+  // of faces at a time: their Jacobians' terms, the hypotenuses on vectors, then each face's values
+  // (measured again at unit scale, faceSingularValues, where the direct ones do not stand).
   forEachRun([&](std::size_t begin, std::size_t end) {
-    for (std::size_t f = begin; f < end; ++f) {
-      if (status[f] != FaceStatus::Ok) continue;
-      const std::array<Vec2, 3> t = uvCorners(f);
-      const bool mirrored = (orientation[f] & (majority > 0.0 ? kClockwise : kCounterClockwise)) != 0;
-      if (uv.faceHas(f, kFacePole)) status[f] = FaceStatus::PoleFace;
-      else if (mirrored) status[f] = orientation[f] & kTurnedAway ? FaceStatus::Backfacing : FaceStatus::Flipped;
-      double s1 = 0.0, s2 = 0.0;
-      faceSingularValues(edges(f), t, s1, s2);
-      s2 *= majority;
-      // Beyond the doubles even at the face's own scale: its UV triangle is degenerate beside its
-      // 3D one (s2 underflows), or the other way round (s1 overflows); it is counted as such.
-      if (!std::isnormal(s2) || !std::isfinite(1.0 / s2))
-        status[f] = FaceStatus::ZeroAreaUv, s1 = s2 = 0.0;
-      else if (!std::isfinite(s1))
-        status[f] = FaceStatus::ZeroArea3d, s1 = s2 = 0.0;
-      sigmaMax[f] = s1, sigmaMin[f] = s2;
+    constexpr std::size_t kBlock = 256;
+    std::size_t blockFaces[kBlock];
+    double e[kBlock], f[kBlock], g[kBlock], h[kBlock], det[kBlock], q[kBlock], r[kBlock];
+    for (std::size_t block = begin; block < end; block += kBlock) {
+      std::size_t n = 0;
+      for (std::size_t face = block; face < std::min(end, block + kBlock); ++face) {
+        if (status[face] != FaceStatus::Ok) continue;
+        const std::array<Vec2, 3> t = uvCorners(face);
+        const BlinnTerms b = blinnTerms(jacobian(edges(face), t[0], t[1], t[2]));
+        e[n] = b.e, f[n] = b.f, g[n] = b.g, h[n] = b.h, det[n] = b.det;
+        blockFaces[n++] = face;
+      }
+      libm::hypot(e, h, q, n);
+      libm::hypot(f, g, r, n);
+      for (std::size_t k = 0; k < n; ++k)
+        measureFace(blockFaces[k], q[k], r[k], det[k]);
     }
   });
 
