@@ -18,9 +18,11 @@ class Pool {
     (last_ ? last_->next : first_) = &p;
     last_ = &p;
     p.listed = true;
-    // No more threads than the cores (or than this job's own workers, when it asks for more): a
-    // loop's worker that waits for a core holds back the caller, which waits for every worker.
-    const int limit = std::min(kMaxThreads, std::max(threadCount(0), p.job.workers - 1));
+    // For a loop no more threads than the cores (or than its own workers, when it asks for more): a
+    // loop's worker that waits for a core holds back the caller, which waits for every worker. Work
+    // aside gets a thread of its own, as std::async gave it: its poster does not wait for it until
+    // it asks (a batch's meshes, each writing its file beside its judgement, fill the cores that way).
+    const int limit = p.aside ? kMaxThreads : std::min(kMaxThreads, std::max(threadCount(0), p.job.workers - 1));
     for (int missing = p.job.workers - p.taken - idle_; missing > 0 && threads_ < limit; --missing) {
       try {
         std::thread(&Pool::serve, this).detach();

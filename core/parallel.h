@@ -41,6 +41,7 @@ struct PoolJob {
 // poster (nothing is allocated to post it) until withdraw() returns.
 struct PostedJob {
   PoolJob job;
+  bool aside = false;  // WorkAside's: its poster goes on with work of its own meanwhile
   int taken = 1;    // the slots handed out: slot 0 is the poster's
   int running = 0;  // pool threads inside job.run
   PostedJob* next = nullptr;
@@ -48,8 +49,10 @@ struct PostedJob {
   std::condition_variable finished;
 };
 
-// Lists `posted` for the pool's threads, starting threads for the slots no idle thread can take
-// (a thread that cannot be started, for memory or limits, leaves its slots untaken).
+// Lists `posted` for the pool's threads, starting threads for the slots no idle thread can take:
+// for a loop no more than the cores (or its own workers, when it asks for more), for work aside
+// as many as it takes (a thread that cannot be started, for memory or limits, leaves its slots
+// untaken).
 void post(PostedJob& posted);
 
 // No more slots are handed out; waits for the pool threads that took some. Returns the first slot
@@ -119,6 +122,7 @@ class WorkAside {
 
   WorkAside(F work, bool aside) : work_(std::move(work)), aside_(aside) {
     posted_.job = {[](void* self, int) { static_cast<WorkAside*>(self)->run(); }, this, 2};
+    posted_.aside = true;
     if (aside_) detail::post(posted_);
   }
   WorkAside(const WorkAside&) = delete;
