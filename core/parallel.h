@@ -30,7 +30,8 @@ inline int workerCount(int count, int threads) { return std::max(1, std::min(thr
 
 namespace detail {
 
-// Work for the pool: run(context, worker) once for each worker slot in [first, workers).
+// Work for the pool: run(context, slot) once for each slot in [1, workers) a pool thread takes
+// (slot 0 is the poster's own).
 struct PoolJob {
   void (*run)(void* context, int worker);
   void* context;
@@ -42,8 +43,8 @@ struct PoolJob {
 struct PostedJob {
   PoolJob job;
   bool aside = false;  // WorkAside's: its poster goes on with work of its own meanwhile
-  int taken = 1;    // the slots handed out: slot 0 is the poster's
-  int running = 0;  // pool threads inside job.run
+  int taken = 1;       // the slots handed out: slot 0 is the poster's
+  int running = 0;     // pool threads inside job.run
   PostedJob* next = nullptr;
   bool listed = false;
   std::condition_variable finished;
