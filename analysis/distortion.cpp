@@ -89,14 +89,13 @@ void singularValues(const Eigen::Matrix2d& m, double& s1, double& s2) {
 // Whether singular values measured directly stand: else the face is measured again at unit scale.
 bool directlyMeasured(double s1, double s2) { return std::isfinite(s1) && std::isnormal(s2); }
 
-// The singular values of a face's Jacobian (s2 signed as its determinant). A face far smaller or
-// larger than the mesh (a sliver of a mesh 1e-149 across: a determinant of 1e-310 inverted, 1e310
-// squared) can overflow or underflow on the way to values that are themselves representable: such
-// a face is measured again with its 3D and UV edges each brought to about 1 by a power of two
-// (exact), and the values scaled back. Faces measured directly keep their bits.
-void faceSingularValues(const Edges& p, const std::array<Vec2, 3>& t, double& s1, double& s2) {
-  singularValues(jacobian(p, t[0], t[1], t[2]), s1, s2);
-  if (directlyMeasured(s1, s2)) return;
+// The singular values of a face's Jacobian (s2 signed as its determinant) for a face whose direct
+// ones do not stand. A face far smaller or larger than the mesh (a sliver of a mesh 1e-149 across:
+// a determinant of 1e-310 inverted, 1e310 squared) can overflow or underflow on the way to values
+// that are themselves representable: it is measured again with its 3D and UV edges each brought
+// to about 1 by a power of two (exact), and the values scaled back. Faces measured directly keep
+// their bits.
+void singularValuesAtUnitScale(const Edges& p, const std::array<Vec2, 3>& t, double& s1, double& s2) {
   const int k3 = std::ilogb(std::max(p.e1.cwiseAbs().maxCoeff(), p.e2.cwiseAbs().maxCoeff()));
   const int kUv = std::ilogb(std::max((t[1] - t[0]).cwiseAbs().maxCoeff(), (t[2] - t[0]).cwiseAbs().maxCoeff()));
   // ldexp per coordinate rather than unitPowerOfTwo's factor: subnormal edges need 2^1074, no double.
@@ -300,7 +299,7 @@ FaceMeasures measureFaces(const Mesh& mesh, const UvMap& uv, const MeasureScales
     else if (mirrored) status[face] = orientation[face] & kTurnedAway ? FaceStatus::Backfacing : FaceStatus::Flipped;
     double s1 = 0.0, s2 = 0.0;
     singularValuesOf(q, r, det, s1, s2);
-    if (!directlyMeasured(s1, s2)) faceSingularValues(edges(face), uvCorners(face), s1, s2);
+    if (!directlyMeasured(s1, s2)) singularValuesAtUnitScale(edges(face), uvCorners(face), s1, s2);
     s2 *= majority;
     // Beyond the doubles even at the face's own scale: its UV triangle is degenerate beside its
     // 3D one (s2 underflows), or the other way round (s1 overflows); it is counted as such.
@@ -313,7 +312,7 @@ FaceMeasures measureFaces(const Mesh& mesh, const UvMap& uv, const MeasureScales
 
   // Second pass: pole and mirrored faces, and the measures of every face with a Jacobian, a block
   // of faces at a time: their Jacobians' terms, the hypotenuses on vectors, then each face's values
-  // (measured again at unit scale, faceSingularValues, where the direct ones do not stand).
+  // (measured again at unit scale where the direct ones do not stand).
   forEachRun([&](std::size_t begin, std::size_t end) {
     constexpr std::size_t kBlock = 256;
     std::size_t blockFaces[kBlock];

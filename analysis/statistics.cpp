@@ -393,13 +393,13 @@ Statistics weightedStatistics(const double* values, const double* weights, const
   if (common < 64) firstDigit.emplace(format, lowest, common, 1, digitBitsFor(count));
   std::vector<std::uint64_t> whole(format.limbs(), 0);
   // The bins' scale a block at a time: log2 on vectors with glibc's bits (core/libm_simd.h), the
-  // items left out taken along (their logarithms unread).
+  // items left out taken along (their logarithms unread); linear bins read the values themselves.
   constexpr std::size_t kBlock = 256;
-  double scaled[kBlock];
+  double logarithms[kBlock];
   for (std::size_t block = first; block < size; block += kBlock) {
     const std::size_t n = std::min(kBlock, size - block);
-    if (spacing == BinSpacing::Log2) libm::log2(values + block, scaled, n);
-    else std::copy(values + block, values + block + n, scaled);
+    const double* scaled = values + block;
+    if (spacing == BinSpacing::Log2) scaled = logarithms, libm::log2(values + block, logarithms, n);
     for (std::size_t i = block; i < block + n; ++i) {
       if (!items.in(i)) continue;
       const double t = width > 0.0 ? (scale * scaled[i - block] - origin) / width : 0.0;

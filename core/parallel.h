@@ -115,7 +115,9 @@ void parallelFor(int count, int threads, F&& work) {
 
 // `work()` set going beside the caller: on a pool thread (one is started when none is free), or,
 // when `aside` is false or no thread has taken it by the time it is asked for, by the thread that
-// asks (get(), or the destructor, which waits for it and drops what it threw).
+// asks (get()). Set aside, it always runs, as std::async's work does: the destructor waits for it
+// (or runs it) and drops what it threw; not set aside, it runs only when asked, as std::launch::
+// deferred's does.
 template <class F>
 class WorkAside {
  public:
@@ -128,7 +130,9 @@ class WorkAside {
   }
   WorkAside(const WorkAside&) = delete;
   WorkAside& operator=(const WorkAside&) = delete;
-  ~WorkAside() { finish(); }
+  ~WorkAside() {
+    if (aside_) finish();
+  }
 
   // The work's result; rethrows what it threw.
   Result get() {

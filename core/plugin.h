@@ -17,6 +17,21 @@ std::string pluginPath(const char* variable, const std::string& installed, const
 // set to one line naming `what`, the path and why it failed.
 void* openPluginEntry(const std::string& path, const char* entry, const std::string& what, std::string& error);
 
+// The table of functions a plugin's `entry` returns (a struct whose first member is `int version`),
+// when it is of `version`; null with `error` set to one line naming `what` and the path otherwise.
+template <class Functions>
+const Functions* openPluginFunctions(const std::string& path, const char* entry, const std::string& what, int version,
+                                     std::string& error) {
+  using Entry = const Functions* (*)();
+  const auto open = reinterpret_cast<Entry>(openPluginEntry(path, entry, what, error));
+  if (!open) return nullptr;
+  const Functions* functions = open();
+  if (functions->version == version) return functions;
+  error = "cannot load the " + what + ": " + path + " is version " + std::to_string(functions->version) +
+          ", this program needs version " + std::to_string(version);
+  return nullptr;
+}
+
 // A system library opened by its soname when first needed rather than linked (never closed,
 // symbols local), and its functions bound one by one: error() stays empty while every one is found,
 // else holds the first failure (dlerror's words, or "SONAME has no NAME"); a function not found is null.

@@ -20,14 +20,9 @@ Loaded load() {
   const std::string path =
       pluginPath("UVTK_ASSIMP_PEER", UVTK_ASSIMP_PEER_INSTALLED, UVTK_ASSIMP_PEER_BUILT, UVTK_BUILD_DIR);
   std::string error;
-  using Entry = const AssimpPeerFunctions* (*)();
-  const auto entry = reinterpret_cast<Entry>(openPluginEntry(path, UVTK_ASSIMP_PEER_ENTRY, "assimp peer", error));
-  if (!entry) return {nullptr, error};
-  const AssimpPeerFunctions* functions = entry();
-  if (functions->version != kAssimpPeerVersion)
-    return {nullptr, "cannot load the assimp peer: " + path + " is version " + std::to_string(functions->version) +
-                         ", this program needs version " + std::to_string(kAssimpPeerVersion)};
-  return {functions, ""};
+  const AssimpPeerFunctions* functions =
+      openPluginFunctions<AssimpPeerFunctions>(path, UVTK_ASSIMP_PEER_ENTRY, "assimp peer", kAssimpPeerVersion, error);
+  return {functions, error};
 }
 
 const Loaded& loaded() {

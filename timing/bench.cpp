@@ -51,14 +51,9 @@ const runner::Functions& benchmarkRunner() {
     const std::string path = pluginPath("UVTK_BENCHMARK_PLUGIN", UVTK_BENCHMARK_PLUGIN_INSTALLED,
                                         UVTK_BENCHMARK_PLUGIN_BUILT, UVTK_BUILD_DIR);
     std::string error;
-    using Entry = const runner::Functions* (*)();
-    const auto entry = reinterpret_cast<Entry>(openPluginEntry(path, UVTK_BENCHMARK_RUNNER_ENTRY, "benchmark plugin", error));
-    if (!entry) throw std::runtime_error(error);
-    const runner::Functions* loaded = entry();
-    if (loaded->version != runner::kVersion)
-      throw std::runtime_error("cannot load the benchmark plugin: " + path + " is version " +
-                               std::to_string(loaded->version) + ", this program needs version " +
-                               std::to_string(runner::kVersion));
+    const runner::Functions* loaded = openPluginFunctions<runner::Functions>(path, UVTK_BENCHMARK_RUNNER_ENTRY,
+                                                                            "benchmark plugin", runner::kVersion, error);
+    if (!loaded) throw std::runtime_error(error);
     return loaded;
   }();
   return *functions;
