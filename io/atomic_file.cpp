@@ -7,9 +7,15 @@
 namespace uvtk::io {
 namespace {
 
+// A temporary is new and empty: opened without O_TRUNC, which on ext4 marks the file for a flush
+// of all its pages when closed (auto_da_alloc, meant for files truncated and rewritten in place):
+// 0.17 s of the 366 MB map's wall, on the writing thread (docs/benchmarks.md). A device or FIFO
+// written straight is opened as before.
 std::ofstream openStream(const TemporaryFile& file) {
   errno = 0;
-  std::ofstream stream(file.path(), std::ios::binary | std::ios::trunc);
+  const std::ios::openmode mode =
+      std::ios::binary | (file.writesStraight() ? std::ios::trunc : std::ios::in | std::ios::out);
+  std::ofstream stream(file.path(), mode);
   if (!stream) {
     const int error = errno;
     throw writeError(file.shownName(),
