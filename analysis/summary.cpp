@@ -6,6 +6,7 @@
 #include <functional>
 #include <iterator>
 #include <limits>
+#include <mutex>
 
 #include "core/error.h"
 #include "core/parallel.h"
@@ -73,27 +74,33 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const FaceMeasures& faces, 
   // Sander et al. 2001, "Texture stretch metric": L2(M) = sqrt(sum(A3 L2^2) / sum(A3)), Linf(M) = max Linf, each
   // times sqrt(sum(Auv) / sum(A3)) so that a uniformly scaled layout scores as the isometry. The sums in face
   // order; max(Linf) times the positive normalisation is max(Linf times it), rounding being monotonic.
+  // Summed on one thread while another starts the overlap, by the first statistic that needs them.
   AreaTotals& totals = s.okTotals;
-  double linfMax = 0.0;
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    if (!ok[f]) continue;
-    totals.surface += faces.area3d[f], totals.uv += faces.areaUv[f];
-    linfMax = std::max(linfMax, faces[f].linfStretch());
-  }
-  const double normalisation = std::sqrt(1.0 / totals.surfacePerUv());
-  if (totals.surface > 0.0) {
-    // A3 L2^2 grows as the fourth power of the mesh's size (at 1e77 it overflows): each L2 is taken
-    // times the power of two that brings 1 / normalisation (a typical L2) to about 1; exact, undone below.
-    const double unit = unitPowerOfTwo(1.0 / normalisation);
-    double l2Squares = 0.0;
-    for (std::size_t f = 0; f < faces.size(); ++f)
-      if (ok[f]) {
-        const double l2 = faces[f].l2Stretch() * unit;
-        l2Squares += faces.area3d[f] * l2 * l2;
-      }
-    s.l2Stretch = std::sqrt(l2Squares / totals.surface) / unit * normalisation;
-    s.linfStretch = linfMax * normalisation;
-  }
+  double normalisation = 0.0;
+  std::once_flag totalsOnce;
+  const auto sumTotals = [&] {
+    double linfMax = 0.0;
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      if (!ok[f]) continue;
+      totals.surface += faces.area3d[f], totals.uv += faces.areaUv[f];
+      linfMax = std::max(linfMax, faces[f].linfStretch());
+    }
+    normalisation = std::sqrt(1.0 / totals.surfacePerUv());
+    if (totals.surface > 0.0) {
+      // A3 L2^2 grows as the fourth power of the mesh's size (at 1e77 it overflows): each L2 is taken
+      // times the power of two that brings 1 / normalisation (a typical L2) to about 1; exact, undone below.
+      const double unit = unitPowerOfTwo(1.0 / normalisation);
+      double l2Squares = 0.0;
+      for (std::size_t f = 0; f < faces.size(); ++f)
+        if (ok[f]) {
+          const double l2 = faces[f].l2Stretch() * unit;
+          l2Squares += faces.area3d[f] * l2 * l2;
+        }
+      s.l2Stretch = std::sqrt(l2Squares / totals.surface) / unit * normalisation;
+      s.linfStretch = linfMax * normalisation;
+    }
+  };
+  const auto needTotals = [&] { std::call_once(totalsOnce, sumTotals); };
   // Each statistic of the ok faces' values weighted by their 3D areas: the values of every face
   // (those of the faces that are not ok unread) in the worker's buffer, 8 bytes a face, the weights
   // the faces' own areas. A worker sizes its buffer when it first computes a statistic: the
@@ -107,9 +114,25 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const FaceMeasures& faces, 
   s.uvBounds = scales.uvBounds;
   s.density.textureSize = textureSize;
   s.density.exponent = std::ilogb(scales.length) - std::ilogb(scales.uv());
-  // The longest first (the overlap raster), so that the last task to start is a short one.
+  // The longest first (the overlap raster), so that the last task to start is a short one; then
+  // the statistics that need the totals, the first of them summing them beside the overlap.
   const std::function<void(std::vector<double>&)> measures[] = {
       [&](std::vector<double>&) { s.overlap = measureOverlap(uv, faces, overlapResolution, threads); },
+      [&](std::vector<double>& values) {
+        needTotals();
+        s.areaDistortion = statistics(
+            values, [&](const FaceDistortion& f) { return f.areaDistortion(totals.surfacePerUv()); }, BinSpacing::Linear);
+      },
+      [&](std::vector<double>& values) {
+        needTotals();
+        s.l2Stretches =
+            statistics(values, [&](const FaceDistortion& f) { return f.l2Stretch() * normalisation; }, BinSpacing::Log2);
+      },
+      [&](std::vector<double>& values) {
+        needTotals();
+        s.linfStretches =
+            statistics(values, [&](const FaceDistortion& f) { return f.linfStretch() * normalisation; }, BinSpacing::Log2);
+      },
       [&](std::vector<double>& values) {
         s.density.scaled = statistics(
             values, [&](const FaceDistortion& f) { return scaledTexelDensity(f, textureSize); }, BinSpacing::Log2);
@@ -118,20 +141,8 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const FaceMeasures& faces, 
       [&](std::vector<double>& values) {
         s.angleDistortion = statistics(values, [](const FaceDistortion& f) { return f.angleDistortion(); }, BinSpacing::Log2);
       },
-      [&](std::vector<double>& values) {
-        s.areaDistortion = statistics(
-            values, [&](const FaceDistortion& f) { return f.areaDistortion(totals.surfacePerUv()); }, BinSpacing::Linear);
-      },
-      [&](std::vector<double>& values) {
-        s.l2Stretches =
-            statistics(values, [&](const FaceDistortion& f) { return f.l2Stretch() * normalisation; }, BinSpacing::Log2);
-      },
-      [&](std::vector<double>& values) {
-        s.linfStretches =
-            statistics(values, [&](const FaceDistortion& f) { return f.linfStretch() * normalisation; }, BinSpacing::Log2);
-      }};
-  s.poleVertices = poleVerticesOf(mesh, uv);
-  // Six independent measures side by side: the overlap, the density, the statistics.
+      [&](std::vector<double>&) { s.poleVertices = poleVerticesOf(mesh, uv); }};
+  // Seven independent measures side by side: the overlap, the statistics, the pole vertices.
   const int count = int(std::size(measures));
   std::vector<std::vector<double>> values(std::size_t(workerCount(count, threads)));
   parallelForWorkers(count, threads, [&](int k, int worker) { measures[k](values[std::size_t(worker)]); });

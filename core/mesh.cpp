@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/parallel.h"
+
 namespace uvtk {
 
 namespace {
@@ -54,17 +56,23 @@ std::vector<Vec3> cornerNormals(const Mesh& mesh) {
   return corners;
 }
 
-MeshWarnings checkMesh(const Mesh& mesh) {
+MeshWarnings checkMesh(const Mesh& mesh, int threads) {
+  constexpr std::size_t kChunk = std::size_t(1) << 16;
   MeshWarnings warnings;
   std::vector<char> used(mesh.positions.size(), 0);
   const double scale = unitScale(mesh);
-  for (const Triangle& t : mesh.triangles) {
-    for (int v : t) used[v] = 1;
-    const bool repeated = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
-    if (repeated || scaledAreaNormal(mesh, t, scale).squaredNorm() == 0.0)
-      ++warnings.degenerateFaces;
-  }
-  for (char u : used) warnings.unreferencedVertices += u ? 0 : 1;
+  warnings.degenerateFaces = reduceRanges(
+      mesh.triangles.size(), kChunk, threads, std::size_t(0),
+      [&](std::size_t& degenerate, std::size_t begin, std::size_t end) {
+        for (std::size_t f = begin; f < end; ++f) {
+          const Triangle& t = mesh.triangles[f];
+          for (int v : t) orBitsAtomically(used[std::size_t(v)], char(1));  // threads may mark one vertex at once
+          const bool repeated = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+          if (repeated || scaledAreaNormal(mesh, t, scale).squaredNorm() == 0.0) ++degenerate;
+        }
+      },
+      [](std::size_t& total, std::size_t degenerate) { total += degenerate; });
+  warnings.unreferencedVertices = std::size_t(std::count(used.begin(), used.end(), 0));
   return warnings;
 }
 

@@ -62,7 +62,8 @@ std::vector<Vec3> areaWeightedVertexNormals(const Mesh& mesh);
 // else the area-weighted vertex normal. Every returned vector has unit length or is zero.
 std::vector<Vec3> cornerNormals(const Mesh& mesh);
 
-// Counts degenerate faces (repeated index or zero area) and vertices no face references.
-MeshWarnings checkMesh(const Mesh& mesh);
+// Counts degenerate faces (repeated index or zero area) and vertices no face references, on
+// `threads` threads (0: one per core).
+MeshWarnings checkMesh(const Mesh& mesh, int threads = 1);
 
 }  // namespace uvtk

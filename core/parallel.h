@@ -7,14 +7,18 @@
 #include <algorithm>
 #include <atomic>
 #include <condition_variable>
+#include <cstddef>
+#include <limits>
 #include <exception>
 #include <mutex>
 #include <optional>
 #include <thread>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "core/cancel.h"
+#include "core/error.h"
 
 namespace uvtk {
 
@@ -111,6 +115,38 @@ void parallelForWorkers(int count, int threads, F&& work) {
 template <class F>
 void parallelFor(int count, int threads, F&& work) {
   parallelForWorkers(count, threads, [&](int i, int) { work(i); });
+}
+
+// byte |= bits where threads may set bits of the same byte at once (C++17 has no atomic_ref):
+// one atomic read-modify-write, no ordering.
+template <class Byte>
+void orBitsAtomically(Byte& byte, Byte bits) {
+  static_assert(sizeof(Byte) == 1);
+  __atomic_fetch_or(&byte, bits, __ATOMIC_RELAXED);
+}
+
+// work(begin, end) for the ranges [k chunk, (k + 1) chunk) of [0, count), on threads. The ranges
+// do not depend on the threads: results kept per range and combined in range order are the same
+// on any number of them.
+template <class F>
+void parallelForRanges(std::size_t count, std::size_t chunk, int threads, F&& work) {
+  const std::size_t ranges = (count + chunk - 1) / chunk;
+  UVTK_CHECK(ranges <= std::size_t(std::numeric_limits<int>::max()));
+  parallelFor(int(ranges), threads, [&](int r) {
+    const std::size_t begin = std::size_t(r) * chunk;
+    work(begin, std::min(count, begin + chunk));
+  });
+}
+
+// A reduction over [0, count): each range's value, from `init`, made by work(value, begin, end),
+// then the values combined in range order by combine(total, value), the total from `init`.
+template <class T, class F, class Combine>
+T reduceRanges(std::size_t count, std::size_t chunk, int threads, const T& init, F&& work, Combine&& combine) {
+  std::vector<T> values((count + chunk - 1) / chunk, init);
+  parallelForRanges(count, chunk, threads, [&](std::size_t begin, std::size_t end) { work(values[begin / chunk], begin, end); });
+  T total = init;
+  for (const T& value : values) combine(total, value);
+  return total;
 }
 
 // `work()` set going beside the caller: on a pool thread (one is started when none is free), or,

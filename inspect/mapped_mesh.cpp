@@ -126,9 +126,7 @@ render::PixelMapping projectorPixelMapping(const param::ProjectorOptions& option
                                            const Mesh& mesh, const UvMap& uv) {
   if (projection.atlas) return atlasPixelMapping(projection.atlas, options.uvTransform, mesh, uv);
   // The range rule as project() applied it, so that per-pixel and per-vertex values agree on it.
-  auto projector = std::make_shared<const param::Projector>(options, projection.localFromObject,
-                                                            param::sensibleBox(mesh.positions, options,
-                                                                               projection.localFromObject));
+  auto projector = std::make_shared<const param::Projector>(options, projection.localFromObject, projection.sensible);
   if (projector->traits().blendsProjections) {  // three lookups blended by the pixel's normal
     render::PixelMapping blend;
     blend.needsNormal = true;

@@ -7,40 +7,35 @@
 namespace uvtk::io {
 namespace {
 
+// Throws OutputError when `stream` could not open `file`'s path.
+void checkOpened(const FileStream& stream, const TemporaryFile& file) {
+  if (stream) return;
+  throw writeError(file.shownName(),
+                   file.writesStraight() ? "cannot open it" : "cannot open the temporary file " + file.path(),
+                   stream.error());
+}
+
 // A temporary is new and empty: opened without O_TRUNC, which on ext4 marks the file for a flush
 // of all its pages when closed (auto_da_alloc, meant for files truncated and rewritten in place):
 // 0.17 s of the 366 MB map's wall, on the writing thread (docs/benchmarks.md). A device or FIFO
-// written straight is opened as before.
-std::ofstream openStream(const TemporaryFile& file) {
-  errno = 0;
-  const std::ios::openmode mode =
-      std::ios::binary | (file.writesStraight() ? std::ios::trunc : std::ios::in | std::ios::out);
-  std::ofstream stream(file.path(), mode);
-  if (!stream) {
-    const int error = errno;
-    throw writeError(file.shownName(),
-                     file.writesStraight() ? "cannot open it" : "cannot open the temporary file " + file.path(), error);
-  }
-  return stream;
-}
+// written straight is opened as std::ofstream opened it.
+bool truncates(const TemporaryFile& file) { return file.writesStraight(); }
 
 // Flushes and closes `stream`; throws OutputError when any of its writes failed. A full disk
-// (ENOSPC) or a file-size limit (EFBIG) shows as a failed write. A failed stream writes no more,
-// so errno still holds the reason its write failed.
-void closeChecked(std::ofstream& stream, const TemporaryFile& file) {
-  if (stream) stream.flush();
-  const bool written = static_cast<bool>(stream);
-  int error = errno;
-  stream.close();
-  if (written) error = errno;
-  if (!written || stream.fail())
+// (ENOSPC) or a file-size limit (EFBIG) shows as a failed write.
+void closeChecked(FileStream& stream, const TemporaryFile& file) {
+  const bool written = !stream.fail();
+  if (!stream.close() || !written)
     throw writeError(file.shownName(), file.writesStraight() ? "writing failed" : "writing the temporary file failed",
-                     error);
+                     stream.error());
 }
 
 }  // namespace
 
-AtomicFile::AtomicFile(const std::string& path) : temporary_(path), stream_(openStream(temporary_)) {}
+AtomicFile::AtomicFile(const std::string& path)
+    : temporary_(path), stream_(temporary_.path(), truncates(temporary_)) {
+  checkOpened(stream_, temporary_);
+}
 
 void AtomicFile::commit() {
   closeChecked(stream_, temporary_);
@@ -62,7 +57,8 @@ TemporaryFile& OutputSet::stage(const std::string& target) {
 
 void OutputSet::write(const std::string& target, const std::function<void(std::ostream&)>& contents) {
   TemporaryFile& file = stage(target);
-  std::ofstream stream = openStream(file);
+  FileStream stream(file.path(), truncates(file));
+  checkOpened(stream, file);
   contents(stream);
   closeChecked(stream, file);
 }

@@ -3,7 +3,6 @@
 // any of them leaves none.
 #pragma once
 
-#include <fstream>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -12,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/file_stream.h"
 #include "io/temporary_file.h"
 
 namespace uvtk::io {
@@ -22,12 +22,12 @@ class AtomicFile {
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
 
-  std::ofstream& stream() { return stream_; }
+  std::ostream& stream() { return stream_; }
   void commit();  // flushes, checks the stream, publishes; throws OutputError on any failure
 
  private:
   TemporaryFile temporary_;  // declared first: the stream closes before the temporary is removed
-  std::ofstream stream_;
+  FileStream stream_;
 };
 
 // Writes `text` to `path` atomically.

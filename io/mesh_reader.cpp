@@ -345,10 +345,10 @@ struct ReaderState {
   }
 };
 
-ReadMeshResult withWarnings(Mesh mesh, const MeshWarnings& readerWarnings) {
+ReadMeshResult withWarnings(Mesh mesh, const MeshWarnings& readerWarnings, int threads = 1) {
   ReadMeshResult result;
   result.warnings = readerWarnings;
-  const MeshWarnings checked = checkMesh(mesh);
+  const MeshWarnings checked = checkMesh(mesh, threads);
   result.warnings.degenerateFaces = checked.degenerateFaces;
   result.warnings.unreferencedVertices = checked.unreferencedVertices;
   result.mesh = std::move(mesh);
@@ -847,7 +847,7 @@ ReadMeshResult joinObjChunks(std::vector<ObjChunk>& chunks, const std::string& n
   std::vector<std::size_t> marked;
   applyFaceLists(mesh, 0, mesh.triangles.size(), listed, marked);
   warnings.listedInvalidUvFaces = marked.size();
-  ReadMeshResult result = withWarnings(std::move(mesh), warnings);
+  ReadMeshResult result = withWarnings(std::move(mesh), warnings, threads);
   result.listedInvalidUvFaces = std::move(marked);
   return result;
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/huge_pages.h"
+#include "core/parallel.h"
 #include "param/formulas.h"
 #include "param/surface_traits.h"
 
@@ -41,8 +43,38 @@ Mat3 fittedRotation(const std::vector<Vec3>& positions, SurfaceKind surface, con
 
 double positiveOr(double value, double fallback) { return value > 0.0 && std::isfinite(value) ? value : fallback; }
 
+constexpr std::size_t kPositionsPerRange = std::size_t(1) << 16;  // a thread's share at a time
+
+// The lowest and highest corner of points[i] (i < count) in ranges on threads: the same in any
+// order (the first of equal minima is kept, as a loop over all of them keeps it).
+struct Bounds {
+  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  void extend(const Vec3& p) { lo = lo.cwiseMin(p), hi = hi.cwiseMax(p); }
+};
+template <class Point>
+Bounds boundsOf(std::size_t count, int threads, Point point) {
+  return reduceRanges(
+      count, kPositionsPerRange, threads, Bounds{},
+      [&](Bounds& b, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) b.extend(point(i));
+      },
+      [](Bounds& total, const Bounds& b) { total.lo = total.lo.cwiseMin(b.lo), total.hi = total.hi.cwiseMax(b.hi); });
+}
+
+// The largest of distance(i) (i < count), at least 0, in ranges on threads.
+template <class Distance>
+double largestOf(std::size_t count, int threads, Distance distance) {
+  return reduceRanges(
+      count, kPositionsPerRange, threads, 0.0,
+      [&](double& largest, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) largest = std::max(largest, distance(i));
+      },
+      [](double& total, double largest) { total = std::max(total, largest); });
+}
+
 // The frame of the fit or of the explicit placement, before the turn about its axis.
-Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options) {
+Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options,
+                        int threads) {
   Affine3 localFromObject = Affine3::Identity();
   // two-plane works in object space; the camera's own view is its frame
   if (surface == SurfaceKind::TwoPlane || surface == SurfaceKind::Camera || traitsOf(surface).chartsFromMesh)
@@ -64,14 +96,10 @@ Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface,
   if (options.fit == Fit::None || positions.empty()) return localFromObject;
 
   // The fit works on the unit box (no overflow or underflow at any scale), then scales back.
-  const UnitBox box = toUnitBox(positions);
+  const UnitBox box = toUnitBox(positions, threads);
   const Mat3 rotation = fittedRotation(positions, surface, options);
-  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
-  for (const Vec3& p : box.unit) {
-    const Vec3 r = rotation * p;
-    lo = lo.cwiseMin(r);
-    hi = hi.cwiseMax(r);
-  }
+  const Bounds rotated = boundsOf(box.unit.size(), threads, [&](std::size_t i) { return Vec3(rotation * box.unit[i]); });
+  const Vec3 &lo = rotated.lo, &hi = rotated.hi;
   const Vec3 extent = hi - lo;
   const Vec3 center = 0.5 * (lo + hi);
 
@@ -85,19 +113,19 @@ Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface,
       break;
     }
     case UnitShape::Cylinder: {
-      double radius = 0.0;
-      for (const Vec3& p : box.unit) {
-        const Vec3 r = rotation * p;
-        radius = std::max(radius, radialDistance(r.x() - center.x(), r.y() - center.y()));
-      }
-      radius = positiveOr(radius, 1.0);
+      const double radius = positiveOr(largestOf(box.unit.size(), threads,
+                                                 [&](std::size_t i) {
+                                                   const Vec3 r = rotation * box.unit[i];
+                                                   return radialDistance(r.x() - center.x(), r.y() - center.y());
+                                                 }),
+                                       1.0);
       origin.z() = lo.z();  // the base of the box: v runs from 0 at the bottom to 1 at the top
       scale = Vec3(1.0 / radius, 1.0 / radius, 1.0 / positiveOr(extent.z(), radius));
       break;
     }
     case UnitShape::Ball: {
-      double radius = 0.0;
-      for (const Vec3& p : box.unit) radius = std::max(radius, (rotation * p - center).norm());
+      const double radius =
+          largestOf(box.unit.size(), threads, [&](std::size_t i) { return (rotation * box.unit[i] - center).norm(); });
       scale = Vec3::Constant(1.0 / positiveOr(radius, 1.0));
       break;
     }
@@ -137,15 +165,14 @@ Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface,
 
 }  // namespace
 
-UnitBox toUnitBox(const std::vector<Vec3>& positions) {
+UnitBox toUnitBox(const std::vector<Vec3>& positions, int threads) {
   UnitBox box;
   if (positions.empty()) return box;
-  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
-  for (const Vec3& p : positions) {
-    UVTK_CHECK(p.allFinite());  // the readers refuse non-finite coordinates
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
+  const Bounds bounds = boundsOf(positions.size(), threads, [&](std::size_t i) {
+    UVTK_CHECK(positions[i].allFinite());  // the readers refuse non-finite coordinates
+    return positions[i];
+  });
+  const Vec3 &lo = bounds.lo, &hi = bounds.hi;
   // The box's low corner, not its centre: the centre of a mesh far from the object origin rounds,
   // while p - corner is exact there (Sterbenz), so the fit is the same as the mesh's at the origin.
   box.corner = lo;
@@ -157,20 +184,20 @@ UnitBox toUnitBox(const std::vector<Vec3>& positions) {
   const int shift = overflows ? 1 - box.exponent : -box.exponent;
   const bool product = shift >= -1074 && shift <= 1023;
   const double factor = product ? std::ldexp(1.0, shift) : 0.0;
-  box.unit.reserve(positions.size());
-  for (const Vec3& p : positions) {
-    Vec3 u;
-    for (int a = 0; a < 3; ++a) {
-      const double offset = overflows ? 0.5 * p[a] - 0.5 * lo[a] : p[a] - lo[a];
-      u[a] = product ? offset * factor : std::ldexp(offset, shift);
-    }
-    box.unit.push_back(u);
-  }
+  resizeFaultedIn(box.unit, positions.size(), threads);
+  parallelForRanges(positions.size(), kPositionsPerRange, threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      for (int a = 0; a < 3; ++a) {
+        const double offset = overflows ? 0.5 * positions[i][a] - 0.5 * lo[a] : positions[i][a] - lo[a];
+        box.unit[i][a] = product ? offset * factor : std::ldexp(offset, shift);
+      }
+  });
   return box;
 }
 
-Affine3 fitPlacement(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options) {
-  const Affine3 frame = frameBeforeTurn(positions, surface, options);
+Affine3 fitPlacement(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options,
+                     int threads) {
+  const Affine3 frame = frameBeforeTurn(positions, surface, options, threads);
   if (options.turnDegrees == 0.0 || surface == SurfaceKind::TwoPlane || surface == SurfaceKind::Camera ||
       traitsOf(surface).chartsFromMesh)
     return frame;

@@ -66,8 +66,10 @@ struct PlacementOptions {
 // stays below 2^1020, which only a mesh wider than about 2^1022, a mesh or a box axis thinner than
 // about 2^-1021, or a flat mesh about 2^1020 times its size from the object origin ever needs.
 // Two-plane projectors work in object space, so their placement is the identity.
-// Throws UsageError for an explicit frame with a zero or parallel direction or scale <= 0.
-Affine3 fitPlacement(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options);
+// Throws UsageError for an explicit frame with a zero or parallel direction or scale <= 0. Its passes
+// over the positions run on `threads` threads (0: one per core), with the same frame on any number.
+Affine3 fitPlacement(const std::vector<Vec3>& positions, SurfaceKind surface, const PlacementOptions& options,
+                     int threads = 1);
 
 // The rotation whose rows are the object-space directions of the fitted frame's axes, ordered
 // by decreasing spread, with signs fixed so that each axis' largest component is positive.
@@ -94,6 +96,6 @@ struct UnitBox {
   int exponent = 0;
   std::array<bool, 3> flat{};  // the object axes along which every position is the same
 };
-UnitBox toUnitBox(const std::vector<Vec3>& positions);
+UnitBox toUnitBox(const std::vector<Vec3>& positions, int threads = 1);
 
 }  // namespace uvtk::param

@@ -49,6 +49,7 @@ struct Evaluated {
   std::array<std::size_t, 3> triplanarFaces{};  // triplanar: faces written by the x, y, z projection
   std::vector<std::uint8_t> triplanarAxis;      // and the projection of each face
   std::optional<Atlas> atlas;                   // the atlas: its charts (its uv moved into corners)
+  std::optional<Eigen::AlignedBox3d> sensible;  // the range rule's box the corners were mapped with
 };
 
 template <class T>
@@ -370,10 +371,11 @@ decltype(auto) withPrecision(Precision precision, F&& f) {
 template <class T>
 Evaluated evaluateMesh(const Mesh& mesh, const Affine3& localFromObject, const ProjectorOptions& o, int threads) {
   const LocalFrameT<T> frame(localFromObject);
-  const std::optional<Eigen::AlignedBox3d> sensible = sensibleBox(mesh.positions, o, localFromObject);
+  const std::optional<Eigen::AlignedBox3d> sensible = sensibleBox(mesh.positions, o, localFromObject, threads);
   Evaluated evaluated = visitProjector<T>(o, frame, [&](const auto& s, const auto& m) {
     return evaluateCorners<T>(s, m, mesh, localFromObject, o, sensible, threads);
   });
+  evaluated.sensible = sensible;
   if (o.surface == SurfaceKind::Cylinder && o.cylinderCaps) {
     applyCaps(mesh, frame, CapTest::of(localFromObject, o.capAngleDegrees), o.capLayout, evaluated.corners);
     // Points on the seam that --seam cut adds lie on the side.
@@ -443,10 +445,17 @@ void mapVerticesThroughKernel(const ProjectorOptions& o, const Affine3& localFro
 }  // namespace
 
 std::optional<Eigen::AlignedBox3d> sensibleBox(const std::vector<Vec3>& positions, const ProjectorOptions& o,
-                                               const Affine3& localFromObject) {
+                                               const Affine3& localFromObject, int threads) {
   const LocalFrameT<double> frame(localFromObject);  // the local positions the mapping itself sees
-  Eigen::AlignedBox3d box;
-  for (const Vec3& p : positions) box.extend(frame.point(p));
+  // A box is a minimum and a maximum: the same from ranges on threads as from one loop.
+  Eigen::AlignedBox3d box = reduceRanges(
+      positions.size(), std::size_t(1) << 16, threads, Eigen::AlignedBox3d(),
+      [&](Eigen::AlignedBox3d& b, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) b.extend(frame.point(positions[i]));
+      },
+      [](Eigen::AlignedBox3d& total, const Eigen::AlignedBox3d& b) {
+        if (!b.isEmpty()) total.extend(b);
+      });
   switch (traitsOf(o.surface).shape) {  // the unit shape the fits put the mesh on (§2)
     case UnitShape::Plane:
       box.extend(Vec3(0, 0, 0)).extend(Vec3(1, 1, 0));
@@ -623,7 +632,7 @@ Projection project(Mesh mesh, const ProjectorOptions& o, int threads) {
 
   Projection out;
   const auto start = std::chrono::steady_clock::now();
-  out.localFromObject = fitPlacement(mesh.positions, o.surface, o.placement);
+  out.localFromObject = fitPlacement(mesh.positions, o.surface, o.placement, threads);
   Evaluated evaluated = o.surface == SurfaceKind::Camera      ? evaluateCamera(mesh, o.camera, threads)
                         : o.surface == SurfaceKind::Triplanar ? evaluateTriplanar(mesh, out.localFromObject, o.triplanar, threads)
                         : traitsOf(o.surface).chartsFromMesh  ? evaluateAtlas(mesh, o.surface, o.atlas, threads)
@@ -641,13 +650,14 @@ Projection project(Mesh mesh, const ProjectorOptions& o, int threads) {
                           const VertexUv s = evaluated.evaluateAt(p, n);
                           uv = s.uv;
                           return s.state == CornerState::Ok;
-                        });
-    if (o.pole == PoleMode::Fan) fanPoleCorners(corners);
+                        }, threads);
+    if (o.pole == PoleMode::Fan) fanPoleCorners(corners, threads);
   }
-  out.summary = summarize(mesh, corners, seams);
+  out.summary = summarize(mesh, corners, seams, threads);
   out.summary.triplanarFaces = evaluated.triplanarFaces;
   out.triplanarAxis = std::move(evaluated.triplanarAxis);
   if (evaluated.atlas) out.atlas = std::make_shared<const Atlas>(std::move(*evaluated.atlas));
+  out.sensible = evaluated.sensible;
   if (!o.uvTransform.isIdentity()) {
     bool overflowed = false;
     for (std::size_t i = 0; i < corners.uv.size(); ++i) {
@@ -658,14 +668,14 @@ Projection project(Mesh mesh, const ProjectorOptions& o, int threads) {
       overflowed = true;
     }
     if (overflowed) {  // recount the invalid corners; the seam counts needed the untransformed u
-      const MappingSummary recount = summarize(mesh, corners, seams);
+      const MappingSummary recount = summarize(mesh, corners, seams, threads);
       out.summary.invalidVertices = recount.invalidVertices;
       out.summary.invalidFaces = recount.invalidFaces;
       out.summary.invalidVertexList = recount.invalidVertexList;
       out.summary.invalidCorners = recount.invalidCorners;
     }
   }
-  out.uv = std::move(corners).toUvMap();
+  out.uv = std::move(corners).toUvMap(threads);
   out.mesh = std::move(mesh);
   out.milliseconds.seams = millisecondsSince(seamStart);
   return out;

@@ -125,6 +125,9 @@ struct Projection {
   std::vector<std::uint8_t> triplanarAxis;  // triplanar: the projection (0: x, 1: y, 2: z) each face carries
   // atlas: its charts and measures (its uv moved into `uv`), shared with what evaluates it per pixel
   std::shared_ptr<const Atlas> atlas;
+  // The range rule's box the corners were mapped with (sensibleBox of the mesh before any seam
+  // cut), for what evaluates the projector per pixel; nothing without a range check.
+  std::optional<Eigen::AlignedBox3d> sensible;
   struct {
     double map = 0.0;    // the placement fit and every corner through both stages
     double seams = 0.0;  // seam and pole repair, the summary, the UV transform
@@ -135,9 +138,10 @@ struct Projection {
 // the box of the mesh's local positions united with the surface's unit shape (plane [0,1]^2 x {0};
 // cylinder radius 1, z in [0, 1]; sphere the unit ball; cube [-1,1]^3; two-plane nothing, it works
 // in object space). Nothing when it has no finite, non-zero extent (then there is no range check).
-// project() computes it from its mesh; a Projector of points takes it from the caller that has the mesh.
+// project() computes it from its mesh (Projection::sensible); a Projector of points takes it from
+// the caller that has the mesh. On `threads` threads (0: one per core), the same box on any number.
 std::optional<Eigen::AlignedBox3d> sensibleBox(const std::vector<Vec3>& positions, const ProjectorOptions& options,
-                                               const Affine3& localFromObject);
+                                               const Affine3& localFromObject, int threads = 1);
 
 // The camera projector's (u, v) = (s/q, t/q) at an object-space point (CameraTransform), in
 // double whatever the precision: invalid with kCornerBehind where q <= 0 (at or behind the eye

@@ -1,11 +1,13 @@
 #include "param/seams.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <unordered_map>
 
 #include "core/error.h"
 #include "core/huge_pages.h"
+#include "core/parallel.h"
 
 namespace uvtk::param {
 
@@ -23,22 +25,35 @@ void CornerField::invalidate(std::size_t i, CornerInvalid why) {
   faceFlags[i / 3] |= kFaceInvalid;
 }
 
-UvMap CornerField::toUvMap() && {
+namespace {
+
+constexpr std::size_t kFacesPerRange = std::size_t(1) << 16;  // a thread's share at a time
+
+}  // namespace
+
+UvMap CornerField::toUvMap(int threads) && {
   UvMap map;
   map.uv = std::move(uv);
   map.w = std::move(w);
   map.faceFlags = std::move(faceFlags);
+  UVTK_CHECK(state.size() == 3 * map.faceFlags.size());
   map.cornerInvalid.resize(state.size());
   map.cornerPole.resize(state.size());
-  for (std::size_t i = 0; i < state.size(); ++i) {
-    map.cornerPole[i] = state[i] == CornerState::Pole;
-    const bool invalid = state[i] == CornerState::Invalid;
-    UVTK_CHECK(invalid == (reason[i] != kCornerValid));
-    map.cornerInvalid[i] = reason[i];
-    if (invalid) map.uv[i] = Vec2::Zero();
-    if (invalid) map.faceFlags[i / 3] |= kFaceInvalid;
-  }
-  if (std::find(map.cornerPole.begin(), map.cornerPole.end(), 1) == map.cornerPole.end()) map.cornerPole = {};
+  const char anyPole = reduceRanges(
+      map.faceFlags.size(), kFacesPerRange, threads, char(0),
+      [&](char& pole, std::size_t begin, std::size_t end) {
+        for (std::size_t i = 3 * begin; i < 3 * end; ++i) {
+          map.cornerPole[i] = state[i] == CornerState::Pole;
+          pole |= state[i] == CornerState::Pole;
+          const bool invalid = state[i] == CornerState::Invalid;
+          UVTK_CHECK(invalid == (reason[i] != kCornerValid));
+          map.cornerInvalid[i] = reason[i];
+          if (invalid) map.uv[i] = Vec2::Zero();
+          if (invalid) map.faceFlags[i / 3] |= kFaceInvalid;
+        }
+      },
+      [](char& total, char pole) { total |= pole; });
+  if (!anyPole) map.cornerPole = {};
   return map;
 }
 
@@ -126,19 +141,20 @@ struct SeamCutter {
 
 }  // namespace
 
-SeamReport repairSeams(Mesh& mesh, CornerField& c, double uStart, SeamMode mode, const SeamPointEvaluator& evaluateAt) {
+SeamReport repairSeams(Mesh& mesh, CornerField& c, double uStart, SeamMode mode, const SeamPointEvaluator& evaluateAt,
+                       int threads) {
   SeamReport report;
   const std::size_t faceCount = mesh.triangles.size();
   std::vector<char> shifted(faceCount, 0);
-  for (std::size_t f = 0; f < faceCount; ++f) {
-    if (isCap(c, f) || (c.faceFlags[f] & kFaceInvalid)) continue;
+  // Each face on its own: its corners, its flags, its entry of `shifted`.
+  const auto shiftFace = [&](std::size_t f) -> std::size_t {  // 1 for a straddling face
+    if (isCap(c, f) || (c.faceFlags[f] & kFaceInvalid)) return 0;
     double lo = INFINITY, hi = -INFINITY;
     for (int k = 0; k < 3; ++k)
       if (c.state[3 * f + k] == CornerState::Ok) lo = std::min(lo, c.uv[3 * f + k].x()), hi = std::max(hi, c.uv[3 * f + k].x());
-    if (!(hi - lo > 0.5)) continue;
+    if (!(hi - lo > 0.5)) return 0;
     c.faceFlags[f] |= kFaceSeamStraddle;
-    ++report.straddlingFaces;
-    if (mode == SeamMode::None) continue;
+    if (mode == SeamMode::None) return 1;
     double shiftedLo = INFINITY, shiftedHi = -INFINITY;
     for (int k = 0; k < 3; ++k) {
       if (c.state[3 * f + k] != CornerState::Ok) continue;
@@ -148,12 +164,19 @@ SeamReport repairSeams(Mesh& mesh, CornerField& c, double uStart, SeamMode mode,
     }
     if (shiftedHi - shiftedLo > 0.5) {  // no shift makes it continuous: it winds around the axis
       c.faceFlags[f] |= kFacePole;
-      continue;
+      return 1;
     }
     shifted[f] = 1;
     for (int k = 0; k < 3; ++k)
       if (c.state[3 * f + k] == CornerState::Ok && c.uv[3 * f + k].x() < uStart + 0.5) c.uv[3 * f + k].x() += 1.0;
-  }
+    return 1;
+  };
+  report.straddlingFaces = reduceRanges(
+      faceCount, kFacesPerRange, threads, std::size_t(0),
+      [&](std::size_t& straddling, std::size_t begin, std::size_t end) {
+        for (std::size_t f = begin; f < end; ++f) straddling += shiftFace(f);
+      },
+      [](std::size_t& total, std::size_t straddling) { total += straddling; });
   if (mode != SeamMode::Cut || report.straddlingFaces == 0) return report;
 
   // Cut: split every shifted face whose corners reach past uStart + 1 into the pieces on either
@@ -235,20 +258,22 @@ SeamReport repairSeams(Mesh& mesh, CornerField& c, double uStart, SeamMode mode,
   return report;
 }
 
-void fanPoleCorners(CornerField& c) {
-  for (std::size_t f = 0; f < c.faceFlags.size(); ++f) {
-    if (isCap(c, f)) continue;
-    double sum = 0.0;
-    int count = 0;
-    for (int k = 0; k < 3; ++k)
-      if (c.state[3 * f + k] == CornerState::Ok) sum += c.uv[3 * f + k].x(), ++count;
-    if (count == 0 || count == 3) continue;
-    for (int k = 0; k < 3; ++k)
-      if (c.state[3 * f + k] == CornerState::Pole) c.uv[3 * f + k].x() = sum / count;
-  }
+void fanPoleCorners(CornerField& c, int threads) {
+  parallelForRanges(c.faceFlags.size(), kFacesPerRange, threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      if (isCap(c, f)) continue;
+      double sum = 0.0;
+      int count = 0;
+      for (int k = 0; k < 3; ++k)
+        if (c.state[3 * f + k] == CornerState::Ok) sum += c.uv[3 * f + k].x(), ++count;
+      if (count == 0 || count == 3) continue;
+      for (int k = 0; k < 3; ++k)
+        if (c.state[3 * f + k] == CornerState::Pole) c.uv[3 * f + k].x() = sum / count;
+    }
+  });
 }
 
-MappingSummary summarize(const Mesh& mesh, const CornerField& c, const SeamReport& seams) {
+MappingSummary summarize(const Mesh& mesh, const CornerField& c, const SeamReport& seams, int threads) {
   MappingSummary s;
   s.vertices = mesh.positions.size();
   s.faces = mesh.triangles.size();
@@ -256,24 +281,52 @@ MappingSummary summarize(const Mesh& mesh, const CornerField& c, const SeamRepor
   s.addedVertices = seams.addedVertices;
   s.addedFaces = seams.addedFaces;
 
+  // Counted in ranges of faces, then of vertices; the lists joined in range order, ascending.
+  struct Counts {
+    std::vector<int> list, other;  // faces: pole faces; vertices: pole vertices, invalid vertices
+    std::size_t invalidFaces = 0, cubeSeamFaces = 0, capFaces = 0;
+    std::array<std::size_t, kCornerInvalidCount> invalidCorners{};
+  };
+  const auto join = [](Counts& total, const Counts& part) {
+    total.list.insert(total.list.end(), part.list.begin(), part.list.end());
+    total.other.insert(total.other.end(), part.other.begin(), part.other.end());
+    total.invalidFaces += part.invalidFaces, total.cubeSeamFaces += part.cubeSeamFaces, total.capFaces += part.capFaces;
+    for (std::size_t k = 0; k < total.invalidCorners.size(); ++k) total.invalidCorners[k] += part.invalidCorners[k];
+  };
   std::vector<std::uint8_t> vertexState(mesh.positions.size(), 0);  // bit 1: pole, bit 2: invalid
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    const std::uint8_t flags = c.faceFlags[f];
-    if (flags & kFacePole) s.poleFaceList.push_back(static_cast<int>(f));
-    s.invalidFaces += (flags & kFaceInvalid) ? 1 : 0;
-    s.cubeSeamFaces += (flags & kFaceCubeSeam) ? 1 : 0;
-    s.capFaces += (flags & kFaceCap) ? 1 : 0;
-    for (int k = 0; k < 3; ++k) {
-      const CornerState state = c.state[3 * f + k];
-      ++s.invalidCorners[state == CornerState::Invalid ? c.reason[3 * f + k] : kCornerValid];
-      if (state == CornerState::Pole) vertexState[mesh.triangles[f][k]] |= 1;
-      if (state == CornerState::Invalid) vertexState[mesh.triangles[f][k]] |= 2;
-    }
-  }
-  for (std::size_t v = 0; v < vertexState.size(); ++v) {
-    if (vertexState[v] & 1) s.poleVertexList.push_back(static_cast<int>(v));
-    if (vertexState[v] & 2) s.invalidVertexList.push_back(static_cast<int>(v));
-  }
+  const Counts faces = reduceRanges(
+      mesh.triangles.size(), kFacesPerRange, threads, Counts{},
+      [&](Counts& n, std::size_t begin, std::size_t end) {
+        for (std::size_t f = begin; f < end; ++f) {
+          const std::uint8_t flags = c.faceFlags[f];
+          if (flags & kFacePole) n.list.push_back(static_cast<int>(f));
+          n.invalidFaces += (flags & kFaceInvalid) ? 1 : 0;
+          n.cubeSeamFaces += (flags & kFaceCubeSeam) ? 1 : 0;
+          n.capFaces += (flags & kFaceCap) ? 1 : 0;
+          for (int k = 0; k < 3; ++k) {
+            const CornerState state = c.state[3 * f + k];
+            ++n.invalidCorners[state == CornerState::Invalid ? c.reason[3 * f + k] : kCornerValid];
+            std::uint8_t& vertex = vertexState[std::size_t(mesh.triangles[f][k])];  // threads may mark one at once
+            if (state == CornerState::Pole) orBitsAtomically(vertex, std::uint8_t(1));
+            if (state == CornerState::Invalid) orBitsAtomically(vertex, std::uint8_t(2));
+          }
+        }
+      },
+      join);
+  const Counts vertices = reduceRanges(
+      vertexState.size(), kFacesPerRange, threads, Counts{},
+      [&](Counts& n, std::size_t begin, std::size_t end) {
+        for (std::size_t v = begin; v < end; ++v) {
+          if (vertexState[v] & 1) n.list.push_back(static_cast<int>(v));
+          if (vertexState[v] & 2) n.other.push_back(static_cast<int>(v));
+        }
+      },
+      join);
+  s.poleFaceList = faces.list;
+  s.invalidFaces = faces.invalidFaces, s.cubeSeamFaces = faces.cubeSeamFaces, s.capFaces = faces.capFaces;
+  s.invalidCorners = faces.invalidCorners;
+  s.poleVertexList = vertices.list;
+  s.invalidVertexList = vertices.other;
   s.poleFaces = s.poleFaceList.size();
   s.poleVertices = s.poleVertexList.size();
   s.invalidVertices = s.invalidVertexList.size();

@@ -23,7 +23,8 @@ struct CornerField {
   void resize(std::size_t faceCount, int threads = 1);
   // Corner i has no (u, v), for `why`: written (0, 0), its face flagged kFaceInvalid.
   void invalidate(std::size_t i, CornerInvalid why);
-  UvMap toUvMap() &&;  // invalid corners become (0, 0) with their reason in cornerInvalid
+  // Invalid corners become (0, 0) with their reason in cornerInvalid; on `threads` threads.
+  UvMap toUvMap(int threads = 1) &&;
 };
 
 // Whether the closed triangle (a, b, c) contains the origin: for hit points projected along the
@@ -42,14 +43,16 @@ struct SeamReport {
 // Finds faces whose non-pole corners span more than half a turn and, unless mode is None, adds 1
 // to their low corners; with Cut, also splits them on the seam (new vertices appended to the mesh,
 // each straddling triangle replaced in place by its pieces). u lies in [uStart, uStart + 1).
+// The faces are examined on `threads` threads (0: one per core); the cut runs on one.
 SeamReport repairSeams(Mesh& mesh, CornerField& corners, double uStart, SeamMode mode,
-                       const SeamPointEvaluator& evaluateAt);
+                       const SeamPointEvaluator& evaluateAt, int threads = 1);
 
 // Gives each pole corner the mean u of its face's other valid corners.
-void fanPoleCorners(CornerField& corners);
+void fanPoleCorners(CornerField& corners, int threads = 1);
 
 // Counts for the summary: poles, invalid vertices, corners per reason, cube seams and caps. The seam
 // edges are the one rule's (core/seam_edges.h), on the UVs the projection ends with.
-MappingSummary summarize(const Mesh& mesh, const CornerField& corners, const SeamReport& seams);
+// On `threads` threads, the same counts and lists on any number.
+MappingSummary summarize(const Mesh& mesh, const CornerField& corners, const SeamReport& seams, int threads = 1);
 
 }  // namespace uvtk::param

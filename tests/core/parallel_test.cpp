@@ -8,9 +8,11 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cstdint>
 #include <numeric>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace uvtk {
@@ -92,6 +94,57 @@ TEST(Parallel, WorkAsideRethrowsWhenAskedAndItsDestructorWaits) {
     }, true);
   }  // not asked: the destructor waits
   EXPECT_TRUE(done);
+}
+
+TEST(Parallel, RangesCoverEveryIndexOnceInFixedPieces) {
+  for (const std::size_t count : {std::size_t(0), std::size_t(1), std::size_t(999), std::size_t(1000), std::size_t(1001)})
+    for (const int threads : {1, 2, 5}) {
+      std::vector<std::atomic<int>> runs(count);
+      std::vector<std::pair<std::size_t, std::size_t>> pieces((count + 99) / 100);
+      parallelForRanges(count, 100, threads, [&](std::size_t begin, std::size_t end) {
+        pieces[begin / 100] = {begin, end};
+        for (std::size_t i = begin; i < end; ++i) ++runs[i];
+      });
+      for (const std::atomic<int>& r : runs) EXPECT_EQ(r, 1);
+      for (std::size_t k = 0; k < pieces.size(); ++k)  // [100 k, min(count, 100 k + 100)) whatever the threads
+        EXPECT_EQ(pieces[k], std::make_pair(100 * k, std::min(count, 100 * k + 100))) << count << " " << threads;
+    }
+}
+
+TEST(Parallel, AReductionCombinesTheRangesInOrder) {
+  // Joining each range's indices in range order gives 0, 1, ..., n - 1 on any number of threads;
+  // a floating sum taken that way is the same bits on any number too.
+  std::vector<double> values(100000);
+  for (std::size_t i = 0; i < values.size(); ++i) values[i] = 1.0 / double(i + 1) * (i % 3 == 0 ? -1e-3 : 1.0);
+  std::vector<double> sums;
+  for (const int threads : {1, 2, 3, 8}) {
+    const std::vector<std::size_t> order = reduceRanges(
+        values.size(), 4096, threads, std::vector<std::size_t>{},
+        [](std::vector<std::size_t>& part, std::size_t begin, std::size_t end) {
+          for (std::size_t i = begin; i < end; ++i) part.push_back(i);
+        },
+        [](std::vector<std::size_t>& total, const std::vector<std::size_t>& part) {
+          total.insert(total.end(), part.begin(), part.end());
+        });
+    std::vector<std::size_t> expected(values.size());
+    std::iota(expected.begin(), expected.end(), std::size_t(0));
+    EXPECT_EQ(order, expected) << threads;
+    sums.push_back(reduceRanges(
+        values.size(), 4096, threads, 0.0,
+        [&](double& sum, std::size_t begin, std::size_t end) {
+          for (std::size_t i = begin; i < end; ++i) sum += values[i];
+        },
+        [](double& total, double sum) { total += sum; }));
+  }
+  for (const double sum : sums) EXPECT_EQ(sum, sums.front());
+}
+
+TEST(Parallel, BitsSetAtOnceByManyThreadsAreAllKept) {
+  std::vector<std::uint8_t> bytes(1000, 0);
+  parallelFor(8, 8, [&](int bit) {
+    for (std::uint8_t& b : bytes) orBitsAtomically(b, std::uint8_t(1u << bit));
+  });
+  for (const std::uint8_t b : bytes) EXPECT_EQ(b, 0xff);
 }
 
 TEST(Parallel, AChildOfForkHasAPoolOfItsOwn) {

@@ -42,6 +42,42 @@ std::size_t invalidCorners(const UvMap& uv) {
   return n;
 }
 
+// The passes of a projection over vertices and faces run in ranges on threads: the same frame,
+// UVs, flags and summary on 1, 2 and 3 threads for a mesh of several ranges (65,536 faces each),
+// with poles, straddling faces cut or shifted, caps and corners left out of range.
+TEST(Project, TheSameBitsOnAnyNumberOfThreads) {
+  const Mesh sphere = meshes::latLongSphere(400, 200);
+  ASSERT_GT(sphere.faceCount(), 2 * (std::size_t(1) << 16));
+  ProjectorOptions cut = optionsFor(SurfaceKind::Sphere), caps = optionsFor(SurfaceKind::Cylinder),
+                   behind = optionsFor(SurfaceKind::Camera);
+  cut.seam = SeamMode::Cut;
+  caps.cylinderCaps = true;
+  behind.camera.eye = Vec3(0.1, 0.2, 0.3);  // inside the sphere: half its corners behind the eye
+  for (const ProjectorOptions& o : {optionsFor(SurfaceKind::Sphere), cut, caps, behind}) {
+    const Projection one = project(sphere, o, 1);
+    EXPECT_GT(one.summary.poleVertices + one.summary.invalidVertices + one.summary.capFaces, 0u) << int(o.surface);
+    for (const int threads : {2, 3}) {
+      const Projection p = project(sphere, o, threads);
+      EXPECT_TRUE(p.localFromObject.matrix() == one.localFromObject.matrix());
+      ASSERT_EQ(p.uv.uv.size(), one.uv.uv.size());
+      EXPECT_TRUE(std::equal(p.uv.uv.begin(), p.uv.uv.end(), one.uv.uv.begin(),
+                             [](const Vec2& a, const Vec2& b) { return a.x() == b.x() && a.y() == b.y(); }));
+      EXPECT_EQ(p.uv.cornerInvalid, one.uv.cornerInvalid);
+      EXPECT_EQ(p.uv.cornerPole, one.uv.cornerPole);
+      EXPECT_EQ(p.uv.faceFlags, one.uv.faceFlags);
+      EXPECT_EQ(p.summary.poleVertexList, one.summary.poleVertexList);
+      EXPECT_EQ(p.summary.poleFaceList, one.summary.poleFaceList);
+      EXPECT_EQ(p.summary.invalidVertexList, one.summary.invalidVertexList);
+      EXPECT_EQ(p.summary.invalidCorners, one.summary.invalidCorners);
+      EXPECT_EQ(p.summary.straddlingFaces, one.summary.straddlingFaces);
+      EXPECT_EQ(p.summary.capFaces, one.summary.capFaces);
+      EXPECT_EQ(p.summary.addedVertices, one.summary.addedVertices);
+      EXPECT_EQ(p.sensible.has_value(), one.sensible.has_value());
+      if (p.sensible) EXPECT_TRUE(p.sensible->min() == one.sensible->min() && p.sensible->max() == one.sensible->max());
+    }
+  }
+}
+
 // Every S x O combination returns finite UVs; a corner without a valid UV is flagged, never NaN.
 TEST(Project, EverySurfaceComposesWithEveryRayMappingOnSphereAndCube) {
   for (const Mesh& mesh : {meshes::latLongSphere(24, 12), meshes::cube(3)}) {
