@@ -28,6 +28,7 @@ double offInteger(double x) { return std::fabs(x - std::round(x)); }
 struct HalfEdge {
   int lower, higher;  // vertices (through the stand-ins, when there are any), lower <= higher
   std::size_t cornerLower, cornerHigher;  // indices into uv.uv
+  std::size_t corner;                     // the corner it leaves: cornerLower or cornerHigher
 };
 
 // The vertex that stands for v: itself when `standIn` is empty.
@@ -37,37 +38,33 @@ int standInOf(const std::vector<int>& standIn, int v) { return standIn.empty() ?
 HalfEdge halfEdge(const Mesh& mesh, const std::vector<int>& standIn, std::size_t c) {
   const std::size_t f = c / 3, k = c % 3, next = (k + 1) % 3;
   HalfEdge e{standInOf(standIn, mesh.triangles[f][int(k)]), standInOf(standIn, mesh.triangles[f][int(next)]), c,
-             3 * f + next};
+             3 * f + next, c};
   if (e.lower > e.higher) std::swap(e.lower, e.higher), std::swap(e.cornerLower, e.cornerHigher);
   return e;
 }
 
-// Every face's three half-edges, named by the corner each leaves, ordered by (lower, higher,
-// corner), so that the sides of one edge are adjacent: a counting sort by the lower vertex, then
-// each vertex's few half-edges sorted by the key higher << 32 | corner. Linear where a comparison
-// sort of 3 F half-edges is not. 4 bytes a half-edge, the keys made one vertex at a time (with
-// each entry's key, 4 M faces took 96 MB instead of 48).
-std::vector<std::uint32_t> sortedHalfEdges(const Mesh& mesh, const std::vector<int>& standIn) {
+// Every face's three half-edges, named by the corner each leaves, grouped by their lower vertex
+// (a counting sort: linear where a comparison sort of 3 F half-edges is not): v's are
+// order[v == 0 ? 0 : end[v - 1], end[v]). 4 bytes a half-edge (with a key each, 4 M faces took 96
+// MB instead of 48).
+struct HalfEdgesByLowerVertex {
+  std::vector<std::uint32_t> order, end;
+  std::uint32_t begin(std::size_t v) const { return v == 0 ? 0 : end[v - 1]; }
+};
+
+HalfEdgesByLowerVertex halfEdgesByLowerVertex(const Mesh& mesh, const std::vector<int>& standIn) {
   const std::size_t corners = 3 * mesh.triangles.size();
   UVTK_CHECK(corners <= std::numeric_limits<std::uint32_t>::max());
+  HalfEdgesByLowerVertex h;
   // end[v + 1] counts v's half-edges; summed, end[v] is where v's start; placing them moves it to
-  // where they end, so that v's are [end[v - 1], end[v]) (from 0 for v = 0).
-  std::vector<std::uint32_t> end(mesh.positions.size() + 1, 0);
-  for (std::size_t c = 0; c < corners; ++c) ++end[std::size_t(halfEdge(mesh, standIn, c).lower) + 1];
-  for (std::size_t v = 1; v < end.size(); ++v) end[v] += end[v - 1];
-  std::vector<std::uint32_t> order;
-  resizeFaultedIn(order, corners);
-  for (std::size_t c = 0; c < corners; ++c) order[end[std::size_t(halfEdge(mesh, standIn, c).lower)]++] = std::uint32_t(c);
-  std::vector<std::uint64_t> keys;  // one vertex's at a time
-  for (std::size_t v = 0; v + 1 < end.size(); ++v) {
-    const auto first = order.begin() + (v == 0 ? 0 : end[v - 1]), last = order.begin() + end[v];
-    if (last - first < 2) continue;
-    keys.clear();
-    for (auto c = first; c != last; ++c) keys.push_back(std::uint64_t(std::uint32_t(halfEdge(mesh, standIn, *c).higher)) << 32 | *c);
-    std::sort(keys.begin(), keys.end());
-    std::transform(keys.begin(), keys.end(), first, [](std::uint64_t key) { return std::uint32_t(key); });
-  }
-  return order;
+  // where they end.
+  h.end.assign(mesh.positions.size() + 1, 0);
+  for (std::size_t c = 0; c < corners; ++c) ++h.end[std::size_t(halfEdge(mesh, standIn, c).lower) + 1];
+  for (std::size_t v = 1; v < h.end.size(); ++v) h.end[v] += h.end[v - 1];
+  resizeFaultedIn(h.order, corners);
+  for (std::size_t c = 0; c < corners; ++c) h.order[h.end[std::size_t(halfEdge(mesh, standIn, c).lower)]++] = std::uint32_t(c);
+  h.end.pop_back();
+  return h;
 }
 
 // Stand-ins for `vertices` (any order, repeats allowed): each one at the position of a
@@ -116,42 +113,46 @@ std::vector<SeamEdge> seamEdgesThrough(const Mesh& mesh, const UvMap& uv, const 
   const double extent = lowU > highU ? 0.0 : std::max(highU - lowU, highV - lowV);
   const double cutTolerance = kUvTolerance * (extent > 0.0 && std::isfinite(extent) ? extent : 1.0);
 
-  const std::vector<std::uint32_t> halfEdges = sortedHalfEdges(mesh, standIn);
+  // Each vertex's half-edges, ordered by (higher vertex, corner), so that the sides of one edge
+  // are adjacent; each made once (its face read once, where it lies in memory).
+  const HalfEdgesByLowerVertex byLower = halfEdgesByLowerVertex(mesh, standIn);
   std::vector<SeamEdge> seams;
-  // Each half-edge made once: the one that ends a run of sides begins the next.
-  HalfEdge next = halfEdges.empty() ? HalfEdge{} : halfEdge(mesh, standIn, halfEdges[0]);
-  for (std::size_t first = 0, end; first < halfEdges.size(); first = end) {
-    // The sides of one edge: the same lower and higher vertex.
-    const HalfEdge a = next;
-    HalfEdge b{};
-    end = first + 1;
-    while (end < halfEdges.size()) {
-      next = halfEdge(mesh, standIn, halfEdges[end]);
-      if (next.lower != a.lower || next.higher != a.higher) break;
-      if (end == first + 1) b = next;
-      ++end;
+  std::vector<HalfEdge> sides;  // one vertex's
+  for (std::size_t v = 0; v < byLower.end.size(); ++v) {
+    sides.clear();
+    for (std::uint32_t i = byLower.begin(v); i < byLower.end[v]; ++i)
+      sides.push_back(halfEdge(mesh, standIn, byLower.order[i]));
+    std::sort(sides.begin(), sides.end(), [](const HalfEdge& a, const HalfEdge& b) {
+      return std::pair(a.higher, a.corner) < std::pair(b.higher, b.corner);
+    });
+    for (std::size_t first = 0, end; first < sides.size(); first = end) {
+      // The sides of one edge: the same lower and higher vertex.
+      const HalfEdge& a = sides[first];
+      end = first + 1;
+      while (end < sides.size() && sides[end].higher == a.higher) ++end;
+      if (a.lower == a.higher) continue;  // two corners of one face at one vertex: no edge
+      if (end - first == 1 && boundary) boundary->insert(boundary->end(), {a.lower, a.higher});
+      if (end - first != 2) continue;  // a boundary or non-manifold edge
+      const HalfEdge& b = sides[first + 1];
+      if (!cornerValid(uv, a.cornerLower) || !cornerValid(uv, a.cornerHigher) || !cornerValid(uv, b.cornerLower) ||
+          !cornerValid(uv, b.cornerHigher))
+        continue;
+      const std::pair<int, Vec2> differences[2] = {{a.lower, uv.uv[a.cornerLower] - uv.uv[b.cornerLower]},
+                                                   {a.higher, uv.uv[a.cornerHigher] - uv.uv[b.cornerHigher]}};
+      bool compared = false, differs = false, wraps = true;
+      double shift = 0.0;  // the integer u offset of the first compared endpoint
+      for (const auto& [vertex, d] : differences) {
+        if (isPole[static_cast<std::size_t>(vertex)]) continue;
+        differs = differs || std::fabs(d.x()) > cutTolerance || std::fabs(d.y()) > cutTolerance;
+        const bool integerShift =
+            std::fabs(d.x()) > 0.5 && offInteger(d.x()) <= kUvTolerance && std::fabs(d.y()) <= kUvTolerance;
+        if (!compared) shift = std::round(d.x());
+        wraps = wraps && integerShift && std::round(d.x()) == shift;
+        compared = true;
+      }
+      if (!compared || !differs) continue;
+      seams.push_back({a.lower, a.higher, {a.cornerLower, b.cornerLower}, {a.cornerHigher, b.cornerHigher}, wraps});
     }
-    if (a.lower == a.higher) continue;  // two corners of one face at one vertex: no edge
-    if (end - first == 1 && boundary) boundary->insert(boundary->end(), {a.lower, a.higher});
-    if (end - first != 2) continue;  // a boundary or non-manifold edge
-    if (!cornerValid(uv, a.cornerLower) || !cornerValid(uv, a.cornerHigher) || !cornerValid(uv, b.cornerLower) ||
-        !cornerValid(uv, b.cornerHigher))
-      continue;
-    const std::pair<int, Vec2> differences[2] = {{a.lower, uv.uv[a.cornerLower] - uv.uv[b.cornerLower]},
-                                                 {a.higher, uv.uv[a.cornerHigher] - uv.uv[b.cornerHigher]}};
-    bool compared = false, differs = false, wraps = true;
-    double shift = 0.0;  // the integer u offset of the first compared endpoint
-    for (const auto& [vertex, d] : differences) {
-      if (isPole[static_cast<std::size_t>(vertex)]) continue;
-      differs = differs || std::fabs(d.x()) > cutTolerance || std::fabs(d.y()) > cutTolerance;
-      const bool integerShift =
-          std::fabs(d.x()) > 0.5 && offInteger(d.x()) <= kUvTolerance && std::fabs(d.y()) <= kUvTolerance;
-      if (!compared) shift = std::round(d.x());
-      wraps = wraps && integerShift && std::round(d.x()) == shift;
-      compared = true;
-    }
-    if (!compared || !differs) continue;
-    seams.push_back({a.lower, a.higher, {a.cornerLower, b.cornerLower}, {a.cornerHigher, b.cornerHigher}, wraps});
   }
   return seams;
 }
