@@ -88,6 +88,9 @@ int FileStream::Buffer::sync() { return flushBuffer() ? 0 : -1; }
 bool FileStream::Buffer::close() {
   if (fd_ < 0) return error_ == 0;
   const bool flushed = flushBuffer();
+  // The rest's write-back started too, by the thread that wrote the file (a small map's writes
+  // beside its judgement): the rename over an existing target then finds little left to flush.
+  if (flushed && written_ > writebackStarted_) ::sync_file_range(fd_, writebackStarted_, 0, SYNC_FILE_RANGE_WRITE);
   const int fd = fd_;
   fd_ = -1;
   if (::close(fd) != 0 && error_ == 0) error_ = errno;

@@ -3,7 +3,9 @@
 // left dirty in the page cache until it is renamed over its target made the rename wait while
 // ext4 flushed all of it (auto_da_alloc, ext4's safety for files replaced by rename): 0.16 to 0.23
 // s of the 366 MB map, with both cores idle (docs/benchmarks.md). Started a few megabytes at a
-// time (sync_file_range), the disk writes while the program still computes.
+// time (sync_file_range), and for the rest when the file is closed, by the thread that writes it,
+// the disk writes while the program still computes (a small map writes its file beside its
+// judgement).
 #pragma once
 
 #include <sys/types.h>
