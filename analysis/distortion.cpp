@@ -51,11 +51,12 @@ TriangleAreas triangleAreas(const Edges& p, const Vec2& t0, const Vec2& t1, cons
 // The Jacobian J of the linear map surface -> UV of a triangle with non-zero 3D area, in the
 // orthonormal frame (e1, e2) of its plane with p0 at the origin. With e2 = n x e1 the corners
 // run counter-clockwise in that frame, so det J has the sign of the UV triangle's area.
-Eigen::Matrix2d jacobian(const Edges& p, const Vec2& t0, const Vec2& t1, const Vec2& t2) {
+// `normal` is the triangle's area-weighted normal (TriangleAreas::normal).
+Eigen::Matrix2d jacobian(const Edges& p, const Vec3& normal, const Vec2& t0, const Vec2& t1, const Vec2& t2) {
   const Vec3 p0 = Vec3::Zero(), &p1 = p.e1, &p2 = p.e2;
   // Scaled normalisation: the squares of tiny or huge edges and normals would underflow or overflow.
   const Vec3 e1 = (p1 - p0).stableNormalized();
-  const Vec3 e2 = triangleAreaNormal(p0, p1, p2).stableNormalized().cross(e1);
+  const Vec3 e2 = normal.stableNormalized().cross(e1);
   Eigen::Matrix2d edges3d, edgesUv;
   edges3d << (p1 - p0).dot(e1), (p2 - p0).dot(e1), 0.0, (p2 - p0).dot(e2);
   edgesUv << t1 - t0, t2 - t0;
@@ -103,7 +104,8 @@ void singularValuesAtUnitScale(const Edges& p, const std::array<Vec2, 3>& t, dou
   unit.e1 = p.e1.unaryExpr([&](double x) { return std::ldexp(x, -k3); });
   unit.e2 = p.e2.unaryExpr([&](double x) { return std::ldexp(x, -k3); });
   const auto unitUv = [&](const Vec2& c) { return Vec2((c - t[0]).unaryExpr([&](double x) { return std::ldexp(x, -kUv); })); };
-  singularValues(jacobian(unit, Vec2::Zero(), unitUv(t[1]), unitUv(t[2])), s1, s2);
+  const Vec3 normal = triangleAreaNormal(Vec3(Vec3::Zero()), unit.e1, unit.e2);
+  singularValues(jacobian(unit, normal, Vec2::Zero(), unitUv(t[1]), unitUv(t[2])), s1, s2);
   s1 = std::ldexp(s1, kUv - k3);  // J scales as UV over 3D lengths
   s2 = std::ldexp(s2, kUv - k3);
 }
@@ -248,7 +250,10 @@ FaceMeasures measureFaces(const Mesh& mesh, const UvMap& uv, const MeasureScales
   constexpr std::size_t kChunk = kFacesPerChunk;
   const int chunks = int((faceCount + kChunk - 1) / kChunk);
 
-  // First pass: areas, and the statuses that need no mesh-wide decision.
+  // First pass: areas, the statuses that need no mesh-wide decision, and the direct singular
+  // values of every face that has a Jacobian, a block of faces at a time: their Jacobians' terms,
+  // the hypotenuses on vectors, then each face's values (s2 signed by its own winding until the
+  // majority's is known).
   FaceMeasures faces(faceCount, threads);
   FaceStatus* const status = faces.status.data();
   double *const area3d = faces.area3d.data(), *const areaUv = faces.areaUv.data();
@@ -256,25 +261,39 @@ FaceMeasures measureFaces(const Mesh& mesh, const UvMap& uv, const MeasureScales
   enum : std::uint8_t { kCounterClockwise = 1, kClockwise = 2, kTurnedAway = 4 };
   std::vector<std::uint8_t> orientation(faceCount, 0);  // of the ok faces, for the second pass
   forEachRun([&](std::size_t begin, std::size_t end) {
-    for (std::size_t f = begin; f < end; ++f) {
-      const std::array<Vec2, 3> t = uvCorners(f);
-      const TriangleAreas a = triangleAreas(edges(f), t[0], t[1], t[2]);
-      bool invalid = uv.faceHas(f, kFaceInvalid);
-      for (int k = 0; k < 3 && !uv.cornerInvalid.empty(); ++k) invalid = invalid || uv.cornerInvalid[3 * f + k] != 0;
-      area3d[f] = a.area3d;
-      areaUv[f] = invalid ? 0.0 : std::fabs(a.signedAreaUv);
-      if (invalid) {
-        status[f] = FaceStatus::Invalid;
-      } else if (a.area3d <= kZeroAreaRelative * a.longestEdge3d) {
-        status[f] = FaceStatus::ZeroArea3d;
-      } else if (areaUv[f] <= kZeroAreaRelative * a.longestEdgeUv) {
-        status[f] = FaceStatus::ZeroAreaUv;
-      } else {
-        status[f] = FaceStatus::Ok;  // until the majority winding is known
-        const bool away = uv.faceHas(f, kFaceTurnedAway);  // mirrored by design
-        orientation[f] = std::uint8_t((a.signedAreaUv > 0.0 ? kCounterClockwise : 0) |
-                                      (a.signedAreaUv < 0.0 ? kClockwise : 0) | (away ? kTurnedAway : 0));
+    constexpr std::size_t kBlock = 256;
+    std::size_t blockFaces[kBlock];
+    double e[kBlock], f[kBlock], g[kBlock], h[kBlock], det[kBlock], q[kBlock], r[kBlock];
+    for (std::size_t block = begin; block < end; block += kBlock) {
+      std::size_t n = 0;
+      for (std::size_t face = block; face < std::min(end, block + kBlock); ++face) {
+        const std::array<Vec2, 3> t = uvCorners(face);
+        const Edges p = edges(face);
+        const TriangleAreas a = triangleAreas(p, t[0], t[1], t[2]);
+        bool invalid = uv.faceHas(face, kFaceInvalid);
+        for (int k = 0; k < 3 && !uv.cornerInvalid.empty(); ++k) invalid = invalid || uv.cornerInvalid[3 * face + k] != 0;
+        area3d[face] = a.area3d;
+        areaUv[face] = invalid ? 0.0 : std::fabs(a.signedAreaUv);
+        if (invalid) {
+          status[face] = FaceStatus::Invalid;
+        } else if (a.area3d <= kZeroAreaRelative * a.longestEdge3d) {
+          status[face] = FaceStatus::ZeroArea3d;
+        } else if (areaUv[face] <= kZeroAreaRelative * a.longestEdgeUv) {
+          status[face] = FaceStatus::ZeroAreaUv;
+        } else {
+          status[face] = FaceStatus::Ok;  // until the majority winding is known
+          const bool away = uv.faceHas(face, kFaceTurnedAway);  // mirrored by design
+          orientation[face] = std::uint8_t((a.signedAreaUv > 0.0 ? kCounterClockwise : 0) |
+                                           (a.signedAreaUv < 0.0 ? kClockwise : 0) | (away ? kTurnedAway : 0));
+          const BlinnTerms b = blinnTerms(jacobian(p, a.normal, t[0], t[1], t[2]));
+          e[n] = b.e, f[n] = b.f, g[n] = b.g, h[n] = b.h, det[n] = b.det;
+          blockFaces[n++] = face;
+        }
       }
+      libm::hypot(e, h, q, n);
+      libm::hypot(f, g, r, n);
+      for (std::size_t k = 0; k < n; ++k)
+        singularValuesOf(q[k], r[k], det[k], sigmaMax[blockFaces[k]], sigmaMin[blockFaces[k]]);
     }
   });
   // Per chunk, the 3D area of the ok faces voting for counter-clockwise UV winding minus the area
@@ -292,44 +311,24 @@ FaceMeasures measureFaces(const Mesh& mesh, const UvMap& uv, const MeasureScales
   for (double v : votes) vote += v;
   const double majority = vote >= 0.0 ? 1.0 : -1.0;
 
-  // One face's status and values from its direct singular values' terms.
-  const auto measureFace = [&](std::size_t face, double q, double r, double det) {
-    const bool mirrored = (orientation[face] & (majority > 0.0 ? kClockwise : kCounterClockwise)) != 0;
-    if (uv.faceHas(face, kFacePole)) status[face] = FaceStatus::PoleFace;
-    else if (mirrored) status[face] = orientation[face] & kTurnedAway ? FaceStatus::Backfacing : FaceStatus::Flipped;
-    double s1 = 0.0, s2 = 0.0;
-    singularValuesOf(q, r, det, s1, s2);
-    if (!directlyMeasured(s1, s2)) singularValuesAtUnitScale(edges(face), uvCorners(face), s1, s2);
-    s2 *= majority;
-    // Beyond the doubles even at the face's own scale: its UV triangle is degenerate beside its
-    // 3D one (s2 underflows), or the other way round (s1 overflows); it is counted as such.
-    if (!std::isnormal(s2) || !std::isfinite(1.0 / s2))
-      status[face] = FaceStatus::ZeroAreaUv, s1 = s2 = 0.0;
-    else if (!std::isfinite(s1))
-      status[face] = FaceStatus::ZeroArea3d, s1 = s2 = 0.0;
-    sigmaMax[face] = s1, sigmaMin[face] = s2;
-  };
-
-  // Second pass: pole and mirrored faces, and the measures of every face with a Jacobian, a block
-  // of faces at a time: their Jacobians' terms, the hypotenuses on vectors, then each face's values
-  // (measured again at unit scale where the direct ones do not stand).
+  // Second pass: pole and mirrored faces, and each measured face's values (measured again at unit
+  // scale where the direct ones do not stand).
   forEachRun([&](std::size_t begin, std::size_t end) {
-    constexpr std::size_t kBlock = 256;
-    std::size_t blockFaces[kBlock];
-    double e[kBlock], f[kBlock], g[kBlock], h[kBlock], det[kBlock], q[kBlock], r[kBlock];
-    for (std::size_t block = begin; block < end; block += kBlock) {
-      std::size_t n = 0;
-      for (std::size_t face = block; face < std::min(end, block + kBlock); ++face) {
-        if (status[face] != FaceStatus::Ok) continue;
-        const std::array<Vec2, 3> t = uvCorners(face);
-        const BlinnTerms b = blinnTerms(jacobian(edges(face), t[0], t[1], t[2]));
-        e[n] = b.e, f[n] = b.f, g[n] = b.g, h[n] = b.h, det[n] = b.det;
-        blockFaces[n++] = face;
-      }
-      libm::hypot(e, h, q, n);
-      libm::hypot(f, g, r, n);
-      for (std::size_t k = 0; k < n; ++k)
-        measureFace(blockFaces[k], q[k], r[k], det[k]);
+    for (std::size_t face = begin; face < end; ++face) {
+      if (status[face] != FaceStatus::Ok) continue;
+      const bool mirrored = (orientation[face] & (majority > 0.0 ? kClockwise : kCounterClockwise)) != 0;
+      if (uv.faceHas(face, kFacePole)) status[face] = FaceStatus::PoleFace;
+      else if (mirrored) status[face] = orientation[face] & kTurnedAway ? FaceStatus::Backfacing : FaceStatus::Flipped;
+      double s1 = sigmaMax[face], s2 = sigmaMin[face];
+      if (!directlyMeasured(s1, s2)) singularValuesAtUnitScale(edges(face), uvCorners(face), s1, s2);
+      s2 *= majority;
+      // Beyond the doubles even at the face's own scale: its UV triangle is degenerate beside its
+      // 3D one (s2 underflows), or the other way round (s1 overflows); it is counted as such.
+      if (!std::isnormal(s2) || !std::isfinite(1.0 / s2))
+        status[face] = FaceStatus::ZeroAreaUv, s1 = s2 = 0.0;
+      else if (!std::isfinite(s1))
+        status[face] = FaceStatus::ZeroArea3d, s1 = s2 = 0.0;
+      sigmaMax[face] = s1, sigmaMin[face] = s2;
     }
   });
 
