@@ -149,8 +149,9 @@ Box boundsOnThreads(std::size_t count, int threads, Extend extend) {
   constexpr std::size_t kChunk = std::size_t(1) << 16;
   std::vector<Box> boxes((count + kChunk - 1) / kChunk);
   parallelFor(int(boxes.size()), threads, [&](int c) {
-    for (std::size_t i = std::size_t(c) * kChunk; i < std::min(count, std::size_t(c + 1) * kChunk); ++i)
-      extend(boxes[std::size_t(c)], i);
+    Box box;  // a local: the chunk's entry would be stored at every point
+    for (std::size_t i = std::size_t(c) * kChunk; i < std::min(count, std::size_t(c + 1) * kChunk); ++i) extend(box, i);
+    boxes[std::size_t(c)] = box;
   });
   Box box;
   for (const Box& b : boxes) box.extend(b);
@@ -165,9 +166,9 @@ double measureLengthScale(const Mesh& mesh, int threads) {
 }
 
 Eigen::AlignedBox2d validUvBounds(const UvMap& uv, int threads) {
-  return boundsOnThreads<Eigen::AlignedBox2d>(uv.uv.size(), threads, [&](Eigen::AlignedBox2d& box, std::size_t corner) {
-    if (uv.cornerValid(corner)) box.extend(uv.uv[corner]);
-  });
+  return boundsOnThreads<Bounds2>(uv.uv.size(), threads, [&](Bounds2& box, std::size_t corner) {
+           if (uv.cornerValid(corner)) box.extend(uv.uv[corner]);
+         }).box();
 }
 
 double measureUvScale(const Eigen::AlignedBox2d& validBounds) { return scaleOfExtent(validBounds); }

@@ -89,11 +89,11 @@ class EdgeBound {
 }  // namespace
 
 Eigen::AlignedBox2d measuredUvBounds(const UvMap& uv, const FaceMeasures& faces) {
-  Eigen::AlignedBox2d box;
+  Bounds2 box;
   for (std::size_t f = 0; f < faces.size(); ++f)
     if (isMeasured(faces.status[f]))
       for (std::size_t corner = 3 * f; corner < 3 * f + 3; ++corner) box.extend(uv.uv[corner]);
-  return box;
+  return box.box();
 }
 
 UvGrid uvGridOver(const Eigen::AlignedBox2d& uvBounds, int resolution) {
