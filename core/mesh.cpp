@@ -12,9 +12,13 @@ namespace {
 // The power of two that brings the mesh's largest coordinate to about 1. Areas computed from
 // positions times it stay out of underflow and overflow for meshes at 1e-300 or 1e300, and
 // scaling by a power of two changes no direction and no ratio of areas.
-double unitScale(const Mesh& mesh) {
-  double largest = 0.0;
-  for (const Vec3& p : mesh.positions) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+double unitScale(const Mesh& mesh, int threads = 1) {
+  const double largest = reduceRanges(
+      mesh.positions.size(), std::size_t(1) << 16, threads, 0.0,
+      [&](double& range, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) range = std::max(range, mesh.positions[i].cwiseAbs().maxCoeff());
+      },
+      [](double& total, double range) { total = std::max(total, range); });
   return unitPowerOfTwo(largest);
 }
 
@@ -60,7 +64,7 @@ MeshWarnings checkMesh(const Mesh& mesh, int threads) {
   constexpr std::size_t kChunk = std::size_t(1) << 16;
   MeshWarnings warnings;
   std::vector<char> used(mesh.positions.size(), 0);
-  const double scale = unitScale(mesh);
+  const double scale = unitScale(mesh, threads);
   warnings.degenerateFaces = reduceRanges(
       mesh.triangles.size(), kChunk, threads, std::size_t(0),
       [&](std::size_t& degenerate, std::size_t begin, std::size_t end) {
