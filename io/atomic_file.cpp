@@ -18,7 +18,7 @@ void checkOpened(const FileStream& stream, const TemporaryFile& file) {
 // A temporary is new and empty: opened without O_TRUNC, which on ext4 marks the file for a flush
 // of all its pages when closed (auto_da_alloc, meant for files truncated and rewritten in place):
 // 0.17 s of the 366 MB map's wall, on the writing thread (docs/benchmarks.md). A device or FIFO
-// written straight is opened as std::ofstream opened it.
+// written straight is opened with O_TRUNC, as a shell's `>` opens it.
 bool truncates(const TemporaryFile& file) { return file.writesStraight(); }
 
 // Flushes and closes `stream`; throws OutputError when any of its writes failed. A full disk

@@ -10,8 +10,7 @@ namespace uvtk::io {
 namespace {
 
 constexpr std::size_t kBufferBytes = std::size_t(1) << 16;
-// Write-back is started for each whole step written; a smaller output (the small maps) makes no
-// call at all.
+// Write-back is started for each whole step as it is written, and for the rest at the close.
 constexpr off_t kWritebackStep = off_t(8) << 20;
 
 }  // namespace

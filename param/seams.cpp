@@ -27,7 +27,7 @@ void CornerField::invalidate(std::size_t i, CornerInvalid why) {
 
 namespace {
 
-constexpr std::size_t kFacesPerRange = std::size_t(1) << 16;  // a thread's share at a time
+constexpr std::size_t kPerRange = std::size_t(1) << 16;  // faces or vertices a thread takes at a time
 
 }  // namespace
 
@@ -40,7 +40,7 @@ UvMap CornerField::toUvMap(int threads) && {
   map.cornerInvalid.resize(state.size());
   map.cornerPole.resize(state.size());
   const char anyPole = reduceRanges(
-      map.faceFlags.size(), kFacesPerRange, threads, char(0),
+      map.faceFlags.size(), kPerRange, threads, char(0),
       [&](char& pole, std::size_t begin, std::size_t end) {
         for (std::size_t i = 3 * begin; i < 3 * end; ++i) {
           map.cornerPole[i] = state[i] == CornerState::Pole;
@@ -172,7 +172,7 @@ SeamReport repairSeams(Mesh& mesh, CornerField& c, double uStart, SeamMode mode,
     return 1;
   };
   report.straddlingFaces = reduceRanges(
-      faceCount, kFacesPerRange, threads, std::size_t(0),
+      faceCount, kPerRange, threads, std::size_t(0),
       [&](std::size_t& straddling, std::size_t begin, std::size_t end) {
         for (std::size_t f = begin; f < end; ++f) straddling += shiftFace(f);
       },
@@ -259,7 +259,7 @@ SeamReport repairSeams(Mesh& mesh, CornerField& c, double uStart, SeamMode mode,
 }
 
 void fanPoleCorners(CornerField& c, int threads) {
-  parallelForRanges(c.faceFlags.size(), kFacesPerRange, threads, [&](std::size_t begin, std::size_t end) {
+  parallelForRanges(c.faceFlags.size(), kPerRange, threads, [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
       if (isCap(c, f)) continue;
       double sum = 0.0;
@@ -295,7 +295,7 @@ MappingSummary summarize(const Mesh& mesh, const CornerField& c, const SeamRepor
   };
   std::vector<std::uint8_t> vertexState(mesh.positions.size(), 0);  // bit 1: pole, bit 2: invalid
   const Counts faces = reduceRanges(
-      mesh.triangles.size(), kFacesPerRange, threads, Counts{},
+      mesh.triangles.size(), kPerRange, threads, Counts{},
       [&](Counts& n, std::size_t begin, std::size_t end) {
         for (std::size_t f = begin; f < end; ++f) {
           const std::uint8_t flags = c.faceFlags[f];
@@ -314,7 +314,7 @@ MappingSummary summarize(const Mesh& mesh, const CornerField& c, const SeamRepor
       },
       join);
   const Counts vertices = reduceRanges(
-      vertexState.size(), kFacesPerRange, threads, Counts{},
+      vertexState.size(), kPerRange, threads, Counts{},
       [&](Counts& n, std::size_t begin, std::size_t end) {
         for (std::size_t v = begin; v < end; ++v) {
           if (vertexState[v] & 1) n.list.push_back(static_cast<int>(v));
