@@ -142,31 +142,15 @@ double scaleOfExtent(const Box& box) {
   return extent >= kLow && extent <= kHigh ? 1.0 : unitPowerOfTwo(extent);
 }
 
-// The bounding box of the points extended into it by extend(box, i) for i in [0, count), in chunks
-// on threads: a box is a minimum and a maximum, the same in any order.
-template <class Box, class Extend>
-Box boundsOnThreads(std::size_t count, int threads, Extend extend) {
-  constexpr std::size_t kChunk = std::size_t(1) << 16;
-  std::vector<Box> boxes((count + kChunk - 1) / kChunk);
-  parallelFor(int(boxes.size()), threads, [&](int c) {
-    Box box;  // a local: the chunk's entry would be stored at every point
-    for (std::size_t i = std::size_t(c) * kChunk; i < std::min(count, std::size_t(c + 1) * kChunk); ++i) extend(box, i);
-    boxes[std::size_t(c)] = box;
-  });
-  Box box;
-  for (const Box& b : boxes) box.extend(b);
-  return box;
-}
-
 }  // namespace
 
 double measureLengthScale(const Mesh& mesh, int threads) {
-  return scaleOfExtent(boundsOnThreads<Eigen::AlignedBox3d>(
+  return scaleOfExtent(boundsInRanges<Eigen::AlignedBox3d>(
       mesh.positions.size(), threads, [&](Eigen::AlignedBox3d& box, std::size_t i) { box.extend(mesh.positions[i]); }));
 }
 
 Eigen::AlignedBox2d validUvBounds(const UvMap& uv, int threads) {
-  return boundsOnThreads<Bounds2>(uv.uv.size(), threads, [&](Bounds2& box, std::size_t corner) {
+  return boundsInRanges<Bounds2>(uv.uv.size(), threads, [&](Bounds2& box, std::size_t corner) {
            if (uv.cornerValid(corner)) box.extend(uv.uv[corner]);
          }).box();
 }

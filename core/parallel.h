@@ -149,6 +149,19 @@ T reduceRanges(std::size_t count, std::size_t chunk, int threads, const T& init,
   return total;
 }
 
+// The bounding box (an Eigen::AlignedBox, or Bounds2 of core/math.h) that extend(box, i) builds for
+// i in [0, count), in ranges on threads: a box is a minimum and a maximum, so the ranges' boxes
+// joined in order give the bits one loop gives (the first of equal minima kept).
+template <class Box, class Extend>
+Box boundsInRanges(std::size_t count, int threads, Extend&& extend) {
+  return reduceRanges(
+      count, std::size_t(1) << 16, threads, Box(),
+      [&](Box& box, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) extend(box, i);
+      },
+      [](Box& total, const Box& box) { total.extend(box); });
+}
+
 // `work()` set going beside the caller: on a pool thread (one is started when none is free), or,
 // when `aside` is false or no thread has taken it by the time it is asked for, by the thread that
 // asks (get()). Set aside, it always runs, as std::async's work does: the destructor waits for it

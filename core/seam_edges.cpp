@@ -102,15 +102,10 @@ std::vector<SeamEdge> seamEdgesThrough(const Mesh& mesh, const UvMap& uv, const 
 
   // Two corners of a vertex differ beyond kUvTolerance times the layout's extent: UVs in object
   // units, 1e-3 or 1e3 wide, cut where a unit layout cuts (the wrap tests stay in units of the period).
-  // (The box in four locals: an Eigen box extended in a loop stayed in memory, a sixth of this pass.)
-  double lowU = INFINITY, lowV = INFINITY, highU = -INFINITY, highV = -INFINITY;
-  for (std::size_t corner = 0; corner < uv.uv.size(); ++corner) {
-    const Vec2& p = uv.uv[corner];
-    if (!cornerValid(uv, corner) || !p.allFinite()) continue;
-    lowU = std::min(lowU, p.x()), highU = std::max(highU, p.x());
-    lowV = std::min(lowV, p.y()), highV = std::max(highV, p.y());
-  }
-  const double extent = lowU > highU ? 0.0 : std::max(highU - lowU, highV - lowV);
+  Bounds2 box;
+  for (std::size_t corner = 0; corner < uv.uv.size(); ++corner)
+    if (cornerValid(uv, corner) && uv.uv[corner].allFinite()) box.extend(uv.uv[corner]);
+  const double extent = box.lowX > box.highX ? 0.0 : std::max(box.highX - box.lowX, box.highY - box.lowY);
   const double cutTolerance = kUvTolerance * (extent > 0.0 && std::isfinite(extent) ? extent : 1.0);
 
   // Each vertex's half-edges, ordered by (higher vertex, corner), so that the sides of one edge

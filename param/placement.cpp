@@ -45,22 +45,6 @@ double positiveOr(double value, double fallback) { return value > 0.0 && std::is
 
 constexpr std::size_t kPositionsPerRange = std::size_t(1) << 16;  // a thread's share at a time
 
-// The lowest and highest corner of points[i] (i < count) in ranges on threads: the same in any
-// order (the first of equal minima is kept, as a loop over all of them keeps it).
-struct Bounds {
-  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
-  void extend(const Vec3& p) { lo = lo.cwiseMin(p), hi = hi.cwiseMax(p); }
-};
-template <class Point>
-Bounds boundsOf(std::size_t count, int threads, Point point) {
-  return reduceRanges(
-      count, kPositionsPerRange, threads, Bounds{},
-      [&](Bounds& b, std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) b.extend(point(i));
-      },
-      [](Bounds& total, const Bounds& b) { total.lo = total.lo.cwiseMin(b.lo), total.hi = total.hi.cwiseMax(b.hi); });
-}
-
 // The largest of distance(i) (i < count), at least 0, in ranges on threads.
 template <class Distance>
 double largestOf(std::size_t count, int threads, Distance distance) {
@@ -98,8 +82,9 @@ Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface,
   // The fit works on the unit box (no overflow or underflow at any scale), then scales back.
   const UnitBox box = toUnitBox(positions, threads);
   const Mat3 rotation = fittedRotation(positions, surface, options);
-  const Bounds rotated = boundsOf(box.unit.size(), threads, [&](std::size_t i) { return Vec3(rotation * box.unit[i]); });
-  const Vec3 &lo = rotated.lo, &hi = rotated.hi;
+  const Eigen::AlignedBox3d rotated = boundsInRanges<Eigen::AlignedBox3d>(
+      box.unit.size(), threads, [&](Eigen::AlignedBox3d& b, std::size_t i) { b.extend(Vec3(rotation * box.unit[i])); });
+  const Vec3 &lo = rotated.min(), &hi = rotated.max();
   const Vec3 extent = hi - lo;
   const Vec3 center = 0.5 * (lo + hi);
 
@@ -168,11 +153,12 @@ Affine3 frameBeforeTurn(const std::vector<Vec3>& positions, SurfaceKind surface,
 UnitBox toUnitBox(const std::vector<Vec3>& positions, int threads) {
   UnitBox box;
   if (positions.empty()) return box;
-  const Bounds bounds = boundsOf(positions.size(), threads, [&](std::size_t i) {
-    UVTK_CHECK(positions[i].allFinite());  // the readers refuse non-finite coordinates
-    return positions[i];
-  });
-  const Vec3 &lo = bounds.lo, &hi = bounds.hi;
+  const Eigen::AlignedBox3d bounds =
+      boundsInRanges<Eigen::AlignedBox3d>(positions.size(), threads, [&](Eigen::AlignedBox3d& b, std::size_t i) {
+        UVTK_CHECK(positions[i].allFinite());  // the readers refuse non-finite coordinates
+        b.extend(positions[i]);
+      });
+  const Vec3 &lo = bounds.min(), &hi = bounds.max();
   // The box's low corner, not its centre: the centre of a mesh far from the object origin rounds,
   // while p - corner is exact there (Sterbenz), so the fit is the same as the mesh's at the origin.
   box.corner = lo;

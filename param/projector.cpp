@@ -447,15 +447,8 @@ void mapVerticesThroughKernel(const ProjectorOptions& o, const Affine3& localFro
 std::optional<Eigen::AlignedBox3d> sensibleBox(const std::vector<Vec3>& positions, const ProjectorOptions& o,
                                                const Affine3& localFromObject, int threads) {
   const LocalFrameT<double> frame(localFromObject);  // the local positions the mapping itself sees
-  // A box is a minimum and a maximum: the same from ranges on threads as from one loop.
-  Eigen::AlignedBox3d box = reduceRanges(
-      positions.size(), std::size_t(1) << 16, threads, Eigen::AlignedBox3d(),
-      [&](Eigen::AlignedBox3d& b, std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) b.extend(frame.point(positions[i]));
-      },
-      [](Eigen::AlignedBox3d& total, const Eigen::AlignedBox3d& b) {
-        if (!b.isEmpty()) total.extend(b);
-      });
+  Eigen::AlignedBox3d box = boundsInRanges<Eigen::AlignedBox3d>(
+      positions.size(), threads, [&](Eigen::AlignedBox3d& b, std::size_t i) { b.extend(frame.point(positions[i])); });
   switch (traitsOf(o.surface).shape) {  // the unit shape the fits put the mesh on (§2)
     case UnitShape::Plane:
       box.extend(Vec3(0, 0, 0)).extend(Vec3(1, 1, 0));
