@@ -11,6 +11,7 @@ find_package(nlohmann_json 3 REQUIRED)
 find_package(OpenImageIO REQUIRED)
 find_package(OpenSSL REQUIRED)  # SHA-256 of the inputs a report measured
 find_package(ZLIB REQUIRED)  # CRC-32, to check PNG files before libpng reads them
+find_package(dragonbox REQUIRED)  # Dragonbox (header only): the digits of the numbers the mesh writers write
 # SLEEF: the vectorised atan2 of --math fast (Debian's libsleef-dev ships a pkg-config file).
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(SLEEF REQUIRED IMPORTED_TARGET sleef)

@@ -1,5 +1,5 @@
 // OBJ text is made in blocks of lines on every thread (io/ordered_text.h): each block formats its
-// numbers with std::to_chars straight into its own buffer, and the blocks are written in order,
+// numbers (io/shortest_number.h, std::to_chars) straight into its own buffer, and the blocks are written in order,
 // about a megabyte per write. iostream formatting of millions of numbers is several times slower.
 #include "io/obj_writer.h"
 
@@ -15,6 +15,7 @@
 #include "io/atomic_file.h"
 #include "io/face_lists.h"
 #include "io/ordered_text.h"
+#include "io/shortest_number.h"
 #include "io/split_vertices.h"
 
 namespace uvtk::io {
@@ -31,8 +32,8 @@ constexpr Triangle kNoCorners = {-1, -1, -1};
 
 // The shortest decimal text that reads back as exactly the same double (or float).
 char* number(char* out, double value, bool asFloat) {
-  const std::to_chars_result r = asFloat ? std::to_chars(out, out + 32, static_cast<float>(value))
-                                         : std::to_chars(out, out + 32, value);
+  if (!asFloat) return writeShortest(out, value);
+  const std::to_chars_result r = std::to_chars(out, out + 32, static_cast<float>(value));
   UVTK_CHECK(r.ec == std::errc());
   return r.ptr;
 }
@@ -46,7 +47,7 @@ char* vectorLine(char* out, const char* keyword, const Vec3& p) {
   while (*keyword) *out++ = *keyword++;
   for (int a = 0; a < 3; ++a) {
     if (a > 0) *out++ = ' ';
-    out = number(out, p[a], false);
+    out = writeShortest(out, p[a]);
   }
   *out++ = '\n';
   return out;

@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/progress.h"
 #include "io/face_lists.h"
+#include "io/shortest_number.h"
 #include "io/split_vertices.h"
 
 namespace uvtk::io {
@@ -33,10 +34,8 @@ class Buffer {
   void character(char c) { buffer_.push_back(c); }
   // The shortest decimal text that reads back as exactly the same double.
   void number(double value) {
-    char digits[32];
-    const std::to_chars_result r = std::to_chars(digits, digits + sizeof digits, value);
-    UVTK_CHECK(r.ec == std::errc());
-    buffer_.append(digits, r.ptr);
+    char digits[kShortestNumberBytes];
+    buffer_.append(digits, writeShortest(digits, value));
   }
   void integer(std::size_t value) {
     char digits[24];
