@@ -139,11 +139,19 @@ void parallelForRanges(std::size_t count, std::size_t chunk, int threads, F&& wo
 }
 
 // A reduction over [0, count): each range's value, from `init`, made by work(value, begin, end),
-// then the values combined in range order by combine(total, value), the total from `init`.
+// then the values combined in range order by combine(total, value), the total from `init`. A range
+// works on a local value, stored when it is done: a value in the shared vector, reached through a
+// reference the compiler must assume may alias the data read (a char count aliases everything, a
+// box of doubles the doubles), was loaded and stored on every item (a UV box over 12 M corners
+// took 12 ns a corner).
 template <class T, class F, class Combine>
 T reduceRanges(std::size_t count, std::size_t chunk, int threads, const T& init, F&& work, Combine&& combine) {
   std::vector<T> values((count + chunk - 1) / chunk, init);
-  parallelForRanges(count, chunk, threads, [&](std::size_t begin, std::size_t end) { work(values[begin / chunk], begin, end); });
+  parallelForRanges(count, chunk, threads, [&](std::size_t begin, std::size_t end) {
+    T value = init;
+    work(value, begin, end);
+    values[begin / chunk] = std::move(value);
+  });
   T total = init;
   for (const T& value : values) combine(total, value);
   return total;
