@@ -269,7 +269,7 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
   const int chunks = int((mesh.faceCount() + kChunk - 1) / kChunk);
   std::vector<FaceTally> tallies(static_cast<std::size_t>(chunks));
   parallelFor(chunks, options.threads, [&](int c) {
-    FaceTally& t = tallies[std::size_t(c)];
+    FaceTally t;  // local, stored at the end: in the vector it would be loaded and stored every face
     for (std::size_t f = std::size_t(c) * kChunk; f < std::min(mesh.faceCount(), std::size_t(c + 1) * kChunk); ++f) {
       const FaceDistortion& face = j.faces[f];
       t.surfaceArea += face.area3d;
@@ -298,6 +298,7 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
           spansSeam(uv, f, options.uPeriod))
         ++t.unrepairedSeamFaces;
     }
+    tallies[std::size_t(c)] = t;
   });
   std::array<double, kFaceStatusCount> statusArea{};
   double poleArea = 0.0;
@@ -341,7 +342,7 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
   const TexelDensity& density = j.summary.density;
   std::vector<std::array<std::size_t, 2>> ends(static_cast<std::size_t>(chunks), {0, 0});  // stretched, spread
   parallelFor(chunks, options.threads, [&](int c) {
-    std::array<std::size_t, 2>& e = ends[std::size_t(c)];
+    std::array<std::size_t, 2> e = {0, 0};
     for (std::size_t f = std::size_t(c) * kChunk; f < std::min(mesh.faceCount(), std::size_t(c + 1) * kChunk); ++f) {
       const FaceDistortion& face = j.faces[f];
       if (face.status != FaceStatus::Ok) continue;
@@ -349,6 +350,7 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
       const double d = scaledTexelDensity(face, density.textureSize);
       e[1] += d <= density.scaled.p10 || d >= density.scaled.p90 ? 1 : 0;
     }
+    ends[std::size_t(c)] = e;
   });
   std::size_t stretched = 0, spread = 0;
   for (const auto& [s, d] : ends) stretched += s, spread += d;

@@ -192,12 +192,23 @@ struct DigitTally {
         counts(ranges * buckets, 0),
         sums(ranges * buckets * format.limbs(), 0) {}
 
-  // One item of the range numbered `range`.
-  void add(const SumFormat& format, std::size_t range, std::uint64_t key, double weight) {
-    const std::size_t bucket = range * buckets + ((key >> shift) & mask);
-    ++counts[bucket];
-    format.add(sums.data() + bucket * format.limbs(), weight);
-  }
+  // The tally as a pass's loop adds to it: its arrays and digit in locals, as the counts and sums
+  // stored are of the types of the tally's own fields, which would be loaded again after each store.
+  struct Adder {
+    std::size_t* counts;
+    std::uint64_t* sums;
+    std::size_t buckets, limbs;
+    int shift;
+    std::uint64_t mask;
+
+    // One item of the range numbered `range`.
+    void add(const SumFormat& format, std::size_t range, std::uint64_t key, double weight) const {
+      const std::size_t bucket = range * buckets + ((key >> shift) & mask);
+      ++counts[bucket];
+      format.add(sums + bucket * limbs, weight);
+    }
+  };
+  Adder adder(const SumFormat& format) { return {counts.data(), sums.data(), buckets, format.limbs(), shift, mask}; }
 };
 
 // Each pass over the items counts and sums the next digit of the keys in every open search's
@@ -227,12 +238,15 @@ void findPercentiles(const Items& items, const SumFormat& format, std::vector<Se
     UVTK_CHECK(!counted || (ranges.size() == 1 && ranges[0] == first->prefix && bits == first->bits));
     DigitTally tally = counted ? std::move(*first) : DigitTally(format, ranges[0], bits, ranges.size(), digitBitsFor(count));
     first = nullptr;
+    const DigitTally::Adder adder = tally.adder(format);
+    const std::uint64_t* const prefixes = ranges.data();
+    const std::size_t rangeCount = ranges.size();
     for (std::size_t i = 0; i < items.size && !counted; ++i) {
       if (!items.in(i)) continue;
       const std::uint64_t key = orderKey(values[i]);
-      for (std::size_t r = 0; r < ranges.size(); ++r)
-        if (bits == 0 || (key ^ ranges[r]) >> (64 - bits) == 0) {
-          tally.add(format, r, key, weights[i]);
+      for (std::size_t r = 0; r < rangeCount; ++r)
+        if (bits == 0 || (key ^ prefixes[r]) >> (64 - bits) == 0) {
+          adder.add(format, r, key, weights[i]);
           break;
         }
     }
@@ -351,24 +365,26 @@ Statistics weightedStatistics(const double* values, const double* weights, const
     return s;
   }
 
-  // One pass for the extremes and the sums in the items' order, and the weights' exponents.
-  s.min = s.max = values[first];
-  double weightedSum = 0.0;
+  // One pass for the extremes and the sums in the items' order, and the weights' exponents, in
+  // locals (the result's fields may alias the values read: they would be stored every item).
+  double lowest = values[first], highest = values[first], totalWeight = 0.0, weightedSum = 0.0;
+  std::size_t count = 0;
   int lowestExponent = 2047, highestExponent = 0;
   for (std::size_t i = first; i < size; ++i) {
     if (!items.in(i)) continue;
-    ++items.count;
+    ++count;
     const double value = values[i], weight = weights[i];
     UVTK_CHECK(std::isfinite(value) && std::isfinite(weight) && weight >= 0.0);  // the precondition: a NaN derails the search
-    if (value < s.min) s.min = value;   // the first of equal smallest values
-    if (!(value < s.max)) s.max = value;  // the last of equal largest ones (std::minmax_element's choice)
-    s.totalWeight += weight, weightedSum += weight * value;
+    if (value < lowest) lowest = value;     // the first of equal smallest values
+    if (!(value < highest)) highest = value;  // the last of equal largest ones (std::minmax_element's choice)
+    totalWeight += weight, weightedSum += weight * value;
     if (weight > 0.0) {
       const int exponent = SumFormat::exponentOf(weight);
       lowestExponent = std::min(lowestExponent, exponent), highestExponent = std::max(highestExponent, exponent);
     }
   }
-  const std::size_t count = items.count;
+  s.min = lowest, s.max = highest, s.totalWeight = totalWeight;
+  items.count = count;
   // A log2 histogram needs positive values; where one underflowed to 0 (the measures of a mesh at the
   // edge of the doubles' range) its bins are linear, as its spacing says.
   if (spacing == BinSpacing::Log2 && !(s.min > 0.0)) spacing = s.histogram.spacing = BinSpacing::Linear;
@@ -387,15 +403,18 @@ Statistics weightedStatistics(const double* values, const double* weights, const
   // differ; else the weights are summed exactly as they are).
   UVTK_CHECK(count < (std::size_t(1) << 32));
   const SumFormat format(lowestExponent, highestExponent);
-  const std::uint64_t lowest = orderKey(s.min), highest = orderKey(s.max);
-  const int common = lowest == highest ? 64 : __builtin_clzll(lowest ^ highest);
+  const std::uint64_t lowestKey = orderKey(s.min), highestKey = orderKey(s.max);
+  const int common = lowestKey == highestKey ? 64 : __builtin_clzll(lowestKey ^ highestKey);
   std::optional<DigitTally> firstDigit;
-  if (common < 64) firstDigit.emplace(format, lowest, common, 1, digitBitsFor(count));
+  if (common < 64) firstDigit.emplace(format, lowestKey, common, 1, digitBitsFor(count));
   std::vector<std::uint64_t> whole(format.limbs(), 0);
   // The bins' scale a block at a time: log2 on vectors with glibc's bits (core/libm_simd.h), the
   // items left out taken along (their logarithms unread); linear bins read the values themselves.
   constexpr std::size_t kBlock = 256;
   double logarithms[kBlock];
+  double* const binWeights = h.weightFraction.data();
+  const std::optional<DigitTally::Adder> digitAdder =
+      firstDigit ? std::optional<DigitTally::Adder>(firstDigit->adder(format)) : std::nullopt;
   for (std::size_t block = first; block < size; block += kBlock) {
     const std::size_t n = std::min(kBlock, size - block);
     const double* scaled = values + block;
@@ -404,9 +423,9 @@ Statistics weightedStatistics(const double* values, const double* weights, const
       if (!items.in(i)) continue;
       const double t = width > 0.0 ? (scale * scaled[i - block] - origin) / width : 0.0;
       const int bin = std::clamp(static_cast<int>(t * bins), 0, bins - 1);
-      h.weightFraction[static_cast<std::size_t>(bin)] += weights[i] / s.totalWeight;
-      if (firstDigit)
-        firstDigit->add(format, 0, orderKey(values[i]), weights[i]);
+      binWeights[static_cast<std::size_t>(bin)] += weights[i] / totalWeight;
+      if (digitAdder)
+        digitAdder->add(format, 0, orderKey(values[i]), weights[i]);
       else
         format.add(whole.data(), weights[i]);
     }
@@ -425,7 +444,7 @@ Statistics weightedStatistics(const double* values, const double* weights, const
     search.target.assign(format.limbs(), 0);
     format.setCeiling(search.target.data(), fractions[k] * s.totalWeight);
     search.below.assign(format.limbs(), 0);
-    search.prefix = lowest;
+    search.prefix = lowestKey;
     search.bits = common;
     // Rounding may leave the whole weight short of the target: then the largest value.
     if (!format.atLeast(whole.data(), search.target.data())) search.found = true, search.answer = s.max;

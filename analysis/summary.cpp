@@ -60,11 +60,16 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const FaceMeasures& faces, 
   std::vector<std::size_t> chunkPoleFaces(chunks);
   std::vector<std::uint8_t> ok(faces.size());
   parallelFor(int(chunks), threads, [&](int c) {
+    StatusCounts counts;  // locals, stored at the end: ok's bytes may alias anything in memory
+    std::size_t poleFaces = 0;
+    const FaceStatus* status = faces.status.data();
     for (std::size_t f = std::size_t(c) * kChunk; f < chunkEnd(std::size_t(c)); ++f) {
-      ++chunkCounts[std::size_t(c)].faces[static_cast<std::size_t>(faces.status[f])];
-      chunkPoleFaces[std::size_t(c)] += uv.faceHas(f, kFacePole) ? 1 : 0;
-      ok[f] = faces.status[f] == FaceStatus::Ok;
+      ++counts.faces[static_cast<std::size_t>(status[f])];
+      poleFaces += uv.faceHas(f, kFacePole) ? 1 : 0;
+      ok[f] = status[f] == FaceStatus::Ok;
     }
+    chunkCounts[std::size_t(c)] = counts;
+    chunkPoleFaces[std::size_t(c)] = poleFaces;
   });
   for (std::size_t c = 0; c < chunks; ++c) {
     for (std::size_t k = 0; k < kFaceStatusCount; ++k) s.statusCounts.faces[k] += chunkCounts[c].faces[k];
@@ -79,12 +84,13 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const FaceMeasures& faces, 
   double normalisation = 0.0;
   std::once_flag totalsOnce;
   const auto sumTotals = [&] {
-    double linfMax = 0.0;
+    double linfMax = 0.0, surface = 0.0, uvArea = 0.0;  // locals: the totals would be stored every face
     for (std::size_t f = 0; f < faces.size(); ++f) {
       if (!ok[f]) continue;
-      totals.surface += faces.area3d[f], totals.uv += faces.areaUv[f];
+      surface += faces.area3d[f], uvArea += faces.areaUv[f];
       linfMax = std::max(linfMax, faces[f].linfStretch());
     }
+    totals.surface = surface, totals.uv = uvArea;
     normalisation = std::sqrt(1.0 / totals.surfacePerUv());
     if (totals.surface > 0.0) {
       // A3 L2^2 grows as the fourth power of the mesh's size (at 1e77 it overflows): each L2 is taken
