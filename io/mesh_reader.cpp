@@ -549,13 +549,18 @@ class ObjChunkReader {
 
  private:
   std::size_t before(int table) const { return before_ ? (*before_)[table] : 0; }
+  // The elements of `table` the chunk has defined so far (one table's size: a corner's index
+  // reads only its own).
+  std::size_t definedIn(int table) const {
+    return table == kPositionTable   ? chunk_.positions.size()
+           : table == kTexcoordTable ? chunk_.texcoords.size()
+                                     : chunk_.normals.size();
+  }
 
   // The 0-based index of a corner's index text into `table`, whose elements so far are `defined`
   // in the chunk.
   int index(std::string_view text, int table, const char* what) {
-    const std::size_t defined = table == kPositionTable   ? chunk_.positions.size()
-                                : table == kTexcoordTable ? chunk_.texcoords.size()
-                                                          : chunk_.normals.size();
+    const std::size_t defined = definedIn(table);
     if (before_) return resolveObjIndex(reader_, text, (*before_)[table] + defined, what);
     long long i = 0;
     if (parseInteger(text, i) && i != 0) {
@@ -701,7 +706,7 @@ class ObjChunkReader {
     while (p != end && *p >= '0' && *p <= '9' && p - start < 10) value = value * 10 + (*p++ - '0');
     if (p == start || p - start == 10 || value == 0) return -1;
     if (p != end && !isBlank(*p) && *p != '/' && *p != '\n' && *p != '\r') return -1;
-    const long long defined = static_cast<long long>(chunk_.counts()[table]);
+    const long long defined = static_cast<long long>(definedIn(table));
     if (before_) {
       if (value > static_cast<long long>((*before_)[table]) + defined) return -1;
     } else {
