@@ -264,7 +264,7 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
   // Faces by status and by flag, their 3D areas, and the invalid corners by reason: tallied in
   // fixed chunks and added up in chunk order, so the sums do not depend on the threads. They need
   // no summary: tallied on a thread of their own while the summary's measures run, whose last
-  // statistic leaves a core idle (the 4 M-face sphere's judgement 20 to 40 ms shorter).
+  // statistic leaves a core idle.
   constexpr std::size_t kChunk = kFacesPerChunk;
   const int chunks = int((mesh.faceCount() + kChunk - 1) / kChunk);
   const auto tallyChunk = [&](int c) {
