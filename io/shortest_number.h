@@ -9,9 +9,9 @@ constexpr int kShortestNumberBytes = 24;
 
 // Writes at `out` exactly what std::to_chars(out, out + 32, value) writes (plain format: fixed
 // or scientific, whichever is shorter, fixed on a tie; "-0", "inf", "nan"), and returns its end.
-// Dragonbox finds the digits and this function places them, about twice as fast as libstdc++'s Ryu
-// for the 17-digit coordinates of a mesh; the few values whose fixed text needs more than their
-// shortest digits (whole numbers beyond 2^50) are left to std::to_chars.
+// Dragonbox finds the digits and this function places them, in a quarter to a third less time than
+// libstdc++'s Ryu for the 17-digit coordinates of a mesh; the few values whose fixed text needs more
+// than their shortest digits (whole numbers beyond 2^50) are left to std::to_chars.
 char* writeShortest(char* out, double value);
 
 }  // namespace uvtk::io
