@@ -16,7 +16,7 @@ packages=(cmake ninja-build g++ pkg-config
           libopenimageio-dev openimageio-tools
           libssl-dev zlib1g-dev libsleef-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
           libtinygltf-dev  # glTF 2.0 in (io/gltf_reader.cpp)
-          libdragonbox-dev # the shortest text of a double, twice as fast as std::to_chars (io/shortest_number.cpp)
+          libdragonbox-dev # the shortest digits of a double, for the mesh writers (io/shortest_number.cpp)
           libhwy-dev       # Google Highway: portable SIMD for the rasterizer and the mapping kernel
           libassimp-dev    # the peer `uvtk bench` times (aiProcess_GenUVCoords); optional to the build
           libosmesa6-dev   # Mesa's software OpenGL: the reference the texgen tests compare with
