@@ -109,6 +109,15 @@ struct FaceTally {
   std::array<std::size_t, kCornerInvalidCount> invalidCorners{};
   std::size_t otherInvalidFaces = 0, invalidFaces = 0, outOfRangeFaces = 0, straddlingFaces = 0, capFaces = 0,
               cubeSeamFaces = 0, sphereMapSingularFaces = 0, unrepairedSeamFaces = 0;
+
+  void add(const FaceTally& t) {
+    surfaceArea += t.surfaceArea, poleArea += t.poleArea;
+    for (std::size_t k = 0; k < statusArea.size(); ++k) statusArea[k] += t.statusArea[k];
+    for (std::size_t k = 0; k < invalidCorners.size(); ++k) invalidCorners[k] += t.invalidCorners[k];
+    otherInvalidFaces += t.otherInvalidFaces, invalidFaces += t.invalidFaces, outOfRangeFaces += t.outOfRangeFaces;
+    straddlingFaces += t.straddlingFaces, capFaces += t.capFaces, cubeSeamFaces += t.cubeSeamFaces;
+    sphereMapSingularFaces += t.sphereMapSingularFaces, unrepairedSeamFaces += t.unrepairedSeamFaces;
+  }
 };
 
 // Whether the valid corners of face f span more than half a turn of u (a seam left across it).
@@ -266,10 +275,8 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
   // no summary: tallied on a thread of their own while the summary's measures run, whose last
   // statistic leaves a core idle.
   constexpr std::size_t kChunk = kFacesPerChunk;
-  const int chunks = int((mesh.faceCount() + kChunk - 1) / kChunk);
-  const auto tallyChunk = [&](int c) {
-    FaceTally t;
-    for (std::size_t f = std::size_t(c) * kChunk; f < std::min(mesh.faceCount(), std::size_t(c + 1) * kChunk); ++f) {
+  const auto tallyRange = [&](FaceTally& t, std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
       const FaceDistortion& face = j.faces[f];
       t.surfaceArea += face.area3d;
       t.statusArea[static_cast<std::size_t>(face.status)] += face.area3d;
@@ -297,34 +304,28 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
           spansSeam(uv, f, options.uPeriod))
         ++t.unrepairedSeamFaces;
     }
-    return t;
   };
   WorkAside tallying(
       [&] {
-        std::vector<FaceTally> tallies(static_cast<std::size_t>(chunks));
-        for (int c = 0; c < chunks; ++c) tallies[std::size_t(c)] = tallyChunk(c);
-        return tallies;
+        return reduceRanges(mesh.faceCount(), kChunk, 1, FaceTally(), tallyRange,
+                            [](FaceTally& total, const FaceTally& t) { total.add(t); });
       },
       threadCount(options.threads) > 1);
   j.summary = summarize(mesh, uv, j.faces, scales, seams.get(), options.overlapResolution, options.threads,
                         options.textureSize);
-  const std::vector<FaceTally> tallies = tallying.get();
-  std::array<double, kFaceStatusCount> statusArea{};
-  double poleArea = 0.0;
-  for (const FaceTally& t : tallies) {
-    j.surfaceArea += t.surfaceArea;
-    for (std::size_t k = 0; k < statusArea.size(); ++k) statusArea[k] += t.statusArea[k];
-    poleArea += t.poleArea;
-    for (std::size_t k = 0; k < j.invalidCorners.size(); ++k) j.invalidCorners[k] += t.invalidCorners[k];
-    j.otherInvalidFaces += t.otherInvalidFaces;
-    j.invalidFaces += t.invalidFaces;
-    j.outOfRangeFaces += t.outOfRangeFaces;
-    j.straddlingFaces += t.straddlingFaces;
-    j.capFaces += t.capFaces;
-    j.cubeSeamFaces += t.cubeSeamFaces;
-    j.sphereMapSingularFaces += t.sphereMapSingularFaces;
-    j.unrepairedSeamFaces += t.unrepairedSeamFaces;
-  }
+  const FaceTally tally = tallying.get();
+  const std::array<double, kFaceStatusCount>& statusArea = tally.statusArea;
+  const double poleArea = tally.poleArea;
+  j.surfaceArea = tally.surfaceArea;
+  j.invalidCorners = tally.invalidCorners;
+  j.otherInvalidFaces = tally.otherInvalidFaces;
+  j.invalidFaces = tally.invalidFaces;
+  j.outOfRangeFaces = tally.outOfRangeFaces;
+  j.straddlingFaces = tally.straddlingFaces;
+  j.capFaces = tally.capFaces;
+  j.cubeSeamFaces = tally.cubeSeamFaces;
+  j.sphereMapSingularFaces = tally.sphereMapSingularFaces;
+  j.unrepairedSeamFaces = tally.unrepairedSeamFaces;
   j.overlappedFaces = j.summary.overlap.overlappedFaces;
 
   const auto share = [&](double area) { return j.surfaceArea > 0.0 ? area / j.surfaceArea : 0.0; };
@@ -349,20 +350,20 @@ Judgement judge(const Mesh& mesh, const UvMap& uv, const JudgementOptions& optio
   const double p99 = j.summary.l2Stretches.p99;
   const double normalisation = std::sqrt(1.0 / j.summary.okTotals.surfacePerUv());
   const TexelDensity& density = j.summary.density;
-  std::vector<std::array<std::size_t, 2>> ends(static_cast<std::size_t>(chunks), {0, 0});  // stretched, spread
-  parallelFor(chunks, options.threads, [&](int c) {
-    std::array<std::size_t, 2> e = {0, 0};
-    for (std::size_t f = std::size_t(c) * kChunk; f < std::min(mesh.faceCount(), std::size_t(c + 1) * kChunk); ++f) {
-      const FaceDistortion& face = j.faces[f];
-      if (face.status != FaceStatus::Ok) continue;
-      e[0] += face.l2Stretch() * normalisation >= p99 ? 1 : 0;
-      const double d = scaledTexelDensity(face, density.textureSize);
-      e[1] += d <= density.scaled.p10 || d >= density.scaled.p90 ? 1 : 0;
-    }
-    ends[std::size_t(c)] = e;
-  });
-  std::size_t stretched = 0, spread = 0;
-  for (const auto& [s, d] : ends) stretched += s, spread += d;
+  using Ends = std::array<std::size_t, 2>;  // stretched, spread
+  const Ends ends = reduceRanges(
+      mesh.faceCount(), kChunk, options.threads, Ends{0, 0},
+      [&](Ends& e, std::size_t begin, std::size_t end) {
+        for (std::size_t f = begin; f < end; ++f) {
+          const FaceDistortion& face = j.faces[f];
+          if (face.status != FaceStatus::Ok) continue;
+          e[0] += face.l2Stretch() * normalisation >= p99 ? 1 : 0;
+          const double d = scaledTexelDensity(face, density.textureSize);
+          e[1] += d <= density.scaled.p10 || d >= density.scaled.p90 ? 1 : 0;
+        }
+      },
+      [](Ends& total, const Ends& e) { total[0] += e[0], total[1] += e[1]; });
+  const auto [stretched, spread] = ends;
   set(Rule::StretchP99, p99, stretched);
   set(Rule::PoleArea, share(poleArea), j.summary.poleFaces);
   set(Rule::BackfacingArea, share(statusArea[std::size_t(FaceStatus::Backfacing)]),

@@ -54,27 +54,27 @@ Summary summarize(const Mesh& mesh, const UvMap& uv, const FaceMeasures& faces, 
   s.seams = std::move(seams);
   // The counts in fixed chunks on threads, and which faces are ok (the statistics' items).
   constexpr std::size_t kChunk = std::size_t(1) << 16;
-  const std::size_t chunks = (faces.size() + kChunk - 1) / kChunk;
-  const auto chunkEnd = [&](std::size_t c) { return std::min(faces.size(), (c + 1) * kChunk); };
-  std::vector<StatusCounts> chunkCounts(chunks);
-  std::vector<std::size_t> chunkPoleFaces(chunks);
-  std::vector<std::uint8_t> ok(faces.size());
-  parallelFor(int(chunks), threads, [&](int c) {
-    StatusCounts counts;  // locals, stored at the end: ok's bytes may alias anything in memory
+  struct Counts {
+    StatusCounts status;
     std::size_t poleFaces = 0;
-    const FaceStatus* status = faces.status.data();
-    for (std::size_t f = std::size_t(c) * kChunk; f < chunkEnd(std::size_t(c)); ++f) {
-      ++counts.faces[static_cast<std::size_t>(status[f])];
-      poleFaces += uv.faceHas(f, kFacePole) ? 1 : 0;
-      ok[f] = status[f] == FaceStatus::Ok;
-    }
-    chunkCounts[std::size_t(c)] = counts;
-    chunkPoleFaces[std::size_t(c)] = poleFaces;
-  });
-  for (std::size_t c = 0; c < chunks; ++c) {
-    for (std::size_t k = 0; k < kFaceStatusCount; ++k) s.statusCounts.faces[k] += chunkCounts[c].faces[k];
-    s.poleFaces += chunkPoleFaces[c];
-  }
+  };
+  std::vector<std::uint8_t> ok(faces.size());
+  const Counts counts = reduceRanges(
+      faces.size(), kChunk, threads, Counts(),
+      [&](Counts& n, std::size_t begin, std::size_t end) {
+        const FaceStatus* status = faces.status.data();
+        for (std::size_t f = begin; f < end; ++f) {
+          ++n.status.faces[static_cast<std::size_t>(status[f])];
+          n.poleFaces += uv.faceHas(f, kFacePole) ? 1 : 0;
+          ok[f] = status[f] == FaceStatus::Ok;
+        }
+      },
+      [](Counts& total, const Counts& n) {
+        for (std::size_t k = 0; k < kFaceStatusCount; ++k) total.status.faces[k] += n.status.faces[k];
+        total.poleFaces += n.poleFaces;
+      });
+  s.statusCounts = counts.status;
+  s.poleFaces = counts.poleFaces;
 
   // Sander et al. 2001, "Texture stretch metric": L2(M) = sqrt(sum(A3 L2^2) / sum(A3)), Linf(M) = max Linf, each
   // times sqrt(sum(Auv) / sum(A3)) so that a uniformly scaled layout scores as the isometry. The sums in face
