@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <numeric>
 #include <stdexcept>
@@ -57,6 +58,10 @@ TEST(Parallel, TheFirstExceptionComesOutAfterTheLoop) {
                            [&](int i) {
                              ++ran;
                              if (i == 100) throw std::runtime_error("index 100");
+                             // Later items take a while: with instant ones the other workers could
+                             // finish the loop while the throwing thread waits for a core (a
+                             // loaded machine), before it can stop the handing out.
+                             if (i > 100) std::this_thread::sleep_for(std::chrono::milliseconds(1));
                            }),
                std::runtime_error);
   EXPECT_LT(ran, 10000);  // the handing out stopped
