@@ -7,9 +7,11 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "commands.h"
 #include "core/error.h"
+#include "core/memory.h"
 #include "core/progress.h"
 #include "inspect/map_job.h"
 #include "inspect/map_parameters.h"
@@ -59,9 +61,9 @@ void runMap(const MapArguments& a) {
   std::error_code ignored;
   if (!a.list.empty() || std::filesystem::is_directory(a.input, ignored)) {
     io::checkMeshOutput(std::string("STEM") + io::extensionOf(a.batchFormat), a.write, "--format");
-    const inspect::BatchResult batch =
-        inspect::mapBatch(a.list.empty() ? inspect::meshesInFolder(a.input) : inspect::meshesInList(a.list), a.output,
-                          a.json, a.jobs, a.quiet, job);
+    const std::vector<std::string> inputs = a.list.empty() ? inspect::meshesInFolder(a.input) : inspect::meshesInList(a.list);
+    setFreedMemory(freedMemoryForMeshes(largestFile(inputs)));  // one mesh's memory for the next, when they are small
+    const inspect::BatchResult batch = inspect::mapBatch(inputs, a.output, a.json, a.jobs, a.quiet, job);
     const std::string line = "uvtk map: " + std::to_string(batch.mapped) + " meshes mapped (" +
                              std::to_string(batch.verdicts[0]) + " pass, " + std::to_string(batch.verdicts[1]) +
                              " warn, " + std::to_string(batch.verdicts[2]) + " fail), " + std::to_string(batch.failed) +

@@ -3,9 +3,11 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "commands.h"
 #include "core/error.h"
+#include "core/memory.h"
 #include "core/progress.h"
 #include "io/atomic_file.h"
 #include "scene/scene.h"
@@ -33,6 +35,11 @@ void runRun(const RunArguments& a) {
     std::fputs(planText(scene, plan).c_str(), stdout);
     if (!a.json.empty()) io::writeFileAtomically(a.json, io::jsonText(planJson(scene, plan), 2) + "\n");
     return;
+  }
+  if (scene.meshes.size() > 1) {  // one mesh's memory for the next, when they are small
+    std::vector<std::string> paths;
+    for (const SceneMesh& mesh : scene.meshes) paths.push_back(mesh.path);
+    setFreedMemory(freedMemoryForMeshes(largestFile(paths)));
   }
   const RunResult result = runScene(scene, plan, {a.jobs});
   if (!a.json.empty()) io::writeFileAtomically(a.json, io::jsonText(result.report, 2) + "\n");

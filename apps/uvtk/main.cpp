@@ -1,6 +1,5 @@
 // uvtk: the command line. main only dispatches and maps errors to exit codes:
 // 1 a check failed (uvtk check) or a bug, 2 usage, 3 bad input, 4 cannot write output.
-#include <malloc.h>
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -12,6 +11,7 @@
 
 #include "commands.h"
 #include "core/error.h"
+#include "core/memory.h"
 #include "core/progress.h"
 #include "help_examples.h"
 #include "io/temporary_file.h"
@@ -78,10 +78,7 @@ std::string conversionMessage(const std::string& what) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Blocks of 1 MiB or more mapped on their own and given back when freed. glibc raises this
-  // threshold to the size of each large block freed (up to 32 MiB), after which such blocks come
-  // from its arenas and stay resident once freed: 0 to 19 MiB of a 4 M-face map's peak, by run.
-  mallopt(M_MMAP_THRESHOLD, 1 << 20);
+  uvtk::setFreedMemory(uvtk::FreedMemory::GivenBack);  // a command of many meshes keeps it for reuse
   // Never destroyed (held by a static, so not a leak): taking every option and callback apart
   // took 0.15 ms of a small map, at the end of a process whose memory goes anyway.
   static CLI::App* const cli = new CLI::App{"uvtk: texture coordinates for triangle meshes, and proof that they are right"};

@@ -131,5 +131,27 @@ TEST(AvailableMemory, AChildInAGroupOf64MiBSeesAtMostThat) {
   EXPECT_GT(seen, 0u);
 }
 
+TEST(FreedMemory, KeptForReuseUpTo16MiBAndGivenBackBeyondOrWhenUnknown) {
+  EXPECT_EQ(freedMemoryForMeshes(std::uint64_t(0)), FreedMemory::KeptForReuse);
+  EXPECT_EQ(freedMemoryForMeshes(16 * kMiB), FreedMemory::KeptForReuse);
+  EXPECT_EQ(freedMemoryForMeshes(16 * kMiB + 1), FreedMemory::GivenBack);
+  EXPECT_EQ(freedMemoryForMeshes(std::nullopt), FreedMemory::GivenBack);
+}
+
+TEST(FreedMemory, TheLargestFileOrNothingWhenOneCannotBeRead) {
+  const fs::path folder = fs::temp_directory_path() / ("uvtk-largest-" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  std::ofstream(folder / "a.obj") << "v 0 0 0\n";            // 8 bytes
+  std::ofstream(folder / "b.obj") << std::string(300, 'x');  // 300 bytes
+  const std::string a = (folder / "a.obj").string(), b = (folder / "b.obj").string();
+  EXPECT_EQ(largestFile({}), std::optional<std::uint64_t>(0));
+  EXPECT_EQ(largestFile({a, b}), std::optional<std::uint64_t>(300));
+  EXPECT_EQ(largestFile({a}), std::optional<std::uint64_t>(8));
+  EXPECT_EQ(largestFile({a, (folder / "missing.obj").string()}), std::nullopt);
+  EXPECT_EQ(largestFile({folder.string()}), std::nullopt);  // a folder has no size of its own
+  std::error_code ignored;
+  fs::remove_all(folder, ignored);
+}
+
 }  // namespace
 }  // namespace uvtk
