@@ -635,23 +635,24 @@ class ObjChunkReader {
       ++p;
       corners_.clear();
       int faceForm = -1;
+      IndexBounds bounds = indexBounds();
       while (p != end && isBlank(*p)) {
         while (p != end && isBlank(*p)) ++p;
         if (p == end || *p == '\n' || *p == '\r') break;
         // The indices are kept in locals and stored into the corner in place: fields written one
         // by one into a corner then copied whole would stall the copy on every corner.
         int form = kVertexOnly, vt = -1, vn = -1;
-        const int v = readIndex(p, end, kPositionTable);
+        const int v = readIndex(p, end, kPositionTable, bounds);
         if (v < 0) return false;
         if (p != end && *p == '/') {
           ++p;
           if (p != end && *p != '/') {
-            if ((vt = readIndex(p, end, kTexcoordTable)) < 0) return false;
+            if ((vt = readIndex(p, end, kTexcoordTable, bounds)) < 0) return false;
             form |= kWithTexcoord;
           }
           if (p != end && *p == '/') {
             ++p;
-            if ((vn = readIndex(p, end, kNormalTable)) < 0) return false;
+            if ((vn = readIndex(p, end, kNormalTable, bounds)) < 0) return false;
             form |= kWithNormal;
           }
           if (form == kVertexOnly) return false;  // "1/": malformed
@@ -662,6 +663,7 @@ class ObjChunkReader {
         corner.v = v, corner.vt = vt, corner.vn = vn;
       }
       if (corners_.size() < 3 || !lineEnds(p, end)) return false;
+      if (!before_) chunk_.needed = bounds.needed;
       addFace(faceForm, reader_.lineNumber() + 1);
     } else {
       return false;
@@ -698,19 +700,36 @@ class ObjChunkReader {
     return true;
   }
 
+  // What a face line's indices are checked against, in locals for the line (a face defines no
+  // element): the elements each table has before it (the chunk's own, and those before the chunk
+  // when known), and the counts the chunk needs before it (stored when the line is read).
+  struct IndexBounds {
+    std::array<long long, 3> defined, largest;  // largest: the last valid index, or none (-1) when unknown
+    std::array<long long, 3> needed;
+  };
+  IndexBounds indexBounds() const {
+    IndexBounds b{};
+    for (int t = 0; t < 3; ++t) {
+      b.defined[t] = static_cast<long long>(definedIn(t));
+      b.largest[t] = before_ ? static_cast<long long>((*before_)[t]) + b.defined[t] : -1;
+    }
+    b.needed = chunk_.needed;
+    return b;
+  }
+
   // The 0-based index of a positive decimal index of at most 9 digits, in range when the counts
   // before the chunk are known (the counts it needs noted when they are not); -1 for any other text.
-  int readIndex(const char*& p, const char* end, int table) {
-    const char* start = p;
+  static int readIndex(const char*& text, const char* end, int table, IndexBounds& bounds) {
+    const char *start = text, *p = text;  // a local cursor: `text` is stored once, not every digit
     long long value = 0;
     while (p != end && *p >= '0' && *p <= '9' && p - start < 10) value = value * 10 + (*p++ - '0');
+    text = p;
     if (p == start || p - start == 10 || value == 0) return -1;
     if (p != end && !isBlank(*p) && *p != '/' && *p != '\n' && *p != '\r') return -1;
-    const long long defined = static_cast<long long>(definedIn(table));
-    if (before_) {
-      if (value > static_cast<long long>((*before_)[table]) + defined) return -1;
+    if (bounds.largest[table] >= 0) {
+      if (value > bounds.largest[table]) return -1;
     } else {
-      chunk_.needed[table] = std::max(chunk_.needed[table], value - defined);
+      bounds.needed[table] = std::max(bounds.needed[table], value - bounds.defined[table]);
     }
     return static_cast<int>(value - 1);
   }
