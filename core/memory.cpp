@@ -140,7 +140,7 @@ void setFreedMemory(FreedMemory policy) {
   // glibc raises the mapping threshold to the size of each large block freed (up to 32 MiB) unless
   // it is set, after which such blocks come from its arenas and stay resident once freed: 0 to 19
   // MiB of a 4 M-face map's peak, by run. A batch of 400 10 k-face meshes kept for reuse: 107 k
-  // page faults to 1.4 k, 2.26 to 1.86 s (docs/benchmarks.md).
+  // page faults to 1.4 k, 0.85 of the time (docs/benchmarks.md).
   const bool kept = policy == FreedMemory::KeptForReuse;
   mallopt(M_MMAP_THRESHOLD, kept ? 16 << 20 : 1 << 20);
   if (kept) mallopt(M_TRIM_THRESHOLD, 64 << 20);
@@ -163,6 +163,7 @@ std::optional<std::uint64_t> largestFile(const std::vector<std::string>& paths) 
   }
   return largest;
 }
+
 std::string formatBytes(std::uint64_t bytes) {
   char text[32];
   if (bytes >= (std::uint64_t(1) << 30))
