@@ -101,6 +101,9 @@ InputError expectedError(const std::string& name, std::size_t line, const std::s
   return inputError(name, line, "expected " + expected + ", found " + found);
 }
 
+// The blanks that separate an OBJ or OFF line's tokens.
+bool isBlank(char c) { return c == ' ' || c == '\t'; }
+
 // Reads text line by line, from a stream or from memory, and hands out the whitespace-separated
 // tokens of the current line. It knows the file name and line number, so the errors about the
 // input are raised here. With a Progress it reports the bytes read (the line ending counted as one).
@@ -178,14 +181,14 @@ class LineReader {
   std::string_view token() {
     skipBlanks();
     const char* start = position_;
-    while (position_ != end_ && *position_ != ' ' && *position_ != '\t') ++position_;
+    while (position_ != end_ && !isBlank(*position_)) ++position_;
     return {start, static_cast<std::size_t>(position_ - start)};
   }
 
   // Whether the line's last non-blank character (before any comment) is a backslash.
   bool endsWithBackslash() const {
     const char* p = end_;
-    while (p != position_ && (p[-1] == ' ' || p[-1] == '\t')) --p;
+    while (p != position_ && isBlank(p[-1])) --p;
     return p != position_ && p[-1] == '\\';
   }
 
@@ -214,10 +217,7 @@ class LineReader {
 
   // For a reader of common lines beside this one (ObjChunkReader::readPlainLine): the unread text,
   // empty when reading a stream or when the next line may open the file (its byte-order mark).
-  std::string_view unreadText() const {
-    if (in_ || fileStart_) return {};
-    return text_.substr(next_);
-  }
+  std::string_view unreadText() const { return fileStart_ ? std::string_view() : textInMemory(); }
   // The text not yet read when it is held in memory (a chunk, or text given whole); empty for a stream.
   std::string_view textInMemory() const { return in_ ? std::string_view() : text_.substr(next_); }
   // Passes over the next `length` bytes of unreadText(), one line read by someone else.
@@ -298,7 +298,7 @@ class LineReader {
   }
 
   void skipBlanks() {
-    while (position_ != end_ && (*position_ == ' ' || *position_ == '\t')) ++position_;
+    while (position_ != end_ && isBlank(*position_)) ++position_;
   }
 
   double toNumber(std::string_view t) const {
@@ -494,13 +494,12 @@ struct ObjLineCounts {
 ObjLineCounts countObjLines(std::string_view text) {
   ObjLineCounts n;
   const char *p = text.data(), *const end = p + text.size();
-  const auto blank = [](char c) { return c == ' ' || c == '\t'; };
   while (p != end) {
-    while (p != end && blank(*p)) ++p;
+    while (p != end && isBlank(*p)) ++p;
     if (end - p >= 2) {
-      if (p[0] == 'f' && blank(p[1])) ++n.faces;
-      else if (p[0] == 'v' && blank(p[1])) ++n.positions;
-      else if (end - p >= 3 && p[0] == 'v' && blank(p[2])) n.texcoords += p[1] == 't', n.normals += p[1] == 'n';
+      if (p[0] == 'f' && isBlank(p[1])) ++n.faces;
+      else if (p[0] == 'v' && isBlank(p[1])) ++n.positions;
+      else if (end - p >= 3 && p[0] == 'v' && isBlank(p[2])) n.texcoords += p[1] == 't', n.normals += p[1] == 'n';
     }
     const void* newline = std::memchr(p, '\n', std::size_t(end - p));
     p = newline ? static_cast<const char*>(newline) + 1 : end;
@@ -714,8 +713,6 @@ class ObjChunkReader {
     reader_.skipLine(length);
     return true;
   }
-
-  static bool isBlank(char c) { return c == ' ' || c == '\t'; }
 
   // `count` numbers, each after blanks, none after a sign '+' (the general reader takes that).
   static bool readNumbers(const char*& p, const char* end, Vec3& v, int count) {
