@@ -11,10 +11,11 @@
 
 namespace uvtk::analysis {
 namespace {
+namespace UVTK_TEST_FILE {
 
 TEST(AtlasVerdict, PassesOnMeshesOfEveryKind) {
   std::size_t passed = 0, meshes = 0;
-  for (const test::NamedAtlasMesh& named : test::atlasMeshes()) {
+  for (const test::NamedMesh& named : test::atlasMeshes()) {
     SCOPED_TRACE(named.name);
     param::ProjectorOptions o;
     o.surface = param::SurfaceKind::Atlas;
@@ -39,5 +40,6 @@ TEST(AtlasVerdict, PassesOnMeshesOfEveryKind) {
   EXPECT_GE(passed, 20u);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::analysis

@@ -11,6 +11,7 @@
 
 namespace uvtk::analysis {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // The rectangle [0, w] x [0, h] in z = 0 (two triangles), mapped to [0, s]^2 placed at u0.
 Layout rectangle(double w, double h, double s = 1.0, double u0 = 0.0) {
@@ -153,5 +154,6 @@ TEST(Statistics, P10IsTheLowerInverseAtATenth) {
   EXPECT_EQ(t.p10, 2.0);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::analysis

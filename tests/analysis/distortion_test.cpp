@@ -16,6 +16,7 @@
 
 namespace uvtk::analysis {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // The unit right triangle, its UVs the images of (0, 0), (1, 0), (0, 1) under `map`.
 template <class Map>
@@ -278,5 +279,6 @@ TEST(MeasureFaces, PlaneProjectionWithoutFitIsExactlyIsometric) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::analysis

@@ -16,6 +16,7 @@
 
 namespace uvtk::analysis {
 namespace {
+namespace UVTK_TEST_FILE {
 
 constexpr double kAngle = 1e-8;
 constexpr double kAny = NAN;  // a measure whose value the row does not fix (still finite)
@@ -158,11 +159,13 @@ TEST_P(SliverExtremes, FiniteMeasuresOrAZeroAreaStatus) {
 
 INSTANTIATE_TEST_SUITE_P(Rows, SliverExtremes, testing::Range<std::size_t>(0, rows().size()));
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::analysis
 
 namespace uvtk::analysis {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // The reasons but those of the layout's size in the texture (layout_texels, texels_per_face): a
 // layout scaled by 2^-300 is a handful of texels of a 1024 x 1024 texture, and those rules say so.
@@ -361,5 +364,6 @@ TEST(AnalysisExtremes, ALayoutWhoseSizeOverflowsIsRasterisedAsAtUnitScale) {
   EXPECT_EQ(j.overlappedFaces, reference.overlappedFaces);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::analysis

@@ -10,25 +10,13 @@
 
 #include "analysis/same_statistics.h"
 #include "core/error.h"
+#include "layout.h"
 #include "meshes/generators.h"
 #include "param/projector.h"
 
 namespace uvtk::analysis {
 namespace {
-
-// Two triangles of the unit square, mapped by (x, y), plus optional extra faces.
-struct Layout {
-  Mesh mesh;
-  UvMap uv;
-  void add(const Vec3& a, const Vec3& b, const Vec3& c, const Vec2& ua, const Vec2& ub, const Vec2& uc) {
-    const int first = int(mesh.positions.size());
-    mesh.positions.insert(mesh.positions.end(), {a, b, c});
-    mesh.triangles.push_back({first, first + 1, first + 2});
-    uv.uv.insert(uv.uv.end(), {ua, ub, uc});
-    uv.faceFlags.push_back(kFaceOk);
-    uv.cornerInvalid.insert(uv.cornerInvalid.end(), {0, 0, 0});
-  }
-};
+namespace UVTK_TEST_FILE {
 
 // n x n unit cells in z = 0, each split in two, mapped by (x, y) / n: an isometry up to scale.
 Layout grid(int n) {
@@ -402,5 +390,6 @@ TEST(Judgement, DoesNotDependOnTheThreadCount) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::analysis

@@ -13,6 +13,16 @@ namespace uvtk::analysis {
 struct Layout {
   Mesh mesh;
   UvMap uv;
+
+  // A triangle of its own three vertices, mapped to (ua, ub, uc).
+  void add(const Vec3& a, const Vec3& b, const Vec3& c, const Vec2& ua, const Vec2& ub, const Vec2& uc) {
+    const int first = int(mesh.positions.size());
+    mesh.positions.insert(mesh.positions.end(), {a, b, c});
+    mesh.triangles.push_back({first, first + 1, first + 2});
+    uv.uv.insert(uv.uv.end(), {ua, ub, uc});
+    uv.faceFlags.push_back(kFaceOk);
+    uv.cornerInvalid.insert(uv.cornerInvalid.end(), {0, 0, 0});
+  }
 };
 
 inline Layout makeLayout(std::vector<Vec3> positions, std::vector<Triangle> triangles, std::vector<Vec2> uvs) {

@@ -16,6 +16,7 @@
 
 namespace uvtk::analysis {
 namespace {
+namespace UVTK_TEST_FILE {
 
 constexpr int kResolution = 16;
 constexpr int kSubpixels = 256 * kResolution;  // corners on the 1/256-pixel lattice of a 16-pixel grid over [0, 1]^2
@@ -257,5 +258,6 @@ TEST(OverlapSpans, TheJudgementsRasterFollowsTheMeasuredFacesAndTheirShareOfTheB
   EXPECT_EQ(measureOverlap(sparse.uv, measureFaces(sparse.mesh, sparse.uv), kOverlapFollowsMesh).resolution, 800);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::analysis

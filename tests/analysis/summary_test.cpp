@@ -20,6 +20,7 @@
 
 namespace uvtk::analysis {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // Separate triangles in the plane z = 0 whose UVs are their (x, y).
 Layout flatTriangles(const std::vector<Vec2>& corners) {
@@ -576,5 +577,6 @@ TEST(Overlap, SphereLayouts) {
   EXPECT_GT(measureOverlap(planar.uv, measureFaces(planar.mesh, planar.uv)).fraction(), 0.99);  // 1 exactly here
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::analysis

@@ -12,17 +12,15 @@
 #include <set>
 
 #include "core/error.h"
+#include "layout.h"
 #include "meshes/generators.h"
 #include "param/projector.h"
 
 namespace uvtk::analysis {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // Axis-aligned squares of texels (x, y, side) in a W x H texture, two triangles each, each its own chart.
-struct Layout {
-  Mesh mesh;
-  UvMap uv;
-};
 Layout squares(const std::vector<std::array<double, 3>>& list, int width, int height) {
   Layout l;
   for (const auto& [x, y, side] : list) {
@@ -213,5 +211,6 @@ TEST(TexelLayout, ChartsAreFacesJoinedAtEqualUvs) {
   EXPECT_THROW(texelStatistics(l.mesh, l.uv, 9000, 16), UsageError);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::analysis

@@ -11,6 +11,7 @@
 
 namespace uvtk::analysis {
 namespace {
+namespace UVTK_TEST_FILE {
 
 TEST(TriplanarStretch, AFaceIsStretchedByOneOverItsDominantNormalComponent) {
   Mesh mesh = meshes::icosphere(2);
@@ -47,5 +48,6 @@ TEST(TriplanarStretch, AFaceIsStretchedByOneOverItsDominantNormalComponent) {
   EXPECT_EQ(flipped, std::min(backfacing, mesh.faceCount() - backfacing));
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::analysis

@@ -15,6 +15,7 @@
 
 namespace uvtk::analysis {
 namespace {
+namespace UVTK_TEST_FILE {
 
 const Vec2 kTurn(1, 0), kNoPeriod(0, 0);
 
@@ -261,5 +262,6 @@ TEST(CheckUvs, SeamRepairsDifferByWholePeriodsOnly) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::analysis

@@ -17,6 +17,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -404,5 +405,6 @@ TEST(BadInputCatalogue, EveryFileIsAnEntryAndEveryEntryIsDocumented) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

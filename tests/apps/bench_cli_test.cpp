@@ -20,6 +20,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -282,5 +283,6 @@ TEST_F(BenchCli, RenderTakesSamplesPerPixelAndRefusesNonSquares) {
   EXPECT_FALSE(fs::exists(path("s.png")));
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

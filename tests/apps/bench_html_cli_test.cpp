@@ -18,6 +18,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -222,5 +223,6 @@ TEST(SceneBenchSchema, HasTheBenchOptionsButRenderingAndTheEndToEndMap) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -19,6 +19,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // eye (0, 0, 5) at the origin, fovy 90, aspect 1: u = 0.5 + 0.5 x / (5 - z), v likewise with y.
 const std::string kFront = "--projector camera --eye 0,0,5 --fovy 90";
@@ -196,5 +197,6 @@ TEST(CameraRender, ProjectiveInterpolationIsExactWhereBakedUvsSwim) {
   EXPECT_GT(bakedError.max, 0.05) << "measured " << bakedError.max;  // measured: 0.112 in UV units
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -19,10 +19,9 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 using nlohmann::json;
-
-const std::string kIcosphere = std::string(UVTK_MESHES_DIR) + "/icosphere.obj";
 
 class CheckCli : public CliTest {
  protected:
@@ -321,5 +320,6 @@ TEST_F(CheckCli, OptionsAreCheckedBeforeAnyWork) {
   EXPECT_EQ(check(path("missing.obj") + " --projector sphere").status, 3);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

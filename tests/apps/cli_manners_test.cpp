@@ -18,6 +18,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 class CliManners : public CliTest {
  protected:
@@ -239,11 +240,13 @@ TEST_F(CliManners, EveryCommandTakesQ) {
   EXPECT_EQ(map.err, "");
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -299,5 +302,6 @@ TEST_F(FirstMinutes, ABatchCountsItsVerdicts) {
   EXPECT_EQ(r.err, "uvtk map: 3 meshes mapped (3 pass, 0 warn, 0 fail), 0 failed\n");
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -24,6 +24,10 @@ constexpr bool kAddressSanitized = false;
 constexpr bool kAddressSanitized = false;
 #endif
 
+// The bundled meshes (meshes/), shared by the CLI tests.
+inline const std::string kMeshes = UVTK_MESHES_DIR;
+inline const std::string kIcosphere = kMeshes + "/icosphere.obj";
+
 struct CliRun {
   int status;       // the exit status, or -1 when the program did not exit normally
   std::string err;  // what it printed on stderr

@@ -14,6 +14,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -162,5 +163,6 @@ TEST_F(DensityCli, TheSpreadRuleIsSetByName) {
   EXPECT_EQ(uvtk(report + " --fail-on density_spread=4 --fail-on fail").status, 0);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -17,9 +17,11 @@
 #include "io/mesh_reader.h"
 #include "options/mapping_options.h"
 #include "point/point_evaluator.h"
+#include "doubles.h"
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -79,8 +81,6 @@ Table parseCsv(const std::string& text) {
   while (std::getline(in, line)) table.rows.push_back(csvFields(line));
   return table;
 }
-
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 std::string g17(double x) {
   char text[32];
@@ -539,5 +539,6 @@ TEST_F(EvalCli, HelpDescribesEverything) {
     EXPECT_NE(help.find(word), std::string::npos) << word;
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

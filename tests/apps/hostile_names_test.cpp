@@ -17,6 +17,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -186,5 +187,6 @@ TEST_F(HostileNames, ATextureThatDecodesToMoreThanTheMemoryAvailableIsRefusedFro
   EXPECT_FALSE(fs::exists(path("r.png")));
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -23,6 +23,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -188,5 +189,6 @@ TEST_F(HostilePaths, TwoRunsOfOneSceneIntoOneFolderLeaveEveryOutputWhole) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -14,10 +14,9 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 using nlohmann::json;
-
-const std::string kIcosphere = std::string(UVTK_MESHES_DIR) + "/icosphere.obj";
 
 class ImageCheckCli : public CliTest {
  protected:
@@ -147,5 +146,6 @@ TEST_F(ImageCheckCli, OptionsOfTheOtherModeAreUsageErrors) {
   usage("--projector sphere --derivatives quad-coarse" + image, "--derivatives does not go with --image");
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

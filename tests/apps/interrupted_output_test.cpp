@@ -21,6 +21,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -245,5 +246,6 @@ TEST_F(InterruptedOutput, AFullDiskIsAWriteErrorThatLeavesNothing) {
   EXPECT_EQ(readText(path("listing.txt")), "");
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

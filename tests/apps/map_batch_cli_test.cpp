@@ -13,6 +13,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -153,5 +154,6 @@ TEST_F(MapBatchCli, QuietPrintsNoProgressAndNoSummaryLinesButTheLastLine) {
   EXPECT_EQ(quiet.find("482 vertices"), std::string::npos) << quiet;
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -17,6 +17,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -168,5 +169,6 @@ TEST_F(MapCli, ExplicitPlacementGoesWithFitNoneOnly) {
   EXPECT_EQ(uvtk("map " + path("sphere.obj") + " --center 0,0,1 --scale 2 -o " + path("o.obj")).status, 0);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

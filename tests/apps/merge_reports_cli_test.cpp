@@ -11,6 +11,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -126,5 +127,6 @@ TEST_F(MergeReportsCli, AnUnwritableOutputIsExitStatusFour) {
   EXPECT_EQ(r.status, 4) << r.err;
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

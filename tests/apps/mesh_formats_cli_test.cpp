@@ -24,6 +24,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
@@ -398,5 +399,6 @@ TEST_F(MeshFormatsCli, AMapWarnsOfTheFacesWhoseUvsGltfsFloat32Collapses) {
   EXPECT_EQ(near.err.find("warning"), std::string::npos) << near.err;
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

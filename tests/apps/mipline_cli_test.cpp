@@ -10,6 +10,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 const std::string kSphere = std::string(UVTK_MESHES_DIR) + "/sphere_latlong.obj";
 // The sphere projector per pixel, seen beside its seam (towards +x) so that the seam crosses quads.
@@ -81,5 +82,6 @@ TEST_F(MipLineCli, AReportWithTheMiplineViewWarnsWithTheRule) {
   EXPECT_FALSE(readJson("n.json").contains("mip_line"));
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -10,6 +10,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 class PolygonCli : public CliTest {};
 
@@ -38,5 +39,6 @@ TEST_F(PolygonCli, AConcavePentagonMapsWithItsAreaAndNoFlippedFace) {
   EXPECT_DOUBLE_EQ(area, 3.0);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

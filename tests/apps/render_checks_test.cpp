@@ -9,6 +9,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 class RenderChecks : public CliTest {
  protected:
@@ -56,5 +57,6 @@ TEST_F(RenderChecks, ChecksOutsideOneTo1024IsAUsageError) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -18,6 +18,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -379,5 +380,6 @@ TEST_F(RenderCli, CubeMapMistakesAreUsageErrorsThatWriteNothing) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -20,6 +20,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -284,5 +285,6 @@ TEST_F(ReportCli, RenderDrawsSeveralViewsIntoAContactSheet) {
   EXPECT_FALSE(fs::exists(path("e.png")));
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -15,11 +15,10 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-const std::string kMeshes = UVTK_MESHES_DIR;
 
 class SceneCli : public CliTest {
  protected:
@@ -314,5 +313,6 @@ TEST_F(SceneCli, ARenderTheProcessCannotHoldIsRefusedBeforeItsBuffersAreAllocate
   EXPECT_TRUE(written().empty());
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -13,11 +13,10 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-const std::string kMeshes = UVTK_MESHES_DIR;
 
 class ScenePaths : public CliTest {
  protected:
@@ -165,5 +164,6 @@ TEST(CheckOutputPath, ResolvesInsideAndRefusesTheRest) {
     EXPECT_THROW(scene::checkOutputPath(path, "/o", false), InputError) << quotedName(path);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

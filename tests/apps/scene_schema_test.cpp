@@ -18,6 +18,7 @@
 
 namespace uvtk::cli {
 namespace {
+namespace UVTK_TEST_FILE {
 
 using nlohmann::json;
 using scene::sceneSchemaText;
@@ -116,5 +117,6 @@ TEST(SceneSchema, CameraTextureAndRenderKeysAreTheReadersParameters) {
   expectRead("renderOutput", inspect::frameParameterNames(), {"kind", "mapping", "camera", "texture", "path", "json"});
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::cli

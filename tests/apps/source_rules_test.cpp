@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 #include <regex>
@@ -13,6 +14,7 @@
 #include <vector>
 
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -114,4 +116,36 @@ TEST(SourceRules, IncludesRunDownTheLayers) {
     EXPECT_TRUE(crossings.count(entry)) << entry.first << " -> " << entry.second << " no longer crosses: take it off kNotYet";
 }
 
+TEST(SourceRules, EveryTestFileKeepsItsNamesToItself) {
+  // The test programs are unity builds (tests/CMakeLists.txt): eight files compiled as one share
+  // one anonymous namespace, where one file's helper could silently replace a name that another
+  // takes from a header. So each anonymous namespace of a test file opens the file's own namespace,
+  // UVTK_TEST_FILE, at once; but those at global scope that hold the state of a replaced global
+  // operator new or malloc, which cannot see into it.
+  std::size_t files = 0, namespaces = 0;
+  const fs::path tests = fs::path(UVTK_SOURCE_DIR) / "tests";
+  for (const auto& entry : fs::recursive_directory_iterator(tests)) {
+    const std::string name = entry.path().filename().string();
+    if (!entry.is_regular_file() || name.size() < 9 || name.compare(name.size() - 9, 9, "_test.cpp") != 0) continue;
+    ++files;
+    std::ifstream in(entry.path());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const bool replacesAllocation = text.find("\nvoid* operator new(") != std::string::npos;
+    bool named = false;  // inside a named namespace
+    std::istringstream lines(text);
+    for (std::string line, previous; std::getline(lines, line); previous = line) {
+      if (previous == "namespace {") {
+        const bool exempt = replacesAllocation && !named;
+        ++namespaces;
+        EXPECT_TRUE(exempt || line == "namespace UVTK_TEST_FILE {")
+            << fs::relative(entry.path(), tests) << ": an anonymous namespace that does not open UVTK_TEST_FILE";
+      }
+      if (line.rfind("namespace ", 0) == 0 && line != "namespace {" && line.back() == '{') named = true;
+    }
+  }
+  EXPECT_GT(files, 100u);
+  EXPECT_GE(namespaces, files);
+}
+
+}  // namespace UVTK_TEST_FILE
 }  // namespace

@@ -13,6 +13,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -102,5 +103,6 @@ TEST_F(TexgenCli, HelpListsEveryOption) {
     EXPECT_NE(text.find(option), std::string::npos) << option;
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

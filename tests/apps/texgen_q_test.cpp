@@ -11,6 +11,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 class TexgenQ : public CliTest {
  protected:
@@ -89,5 +90,6 @@ TEST_F(TexgenQ, QOneEverywhereChangesNothing) {
   EXPECT_EQ(j.at("q_zero_corners"), 0);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

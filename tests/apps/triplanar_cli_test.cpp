@@ -16,6 +16,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 const std::string kCube = std::string(UVTK_MESHES_DIR) + "/cube.obj";
 
@@ -254,5 +255,6 @@ TEST_F(TriplanarCli, RenderDrawsTheBlendPerPixelAndMeasuresItsZone) {
   EXPECT_EQ(readJson("v.json")["uv"], "per-vertex");
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -12,6 +12,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 class VerdictCli : public CliTest {
  protected:
@@ -180,5 +181,6 @@ TEST_F(VerdictCli, CompareRanksByVerdictThenByTheMeasureAndRunsBaselinesOnClosed
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -13,6 +13,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // Every test leaves the process without a request, whatever it asserted.
 class Cancel : public ::testing::Test {
@@ -108,5 +109,6 @@ TEST_F(Cancel, AnExceptionOnAWorkerThreadIsRethrownByTheCaller) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -9,6 +9,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 struct Hit {
   Vec3 direction;
@@ -135,5 +136,6 @@ TEST(CubeLayout, StripAnd3x2PlaceTheFacesInGlOrder) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -10,6 +10,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 TEST(ExitStatus, ClassesOursAndTheStandardLibrarysExceptions) {
   EXPECT_EQ(exitStatus(UsageError("u")), 2);
@@ -45,5 +46,6 @@ TEST(QuotedName, IsAJsonStringThatKeepsEveryByte) {
   EXPECT_EQ(quotedName(""), "\"\"");
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -8,6 +8,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // The point a clip-space vector lands on after the perspective divide.
 Vec3 ndc(const Vec4& clip) { return clip.head<3>() / clip.w(); }
@@ -68,5 +69,6 @@ TEST(Orthographic, MapsTheBoxOntoTheNdcCube) {
   EXPECT_THROW(orthographic(1, 1, 0, 1, 0, 1), UsageError);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

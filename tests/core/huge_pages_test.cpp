@@ -12,6 +12,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 TEST(HugePages, ResizeGivesValueInitialisedElements) {
   std::vector<float> v{1.0f, 2.0f};
@@ -89,5 +90,6 @@ TEST(HugePages, FaultedInMemoryIsNotAdvised) {
   EXPECT_EQ(anonHugePagesKb(reinterpret_cast<const char*>(v.data()) + (std::size_t(1) << 21)), 0);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -15,6 +15,7 @@
 
 namespace uvtk::libm {
 namespace {
+namespace UVTK_TEST_FILE {
 
 std::uint64_t bitsOf(double v) {
   std::uint64_t b;
@@ -138,5 +139,6 @@ TEST(LibmSimd, TheVectorsDecideMostLanesAndDecideThemCorrectlyRounded) {
   mpfr_clears(p, q, static_cast<mpfr_ptr>(nullptr));
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::libm

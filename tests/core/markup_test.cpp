@@ -4,6 +4,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 TEST(XmlEscaped, ReplacesTheFiveSpecialCharactersAndKeepsTheRest) {
   EXPECT_EQ(xmlEscaped("x<y & 'z' > \"w\""), "x&lt;y &amp; &#39;z&#39; &gt; &quot;w&quot;");
@@ -12,5 +13,6 @@ TEST(XmlEscaped, ReplacesTheFiveSpecialCharactersAndKeepsTheRest) {
   EXPECT_EQ(xmlEscaped(""), "");
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -14,6 +14,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -153,5 +154,6 @@ TEST(FreedMemory, TheLargestFileOrNothingWhenOneCannotBeRead) {
   fs::remove_all(folder, ignored);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -7,6 +7,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 struct DoubleTraits : OpenMesh::DefaultTraits {
   using Point = OpenMesh::Vec3d;
@@ -68,5 +69,6 @@ TEST(CheckMesh, CountsDegenerateFacesAndUnreferencedVertices) {
   EXPECT_TRUE(areaWeightedVertexNormals(m)[4].isZero());
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

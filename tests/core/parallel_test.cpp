@@ -18,6 +18,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 TEST(Parallel, NestedLoopsRunEveryIndexOnce) {
   std::vector<std::atomic<int>> runs(64 * 50);
@@ -167,5 +168,6 @@ TEST(Parallel, AChildOfForkHasAPoolOfItsOwn) {
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

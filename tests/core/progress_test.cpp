@@ -8,6 +8,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 TEST(ProgressBarLine, ShowsLabelBarCountsAndTime) {
   EXPECT_EQ(progressBarLine("mapping", 1234, 5000, "vertices", 2.34, 80),
@@ -75,5 +76,6 @@ TEST(Progress, MessagesAreWholeLines) {
   setProgressEnabled(false);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

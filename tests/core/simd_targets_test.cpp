@@ -5,6 +5,7 @@
 #include <hwy/targets.h>
 
 namespace {
+namespace UVTK_TEST_FILE {
 
 TEST(SimdTargets, AreTheOnesTheProcessorAndTheSystemSupport) {
   const int64_t targets = hwy::SupportedTargets();
@@ -30,4 +31,5 @@ TEST(SimdTargets, AreTheOnesTheProcessorAndTheSystemSupport) {
   EXPECT_TRUE(hwy::GetChosenTarget().IsInitialized());
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace

@@ -19,6 +19,7 @@
 
 namespace uvtk::inspect {
 namespace {
+namespace UVTK_TEST_FILE {
 
 std::string fromBase64(const std::string& text) {
   std::string out;
@@ -258,5 +259,6 @@ TEST(HtmlReport, TheFirstScreenHasTheVerdictTheViewAndTheKeyMeasures) {
   EXPECT_EQ(htmlReport(report, {}).find("<script"), std::string::npos);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::inspect

@@ -8,6 +8,7 @@
 
 namespace uvtk::inspect {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // One face, (s, t) and r at each corner, all valid.
 UvMap oneFace(const Vec2& a, const Vec2& b, const Vec2& c, double r) {
@@ -83,5 +84,6 @@ TEST(TexgenWritesR, WhenRIsGeneratedOrTheMatrixFeedsIt) {
   EXPECT_TRUE(texgenWritesR(options));
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::inspect

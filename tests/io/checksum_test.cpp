@@ -9,6 +9,7 @@
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 using ChecksumTest = ScratchDirTest;
 
@@ -24,5 +25,6 @@ TEST_F(ChecksumTest, AMissingFileIsAnInputError) {
   EXPECT_THROW(sha256File(path("missing")), InputError);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

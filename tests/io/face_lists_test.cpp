@@ -19,6 +19,7 @@
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 using Faces = std::vector<std::size_t>;
 
@@ -183,5 +184,6 @@ TEST(FaceLists, AFileWithoutTheListKeepsItsCornersAtZero) {
   for (const Triangle& t : read.mesh.cornerTexcoords) ASSERT_EQ(std::count(t.begin(), t.end(), -1), 0);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

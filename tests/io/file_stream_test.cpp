@@ -14,6 +14,7 @@
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 class FileStreamTest : public ScratchDirTest {};
 
@@ -90,5 +91,6 @@ TEST_F(FileStreamTest, ALargeOutputOfASetArrivesWhole) {
   EXPECT_TRUE(readText(path("big.txt")) == expected);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

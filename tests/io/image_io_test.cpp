@@ -17,6 +17,7 @@
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 class ImageIoTest : public ScratchDirTest {
  protected:
@@ -376,5 +377,6 @@ TEST_F(ImageIoTest, PngDataUriIsTheEncodedPngInBase64) {
   EXPECT_EQ(tails.size(), 3u);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

@@ -16,6 +16,7 @@
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // The first loaded object whose path holds `name`, or "".
 std::string loadedObject(const char* name) {
@@ -108,5 +109,6 @@ TEST_F(ImagePluginTest, AMissingPluginIsOneLineNamingThePath) {
               ::testing::ExitedWithCode(4), "/b\\.png: error: cannot write" + missing);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

@@ -9,6 +9,7 @@
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 using Lines = std::vector<std::string>;
 
@@ -236,5 +237,6 @@ TEST(JsonSchema, PrintsTheRootAsSlash) {
   EXPECT_EQ(toString({"/a/0", "m"}), "/a/0: m");
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

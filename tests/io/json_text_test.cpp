@@ -12,6 +12,7 @@
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 using Json = nlohmann::json;
 
@@ -61,5 +62,6 @@ TEST(JsonOfAnyBytes, OnlyLoneEscapesOfBytesAreMarked) {
   EXPECT_THROW(parseJsonText(R"(["\udcff", ])", "d"), InputError);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

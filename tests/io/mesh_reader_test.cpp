@@ -16,10 +16,12 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/io_fixtures.h"
 #include "scratch_dir.h"
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 using namespace std::string_literals;
@@ -51,7 +53,6 @@ std::string errorOf(Read read, const std::string& text) {
 std::string objError(const std::string& text) { return errorOf(obj, text); }
 std::string offError(const std::string& text) { return errorOf(off, text); }
 
-const std::string kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";                 // three vertices, lines 1-3
 const std::string kOffTriangleHeader = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";  // header, counts, vertices: lines 1-5
 
 // ---------------------------------------------------------------------------------------------
@@ -821,5 +822,6 @@ TEST(ReadMeshData, ReadsAnOffCubeWithQuads) {
   EXPECT_EQ(r.warnings.unreferencedVertices, 0u);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

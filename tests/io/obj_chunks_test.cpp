@@ -13,12 +13,14 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/io_fixtures.h"
 #include "io/mesh_reader.h"
 #include "meshes/generators.h"
 #include "scratch_dir.h"
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 using namespace std::string_literals;
 
@@ -83,8 +85,6 @@ void expectChunkedLikeSequential(const std::string& text) {
       if (::testing::Test::HasFailure()) return;  // one report, not hundreds
     }
 }
-
-const std::string kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
 
 TEST(ReadObjChunks, AcceptedFormsGiveTheSequentialMesh) {
   for (const std::string& text : std::vector<std::string>{
@@ -365,5 +365,6 @@ TEST_F(ReadObjFile, AFifoIsReadAsAStream) {
   EXPECT_EQ(read.result.mesh.triangles, std::vector<Triangle>({{0, 1, 2}}));
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

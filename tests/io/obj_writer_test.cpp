@@ -12,27 +12,14 @@
 
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "io/io_fixtures.h"
 #include "scratch_dir.h"
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
-
-Mesh twoTriangles() {
-  Mesh m;
-  m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0.5}};
-  m.triangles = {{0, 1, 2}, {0, 2, 3}};
-  return m;
-}
-
-UvMap uvsOf(std::vector<Vec2> uv) {
-  UvMap map;
-  map.faceFlags.assign(uv.size() / 3, kFaceOk);
-  map.cornerInvalid.assign(uv.size(), 0);
-  map.uv = std::move(uv);
-  return map;
-}
 
 std::string toText(const Mesh& mesh, const UvMap* uvs, const ObjWriteOptions& options = {}) {
   std::ostringstream out;
@@ -155,5 +142,6 @@ TEST_F(AtomicOutput, ATargetThatIsAFolderIsAnOutputErrorAndLeavesNoTemporary) {
   EXPECT_TRUE(fs::is_directory(dir_ / "taken"));
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

@@ -17,9 +17,11 @@
 #include "io/obj_writer.h"
 #include "io/split_vertices.h"
 #include "meshes/generators.h"
+#include "doubles.h"
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 TEST(OrderedText, WritesTheBlocksInOrderWhateverThreadMadeThem) {
   for (const int threads : {1, 2, 3, 8}) {
@@ -43,8 +45,6 @@ TEST(OrderedText, WritesTheBlocksInOrderWhateverThreadMadeThem) {
 // ---------------------------------------------------------------------------------------------
 // The sequential vertex splitting and OBJ writer as they were before they ran on several threads,
 // kept here as the reference for every byte.
-
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 SplitVertices referenceSplit(const Mesh& mesh, const SplitVertexKey& key) {
   const std::size_t corners = 3 * mesh.triangles.size();
@@ -229,5 +229,6 @@ TEST(SplitVerticesThreads, TheSequentialSplitOnAnyNumberOfThreads) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

@@ -19,6 +19,7 @@
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -189,5 +190,6 @@ TEST_F(OutputSetTest, StandardOutputGetsNothingWhenTheSetFails) {
   EXPECT_EQ(readText(path("c.txt")), "c");
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

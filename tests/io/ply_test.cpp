@@ -13,14 +13,17 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "io/io_fixtures.h"
 #include "io/ply_reader.h"
 #include "io/ply_writer.h"
 #include "io/split_vertices.h"
 #include "meshes/generators.h"
+#include "doubles.h"
 #include "scratch_dir.h"
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the binary test files are built on a little-endian host");
 
@@ -417,21 +420,6 @@ TEST(ReadPly, ReadsTheBinaryVertexElementAfterTheFaceElement) {
 
 // ---- Writing ----
 
-Mesh twoTriangles() {
-  Mesh m;
-  m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0.5}};
-  m.triangles = {{0, 1, 2}, {0, 2, 3}};
-  return m;
-}
-
-UvMap uvsOf(std::vector<Vec2> uv) {
-  UvMap map;
-  map.faceFlags.assign(uv.size() / 3, kFaceOk);
-  map.cornerInvalid.assign(uv.size(), kCornerValid);
-  map.uv = std::move(uv);
-  return map;
-}
-
 std::string written(const Mesh& mesh, const UvMap* uvs, const PlyWriteOptions& options) {
   std::ostringstream out;
   writePly(out, mesh, uvs, options);
@@ -537,8 +525,6 @@ UvMap seamUvs(const Mesh& mesh, std::size_t invalidEvery) {
   return map;
 }
 
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
 void expectRoundTrip(const char* what, const Mesh& mesh, const UvMap& uvs, bool ascii) {
   SCOPED_TRACE(std::string(what) + (ascii ? " ascii" : " binary"));
   PlyWriteOptions options;
@@ -642,5 +628,6 @@ TEST_F(PlyOpenMesh, RecountsTheWritersFilesInBinaryAndAscii) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

@@ -14,6 +14,7 @@
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -309,5 +310,6 @@ TEST(PolygonTriangulation, ReusesItsScratchSpaceAcrossPolygons) {
   expectCovers(comb20, triangles, 59.0);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

@@ -15,6 +15,7 @@
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 std::string shortest(double value) {
   char text[kShortestNumberBytes];
@@ -86,5 +87,6 @@ TEST(ShortestNumber, TheTextOfStdToChars) {
   EXPECT_EQ(mismatches, 0);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

@@ -23,6 +23,7 @@
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 using namespace std::string_literals;
 using Corner = std::array<float, 3>;
@@ -527,5 +528,6 @@ TEST_F(StlOpenMesh, IndependentRecountOfWrittenFiles) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

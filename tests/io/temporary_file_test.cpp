@@ -20,6 +20,7 @@
 
 namespace uvtk::io {
 namespace {
+namespace UVTK_TEST_FILE {
 
 namespace fs = std::filesystem;
 
@@ -220,5 +221,6 @@ TEST_F(TemporaryFileTest, DashIsStandardOutputWrittenWhenPublished) {
   EXPECT_EQ(names(), std::vector<std::string>{"stdout.txt"});
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::io

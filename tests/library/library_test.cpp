@@ -20,6 +20,7 @@
 
 namespace uvtk::api {
 namespace {
+namespace UVTK_TEST_FILE {
 
 class LibraryTest : public ScratchDirTest {};
 
@@ -630,5 +631,6 @@ TEST(Readme, TheLibraryProgramIsTheExampleBuiltAgainstTheInstall) {
 
 TEST(Version, IsTheProjects) { EXPECT_EQ(version(), UVTK_VERSION); }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::api

@@ -14,6 +14,7 @@
 
 namespace uvtk::api {
 namespace {
+namespace UVTK_TEST_FILE {
 
 class LikeRealTest : public ScratchDirTest {};
 
@@ -102,5 +103,6 @@ TEST_F(LikeRealTest, TexgensQIsDividedOutInTheFileAsUvtkTexgenDoes) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::api

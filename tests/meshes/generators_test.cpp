@@ -15,6 +15,7 @@
 
 namespace uvtk::meshes {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // The signed volume enclosed by a closed mesh (divergence theorem): positive when every
 // triangle is counter-clockwise seen from outside.
@@ -211,5 +212,6 @@ TEST(ScannedPatch, IsAnOpenDiskWithOneRaggedBoundary) {
   EXPECT_EQ(checkMesh(m).unreferencedVertices, 0u);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::meshes

@@ -14,6 +14,7 @@
 
 namespace uvtk {
 namespace {
+namespace UVTK_TEST_FILE {
 
 using point::Mapping;
 using point::Result;
@@ -318,5 +319,6 @@ TEST(ConventionAssimp, ReproducesAssimpExceptWhereItsSeamFixSnapsU) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk

@@ -85,14 +85,15 @@ inline Mesh manyComponents(int count) {
   return m;
 }
 
-struct NamedAtlasMesh {
+// A mesh with the name a failing test prints.
+struct NamedMesh {
   std::string name;
   Mesh mesh;
 };
 
 // Twenty-odd meshes of every kind: the generators' bundled and like-real meshes, and the above.
-inline std::vector<NamedAtlasMesh> atlasMeshes() {
-  std::vector<NamedAtlasMesh> out;
+inline std::vector<NamedMesh> atlasMeshes() {
+  std::vector<NamedMesh> out;
   for (const meshes::BundledMesh& b : meshes::bundledMeshes()) out.push_back({b.file, b.mesh});
   out.push_back({"torus_knot_2_3", meshes::torusKnot(2, 3, 256, 16)});
   out.push_back({"torus_knot_3_5", meshes::torusKnot(3, 5, 300, 12, 0.25)});

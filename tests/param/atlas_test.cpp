@@ -16,6 +16,7 @@
 
 namespace uvtk::param {
 namespace {
+namespace UVTK_TEST_FILE {
 
 double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 double signedArea(const Vec2& a, const Vec2& b, const Vec2& c) { return 0.5 * cross2(b - a, c - a); }
@@ -135,7 +136,7 @@ TEST(Atlas, ARampThatCoversItselfIsSplitIntoChartsThatDoNot) {
 }
 
 TEST(Atlas, OnMeshesOfEveryKindNothingOverlapsNothingMirrorsAndTheGutterIsMet) {
-  for (const test::NamedAtlasMesh& named : test::atlasMeshes()) {
+  for (const test::NamedMesh& named : test::atlasMeshes()) {
     if (named.mesh.faceCount() > 12000) continue;  // the recount is quadratic
     SCOPED_TRACE(named.name);
     for (const std::array<int, 2> texture : {std::array<int, 2>{1024, 1024}, std::array<int, 2>{2048, 512}}) {
@@ -263,5 +264,6 @@ TEST(Atlas, AProjectorOfAPointAloneIsRefused) {
   EXPECT_THROW(Projector(o, Affine3::Identity()).mapVertices({Vec3::Zero()}, {}, out), UsageError);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param

@@ -17,6 +17,7 @@
 
 namespace uvtk::param {
 namespace {
+namespace UVTK_TEST_FILE {
 
 constexpr Baseline kBaselines[] = {Baseline::Lscm, Baseline::Arap};
 
@@ -321,5 +322,6 @@ TEST(Baseline, Names) {
   EXPECT_STREQ(toString(Baseline::Arap), "arap");
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param

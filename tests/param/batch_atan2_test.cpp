@@ -15,6 +15,7 @@
 
 namespace uvtk::param {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // The error of `value` in units in the last place of T at the exact result `reference`.
 template <class T>
@@ -123,5 +124,6 @@ TEST(Atan2Loading, ExactArctangentsDoNotLoadSleefAndFastOnesDo) {
   EXPECT_EXIT(exitAfterPreparingFastArctangents(), ::testing::ExitedWithCode(0), "libsleef: loaded");
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param

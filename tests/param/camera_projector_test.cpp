@@ -14,6 +14,7 @@
 
 namespace uvtk::param {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // eye (0, 0, 5) looking at the origin, fovy 90 (cot 45 = 1), aspect 1: x_c = x, y_c = y, w_c = 5 - z.
 CameraProjector frontCamera() {
@@ -193,5 +194,6 @@ TEST(CameraProjector, ProjectRejectsABadCamera) {
   EXPECT_THROW(project(mesh, cameraOptions(c)), UsageError);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param

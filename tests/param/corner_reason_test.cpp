@@ -11,11 +11,13 @@
 #include <string>
 
 #include "meshes/generators.h"
+#include "param/atlas_meshes.h"
 #include "param/projector.h"
 #include "param/surfaces.h"
 
 namespace uvtk::param {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // Every surface with a formula of a point (see projector_test.cpp), as the list grows.
 const std::vector<SurfaceKind> kSurfaces = [] {
@@ -25,10 +27,7 @@ const std::vector<SurfaceKind> kSurfaces = [] {
   return surfaces;
 }();
 
-struct NamedMesh {
-  const char* name;
-  Mesh mesh;
-};
+using test::NamedMesh;
 
 const std::vector<NamedMesh>& realMeshes() {
   static const std::vector<NamedMesh> meshes = {{"torusKnot", meshes::torusKnot(3, 2, 96, 8)},
@@ -273,5 +272,6 @@ TEST(CornerReason, CylinderCapsAreDecidedInObjectSpaceOnAnElongatedMesh) {
   EXPECT_GE(caps.at(bone.positions[0], Vec3(0, 0.9, -1), true).uv.x(), 0.5);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param

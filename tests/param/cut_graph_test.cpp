@@ -18,6 +18,7 @@
 
 namespace uvtk::param {
 namespace {
+namespace UVTK_TEST_FILE {
 
 using EdgeKey = std::pair<int, int>;
 
@@ -203,5 +204,6 @@ TEST(CutToDisk, RefusesTwoClosedSurfacesTouchingAtAVertex) {
   EXPECT_EQ(refusal(mesh), "cutToDisk: not manifold: vertex 0 joins several fans");
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param

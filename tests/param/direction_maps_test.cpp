@@ -7,6 +7,7 @@
 
 namespace uvtk::param {
 namespace {
+namespace UVTK_TEST_FILE {
 
 constexpr SurfaceKind kDirectionMaps[] = {SurfaceKind::Octahedral, SurfaceKind::ShrinkWrap};
 
@@ -118,5 +119,6 @@ TEST(DirectionMaps, EveryValidUvLiesInTheUnitSquareUnderEveryRayMapping) {
       }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param

@@ -16,12 +16,14 @@
 
 #include "core/error.h"
 #include "meshes/generators.h"
+#include "param/atlas_meshes.h"
 #include "param/formulas.h"
 #include "param/projector.h"
 #include "param/reference.h"
 
 namespace uvtk::param {
 namespace {
+namespace UVTK_TEST_FILE {
 
 constexpr double kAny = std::numeric_limits<double>::quiet_NaN();  // any finite value
 constexpr double kDenormMin = std::numeric_limits<double>::denorm_min();
@@ -630,10 +632,7 @@ Mesh placed(Mesh mesh, int exponent, const Vec3& offset = Vec3::Zero()) {
   return mesh;
 }
 
-struct NamedMesh {
-  const char* name;
-  Mesh mesh;
-};
+using test::NamedMesh;
 
 const std::vector<NamedMesh>& sampleMeshes() {
   static const std::vector<NamedMesh> meshes = {
@@ -843,5 +842,6 @@ TEST(FitExtremes, CoordinatesNear1e103DoNotTrapInTheOrientedBox) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param

@@ -7,6 +7,7 @@
 
 namespace uvtk::param {
 namespace {
+namespace UVTK_TEST_FILE {
 
 TEST(PoleTest, MatchesTheHypotFormOfTheDefinition) {
   const PoleTest isPole(1e-6);
@@ -183,5 +184,6 @@ TEST(CubeAtlasUv, DirectConventionAtlasDoesNotMirrorOppositeFaces) {
   EXPECT_LT(atlasU(Vec3(0.5, 1, 0), CubeFace::PosY), atlasU(Vec3(-0.5, 1, 0), CubeFace::PosY));
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param

@@ -8,6 +8,7 @@
 
 namespace uvtk::param {
 namespace {
+namespace UVTK_TEST_FILE {
 
 template <class Work>
 std::string messageOf(Work&& work) {
@@ -177,11 +178,13 @@ TEST(MakeProjector, TheCameraTakesItsOwnNamesWhereTheCommandsCameraHasThePlainOn
             "--frame-center goes with the surface projectors, not --projector camera");
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param
 
 namespace uvtk::param {
 namespace {
+namespace UVTK_TEST_FILE {
 
 TEST(SurfaceTraits, EachSurfaceIsAskedInOnePlace) {
   std::vector<std::string> wrapping, perTriangle;
@@ -226,5 +229,6 @@ TEST(MakeProjector, CapsGoWithTheCylinderOnly) {
   EXPECT_EQ(messageOf([&] { makeProjector(p); }), "caps goes with projector='cylinder' only");
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param

@@ -8,6 +8,7 @@
 
 namespace uvtk::param {
 namespace {
+namespace UVTK_TEST_FILE {
 
 TEST(ProjectorAtPoints, EqualsMapVerticesThenTheUvTransformForEveryWrappingOrPlanarSurface) {
   const Mesh mesh = meshes::icosphere(2);
@@ -71,5 +72,6 @@ TEST(ProjectorAtPoints, ACapFaceMapsByTheCapProjectionMirroredOnTheBottom) {
   EXPECT_LT((beside.at(Vec3(0.5, -0.5, 0.3), Vec3::Zero(), false).uv - Vec2(0.875, 0.15)).norm(), 1e-15);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param

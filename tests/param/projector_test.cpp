@@ -18,6 +18,7 @@
 
 namespace uvtk::param {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // Every surface with a formula of a point: a surface added to the list is tested here as it comes.
 const std::vector<SurfaceKind> kSurfaces = [] {
@@ -614,5 +615,6 @@ TEST(Placement, QuarterTurnsAreExact) {
   EXPECT_TRUE((fitPlacement({}, SurfaceKind::Sphere, o) * Vec3(1, 1, 0).normalized()).isApprox(Vec3(1, 0, 0), 1e-15));
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param

@@ -12,6 +12,7 @@
 
 namespace uvtk::param {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // A band about the z axis covering the azimuths [from, to] in `segments` steps, radius 1, z in [-h, h].
 Mesh band(double fromDegrees, double toDegrees, int segments, double h = 0.3) {
@@ -101,5 +102,6 @@ TEST(SeamPlacement, OnlyWrappingSurfacesHaveASeam) {
   EXPECT_THROW(placeSeam(band(0, 90, 4), o), UsageError);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param

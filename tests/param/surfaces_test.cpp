@@ -7,6 +7,7 @@
 
 namespace uvtk::param {
 namespace {
+namespace UVTK_TEST_FILE {
 
 Probe foot(const Vec3& p) { return {Probe::Kind::Foot, p, Vec3::Zero()}; }
 Probe central(const Vec3& p) { return {Probe::Kind::Central, p, Vec3::Zero()}; }
@@ -159,5 +160,6 @@ TEST(ReflectionRay, MirrorsTheViewAboutTheNormal) {
   EXPECT_TRUE(q.point.isApprox(Vec3(1, 0, 1) / std::sqrt(2.0)));
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param

@@ -13,6 +13,7 @@
 
 namespace uvtk::param {
 namespace {
+namespace UVTK_TEST_FILE {
 
 TriplanarOptions preset(TriplanarPreset p, double tile = 1.0, double blend = 1.0) {
   TriplanarOptions o;
@@ -174,5 +175,6 @@ TEST(TriplanarProject, TheBboxFitIsUniformAndTheMappingFollowsThePlacement) {
   expectNear(s.weights, Vec3(0, 0, 1), 0.0);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param

@@ -11,11 +11,11 @@
 #include "param/projector.h"
 #include "param/reference.h"
 #include "param/uv_kernel.h"
+#include "doubles.h"
 
 namespace uvtk::param {
 namespace {
-
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+namespace UVTK_TEST_FILE {
 
 // The meshes the kernel must agree on: with poles, far out and tiny and huge, with vertices that
 // are not finite, on both sides of the local origin.
@@ -219,5 +219,6 @@ TEST(UvKernel, RefusesTheCubeAndMissingNormals) {
   EXPECT_THROW(toLocal(Affine3::Identity(), {Vec3(1, 0, 0)}, {Vec3(1, 0, 0), Vec3(0, 1, 0)}, points), UsageError);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::param

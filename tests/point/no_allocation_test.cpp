@@ -123,6 +123,7 @@ int posix_memalign(void** out, std::size_t alignment, std::size_t n) noexcept {
 #endif
 
 namespace {
+namespace UVTK_TEST_FILE {
 
 using uvtk::point::Mapping;
 using uvtk::point::Result;
@@ -202,4 +203,5 @@ TEST(NoAllocation, TheCountersSeeAllocations) {
 #endif
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace

@@ -14,6 +14,7 @@
 #include "uvtk/testing.h"
 
 namespace {
+namespace UVTK_TEST_FILE {
 
 using uvtk::point::Mapping;
 using uvtk::point::Result;
@@ -387,4 +388,5 @@ TEST(UvError, ComparesDirectlyWhereNothingWraps) {
   EXPECT_NEAR(uvError(1.5, 0.5, s), 1.0, kTight);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace

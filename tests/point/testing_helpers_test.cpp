@@ -13,6 +13,7 @@
 #include "uvtk/testing.h"
 
 namespace {
+namespace UVTK_TEST_FILE {
 
 using uvtk::point::Mapping;
 using uvtk::point::Result;
@@ -167,4 +168,5 @@ TEST(UvStatus, GoogleTestPrintsStatusesAndResults) {
   expectContains(printed, "mapping \"--projector sphere\"");
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace

@@ -9,6 +9,7 @@
 
 namespace uvtk::render {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // A mesh at 1e200: its bounding sphere and the camera framing it stay finite (the radius was the
 // square root of an overflowed squared length), and equal the unit mesh's scaled by the power of two.
@@ -48,5 +49,6 @@ TEST(FrameSphere, RefusesASphereWhoseEyeWouldOverflowAndFramesOneAt1e300) {
   EXPECT_TRUE(camera.viewFromWorld.allFinite() && camera.clipFromView.allFinite());
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::render

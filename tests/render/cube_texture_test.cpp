@@ -19,6 +19,7 @@
 
 namespace uvtk::render {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // The texel cubeindex:N holds at (i, j) of face f, widened as sampling returns it.
 Vec4 indexTexel(int f, int i, int j) {
@@ -422,5 +423,6 @@ TEST(CubeRender, ExactlyOneTextureMustBeBound) {
   EXPECT_THROW(render(q.quad.mesh, q.quad.texcoords, neither), UsageError);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::render

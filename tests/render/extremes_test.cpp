@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "core/gl_matrices.h"
+#include "doubles.h"
 #include "meshes/generators.h"
 #include "render/camera.h"
 #include "render/procedural.h"
@@ -20,9 +21,9 @@
 
 namespace uvtk::render {
 namespace {
+namespace UVTK_TEST_FILE {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kSize = 64;
 constexpr double kNear = 0.1;
 
@@ -394,5 +395,6 @@ TEST(RenderExtremes, AMeshAt2To700Or2ToMinus700DrawsTheUnitScalePicture) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::render

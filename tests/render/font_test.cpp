@@ -10,6 +10,7 @@
 
 namespace uvtk::render {
 namespace {
+namespace UVTK_TEST_FILE {
 
 const float kInk[4] = {1.0f, 0.5f, 0.25f, 1.0f};
 
@@ -99,5 +100,6 @@ TEST(TextWidth, IsSixColumnsPerGlyphLessTheLastGap) {
   EXPECT_EQ(textHeight(3), 21);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::render

@@ -15,11 +15,11 @@
 #include "meshes/generators.h"
 #include "render/camera.h"
 #include "render/procedural.h"
+#include "doubles.h"
 
 namespace uvtk::render {
 namespace {
-
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+namespace UVTK_TEST_FILE {
 
 Texture floatTexture() {
   TexelLevel base;
@@ -152,5 +152,6 @@ TEST(ShadeFragments, AreTheInterpolatorsBarycentricsAndTheLevelOfDetailOfTheirDe
   EXPECT_GT(checked, 700u);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::render

@@ -72,6 +72,7 @@ void operator delete(void* p, std::size_t) noexcept {
 
 namespace uvtk::render {
 namespace {
+namespace UVTK_TEST_FILE {
 
 RenderOptions quadOptions(const Texture& texture, int width, int height) {
   RenderOptions o;
@@ -196,5 +197,6 @@ TEST(AvailableMemory, IsAtMostWhatTheAddressSpaceLimitLeaves) {
   EXPECT_GT(*limited, std::uint64_t(32) << 20);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::render

@@ -22,6 +22,7 @@
 
 namespace uvtk::render {
 namespace {
+namespace UVTK_TEST_FILE {
 
 using namespace mesa;
 
@@ -506,5 +507,6 @@ TEST(MesaRender, TriangleCrossingTheEyePlaneIsClippedAsMesaClipsIt) {
   expectNearestMatch(compare(s, renderBoth(mesa, s)));
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::render

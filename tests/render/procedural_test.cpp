@@ -15,6 +15,7 @@
 
 namespace uvtk::render {
 namespace {
+namespace UVTK_TEST_FILE {
 
 const Rgba kWhite(1.0f, 1.0f, 1.0f, 1.0f);
 const Rgba kBlack(0.0f, 0.0f, 0.0f, 1.0f);
@@ -345,5 +346,6 @@ TEST(ProceduralTexture, LeavesCubeLikeFileNamesToTheFileReaders) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::render

@@ -15,16 +15,11 @@
 
 namespace uvtk::render {
 namespace {
+namespace UVTK_TEST_FILE {
 
 constexpr double kPi = 3.14159265358979323846;
 
 // checker:64:8 with its mipmaps; its coarsest level is mid grey.
-Texture mipmappedChecker() {
-  Texture t = checkerTexture(64, 8);
-  t.buildMipmaps();
-  return t;
-}
-
 float lodAt(const Rendering& r, int x, int row) { return r.aovs.at(x, row, 4); }
 int faceAt(const Rendering& r, int x, int row) { return int(r.aovs.at(x, row, 3)); }
 
@@ -46,7 +41,7 @@ TEST(QuadDerivatives, AnAffineMappingHasTheSameLevelOfDetailInEveryMode) {
   Camera camera;
   camera.width = camera.height = 64;
   camera.clipFromView = orthographic(-1, 1, -1, 1, -1, 1);
-  const Texture texture = mipmappedChecker();
+  const Texture texture = mipmappedChecker(64, 8);
   for (Derivatives d : {Derivatives::Analytic, Derivatives::QuadCoarse, Derivatives::QuadFine}) {
     const Rendering r = render(quad.mesh, quad.texcoords, trilinear(texture, camera, d));
     ASSERT_EQ(r.coveredPixels, 64u * 64u);
@@ -83,7 +78,7 @@ double lambdaOf(const Vec2& dx, const Vec2& dy, int size) {
 
 TEST(QuadDerivatives, CoarseAndFineDifferencesMatchARayCastRecount) {
   const TiltedSquare scene;
-  const Texture texture = mipmappedChecker();
+  const Texture texture = mipmappedChecker(64, 8);
   const Rendering coarse = render(scene.quad.mesh, scene.quad.texcoords, trilinear(texture, scene.camera, Derivatives::QuadCoarse));
   const Rendering fine = render(scene.quad.mesh, scene.quad.texcoords, trilinear(texture, scene.camera, Derivatives::QuadFine));
   const Rendering exact = render(scene.quad.mesh, scene.quad.texcoords, trilinear(texture, scene.camera, Derivatives::Analytic));
@@ -166,7 +161,7 @@ MipLine mipLine(const Rendering& quad, const Rendering& analytic) {
 
 TEST(QuadDerivatives, APerPixelAtan2MappingShowsTheSeamLineAndItsFixesRemoveIt) {
   const SeamSphere sphere(48, 24);
-  const Texture texture = mipmappedChecker();
+  const Texture texture = mipmappedChecker(64, 8);
   const Rendering analytic = render(sphere.mesh, sphere.texcoords, trilinear(texture, sphere.camera, Derivatives::Analytic));
   ASSERT_GT(analytic.coveredPixels, 5000u);
   for (Derivatives d : {Derivatives::QuadCoarse, Derivatives::QuadFine}) {
@@ -196,7 +191,7 @@ TEST(QuadDerivatives, APerPixelAtan2MappingShowsTheSeamLineAndItsFixesRemoveIt) 
 
 TEST(QuadDerivatives, TariniNeedsAPerPixelMappingThatWraps) {
   const TiltedSquare scene;
-  const Texture texture = mipmappedChecker();
+  const Texture texture = mipmappedChecker(64, 8);
   RenderOptions o = trilinear(texture, scene.camera, Derivatives::QuadCoarse);
   o.seamFix = SeamFix::Tarini;
   EXPECT_THROW(render(scene.quad.mesh, scene.quad.texcoords, o), UsageError);
@@ -205,7 +200,7 @@ TEST(QuadDerivatives, TariniNeedsAPerPixelMappingThatWraps) {
 // GL's TEXTURE_LOD_BIAS: lambda + bias, so a picture one level blurrier.
 TEST(QuadDerivatives, TheLodBiasAddsToLambda) {
   const TiltedSquare scene;
-  const Texture texture = mipmappedChecker();
+  const Texture texture = mipmappedChecker(64, 8);
   RenderOptions o = trilinear(texture, scene.camera, Derivatives::Analytic);
   const Rendering plain = render(scene.quad.mesh, scene.quad.texcoords, o);
   o.lodBias = 1.0;
@@ -220,5 +215,6 @@ TEST(QuadDerivatives, TheLodBiasAddsToLambda) {
   EXPECT_GT(changed, 1000);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::render

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/mesh.h"
+#include "render/procedural.h"
 #include "render/renderer.h"
 
 namespace uvtk::render {
@@ -19,5 +20,12 @@ struct Quad {
       for (int v : t) texcoords.corners.push_back(uv[v]);
   }
 };
+
+// A checker of `size` texels a side in squares of `square` texels, with its mipmaps.
+inline Texture mipmappedChecker(int size, int square) {
+  Texture texture = checkerTexture(size, square);
+  texture.buildMipmaps();
+  return texture;
+}
 
 }  // namespace uvtk::render

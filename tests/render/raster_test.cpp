@@ -14,6 +14,7 @@
 
 namespace uvtk::render {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // Clip coordinates of window point (x, y) (y up) at depth z_ndc under an identity projection.
 Vec4 windowPoint(double x, double y, int width, int height, double z = 0.0) {
@@ -289,5 +290,6 @@ TEST(Inverse3x3, IsBitForBitEigensInverse) {
   EXPECT_GT(compared, 190000);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::render

@@ -19,6 +19,7 @@
 
 namespace uvtk::render {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // FNV-1a (64 bits) over the bytes of the colour floats, then of the AOV floats.
 std::uint64_t checksum(const Rendering& r) {
@@ -308,5 +309,6 @@ TEST_F(RenderIdentity, EveryConfigurationDrawsTheImageItDrewBeforeTheVectorisedS
   EXPECT_EQ(drawn.size(), expected.size());
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::render

@@ -10,6 +10,7 @@
 
 namespace uvtk::render {
 namespace {
+namespace UVTK_TEST_FILE {
 
 Texture rampTexture(int width, int height) {  // every texel a distinct colour
   TexelLevel level{width, height, {}};
@@ -17,12 +18,6 @@ Texture rampTexture(int width, int height) {  // every texel a distinct colour
     for (int i = 0; i < width; ++i)
       level.texels.push_back(Rgba(i / 255.0f, j / 255.0f, float((i + j) % 7) / 255.0f, 1.0f));
   return Texture(level, true);
-}
-
-Texture mipmappedChecker() {
-  Texture texture = checkerTexture(256, 8);
-  texture.buildMipmaps();
-  return texture;
 }
 
 TEST(Render, AScreenFillingQuadUnderAnOrthographicCameraReproducesTheTextureTexelForPixel) {
@@ -103,7 +98,7 @@ TEST(Render, TextureCoordinatesArePerspectiveCorrectAtEveryPixel) {
 
 TEST(Render, TheLevelOfDetailIsLog2OfTheLongerTexelFootprintOfThePixel) {
   const TiltedPlane s;
-  const Texture texture = mipmappedChecker();
+  const Texture texture = mipmappedChecker(256, 8);
   RenderOptions o = s.options(texture);
   o.sampler = samplerFor(Filter::LinearMipmapLinear, Wrap::Repeat);
   const Rendering r = render(s.quad.mesh, s.quad.texcoords, o);
@@ -172,7 +167,7 @@ TEST(Render, AnExactPixelMappingOfALinearMapEqualsPerVertexInterpolation) {
 
 TEST(Render, TheImageDoesNotDependOnTheThreadCount) {
   const TiltedPlane s;
-  const Texture texture = mipmappedChecker();
+  const Texture texture = mipmappedChecker(256, 8);
   RenderOptions o = s.options(texture);
   o.sampler = samplerFor(Filter::LinearMipmapLinear, Wrap::MirroredRepeat);
   o.env = EnvMode::Modulate;
@@ -202,5 +197,6 @@ TEST(Render, TheBackgroundFillsUncoveredPixelsAndTheAovsMarkThem) {
   EXPECT_EQ(r.aovs.at(4, 4, 2), 0.5f);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::render

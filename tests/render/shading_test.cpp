@@ -6,6 +6,7 @@
 
 namespace uvtk::render {
 namespace {
+namespace UVTK_TEST_FILE {
 
 bool near(const Vec4& a, const Vec4& b) { return (a - b).norm() < 1e-12; }
 
@@ -36,5 +37,6 @@ TEST(HeadlightColour, IsAmbientPlusDiffusePlusSpecularOfGlsLightingEquation) {
   EXPECT_TRUE(near(headlightColour(l, Vec3(0, 0, -1)), Vec4(0.04, 0.04, 0.04, 1)));
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::render

@@ -11,6 +11,7 @@
 
 namespace uvtk::render {
 namespace {
+namespace UVTK_TEST_FILE {
 
 Texture uniformTexture(const Rgba& colour) {
   Texture texture(TexelLevel{1, 1, {colour}}, false);
@@ -20,7 +21,7 @@ Texture uniformTexture(const Rgba& colour) {
 
 // A plane tilted 45 degrees about x under a perspective camera, filling the view, so that the
 // texture coordinates, their derivatives and the level of detail vary over the image.
-struct TiltedPlane {
+struct TiltedPlaneShot {
   Vec3 a = Vec3(40, 0, 0), b = Vec3(0, 40 * std::cos(kPi / 4), -40 * std::sin(kPi / 4));
   Quad quad{-0.5 * (a + b), a, b};
 
@@ -38,7 +39,7 @@ struct TiltedPlane {
 };
 
 TEST(Supersampling, OneSamplePerPixelIsTheDefaultRenderingBitForBit) {
-  const TiltedPlane s;
+  const TiltedPlaneShot s;
   Texture texture = checkerTexture(64, 4);
   texture.buildMipmaps();
   const RenderOptions defaults = s.options(texture);
@@ -82,7 +83,7 @@ TEST(Supersampling, APixelHalfCoveredByAnEdgeIsTheMeanOfQuadAndBackground) {
 }
 
 TEST(Supersampling, AUniformlyColouredCoveringQuadLooksTheSameWithSixteenSamples) {
-  const TiltedPlane s;
+  const TiltedPlaneShot s;
   const Texture texture = uniformTexture(Rgba(0.3f, 0.7f, 0.9f, 1.0f));
   RenderOptions o = s.options(texture);
   o.env = EnvMode::Replace;  // lighting would vary between the samples
@@ -97,7 +98,7 @@ TEST(Supersampling, AUniformlyColouredCoveringQuadLooksTheSameWithSixteenSamples
 }
 
 TEST(Supersampling, WithAnOddGridTheAovsAreThoseOfThePixelCentreAtTheSamplesLevelOfDetail) {
-  const TiltedPlane s;
+  const TiltedPlaneShot s;
   Texture texture = checkerTexture(256, 8);
   texture.buildMipmaps();
   RenderOptions o = s.options(texture);
@@ -141,5 +142,6 @@ TEST(Supersampling, OnlySquaresFrom1To256AreAccepted) {
   EXPECT_THROW(render(quad.mesh, quad.texcoords, o), UsageError);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::render

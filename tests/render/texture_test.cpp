@@ -13,12 +13,13 @@
 #include <vector>
 
 #include "core/error.h"
+#include "doubles.h"
 
 namespace uvtk::render {
 namespace {
+namespace UVTK_TEST_FILE {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A level whose texels carry the given red values (green, blue 0, alpha 1), row j = 0 first.
 TexelLevel redLevel(int width, int height, const std::vector<float>& reds) {
@@ -421,5 +422,6 @@ TEST(Sample, APowerOfTwoRepeatTextureBlendsItsLevelsExactlyAsSampleLinearDoes) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::render

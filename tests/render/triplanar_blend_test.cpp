@@ -8,14 +8,14 @@
 
 #include "core/error.h"
 #include "core/gl_matrices.h"
+#include "doubles.h"
 #include "render/memory.h"
 #include "render/quad_fixture.h"
 #include "render/renderer.h"
 
 namespace uvtk::render {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+namespace UVTK_TEST_FILE {
 
 Texture randomTexture(int size) {
   std::mt19937 random(17);
@@ -267,5 +267,6 @@ TEST(TriplanarBlend, ACubeMapIsRefusedAndAxisTexturesCountInTheMemoryEstimate) {
   EXPECT_THROW(render(plane.quad.mesh, source, o), UsageError);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::render

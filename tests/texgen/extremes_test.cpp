@@ -15,9 +15,11 @@
 #include "core/error.h"
 #include "core/gl_matrices.h"
 #include "texgen/texgen.h"
+#include "texgen/texgen_fixtures.h"
 
 namespace uvtk::texgen {
 namespace {
+namespace UVTK_TEST_FILE {
 
 using LongVec4 = Eigen::Matrix<long double, 4, 1>;
 using LongMat4 = Eigen::Matrix<long double, 4, 4>;
@@ -95,12 +97,6 @@ Mat4 exactIllConditioned() {
   Mat4 m = Mat4::Identity();
   m(0, 1) = m(1, 0) = 1.0;
   m(1, 1) = 1.0 + 0x1p-38;
-  return m;
-}
-
-Mat4 rotationX(double radians) {
-  Mat4 m = Mat4::Identity();
-  m.topLeftCorner<3, 3>() = Eigen::AngleAxisd(radians, Vec3::UnitX()).toRotationMatrix();
   return m;
 }
 
@@ -257,5 +253,6 @@ TEST(TexgenExtremes, AModelviewSingularToWorkingPrecisionIsAUsageError) {
     }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::texgen

@@ -11,6 +11,7 @@
 
 namespace uvtk::texgen {
 namespace {
+namespace UVTK_TEST_FILE {
 
 struct MesaContext {
   MesaContext() : context(OSMesaCreateContextExt(OSMESA_RGBA, 16, 0, 0, nullptr)) {
@@ -115,5 +116,6 @@ TEST(MesaReference, EveryModeAgreesWithMesaToFloatPrecision) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::texgen

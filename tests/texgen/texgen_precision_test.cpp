@@ -11,20 +11,13 @@
 #include "core/gl_matrices.h"
 #include "meshes/generators.h"
 #include "texgen/texgen.h"
+#include "texgen/texgen_fixtures.h"
 
 namespace uvtk::texgen {
 namespace {
+namespace UVTK_TEST_FILE {
 
 constexpr double kUnitRoundoff = 0x1p-24;  // binary32: half an ulp of 1
-
-TexgenOptions withModes(TexgenMode s, TexgenMode t, TexgenMode r = TexgenMode::Off, TexgenMode q = TexgenMode::Off) {
-  TexgenOptions o;
-  o.coordinates[0].mode = s;
-  o.coordinates[1].mode = t;
-  o.coordinates[2].mode = r;
-  o.coordinates[3].mode = q;
-  return o;
-}
 
 TexgenOptions inFloat(TexgenOptions o) {
   o.precision = Precision::Float;
@@ -210,5 +203,6 @@ TEST(TexgenFloat, APlaneBeyondFloatRangeIsAUsageError) {
   EXPECT_EQ(texgenAt(Vec3(1, 2, 3), Vec3::UnitZ(), inFloat(o)), Vec4(0, 2, 0, 1));
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::texgen

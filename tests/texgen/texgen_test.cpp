@@ -12,20 +12,13 @@
 #include "core/error.h"
 #include "meshes/generators.h"
 #include "param/projector.h"
+#include "texgen/texgen_fixtures.h"
 
 namespace uvtk::texgen {
 namespace {
+namespace UVTK_TEST_FILE {
 
 constexpr double kTight = 1e-15;
-
-TexgenOptions withModes(TexgenMode s, TexgenMode t, TexgenMode r = TexgenMode::Off, TexgenMode q = TexgenMode::Off) {
-  TexgenOptions o;
-  o.coordinates[0].mode = s;
-  o.coordinates[1].mode = t;
-  o.coordinates[2].mode = r;
-  o.coordinates[3].mode = q;
-  return o;
-}
 
 Mat4 translation(double x, double y, double z) {
   Mat4 m = Mat4::Identity();
@@ -42,12 +35,6 @@ Mat4 quarterTurnZ() {
   m(1, 0) = 1.0;
   m(2, 2) = 1.0;
   m(3, 3) = 1.0;
-  return m;
-}
-
-Mat4 rotationX(double radians) {
-  Mat4 m = Mat4::Identity();
-  m.topLeftCorner<3, 3>() = Eigen::AngleAxisd(radians, Vec3::UnitX()).toRotationMatrix();
   return m;
 }
 
@@ -350,5 +337,6 @@ TEST(Modes, SphereMapOnROrQAndNormalOrReflectionOnQAreUsageErrors) {
                            withModes(TexgenMode::NormalMap, TexgenMode::ReflectionMap, TexgenMode::ReflectionMap)));
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::texgen

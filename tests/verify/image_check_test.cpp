@@ -11,6 +11,7 @@
 
 namespace uvtk::verify {
 namespace {
+namespace UVTK_TEST_FILE {
 
 using render::Filter;
 using render::Wrap;
@@ -263,5 +264,6 @@ TEST(ImageCheck, UnsupportedRenderingsAndMismatchedShotsAreUsageErrors) {
   EXPECT_THROW(checkImage(shot, noAovs, o, false), UsageError);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::verify

@@ -28,6 +28,7 @@
 
 namespace uvtk::verify {
 namespace {
+namespace UVTK_TEST_FILE {
 
 using render::Filter;
 using render::Wrap;
@@ -373,5 +374,6 @@ TEST(MesaCheck, SeamLineOfPerPixelSphereMappingIsCaught) {
   }
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::verify

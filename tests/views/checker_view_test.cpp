@@ -14,6 +14,7 @@
 
 namespace uvtk::views {
 namespace {
+namespace UVTK_TEST_FILE {
 
 constexpr float kLight = 230.0f / 255.0f, kDark = 89.0f / 255.0f;  // the texels, as a float image stores them
 
@@ -167,5 +168,6 @@ TEST(CheckerView, AMeshWoundInwardsIsLitAsItsOutwardTwinTwoSided) {
   EXPECT_GE(double(same), 0.999 * double(covered)) << same << " of " << covered;
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::views

@@ -16,6 +16,7 @@
 
 namespace uvtk::views {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // The square [x0, x0 + 2] x [0, 2] in z = 0 (two triangles), mapped by ((x - x0) s + u0, y s).
 void addSquare(Mapped& m, double x0, double s, double u0) {
@@ -116,5 +117,6 @@ TEST(DensityView, IsAViewByNameAndALayoutFill) {
   EXPECT_TRUE(middle);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::views

@@ -9,8 +9,9 @@
 #include <limits>
 #include <memory>
 
-#include "core/seam_edges.h"
 #include "core/error.h"
+#include "core/seam_edges.h"
+#include "doubles.h"
 #include "meshes/generators.h"
 #include "param/projector.h"
 #include "render/procedural.h"
@@ -18,13 +19,14 @@
 #include "views/canvas.h"
 #include "views/layout.h"
 #include "views/legend.h"
+#include "views/mapped_layout.h"
 #include "views/measure.h"
 #include "views/palette.h"
 #include "views/scene.h"
-#include "views/mapped_layout.h"
 
 namespace uvtk::views {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // The plane grid of side 2 in z = 0 by the plane projector: an isometry up to a scale of 1/2.
 Mapped planarPlane(int n = 4) { return mapWith(meshes::planeGrid(n, n, 2.0, 2.0), projector(param::SurfaceKind::Plane)); }
@@ -38,7 +40,6 @@ ViewOptions viewFrom(const Mesh& mesh, const Vec3& direction, const Vec3& up, in
 }
 
 // Colours compared as an Image stores them, in float.
-bool near(const Vec3& a, const Vec3& b) { return (a - b).cwiseAbs().maxCoeff() < 1e-6; }
 
 // A window point (image coordinates) of an object-space point under the view's camera.
 Vec2 projectToImage(const ViewOptions& o, const Vec3& p) {
@@ -467,5 +468,6 @@ TEST(LayoutView, ASquareSplitInTwoIsFilledOnceAndTheSeamIsDrawnOnBothSides) {
   EXPECT_THROW(drawView(View::Layout, seam.input(), o), UsageError);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::views

@@ -14,6 +14,7 @@
 
 namespace uvtk::views {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // The lat-long sphere by the sphere projector (axis z, seam towards +x), seen from beside the
 // seam and a little above, so that the seam runs down the picture off the quad boundaries.
@@ -83,5 +84,6 @@ TEST(MipLineView, ThePictureMarksTheCountedPixels) {
   EXPECT_NE(drawn.legend.title[1].find(std::to_string(line.pixels) + " pixels"), std::string::npos) << drawn.legend.title[1];
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::views

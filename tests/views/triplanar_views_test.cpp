@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "doubles.h"
 #include "meshes/generators.h"
 #include "param/triplanar.h"
 #include "render/camera.h"
@@ -17,6 +18,7 @@
 
 namespace uvtk::views {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // Unity's triplanar weights |n_i|^B / sum_j |n_j|^B with B = 1, and its three (u, v), as the
 // triplanar projector hands them to the renderer.
@@ -67,8 +69,6 @@ ViewOptions viewFrom(const Mesh& mesh, const Vec3& direction, bool orthographic,
   o.render.background = kBackground;
   return o;
 }
-
-bool near(const Vec3& a, const Vec3& b) { return (a - b).cwiseAbs().maxCoeff() < 1e-6; }
 
 bool covered(const Scene& scene, int x, int row) { return scene.visible.face[scene.visible.index(x, row)] >= 0; }
 
@@ -247,5 +247,6 @@ TEST(TriplanarViews, MappingsWithoutBlendWeightsAreRefused) {
   EXPECT_THROW(blendZone(t.input(), o), UsageError);
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::views

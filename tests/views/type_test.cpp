@@ -16,6 +16,7 @@
 
 namespace uvtk::views {
 namespace {
+namespace UVTK_TEST_FILE {
 
 const Vec3 kInk{0.9, 0.8, 0.1};
 const Vec3 kBackground{0.1, 0.2, 0.3};
@@ -190,5 +191,6 @@ TEST(Type, ClipsAtTheImageEdges) {
   drawText(left, std::numeric_limits<int>::max() - 4, std::numeric_limits<int>::min(), "far", 18, kInk);  // no overflow
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::views

@@ -8,8 +8,9 @@
 #include <string>
 
 #include "analysis/overlap.h"
-#include "core/seam_edges.h"
 #include "core/error.h"
+#include "core/seam_edges.h"
+#include "doubles.h"
 #include "views/canvas.h"
 #include "views/legend.h"
 #include "views/palette.h"
@@ -17,9 +18,9 @@
 
 namespace uvtk::views {
 namespace {
+namespace UVTK_TEST_FILE {
 
 // Colours compared as an Image stores them, in float.
-bool near(const Vec3& a, const Vec3& b) { return (a - b).cwiseAbs().maxCoeff() < 1e-6; }
 
 // ---- names ----
 
@@ -226,5 +227,6 @@ TEST(CoverageCounts, CountsEachCentreByTheFacesCoveringIt) {
   EXPECT_EQ(seen, (std::vector<std::size_t>{0, 1}));  // face by face in index order
 }
 
+}  // namespace UVTK_TEST_FILE
 }  // namespace
 }  // namespace uvtk::views
