@@ -4,7 +4,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <map>
 #include <set>
 #include <regex>
@@ -117,19 +116,17 @@ TEST(SourceRules, IncludesRunDownTheLayers) {
 }
 
 TEST(SourceRules, EveryTestFileKeepsItsNamesToItself) {
-  // The test programs are unity builds (tests/CMakeLists.txt): eight files compiled as one share
-  // one anonymous namespace, where one file's helper could silently replace a name that another
-  // takes from a header. So each anonymous namespace of a test file opens the file's own namespace,
-  // UVTK_TEST_FILE, at once; but those at global scope that hold the state of a replaced global
-  // operator new or malloc, which cannot see into it.
+  // Each anonymous namespace of a test file opens the file's own namespace, UVTK_TEST_FILE, at once
+  // (why: tests/CMakeLists.txt, the unity build); but those at global scope that hold the state of
+  // a replaced global operator new or malloc, which cannot see into it.
   std::size_t files = 0, namespaces = 0;
-  const fs::path tests = fs::path(UVTK_SOURCE_DIR) / "tests";
-  for (const auto& entry : fs::recursive_directory_iterator(tests)) {
+  const fs::path root = UVTK_SOURCE_DIR;
+  for (const auto& entry : fs::recursive_directory_iterator(root / "tests")) {
     const std::string name = entry.path().filename().string();
     if (!entry.is_regular_file() || name.size() < 9 || name.compare(name.size() - 9, 9, "_test.cpp") != 0) continue;
     ++files;
-    std::ifstream in(entry.path());
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const fs::path file = fs::relative(entry.path(), root);
+    const std::string text = textOf(file);
     const bool replacesAllocation = text.find("\nvoid* operator new(") != std::string::npos;
     bool named = false;  // inside a named namespace
     std::istringstream lines(text);
@@ -138,7 +135,7 @@ TEST(SourceRules, EveryTestFileKeepsItsNamesToItself) {
         const bool exempt = replacesAllocation && !named;
         ++namespaces;
         EXPECT_TRUE(exempt || line == "namespace UVTK_TEST_FILE {")
-            << fs::relative(entry.path(), tests) << ": an anonymous namespace that does not open UVTK_TEST_FILE";
+            << file << ": an anonymous namespace that does not open UVTK_TEST_FILE";
       }
       if (line.rfind("namespace ", 0) == 0 && line != "namespace {" && line.back() == '{') named = true;
     }

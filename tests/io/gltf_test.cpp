@@ -104,7 +104,7 @@ Asset quad() {
 
 ReadMeshResult readText(const std::string& text) { return readGltf(text, "in.gltf", "", false); }
 
-std::string gltfError(const std::string& bytes, bool binary = false, const std::string& folder = "") {
+std::string errorOf(const std::string& bytes, bool binary = false, const std::string& folder = "") {
   try {
     readGltf(bytes, binary ? "in.glb" : "in.gltf", folder, binary);
   } catch (const InputError& e) {
@@ -232,7 +232,7 @@ TEST(ReadGltf, ReadsQuantizedPositionsAndNormalizedTexcoords) {
   a.doc["meshes"][0]["primitives"][0] = {{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}}};
   a.doc["nodes"][0] = {{"mesh", 0}};
   // Without the extension, SHORT positions are not glTF.
-  EXPECT_EQ(gltfError(a.gltf()),
+  EXPECT_EQ(errorOf(a.gltf()),
             "in.gltf: /meshes/0/primitives/0/attributes/POSITION: error: expected a VEC3 accessor of FLOAT (with "
             "KHR_mesh_quantization also of BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT), found accessor 0: VEC3 of "
             "normalized SHORT");
@@ -312,84 +312,84 @@ TEST_F(GltfFiles, ReadsFilesByPathWithBuffersBesideThem) {
 TEST(ReadGltf, RefusesBrokenGlbContainers) {
   const std::string glb = quad().glb();
   const std::string size = std::to_string(glb.size());
-  EXPECT_EQ(gltfError(glb.substr(0, glb.size() - 4), true),
+  EXPECT_EQ(errorOf(glb.substr(0, glb.size() - 4), true),
             "in.glb: byte " + std::to_string(glb.size() - 4) + ": error: expected 4 more bytes (the GLB header's length is " +
                 size + "), found end of file");
-  EXPECT_EQ(gltfError(glb + "abcd", true),
+  EXPECT_EQ(errorOf(glb + "abcd", true),
             "in.glb: byte " + size + ": error: expected end of file (the GLB header's length is " + size + "), found 4 more bytes");
-  EXPECT_EQ(gltfError(glb.substr(0, 7), true), "in.glb: byte 7: error: expected a 12-byte GLB header, found end of file");
-  EXPECT_EQ(gltfError("GLTF" + glb.substr(4), true), "in.glb: byte 0: error: expected the GLB magic 'glTF', found 0x46544C47");
+  EXPECT_EQ(errorOf(glb.substr(0, 7), true), "in.glb: byte 7: error: expected a 12-byte GLB header, found end of file");
+  EXPECT_EQ(errorOf("GLTF" + glb.substr(4), true), "in.glb: byte 0: error: expected the GLB magic 'glTF', found 0x46544C47");
   std::string v1 = glb;
   v1[4] = 1;
-  EXPECT_EQ(gltfError(v1, true), "in.glb: byte 4: error: expected GLB version 2, found 1");
+  EXPECT_EQ(errorOf(v1, true), "in.glb: byte 4: error: expected GLB version 2, found 1");
   std::string bin = glb;
   std::memcpy(&bin[16], "BIN", 4);
-  EXPECT_EQ(gltfError(bin, true), "in.glb: byte 16: error: expected the first chunk to be of type JSON (0x4E4F534A), found 0x004E4942");
+  EXPECT_EQ(errorOf(bin, true), "in.glb: byte 16: error: expected the first chunk to be of type JSON (0x4E4F534A), found 0x004E4942");
   std::string longChunk = glb;
   const std::uint32_t claimed = static_cast<std::uint32_t>(glb.size());
   std::memcpy(&longChunk[12], &claimed, 4);
-  EXPECT_EQ(gltfError(longChunk, true), "in.glb: byte " + size + ": error: expected the chunk's " + size +
+  EXPECT_EQ(errorOf(longChunk, true), "in.glb: byte " + size + ": error: expected the chunk's " + size +
                                           " bytes, found end of file after " + std::to_string(glb.size() - 20));
   std::string odd = glb;
   std::uint32_t jsonLength = 0;
   std::memcpy(&jsonLength, &glb[12], 4);
   --jsonLength;
   std::memcpy(&odd[12], &jsonLength, 4);
-  EXPECT_EQ(gltfError(odd, true),
+  EXPECT_EQ(errorOf(odd, true),
             "in.glb: byte 12: error: expected a chunk length that is a multiple of 4, found " + std::to_string(jsonLength));
 }
 
 TEST(ReadGltf, RefusesBadJsonWithItsLine) {
-  EXPECT_EQ(gltfError("{\n\"asset\": {\"version\": \"2.0\"},,\n}"),
+  EXPECT_EQ(errorOf("{\n\"asset\": {\"version\": \"2.0\"},,\n}"),
             "in.gltf:2: error: invalid JSON at column 29: syntax error while parsing object key - unexpected ','; expected "
             "string literal");
-  EXPECT_EQ(gltfError("{\"asset\": {}}"), "in.gltf: error: \"asset\" object not found in .gltf or not an object type");
-  EXPECT_EQ(gltfError(std::string(300, '[') + std::string(300, ']')),
+  EXPECT_EQ(errorOf("{\"asset\": {}}"), "in.gltf: error: \"asset\" object not found in .gltf or not an object type");
+  EXPECT_EQ(errorOf(std::string(300, '[') + std::string(300, ']')),
             "in.gltf:1: error: expected JSON nested at most 256 levels deep, found deeper");
   Asset a = quad();
   a.doc["asset"]["version"] = "1.0";
-  EXPECT_EQ(gltfError(a.gltf()), "in.gltf: /asset/version: error: expected a glTF version 2.x, found '1.0'");
+  EXPECT_EQ(errorOf(a.gltf()), "in.gltf: /asset/version: error: expected a glTF version 2.x, found '1.0'");
 }
 
 TEST(ReadGltf, RefusesBuffersAndViewsThatDoNotHoldTheirData) {
   Asset a = quad();
   json d = a.doc;
   d["buffers"] = {{{"byteLength", 96}, {"uri", "data:application/octet-stream;base64," + base64(a.bin)}}};
-  EXPECT_EQ(gltfError(d.dump()), "in.gltf: /buffers/0/uri: error: expected base64 data of exactly its byteLength, found other data");
+  EXPECT_EQ(errorOf(d.dump()), "in.gltf: /buffers/0/uri: error: expected base64 data of exactly its byteLength, found other data");
   d["buffers"][0]["uri"] = "quad.bin";
-  EXPECT_EQ(gltfError(d.dump()),
+  EXPECT_EQ(errorOf(d.dump()),
             "in.gltf: /buffers/0: error: cannot read the buffer file 'quad.bin': the input has no folder to find it in");
 
   a.doc["bufferViews"][2]["byteOffset"] = 84;
-  EXPECT_EQ(gltfError(a.gltf()),
+  EXPECT_EQ(errorOf(a.gltf()),
             "in.gltf: /bufferViews/2: error: expected its 12 bytes from byteOffset 84 within buffer 0 (92 bytes), found them past its end");
   a = quad();
   a.doc["accessors"][0]["count"] = 5;
-  EXPECT_EQ(gltfError(a.gltf()),
+  EXPECT_EQ(errorOf(a.gltf()),
             "in.gltf: /accessors/0: error: expected its 5 elements of 12 bytes within bufferView 0 (48 bytes), found them past its end");
   a = quad();
   a.doc["accessors"][1]["byteOffset"] = 4;
-  EXPECT_EQ(gltfError(a.gltf()),
+  EXPECT_EQ(errorOf(a.gltf()),
             "in.gltf: /accessors/1: error: expected its 4 elements of 8 bytes within bufferView 1 (32 bytes from byteOffset 4), "
             "found them past its end");
   a = quad();
   a.doc["accessors"][0]["bufferView"] = 7;
-  EXPECT_EQ(gltfError(a.gltf()), "in.gltf: /accessors/0/bufferView: error: expected a bufferView index in 0..2, found 7");
+  EXPECT_EQ(errorOf(a.gltf()), "in.gltf: /accessors/0/bufferView: error: expected a bufferView index in 0..2, found 7");
   a.doc["accessors"][0].erase("bufferView");
-  EXPECT_EQ(gltfError(a.gltf()),
+  EXPECT_EQ(errorOf(a.gltf()),
             "in.gltf: /accessors/0: error: expected a bufferView, found none (an accessor without one holds zeros; uvtk reads none)");
   a = quad();
   a.doc["bufferViews"][0]["buffer"] = 1;
-  EXPECT_EQ(gltfError(a.gltf()), "in.gltf: /bufferViews/0/buffer: error: expected a buffer index in 0..0, found 1");
+  EXPECT_EQ(errorOf(a.gltf()), "in.gltf: /bufferViews/0/buffer: error: expected a buffer index in 0..0, found 1");
   a = quad();
   a.doc["accessors"][0]["count"] = 0;
-  EXPECT_EQ(gltfError(a.gltf()), "in.gltf: /accessors/0/count: error: expected at least 1 element, found 0");
+  EXPECT_EQ(errorOf(a.gltf()), "in.gltf: /accessors/0/count: error: expected at least 1 element, found 0");
   a = quad();
   a.doc["bufferViews"][0]["byteStride"] = 8;
-  EXPECT_EQ(gltfError(a.gltf()), "in.gltf: /bufferViews/0/byteStride: error: expected at least 12 (the element size of accessor 0), found 8");
+  EXPECT_EQ(errorOf(a.gltf()), "in.gltf: /bufferViews/0/byteStride: error: expected at least 12 (the element size of accessor 0), found 8");
   a = quad();
   a.doc["accessors"][0]["count"] = std::numeric_limits<std::uint64_t>::max();  // no overflow in the bounds
-  EXPECT_EQ(gltfError(a.gltf()),
+  EXPECT_EQ(errorOf(a.gltf()),
             "in.gltf: /accessors/0: error: expected its 18446744073709551615 elements of 12 bytes within bufferView 0 (48 "
             "bytes), found them past its end");
 }
@@ -397,79 +397,79 @@ TEST(ReadGltf, RefusesBuffersAndViewsThatDoNotHoldTheirData) {
 TEST(ReadGltf, RefusesBadIndicesModesAndAttributes) {
   Asset a = quad();
   a.bin.replace(80 + 10, 2, Bytes().u16({7}).data);
-  EXPECT_EQ(gltfError(a.gltf()),
+  EXPECT_EQ(errorOf(a.gltf()),
             "in.gltf: /meshes/0/primitives/0/indices: error: expected vertex indices below 4 (the POSITION count), found 7 at element 5");
   a = quad();
   a.doc["meshes"][0]["primitives"][0]["mode"] = 9;
-  EXPECT_EQ(gltfError(a.gltf()), "in.gltf: /meshes/0/primitives/0/mode: error: expected a primitive mode in 0..6, found 9");
+  EXPECT_EQ(errorOf(a.gltf()), "in.gltf: /meshes/0/primitives/0/mode: error: expected a primitive mode in 0..6, found 9");
   a.doc["meshes"][0]["primitives"][0]["mode"] = 3;
-  EXPECT_EQ(gltfError(a.gltf()),
+  EXPECT_EQ(errorOf(a.gltf()),
             "in.gltf: error: expected at least one triangle primitive in the scene, found none (1 primitive of points or lines skipped)");
   a = quad();
   a.doc["meshes"][0]["primitives"][0]["attributes"].erase("POSITION");
-  EXPECT_EQ(gltfError(a.gltf()), "in.gltf: /meshes/0/primitives/0/attributes: error: expected a POSITION attribute, found none");
+  EXPECT_EQ(errorOf(a.gltf()), "in.gltf: /meshes/0/primitives/0/attributes: error: expected a POSITION attribute, found none");
   a = quad();
   a.doc["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 0;
-  EXPECT_EQ(gltfError(a.gltf()),
+  EXPECT_EQ(errorOf(a.gltf()),
             "in.gltf: /meshes/0/primitives/0/attributes/TEXCOORD_0: error: expected a VEC2 accessor of FLOAT, normalized "
             "UNSIGNED_BYTE or normalized UNSIGNED_SHORT (with KHR_mesh_quantization also of BYTE, UNSIGNED_BYTE, SHORT or "
             "UNSIGNED_SHORT), found accessor 0: VEC3 of FLOAT");
   a = quad();
   a.doc["accessors"][2]["componentType"] = 5126;
-  EXPECT_EQ(gltfError(a.gltf()),
+  EXPECT_EQ(errorOf(a.gltf()),
             "in.gltf: /meshes/0/primitives/0/indices: error: expected a SCALAR accessor of UNSIGNED_BYTE, UNSIGNED_SHORT or "
             "UNSIGNED_INT, not normalized, found accessor 2: SCALAR of FLOAT");
   a = quad();
   a.doc["accessors"][2]["count"] = 5;
-  EXPECT_EQ(gltfError(a.gltf()), "in.gltf: /meshes/0/primitives/0/indices: error: expected a multiple of 3 vertices for TRIANGLES, found 5");
+  EXPECT_EQ(errorOf(a.gltf()), "in.gltf: /meshes/0/primitives/0/indices: error: expected a multiple of 3 vertices for TRIANGLES, found 5");
   a = quad();
   a.doc["accessors"][1]["count"] = 3;
-  EXPECT_EQ(gltfError(a.gltf()),
+  EXPECT_EQ(errorOf(a.gltf()),
             "in.gltf: /meshes/0/primitives/0/attributes/TEXCOORD_0: error: expected 4 elements (the POSITION count), found 3");
   a = quad();
   const float nan = std::numeric_limits<float>::quiet_NaN();
   a.bin.replace(2 * 12 + 4, 4, Bytes().f32({nan}).data);
-  EXPECT_EQ(gltfError(a.gltf()), "in.gltf: /accessors/0: error: expected finite numbers, found nan in element 2");
+  EXPECT_EQ(errorOf(a.gltf()), "in.gltf: /accessors/0: error: expected finite numbers, found nan in element 2");
   a = quad();
   a.doc["accessors"][0]["sparse"] = {{"count", 1},
                                      {"indices", {{"bufferView", 2}, {"componentType", 5123}}},
                                      {"values", {{"bufferView", 0}}}};
-  EXPECT_EQ(gltfError(a.gltf()), "in.gltf: /accessors/0/sparse: error: sparse accessors are not supported");
+  EXPECT_EQ(errorOf(a.gltf()), "in.gltf: /accessors/0/sparse: error: sparse accessors are not supported");
 }
 
 TEST(ReadGltf, RefusesExtensionsItCannotReadAndBadNodeGraphs) {
   Asset a = quad();
   a.doc["extensionsUsed"] = {"KHR_texture_transform", "KHR_draco_mesh_compression"};
   a.doc["extensionsRequired"] = {"KHR_texture_transform", "KHR_draco_mesh_compression"};
-  EXPECT_EQ(gltfError(a.gltf()),
+  EXPECT_EQ(errorOf(a.gltf()),
             "in.gltf: /extensionsRequired/1: error: the file requires the extension 'KHR_draco_mesh_compression', which uvtk "
             "does not read (it reads KHR_mesh_quantization; KHR_texture_transform moves no vertex)");
   a = quad();
   a.doc["nodes"] = {{{"mesh", 0}, {"children", {1}}}, {{"children", {0}}}};
-  EXPECT_EQ(gltfError(a.gltf()),
+  EXPECT_EQ(errorOf(a.gltf()),
             "in.gltf: /nodes/1/children/0: error: node 0 is reached a second time (a cycle, or a child of two parents); uvtk "
             "reads node trees");
   a.doc["nodes"] = {{{"children", {2}}}, {{"children", {2}}}, {{"mesh", 0}}};
   a.doc["scenes"][0]["nodes"] = {0, 1};
-  EXPECT_EQ(gltfError(a.gltf()),
+  EXPECT_EQ(errorOf(a.gltf()),
             "in.gltf: /nodes/1/children/0: error: node 2 is reached a second time (a cycle, or a child of two parents); uvtk "
             "reads node trees");
   a.doc["scenes"][0]["nodes"] = {5};
-  EXPECT_EQ(gltfError(a.gltf()), "in.gltf: /scenes/0/nodes/0: error: expected a node index in 0..2, found 5");
+  EXPECT_EQ(errorOf(a.gltf()), "in.gltf: /scenes/0/nodes/0: error: expected a node index in 0..2, found 5");
   a = quad();
   a.doc["scene"] = 2;
-  EXPECT_EQ(gltfError(a.gltf()), "in.gltf: /scene: error: expected a scene index in 0..0, found 2");
+  EXPECT_EQ(errorOf(a.gltf()), "in.gltf: /scene: error: expected a scene index in 0..0, found 2");
   a = quad();
   a.doc["nodes"][0]["rotation"] = {0, 0, 0, 2};
-  EXPECT_EQ(gltfError(a.gltf()), "in.gltf: /nodes/0/rotation: error: expected a unit quaternion, found one of length 2.000000");
+  EXPECT_EQ(errorOf(a.gltf()), "in.gltf: /nodes/0/rotation: error: expected a unit quaternion, found one of length 2.000000");
   a = quad();
   a.doc["nodes"][0] = {{"mesh", 0}, {"matrix", {1, 0, 0}}};
-  EXPECT_EQ(gltfError(a.gltf()), "in.gltf: /nodes/0/matrix: error: expected 16 numbers, found 3");
+  EXPECT_EQ(errorOf(a.gltf()), "in.gltf: /nodes/0/matrix: error: expected 16 numbers, found 3");
   // A chain of nodes deeper than the limit.
   a.doc["nodes"] = json::array();
   for (int n = 0; n < 1001; ++n) a.doc["nodes"].push_back({{"children", {n + 1}}});
   a.doc["nodes"].push_back({{"mesh", 0}});
-  EXPECT_EQ(gltfError(a.gltf()), "in.gltf: /nodes/999/children/0: error: expected nodes nested at most 1000 deep, found deeper");
+  EXPECT_EQ(errorOf(a.gltf()), "in.gltf: /nodes/999/children/0: error: expected nodes nested at most 1000 deep, found deeper");
 }
 
 TEST(ReadGltf, RefusesSceneInstancesFarBeyondTheInputsSize) {
@@ -485,7 +485,7 @@ TEST(ReadGltf, RefusesSceneInstancesFarBeyondTheInputsSize) {
     a.doc["scenes"][0]["nodes"].push_back(n);
   }
   const std::string text = a.gltf();
-  EXPECT_EQ(gltfError(text), "in.gltf: error: expected at most " + std::to_string(64 * (text.size() + a.bin.size())) +
+  EXPECT_EQ(errorOf(text), "in.gltf: error: expected at most " + std::to_string(64 * (text.size() + a.bin.size())) +
                                " vertices and indices in all mesh instances of the scene (64 per input byte), found " +
                                std::to_string(4096 * 512 * 10));
 }

@@ -16,7 +16,7 @@ namespace UVTK_TEST_FILE {
 using JsonFileTest = ScratchDirTest;
 
 // The message of the InputError that parsing `text` as "s.json" throws; a failure if it throws none.
-std::string jsonError(const std::string& text) {
+std::string errorOf(const std::string& text) {
   try {
     parseJsonText(text, "s.json");
   } catch (const InputError& e) {
@@ -46,14 +46,14 @@ TEST(JsonText, ParsesADocument) {
 
 TEST(JsonText, SkipsAByteOrderMarkWhichIsNoColumn) {
   EXPECT_EQ(parseJsonText("\xEF\xBB\xBF{\"a\": 1}", "s.json").at("a"), 1);
-  EXPECT_EQ(jsonError("\xEF\xBB\xBF{\"a\" 1}"), "s.json:1:6: error: expected ':', found '1'");
+  EXPECT_EQ(errorOf("\xEF\xBB\xBF{\"a\" 1}"), "s.json:1:6: error: expected ':', found '1'");
 }
 
 TEST(JsonText, RejectsADuplicateKeyAtItsSecondOccurrence) {
-  EXPECT_EQ(jsonError("{\n  \"name\": 1,\n  \"path\": 2,\n  \"name\": 3\n}"),
+  EXPECT_EQ(errorOf("{\n  \"name\": 1,\n  \"path\": 2,\n  \"name\": 3\n}"),
             "s.json:4:3: error: duplicate key \"name\"");
   // In a nested object, and with an escaped quote inside the key.
-  EXPECT_EQ(jsonError(R"({"a": [{"k\"q": 1, "k\"q": 2}]})"), R"(s.json:1:20: error: duplicate key "k\"q")");
+  EXPECT_EQ(errorOf(R"({"a": [{"k\"q": 1, "k\"q": 2}]})"), R"(s.json:1:20: error: duplicate key "k\"q")");
 }
 
 TEST(JsonText, AllowsTheSameKeyInDifferentObjects) {
@@ -62,81 +62,81 @@ TEST(JsonText, AllowsTheSameKeyInDifferentObjects) {
 }
 
 TEST(JsonText, RejectsTrailingGarbageAfterTheDocument) {
-  EXPECT_EQ(jsonError("{}\n{}"), "s.json:2:1: error: expected end of file, found '{'");
-  EXPECT_EQ(jsonError("{} x"), "s.json:1:4: error: expected end of file, found 'x'");
-  EXPECT_EQ(jsonError("1 2"), "s.json:1:3: error: expected end of file, found '2'");
-  EXPECT_EQ(jsonError("[] \"abc\""), "s.json:1:4: error: expected end of file, found '\"abc\"'");
+  EXPECT_EQ(errorOf("{}\n{}"), "s.json:2:1: error: expected end of file, found '{'");
+  EXPECT_EQ(errorOf("{} x"), "s.json:1:4: error: expected end of file, found 'x'");
+  EXPECT_EQ(errorOf("1 2"), "s.json:1:3: error: expected end of file, found '2'");
+  EXPECT_EQ(errorOf("[] \"abc\""), "s.json:1:4: error: expected end of file, found '\"abc\"'");
   EXPECT_NO_THROW(parseJsonText("{}\n\n  \t", "s.json"));
 }
 
 TEST(JsonText, RejectsATruncatedDocumentAtTheEndOfTheText) {
-  EXPECT_EQ(jsonError("{\"a\": [1, 2"), "s.json:1:12: error: expected ',' or ']', found end of file");
-  EXPECT_EQ(jsonError("{\"a\": 1\n"), "s.json:2:1: error: expected ',' or '}', found end of file");
-  EXPECT_EQ(jsonError("{\"a\":"), "s.json:1:6: error: expected a value, found end of file");
-  EXPECT_EQ(jsonError("\"abc"), "s.json:1:5: error: expected a closing quote, found end of file");
-  EXPECT_EQ(jsonError("nul"), "s.json:1:1: error: expected a value, found 'nul'");
+  EXPECT_EQ(errorOf("{\"a\": [1, 2"), "s.json:1:12: error: expected ',' or ']', found end of file");
+  EXPECT_EQ(errorOf("{\"a\": 1\n"), "s.json:2:1: error: expected ',' or '}', found end of file");
+  EXPECT_EQ(errorOf("{\"a\":"), "s.json:1:6: error: expected a value, found end of file");
+  EXPECT_EQ(errorOf("\"abc"), "s.json:1:5: error: expected a closing quote, found end of file");
+  EXPECT_EQ(errorOf("nul"), "s.json:1:1: error: expected a value, found 'nul'");
 }
 
 // nlohmann stops at a NUL byte as at the end of the input; the reader does not.
 TEST(JsonText, RejectsANulByteAnywhere) {
   using namespace std::string_literals;
-  EXPECT_EQ(jsonError("{}\n\0{}"s), "s.json:2:1: error: expected end of file, found control character U+0000");
-  EXPECT_EQ(jsonError("[1,\0]"s), "s.json:1:4: error: expected a value, found control character U+0000");
-  EXPECT_EQ(jsonError("[\"a\0\"]"s), "s.json:1:4: error: expected the escape \\u0000, found control character U+0000");
+  EXPECT_EQ(errorOf("{}\n\0{}"s), "s.json:2:1: error: expected end of file, found control character U+0000");
+  EXPECT_EQ(errorOf("[1,\0]"s), "s.json:1:4: error: expected a value, found control character U+0000");
+  EXPECT_EQ(errorOf("[\"a\0\"]"s), "s.json:1:4: error: expected the escape \\u0000, found control character U+0000");
 }
 
 TEST(JsonText, RejectsAnEmptyText) {
-  EXPECT_EQ(jsonError(""), "s.json:1:1: error: expected a value, found end of file");
-  EXPECT_EQ(jsonError(" \n"), "s.json:2:1: error: expected a value, found end of file");
+  EXPECT_EQ(errorOf(""), "s.json:1:1: error: expected a value, found end of file");
+  EXPECT_EQ(errorOf(" \n"), "s.json:2:1: error: expected a value, found end of file");
 }
 
 TEST(JsonText, NamesWhatWasExpectedAndTheTokenFoundAtItsFirstCharacter) {
-  EXPECT_EQ(jsonError(R"({"a" 1})"), "s.json:1:6: error: expected ':', found '1'");
-  EXPECT_EQ(jsonError(R"({"a": 1 "b": 2})"), "s.json:1:9: error: expected ',' or '}', found '\"b\"'");
-  EXPECT_EQ(jsonError("[1 2]"), "s.json:1:4: error: expected ',' or ']', found '2'");
-  EXPECT_EQ(jsonError("[true 25.5e3]"), "s.json:1:7: error: expected ',' or ']', found '25.5e3'");
-  EXPECT_EQ(jsonError("[1 false]"), "s.json:1:4: error: expected ',' or ']', found 'false'");
-  EXPECT_EQ(jsonError("[true2]"), "s.json:1:6: error: expected ',' or ']', found '2'");
-  EXPECT_EQ(jsonError("[1,]"), "s.json:1:4: error: expected a value, found ']'");
-  EXPECT_EQ(jsonError(R"({"a": 1,})"), "s.json:1:9: error: expected a quoted key, found '}'");
-  EXPECT_EQ(jsonError("{a: 1}"), "s.json:1:2: error: expected a quoted key or '}', found 'a'");
-  EXPECT_EQ(jsonError("{ 3: 1}"), "s.json:1:3: error: expected a quoted key or '}', found '3'");
-  EXPECT_EQ(jsonError(R"({"a": tru})"), "s.json:1:7: error: expected a value, found 'tru'");
-  EXPECT_EQ(jsonError(R"({"a": yes})"), "s.json:1:7: error: expected a value, found 'yes'");
-  EXPECT_EQ(jsonError(R"({"a": @})"), "s.json:1:7: error: expected a value, found '@'");
-  EXPECT_EQ(jsonError(R"({"a": 'x'})"), "s.json:1:7: error: expected a value, found '''");
+  EXPECT_EQ(errorOf(R"({"a" 1})"), "s.json:1:6: error: expected ':', found '1'");
+  EXPECT_EQ(errorOf(R"({"a": 1 "b": 2})"), "s.json:1:9: error: expected ',' or '}', found '\"b\"'");
+  EXPECT_EQ(errorOf("[1 2]"), "s.json:1:4: error: expected ',' or ']', found '2'");
+  EXPECT_EQ(errorOf("[true 25.5e3]"), "s.json:1:7: error: expected ',' or ']', found '25.5e3'");
+  EXPECT_EQ(errorOf("[1 false]"), "s.json:1:4: error: expected ',' or ']', found 'false'");
+  EXPECT_EQ(errorOf("[true2]"), "s.json:1:6: error: expected ',' or ']', found '2'");
+  EXPECT_EQ(errorOf("[1,]"), "s.json:1:4: error: expected a value, found ']'");
+  EXPECT_EQ(errorOf(R"({"a": 1,})"), "s.json:1:9: error: expected a quoted key, found '}'");
+  EXPECT_EQ(errorOf("{a: 1}"), "s.json:1:2: error: expected a quoted key or '}', found 'a'");
+  EXPECT_EQ(errorOf("{ 3: 1}"), "s.json:1:3: error: expected a quoted key or '}', found '3'");
+  EXPECT_EQ(errorOf(R"({"a": tru})"), "s.json:1:7: error: expected a value, found 'tru'");
+  EXPECT_EQ(errorOf(R"({"a": yes})"), "s.json:1:7: error: expected a value, found 'yes'");
+  EXPECT_EQ(errorOf(R"({"a": @})"), "s.json:1:7: error: expected a value, found '@'");
+  EXPECT_EQ(errorOf(R"({"a": 'x'})"), "s.json:1:7: error: expected a value, found '''");
 }
 
 TEST(JsonText, NamesWhatIsWrongInsideAToken) {
-  EXPECT_EQ(jsonError("[1, -x]"), "s.json:1:6: error: expected a digit after '-', found 'x'");
-  EXPECT_EQ(jsonError("[1.]"), "s.json:1:4: error: expected a digit after '.', found ']'");
-  EXPECT_EQ(jsonError("[1e]"), "s.json:1:4: error: expected '+', '-' or a digit after the exponent, found ']'");
-  EXPECT_EQ(jsonError("\"a\nb\""),
+  EXPECT_EQ(errorOf("[1, -x]"), "s.json:1:6: error: expected a digit after '-', found 'x'");
+  EXPECT_EQ(errorOf("[1.]"), "s.json:1:4: error: expected a digit after '.', found ']'");
+  EXPECT_EQ(errorOf("[1e]"), "s.json:1:4: error: expected '+', '-' or a digit after the exponent, found ']'");
+  EXPECT_EQ(errorOf("\"a\nb\""),
             "s.json:1:3: error: expected the escape \\u000A or \\n, found control character U+000A");
-  EXPECT_EQ(jsonError(R"("\x")"), R"(s.json:1:3: error: expected one of " \ / b f n r t u after a backslash, found 'x')");
-  EXPECT_EQ(jsonError(R"("\u12g")"), R"(s.json:1:6: error: expected 4 hex digits after \u, found 'g')");
-  EXPECT_EQ(jsonError("\"\xFF\""), "s.json:1:2: error: expected UTF-8 text, found byte 0xFF");
-  EXPECT_EQ(jsonError(R"(["\uD800x"])"), R"(s.json:1:9: error: expected \uDC00..\uDFFF after \uD800..\uDBFF, found 'x')");
-  EXPECT_EQ(jsonError(R"(["\uDC00"])"),
+  EXPECT_EQ(errorOf(R"("\x")"), R"(s.json:1:3: error: expected one of " \ / b f n r t u after a backslash, found 'x')");
+  EXPECT_EQ(errorOf(R"("\u12g")"), R"(s.json:1:6: error: expected 4 hex digits after \u, found 'g')");
+  EXPECT_EQ(errorOf("\"\xFF\""), "s.json:1:2: error: expected UTF-8 text, found byte 0xFF");
+  EXPECT_EQ(errorOf(R"(["\uD800x"])"), R"(s.json:1:9: error: expected \uDC00..\uDFFF after \uD800..\uDBFF, found 'x')");
+  EXPECT_EQ(errorOf(R"(["\uDC00"])"),
             R"(s.json:1:3: error: expected \uD800..\uDBFF before \uDC00..\uDFFF, found '\uDC00')");
-  EXPECT_EQ(jsonError("[1e999, 2]"), "s.json:1:2: error: expected a number within the range of a double, found '1e999'");
-  EXPECT_EQ(jsonError("-1e999"), "s.json:1:1: error: expected a number within the range of a double, found '-1e999'");
+  EXPECT_EQ(errorOf("[1e999, 2]"), "s.json:1:2: error: expected a number within the range of a double, found '1e999'");
+  EXPECT_EQ(errorOf("-1e999"), "s.json:1:1: error: expected a number within the range of a double, found '-1e999'");
 }
 
 TEST(JsonText, CountsColumnsInCharactersAndLinesFromOne) {
-  EXPECT_EQ(jsonError("{\n  \"\xC3\xA9\": 1 2}"), "s.json:2:10: error: expected ',' or '}', found '2'");
-  EXPECT_EQ(jsonError("[\r\n1\r\n2]"), "s.json:3:1: error: expected ',' or ']', found '2'");
-  EXPECT_EQ(jsonError("[1, \xC3\xA9]"), "s.json:1:5: error: expected a value, found '\xC3\xA9'");
+  EXPECT_EQ(errorOf("{\n  \"\xC3\xA9\": 1 2}"), "s.json:2:10: error: expected ',' or '}', found '2'");
+  EXPECT_EQ(errorOf("[\r\n1\r\n2]"), "s.json:3:1: error: expected ',' or ']', found '2'");
+  EXPECT_EQ(errorOf("[1, \xC3\xA9]"), "s.json:1:5: error: expected a value, found '\xC3\xA9'");
 }
 
 TEST(JsonText, CutsALongTokenInTheMessage) {
-  const std::string message = jsonError("[1 \"" + std::string(50, 'a') + "\"]");
+  const std::string message = errorOf("[1 \"" + std::string(50, 'a') + "\"]");
   EXPECT_EQ(message, "s.json:1:4: error: expected ',' or ']', found '\"" + std::string(39, 'a') + "...'");
 }
 
 TEST(JsonText, BoundsTheNesting) {
   EXPECT_NO_THROW(parseJsonText(std::string(512, '[') + std::string(512, ']'), "s.json"));
-  EXPECT_EQ(jsonError(std::string(100000, '[')),
+  EXPECT_EQ(errorOf(std::string(100000, '[')),
             "s.json:1:513: error: expected at most 512 nested arrays and objects, found 513");
 }
 

@@ -21,7 +21,7 @@ Texture uniformTexture(const Rgba& colour) {
 
 // A plane tilted 45 degrees about x under a perspective camera, filling the view, so that the
 // texture coordinates, their derivatives and the level of detail vary over the image.
-struct TiltedPlaneShot {
+struct TiltedPlane {
   Vec3 a = Vec3(40, 0, 0), b = Vec3(0, 40 * std::cos(kPi / 4), -40 * std::sin(kPi / 4));
   Quad quad{-0.5 * (a + b), a, b};
 
@@ -39,7 +39,7 @@ struct TiltedPlaneShot {
 };
 
 TEST(Supersampling, OneSamplePerPixelIsTheDefaultRenderingBitForBit) {
-  const TiltedPlaneShot s;
+  const TiltedPlane s;
   Texture texture = checkerTexture(64, 4);
   texture.buildMipmaps();
   const RenderOptions defaults = s.options(texture);
@@ -83,7 +83,7 @@ TEST(Supersampling, APixelHalfCoveredByAnEdgeIsTheMeanOfQuadAndBackground) {
 }
 
 TEST(Supersampling, AUniformlyColouredCoveringQuadLooksTheSameWithSixteenSamples) {
-  const TiltedPlaneShot s;
+  const TiltedPlane s;
   const Texture texture = uniformTexture(Rgba(0.3f, 0.7f, 0.9f, 1.0f));
   RenderOptions o = s.options(texture);
   o.env = EnvMode::Replace;  // lighting would vary between the samples
@@ -98,7 +98,7 @@ TEST(Supersampling, AUniformlyColouredCoveringQuadLooksTheSameWithSixteenSamples
 }
 
 TEST(Supersampling, WithAnOddGridTheAovsAreThoseOfThePixelCentreAtTheSamplesLevelOfDetail) {
-  const TiltedPlaneShot s;
+  const TiltedPlane s;
   Texture texture = checkerTexture(256, 8);
   texture.buildMipmaps();
   RenderOptions o = s.options(texture);

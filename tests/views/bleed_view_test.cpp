@@ -17,7 +17,7 @@ namespace {
 namespace UVTK_TEST_FILE {
 
 // A square of `side` texels at texel (x, y) of a 64 x 64 texture: two triangles, one chart.
-void addTexelSquare(Mapped& m, double x, double y, double side) {
+void addSquare(Mapped& m, double x, double y, double side) {
   const int base = int(m.mesh.positions.size());
   const Vec2 corners[4] = {{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}};
   for (const Vec2& c : corners) m.mesh.positions.emplace_back(c.x(), c.y(), 0.0);
@@ -30,8 +30,8 @@ void addTexelSquare(Mapped& m, double x, double y, double side) {
 
 Mapped twoSquaresOneTexelApart() {
   Mapped m;
-  addTexelSquare(m, 8, 8, 8);
-  addTexelSquare(m, 17, 8, 8);
+  addSquare(m, 8, 8, 8);
+  addSquare(m, 17, 8, 8);
   analysis::JudgementOptions options;
   options.textureSize = {64, 64};
   m.judgement = analysis::judge(m.mesh, m.uv, options);

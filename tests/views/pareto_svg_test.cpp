@@ -42,7 +42,7 @@ const Circle& circleOf(const std::vector<Circle>& circles, const std::string& la
   throw std::runtime_error("no circle titled " + label);
 }
 
-ParetoChartOptions mappingChart() {
+ParetoChartOptions options() {
   ParetoChartOptions o;
   o.title = "Mapping: time per vertex against max error";
   o.xLabel = "ns per vertex";
@@ -57,7 +57,7 @@ TEST(ParetoSvg, EveryPointIsACircleTitledWithItsLabelAndBothValuesWithUnits) {
                                           {"sphere double exact T1", 12.0, 3e-10, 1},
                                           {"sphere float fast T1", 2.5, 0.004, 1},
                                           {"sphere float exact T1", 6.0, 0.004, 1}};  // dominated
-  const std::string svg = paretoChartSvg(points, mappingChart());
+  const std::string svg = paretoChartSvg(points, options());
   EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"960\" height=\"640\"", 0), 0u);
   EXPECT_EQ(svg.substr(svg.size() - 6), "</svg>");
   EXPECT_EQ(svg.find("<?xml"), std::string::npos);
@@ -73,13 +73,13 @@ TEST(ParetoSvg, EveryPointIsACircleTitledWithItsLabelAndBothValuesWithUnits) {
   for (const char* text : {">Mapping: time per vertex against max error<", ">ns per vertex<",
                            ">max error, texels at 4096<", ">plane<", ">sphere<"})
     EXPECT_NE(svg.find(text), std::string::npos) << text;
-  EXPECT_EQ(svg, paretoChartSvg(points, mappingChart())) << "the same input gives the same bytes";
+  EXPECT_EQ(svg, paretoChartSvg(points, options())) << "the same input gives the same bytes";
 }
 
 TEST(ParetoSvg, OneFrontPolylinePerGroupThroughItsFrontPointsInItsColour) {
   const std::vector<ChartPoint> points = {{"a1", 1, 1, 0},  {"a2", 2, 0.5, 0},  {"a3", 3, 2, 0},  // a3 dominated
                                           {"b1", 10, 1, 1}, {"b2", 20, 0.1, 1}, {"c1", 5, 5, 2}};
-  const std::string svg = paretoChartSvg(points, mappingChart());
+  const std::string svg = paretoChartSvg(points, options());
   static const std::regex polyline(
       R"re(<polyline class="front" points="([^"]*)" fill="none" stroke="(#[0-9a-f]{6})")re");
   std::vector<std::pair<std::string, std::string>> fronts;
@@ -105,7 +105,7 @@ TEST(ParetoSvg, OneFrontPolylinePerGroupThroughItsFrontPointsInItsColour) {
 TEST(ParetoSvg, XPositionsFollowTheLogScale) {
   const std::vector<ChartPoint> points = {
       {"x1", 1, 1, 0}, {"x2", 2, 1, 0}, {"x10", 10, 1, 0}, {"x100", 100, 1, 0}, {"x30", 30, 1, 0}};
-  const std::vector<Circle> circles = circlesOf(paretoChartSvg(points, mappingChart()));
+  const std::vector<Circle> circles = circlesOf(paretoChartSvg(points, options()));
   const double c1 = circleOf(circles, "x1").cx, c2 = circleOf(circles, "x2").cx, c10 = circleOf(circles, "x10").cx,
                c30 = circleOf(circles, "x30").cx, c100 = circleOf(circles, "x100").cx;
   EXPECT_LT(c1, c2);
@@ -120,7 +120,7 @@ TEST(ParetoSvg, XPositionsFollowTheLogScale) {
 
 TEST(ParetoSvg, DecadeLabelsInRealUnits) {
   const std::vector<ChartPoint> points = {{"a", 0.002, 1e-6, 0}, {"b", 900, 1e-4, 0}};
-  const std::string svg = paretoChartSvg(points, mappingChart());
+  const std::string svg = paretoChartSvg(points, options());
   for (const char* label : {">0.001<", ">0.01<", ">0.1<", ">1<", ">1000<"})
     EXPECT_NE(svg.find(label), std::string::npos) << label;
   // 1e-6 and 1e-4 on the y axis: 10 with a raised exponent, a real minus sign.
@@ -129,7 +129,7 @@ TEST(ParetoSvg, DecadeLabelsInRealUnits) {
 }
 
 TEST(ParetoSvg, EscapesEveryText) {
-  ParetoChartOptions o = mappingChart();
+  ParetoChartOptions o = options();
   o.title = "a <b> & \"c\"";
   o.groupNames = {"<g&>"};
   const std::string svg = paretoChartSvg({{"<&>'", 1, 1, 0}, {"p", 2, 0.5, 0}}, o);
@@ -143,7 +143,7 @@ TEST(ParetoSvg, EscapesEveryText) {
 
 TEST(ParetoSvg, ZeroErrorsLieOnTheZeroRowBelowTheBox) {
   const std::vector<ChartPoint> points = {{"exact", 3, 0, 0}, {"fast", 1, 0.01, 0}, {"slow", 9, 0.1, 0}};
-  const std::string svg = paretoChartSvg(points, mappingChart());
+  const std::string svg = paretoChartSvg(points, options());
   static const std::regex zeroRow(R"re(<line class="zero-row" x1="[-0-9.]+" y1="([-0-9.]+)")re");
   static const std::regex box(
       R"re(<rect x="[-0-9.]+" y="([-0-9.]+)" width="[-0-9.]+" height="([-0-9.]+)" fill="none")re");
@@ -158,21 +158,21 @@ TEST(ParetoSvg, ZeroErrorsLieOnTheZeroRowBelowTheBox) {
   EXPECT_LT(circleOf(circles, "slow").cy, circleOf(circles, "fast").cy) << "larger errors higher";
   EXPECT_NE(svg.find(">0</text>"), std::string::npos);
   // No zero error, no zero row.
-  EXPECT_EQ(paretoChartSvg({points[1], points[2]}, mappingChart()).find("zero-row"), std::string::npos);
+  EXPECT_EQ(paretoChartSvg({points[1], points[2]}, options()).find("zero-row"), std::string::npos);
 }
 
 TEST(ParetoSvg, SkipsNonFinitePointsWithANoteAndRefusesWhatLogAxesCannotShow) {
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
-  const std::string svg = paretoChartSvg({{"ok", 1, 1, 0}, {"nan", nan, 1, 0}, {"inf", 2, inf, 0}}, mappingChart());
+  const std::string svg = paretoChartSvg({{"ok", 1, 1, 0}, {"nan", nan, 1, 0}, {"inf", 2, inf, 0}}, options());
   EXPECT_EQ(circlesOf(svg).size(), 1u);
   EXPECT_NE(svg.find(">2 points skipped: not finite</text>"), std::string::npos);
-  EXPECT_NE(paretoChartSvg({{"ok", 1, 1, 0}, {"nan", nan, 1, 0}}, mappingChart()).find(">1 point skipped"),
+  EXPECT_NE(paretoChartSvg({{"ok", 1, 1, 0}, {"nan", nan, 1, 0}}, options()).find(">1 point skipped"),
             std::string::npos);
-  EXPECT_THROW(paretoChartSvg({{"nan", nan, 1, 0}}, mappingChart()), UsageError);
-  EXPECT_THROW(paretoChartSvg({}, mappingChart()), UsageError);
-  EXPECT_THROW(paretoChartSvg({{"zero cost", 0, 1, 0}}, mappingChart()), UsageError);
-  EXPECT_THROW(paretoChartSvg({{"negative error", 1, -1, 0}}, mappingChart()), UsageError);
-  ParetoChartOptions small = mappingChart();
+  EXPECT_THROW(paretoChartSvg({{"nan", nan, 1, 0}}, options()), UsageError);
+  EXPECT_THROW(paretoChartSvg({}, options()), UsageError);
+  EXPECT_THROW(paretoChartSvg({{"zero cost", 0, 1, 0}}, options()), UsageError);
+  EXPECT_THROW(paretoChartSvg({{"negative error", 1, -1, 0}}, options()), UsageError);
+  ParetoChartOptions small = options();
   small.width = 199;
   EXPECT_THROW(paretoChartSvg({{"ok", 1, 1, 0}}, small), UsageError);
 }

@@ -30,7 +30,7 @@ testing::AssertionResult sameColour(const Vec3& actual, const Vec3& expected) {
   return testing::AssertionFailure() << actual.transpose() << " vs " << expected.transpose();
 }
 
-ParetoChartOptions projectorChart() {
+ParetoChartOptions options() {
   ParetoChartOptions o;
   o.title = "Projectors: speed against accuracy";
   o.xLabel = "ns per vertex";
@@ -74,11 +74,11 @@ TEST(ParetoFrontTest, EmptyWithoutFinitePoints) {
 
 TEST(ParetoChartTest, HasTheRequestedSize) {
   const std::vector<ChartPoint> points = {{"A", 1, 0.5}, {"B", 30, 0.01}};
-  const Image chart = paretoChart(points, projectorChart());
+  const Image chart = paretoChart(points, options());
   EXPECT_EQ(chart.width, 960);
   EXPECT_EQ(chart.height, 640);
   EXPECT_EQ(chart.channels, 3);
-  ParetoChartOptions small = projectorChart();
+  ParetoChartOptions small = options();
   small.width = 300, small.height = 220;
   const Image smaller = paretoChart(points, small);
   EXPECT_EQ(smaller.width, 300);
@@ -86,13 +86,13 @@ TEST(ParetoChartTest, HasTheRequestedSize) {
 }
 
 TEST(ParetoChartTest, DecadesPaddedToWholeDecades) {
-  const ChartFrame frame = chartFrame({{"A", 0.003, 0.4}, {"B", 250, 2e-5}, {"C", 7, 0}}, projectorChart());
+  const ChartFrame frame = chartFrame({{"A", 0.003, 0.4}, {"B", 250, 2e-5}, {"C", 7, 0}}, options());
   EXPECT_EQ(frame.xDecadeLo, -3);
   EXPECT_EQ(frame.xDecadeHi, 3);
   EXPECT_EQ(frame.yDecadeLo, -5);
   EXPECT_EQ(frame.yDecadeHi, 0);
   // A single value on a decade still spans one.
-  const ChartFrame single = chartFrame({{"A", 10, 10}}, projectorChart());
+  const ChartFrame single = chartFrame({{"A", 10, 10}}, options());
   EXPECT_EQ(single.xDecadeLo, 1);
   EXPECT_EQ(single.xDecadeHi, 2);
   EXPECT_EQ(single.yDecadeLo, 1);
@@ -100,7 +100,7 @@ TEST(ParetoChartTest, DecadesPaddedToWholeDecades) {
 }
 
 TEST(ParetoChartTest, DecadesEquallySpacedWithinTheBox) {
-  const ChartFrame frame = chartFrame({{"A", 1, 1}, {"B", 100, 100}}, projectorChart());
+  const ChartFrame frame = chartFrame({{"A", 1, 1}, {"B", 100, 100}}, options());
   const double y = 10;
   const double xStep1 = frame.pixelOf(10, y).x() - frame.pixelOf(1, y).x();
   const double xStep2 = frame.pixelOf(100, y).x() - frame.pixelOf(10, y).x();
@@ -121,10 +121,10 @@ TEST(ParetoChartTest, DecadesEquallySpacedWithinTheBox) {
 TEST(ParetoChartTest, DrawsDecadesBeyondDoubleRange) {
   // Decades 10^-324 (below the least subnormal) and 10^309 (beyond the largest double).
   const std::vector<ChartPoint> points = {{"TINY", 5e-324, 1e308, 0}, {"HUGE", 1.5e308, 5e-324, 1}};
-  const ChartFrame frame = chartFrame(points, projectorChart());
+  const ChartFrame frame = chartFrame(points, options());
   EXPECT_EQ(frame.xDecadeLo, -324);
   EXPECT_EQ(frame.xDecadeHi, 309);
-  const Image chart = paretoChart(points, projectorChart());
+  const Image chart = paretoChart(points, options());
   for (const ChartPoint& p : points)
     EXPECT_TRUE(sameColour(colourAt(chart, frame.pixelOf(p.x, p.y)), groupColour(p.group)));
 }
@@ -135,8 +135,8 @@ TEST(ParetoChartTest, DotsTakeTheirGroupColourAtTheirPixel) {
       {"CYLINDER", 300, 0.05, 2}, {"SLOW AND BAD", 500, 1, 1},  // off the front: a plain dot
       {"GROUP 9", 0.02, 3, 9},                                  // beyond the named groups: the colours repeat
   };
-  const Image chart = paretoChart(points, projectorChart());
-  const ChartFrame frame = chartFrame(points, projectorChart());
+  const Image chart = paretoChart(points, options());
+  const ChartFrame frame = chartFrame(points, options());
   for (const ChartPoint& p : points) {
     SCOPED_TRACE(p.label);
     EXPECT_TRUE(sameColour(colourAt(chart, frame.pixelOf(p.x, p.y)), groupColour(p.group)));
@@ -147,23 +147,23 @@ TEST(ParetoChartTest, DotsTakeTheirGroupColourAtTheirPixel) {
 
 TEST(ParetoChartTest, ZeroErrorOnTheBaselineBelowTheBox) {
   const std::vector<ChartPoint> points = {{"EXACT", 50, 0, 1}, {"FAST", 1, 0.1, 0}};
-  const ChartFrame frame = chartFrame(points, projectorChart());
+  const ChartFrame frame = chartFrame(points, options());
   ASSERT_TRUE(frame.hasZeroRow);
   const Vec2 at = frame.pixelOf(50, 0);
   EXPECT_DOUBLE_EQ(at.y(), frame.zeroRowY());
   EXPECT_GT(at.y(), frame.bottom + 1);
   EXPECT_GT(at.y(), frame.pixelOf(50, std::pow(10.0, frame.yDecadeLo)).y());
-  const Image chart = paretoChart(points, projectorChart());
+  const Image chart = paretoChart(points, options());
   EXPECT_TRUE(sameColour(colourAt(chart, at), groupColour(1)));
   // Without zero errors there is no baseline.
-  EXPECT_FALSE(chartFrame({{"FAST", 1, 0.1, 0}}, projectorChart()).hasZeroRow);
+  EXPECT_FALSE(chartFrame({{"FAST", 1, 0.1, 0}}, options()).hasZeroRow);
 }
 
 TEST(ParetoChartTest, FrontJoinedByALine) {
   // Unlabelled, so that only the line can lie between the dots.
   const std::vector<ChartPoint> points = {{"", 1, 10}, {"", 100, 0.1}, {"", 1000, 300}};
-  const Image chart = paretoChart(points, projectorChart());
-  const ChartFrame frame = chartFrame(points, projectorChart());
+  const Image chart = paretoChart(points, options());
+  const ChartFrame frame = chartFrame(points, options());
   // Dots sit on the centre of the pixel that holds their position.
   auto centre = [&](double x, double y) {
     const Vec2 at = frame.pixelOf(x, y);
@@ -179,8 +179,8 @@ TEST(ParetoChartTest, FrontsNeverJoinTwoGroups) {
   // Group 1's point at (30, 0.3) would be on a front over all points; per group, nothing joins it to (1, 10).
   std::vector<ChartPoint> points = {{"", 1, 10}, {"", 30, 0.3}, {"", 1000, 0.05}};
   points[1].group = 1;
-  const Image chart = paretoChart(points, projectorChart());
-  const ChartFrame frame = chartFrame(points, projectorChart());
+  const Image chart = paretoChart(points, options());
+  const ChartFrame frame = chartFrame(points, options());
   auto centre = [&](double x, double y) {
     const Vec2 at = frame.pixelOf(x, y);
     return Vec2(std::floor(at.x()) + 0.5, std::floor(at.y()) + 0.5);
@@ -193,7 +193,7 @@ TEST(ParetoChartTest, NonFinitePointsLeaveRoomForANote) {
   const std::vector<ChartPoint> finite = {{"A", 1, 1}, {"B", 10, 0.1}};
   std::vector<ChartPoint> withNaN = finite;
   withNaN.push_back({"C", kNaN, 1});
-  EXPECT_LT(chartFrame(withNaN, projectorChart()).bottom, chartFrame(finite, projectorChart()).bottom);
+  EXPECT_LT(chartFrame(withNaN, options()).bottom, chartFrame(finite, options()).bottom);
   // The note is left-aligned text on the bottom line, where the centred x label would be otherwise.
   auto textPixelsBottomLeft = [](const Image& chart) {
     const int line = measureText("", 14).height;  // the chart's text size
@@ -202,24 +202,24 @@ TEST(ParetoChartTest, NonFinitePointsLeaveRoomForANote) {
       for (int x = 0; x < 100; ++x) count += (pixelColour(chart, x, row) - kPanelColour).norm() > 1e-6;
     return count;
   };
-  EXPECT_GT(textPixelsBottomLeft(paretoChart(withNaN, projectorChart())), 20);
-  EXPECT_EQ(textPixelsBottomLeft(paretoChart(finite, projectorChart())), 0);
+  EXPECT_GT(textPixelsBottomLeft(paretoChart(withNaN, options())), 20);
+  EXPECT_EQ(textPixelsBottomLeft(paretoChart(finite, options())), 0);
 }
 
 TEST(ParetoChartTest, RejectsBadInput) {
   const std::vector<ChartPoint> points = {{"A", 1, 1}};
-  EXPECT_THROW(paretoChart({}, projectorChart()), UsageError);
-  EXPECT_THROW(paretoChart({{"A", kNaN, 1}, {"B", 1, kInf}}, projectorChart()), UsageError);
-  EXPECT_THROW(paretoChart({{"A", 0, 1}}, projectorChart()), UsageError);
-  EXPECT_THROW(paretoChart({{"A", 1, -0.5}}, projectorChart()), UsageError);
-  ParetoChartOptions narrow = projectorChart();
+  EXPECT_THROW(paretoChart({}, options()), UsageError);
+  EXPECT_THROW(paretoChart({{"A", kNaN, 1}, {"B", 1, kInf}}, options()), UsageError);
+  EXPECT_THROW(paretoChart({{"A", 0, 1}}, options()), UsageError);
+  EXPECT_THROW(paretoChart({{"A", 1, -0.5}}, options()), UsageError);
+  ParetoChartOptions narrow = options();
   narrow.width = 199;
   EXPECT_THROW(paretoChart(points, narrow), UsageError);
-  ParetoChartOptions low = projectorChart();
+  ParetoChartOptions low = options();
   low.height = 199;
   EXPECT_THROW(chartFrame(points, low), UsageError);
   // Enough pixels, but a legend that leaves no room for the plot.
-  ParetoChartOptions crowded = projectorChart();
+  ParetoChartOptions crowded = options();
   crowded.width = crowded.height = 200;
   crowded.groupNames.assign(12, "A LONG GROUP NAME");
   EXPECT_THROW(paretoChart(points, crowded), UsageError);
