@@ -92,6 +92,7 @@ nlohmann::json atlasJson(const Atlas& a, const analysis::Gutters& gutters) {
           {"directions", a.directions},
           {"split_charts", a.splitCharts},
           {"merged_charts", a.mergedCharts},
+          {"cut_charts", a.cutCharts},
           {"degenerate_faces", a.degenerateFaces},
           {"texels_per_unit", a.texelsPerUnit},
           {"tiles", a.tiles},

@@ -21,6 +21,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// A chart too long for the texture is cut only where its pieces pack at least this much more
+// densely than it did whole: every cut is a seam more.
+constexpr double kCutGain = 1.25;
 
 using Point2 = Vec2;
 
@@ -570,6 +573,201 @@ void solveCharts(const Mesh& mesh, const std::vector<int>& chartOf, std::size_t 
   }
 }
 
+
+// Each chart's box: its corners in its direction's plane (or as LSCM or ARAP flattened them),
+// turned to their bounding box of least area, wider than tall (R, and the box in the turned plane).
+struct ChartBoxes {
+  std::vector<Eigen::Matrix2d> rotation;
+  std::vector<Vec2> low, size;
+};
+
+ChartBoxes chartBoxes(const Mesh& mesh, const std::vector<int>& chartOf, const std::vector<AtlasChart>& charts,
+                      const std::vector<int>& chartDirection, const std::vector<Eigen::Matrix<double, 2, 3>>& frames,
+                      const Vec3& origin, const std::vector<Point2>& solved) {
+  const std::size_t chartCount = charts.size();
+  std::vector<std::vector<Point2>> points(chartCount);
+  std::vector<int> lastChartOfVertex(mesh.vertexCount(), -1);  // each vertex once a chart (its run of faces)
+  for (std::size_t f = 0; f < chartOf.size(); ++f) {
+    const std::size_t c = std::size_t(chartOf[f]);
+    if (charts[c].solved) {
+      for (int k = 0; k < 3; ++k) points[c].push_back(solved[3 * f + std::size_t(k)]);
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.triangles[f][k];
+      if (lastChartOfVertex[std::size_t(v)] == int(c)) continue;
+      lastChartOfVertex[std::size_t(v)] = int(c);
+      points[c].push_back(frames[std::size_t(chartDirection[c])] * (mesh.positions[std::size_t(v)] - origin));
+    }
+  }
+  ChartBoxes boxes;
+  boxes.rotation.resize(chartCount);
+  boxes.low.resize(chartCount);
+  boxes.size.resize(chartCount);
+  for (std::size_t c = 0; c < chartCount; ++c) {
+    boxes.rotation[c] = smallestBoxRotation(convexHull(points[c]));
+    Eigen::AlignedBox2d box;
+    for (const Point2& p : points[c]) box.extend(boxes.rotation[c] * p);
+    boxes.low[c] = box.min();
+    boxes.size[c] = box.sizes();
+    std::vector<Point2>().swap(points[c]);
+  }
+  return boxes;
+}
+
+// The density at which the boxes' area fills a bin of binW x binH texels: no packing beats it.
+double areaDensity(const std::vector<Vec2>& sizes, double binW, double binH) {
+  double area = 0.0;
+  for (const Vec2& s : sizes) area += s.x() * s.y();
+  return area > 0.0 ? std::sqrt(binW * binH / area) : kInfinity;
+}
+
+struct Packing {
+  bool fits = false;  // false: the boxes do not fit one texture even at no size
+  double density = 0.0;
+  std::vector<Placement> placements;
+};
+
+// One density for every chart: the largest at which all fit, or the one asked for, over as
+// many tiles as it takes. Boxes go in by decreasing height, area or longer side, turned where
+// that sits lower or never turned: the strategy that packs the densest wins (the first on a
+// tie). Beyond 2000 charts, only the first: each try then costs tens of milliseconds.
+Packing packCharts(const std::vector<Vec2>& size, const std::vector<AtlasChart>& charts, const AtlasOptions& options) {
+  const std::size_t chartCount = size.size();
+  std::vector<PackingStrategy> strategies;
+  const int keys = chartCount <= 2000 ? 3 : 1;
+  for (int key = 0; key < keys; ++key) {
+    const auto measure = [&](int c) {
+      const Vec2& s = size[std::size_t(c)];
+      return key == 0 ? s.y() : key == 1 ? s.x() * s.y() : std::max(s.x(), s.y());
+    };
+    std::vector<int> order(chartCount);
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return measure(a) > measure(b); });
+    strategies.push_back({order, true});
+    if (chartCount <= 2000) strategies.push_back({order, false});
+  }
+  const double margin = options.marginTexels;
+  const double binW = double(options.textureSize[0]) - margin, binH = double(options.textureSize[1]) - margin;
+  Packing result;
+  if (options.texelsPerUnit) {
+    result.density = *options.texelsPerUnit;
+    for (std::size_t c = 0; c < chartCount; ++c)
+      if (size[c].x() * result.density + margin > binW || size[c].y() * result.density + margin > binH)
+        throw UsageError("--texels-per-unit " + numberText(result.density) + ": a chart of " +
+                         std::to_string(charts[c].faces) + " faces needs " +
+                         std::to_string(int(std::ceil(size[c].x() * result.density))) + " x " +
+                         std::to_string(int(std::ceil(size[c].y() * result.density))) +
+                         " texels, more than one texture less its margins holds");
+    result.fits = pack(size, strategies.front(), result.density, margin, options.textureSize, true, result.placements);
+    return result;
+  }
+  result.fits = pack(size, strategies.front(), 0.0, margin, options.textureSize, false, result.placements);
+  if (!result.fits) return result;
+  double high = kInfinity;
+  for (std::size_t c = 0; c < chartCount; ++c) {
+    if (size[c].x() > 0.0) high = std::min(high, (binW - margin) / size[c].x());
+    if (size[c].y() > 0.0) high = std::min(high, (binH - margin) / size[c].y());
+  }
+  high = std::min(high, areaDensity(size, binW, binH));
+  if (!std::isfinite(high)) high = 1.0;  // nothing has extent: any density will do
+  // Packing is not monotone in the density (a box that no longer fits beside another may fit
+  // below it), so each strategy's search steps down from the area bound by 3 % until the charts
+  // fit (below 0.4 of the bound by 30 %), then bisects between that and the step above; it
+  // stops where it could no longer beat the best so far.
+  std::size_t best = 0;
+  double density = 0.0;
+  std::vector<Placement> trial;
+  for (std::size_t k = 0; k < strategies.size(); ++k) {
+    const PackingStrategy& strategy = strategies[k];
+    double fits = 0.0, failed = high;
+    for (double d = high, step = 0.97; d > 1e-12 * high && d > density; d *= step, step = d < 0.4 * high ? 0.7 : step) {
+      if (pack(size, strategy, d, margin, options.textureSize, false, trial)) {
+        fits = d;
+        break;
+      }
+      failed = d;
+    }
+    if (fits == 0.0) continue;
+    for (int step = 0; step < 12 && fits < failed; ++step) {
+      const double mid = 0.5 * (fits + failed);
+      (pack(size, strategy, mid, margin, options.textureSize, false, trial) ? fits : failed) = mid;
+    }
+    if (fits > density) density = fits, best = k;
+  }
+  pack(size, strategies[best], density, margin, options.textureSize, false, result.placements);
+  result.density = density;
+  return result;
+}
+
+// The charts too long for the texture, cut across their length (docs/conventions.md, "The
+// atlas"): a plane chart whose longer side, at the density the charts' area allows, exceeds
+// `side` texels (the texture's shorter side less its margins) while its shorter side takes at
+// most half of it. Such a chart is cut by its faces' centroids into the fewest slabs of equal
+// length along its box that are at most `side` long, and each slab's pieces joined across shared
+// edges are charts: subsets of a chart, so no new flip or overlap. Charts are numbered by their
+// first face; `from` is empty when no chart is that long.
+struct CutCharts {
+  std::vector<int> chartOf;
+  std::vector<int> from;  // each new chart's chart before the cut
+};
+
+CutCharts cutLongCharts(const Mesh& mesh, const EdgeTable& edges, const std::vector<int>& chartOf,
+                        const std::vector<AtlasChart>& charts, const ChartBoxes& boxes,
+                        const std::vector<int>& chartDirection, const std::vector<Eigen::Matrix<double, 2, 3>>& frames,
+                        const Vec3& origin, double density, double side) {
+  const std::size_t faceCount = chartOf.size(), chartCount = charts.size();
+  const double pieceLength = side / density;
+  std::vector<int> slabs(chartCount, 1);
+  bool any = false;
+  for (std::size_t c = 0; c < chartCount; ++c) {
+    const Vec2& s = boxes.size[c];  // wider than tall
+    if (charts[c].solved || !(s.x() * density > side) || !(s.y() * density <= 0.5 * side)) continue;
+    slabs[c] = int(std::min(std::ceil(s.x() / pieceLength), double(charts[c].faces)));
+    any = any || slabs[c] > 1;
+  }
+  CutCharts cut;
+  if (!any) return cut;
+  // Each face's slab: where its centroid lies along its chart's box.
+  std::vector<int> slab(faceCount, 0);
+  for (std::size_t f = 0; f < faceCount; ++f) {
+    const std::size_t c = std::size_t(chartOf[f]);
+    if (slabs[c] == 1) continue;
+    const Triangle& t = mesh.triangles[f];
+    Vec3 centroid = Vec3::Zero();  // about the origin, as the boxes' corners
+    for (int k = 0; k < 3; ++k) centroid += (mesh.positions[std::size_t(t[k])] - origin) / 3.0;
+    const double x = (boxes.rotation[c] * (frames[std::size_t(chartDirection[c])] * centroid)).x();
+    const double along = (x - boxes.low[c].x()) / boxes.size[c].x() * slabs[c];
+    slab[f] = along > 0.0 ? int(std::min(along, double(slabs[c] - 1))) : 0;
+  }
+  // The faces of one chart and slab, joined across the edges they share.
+  DisjointSets pieces(faceCount);
+  for (std::size_t e = 0; e < edges.edgeCount(); ++e)
+    for (std::size_t i = edges.groupStart[e] + 1; i < edges.groupStart[e + 1]; ++i) {
+      const std::size_t f = std::size_t(edges.halfEdges[i].face);
+      for (std::size_t j = edges.groupStart[e]; j < i; ++j) {
+        const std::size_t g = std::size_t(edges.halfEdges[j].face);
+        if (chartOf[f] == chartOf[g] && slab[f] == slab[g]) {
+          pieces.join(f, g);
+          break;
+        }
+      }
+    }
+  // A chart left whole keeps its faces; a cut one's faces go by their piece.
+  std::vector<int> numberOfChart(chartCount, -1), numberOfPiece(faceCount, -1);
+  cut.chartOf.resize(faceCount);
+  for (std::size_t f = 0; f < faceCount; ++f) {
+    const std::size_t c = std::size_t(chartOf[f]);
+    int& number = slabs[c] == 1 ? numberOfChart[c] : numberOfPiece[pieces.find(f)];
+    if (number < 0) {
+      number = int(cut.from.size());
+      cut.from.push_back(int(c));
+    }
+    cut.chartOf[f] = number;
+  }
+  return cut;
+}
+
 }  // namespace
 
 void checkAtlasOptions(const AtlasOptions& o) {
@@ -808,112 +1006,47 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
       }
   }
 
-  // Each chart's corners in its direction's plane (or as LSCM or ARAP flattened it), turned to
-  // their smallest box.
-  const std::size_t chartCount = std::size_t(charts);
+  // Each chart turned to its smallest box, then packed; charts too long for the texture are cut
+  // where that packs them at least kCutGain times as densely (cutLongCharts).
+  std::size_t chartCount = std::size_t(charts);
   atlas.charts.assign(chartCount, AtlasChart{});
+  for (std::size_t f = 0; f < faceCount; ++f) ++atlas.charts[std::size_t(chartOf[f])].faces;
   std::vector<Point2> solved;  // per corner, for the solved charts
   if (options.chartMap != ChartMap::Plane) solveCharts(mesh, chartOf, chartCount, options.chartMap, atlas, solved);
-  std::vector<std::vector<Point2>> chartPoints(chartCount);
-  std::vector<int> lastChartOfVertex(mesh.vertexCount(), -1);  // each vertex once a chart (its run of faces)
-  for (std::size_t f = 0; f < faceCount; ++f) {
-    const int c = chartOf[f];
-    if (atlas.charts[std::size_t(c)].solved) {
-      for (int k = 0; k < 3; ++k) chartPoints[std::size_t(c)].push_back(solved[3 * f + std::size_t(k)]);
-      ++atlas.charts[std::size_t(c)].faces;
-      continue;
-    }
-    for (int k = 0; k < 3; ++k) {
-      const int v = mesh.triangles[f][k];
-      if (lastChartOfVertex[std::size_t(v)] == c) continue;
-      lastChartOfVertex[std::size_t(v)] = c;
-      chartPoints[std::size_t(c)].push_back(frames[std::size_t(chartDirection[std::size_t(c)])] *
-                                            (mesh.positions[std::size_t(v)] - origin));
-    }
-    ++atlas.charts[std::size_t(c)].faces;
-  }
-  std::vector<Eigen::Matrix2d> rotation(chartCount);
-  std::vector<Vec2> low(chartCount), size(chartCount);
-  for (std::size_t c = 0; c < chartCount; ++c) {
-    rotation[c] = smallestBoxRotation(convexHull(chartPoints[c]));
-    Eigen::AlignedBox2d box;
-    for (const Point2& p : chartPoints[c]) box.extend(rotation[c] * p);
-    low[c] = box.min();
-    size[c] = box.sizes();
-    std::vector<Point2>().swap(chartPoints[c]);
-  }
-
-  // One density for every chart: the largest at which all fit, or the one asked for, over as
-  // many tiles as it takes. Boxes go in by decreasing height, area or longer side, turned where
-  // that sits lower or never turned: the strategy that packs the densest wins (the first on a
-  // tie). Beyond 2000 charts, only the first.
-  // Beyond a few thousand charts each try costs tens of milliseconds: one strategy then.
-  std::vector<PackingStrategy> strategies;
-  const int keys = chartCount <= 2000 ? 3 : 1;
-  for (int key = 0; key < keys; ++key) {
-    const auto measure = [&](int c) {
-      const Vec2& s = size[std::size_t(c)];
-      return key == 0 ? s.y() : key == 1 ? s.x() * s.y() : std::max(s.x(), s.y());
-    };
-    std::vector<int> order(chartCount);
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return measure(a) > measure(b); });
-    strategies.push_back({order, true});
-    if (chartCount <= 2000) strategies.push_back({order, false});
-  }
+  ChartBoxes boxes = chartBoxes(mesh, chartOf, atlas.charts, chartDirection, frames, origin, solved);
+  Packing packing = packCharts(boxes.size, atlas.charts, options);
   const double margin = options.marginTexels;
   const double binW = double(options.textureSize[0]) - margin, binH = double(options.textureSize[1]) - margin;
-  std::vector<Placement> placements;
-  double density = 0.0;
-  if (options.texelsPerUnit) {
-    density = *options.texelsPerUnit;
-    for (std::size_t c = 0; c < chartCount; ++c)
-      if (size[c].x() * density + margin > binW || size[c].y() * density + margin > binH)
-        throw UsageError("--texels-per-unit " + numberText(density) + ": a chart of " +
-                         std::to_string(atlas.charts[c].faces) + " faces needs " +
-                         std::to_string(int(std::ceil(size[c].x() * density))) + " x " +
-                         std::to_string(int(std::ceil(size[c].y() * density))) +
-                         " texels, more than one texture less its margins holds");
-    pack(size, strategies.front(), density, margin, options.textureSize, true, placements);
-  } else {
-    if (!pack(size, strategies.front(), 0.0, margin, options.textureSize, false, placements))
-      throw UsageError(std::to_string(charts) + " charts with " + numberText(margin) +
-                       " texels of margin each do not fit a " + std::to_string(options.textureSize[0]) + " x " +
-                       std::to_string(options.textureSize[1]) +
-                       " texture even at no size: give a larger --texture-size or a smaller --margin");
-    double area = 0.0, high = kInfinity;
-    for (std::size_t c = 0; c < chartCount; ++c) {
-      area += size[c].x() * size[c].y();
-      if (size[c].x() > 0.0) high = std::min(high, (binW - margin) / size[c].x());
-      if (size[c].y() > 0.0) high = std::min(high, (binH - margin) / size[c].y());
-    }
-    if (area > 0.0) high = std::min(high, std::sqrt(binW * binH / area));
-    if (!std::isfinite(high)) high = 1.0;  // nothing has extent: any density will do
-    // Packing is not monotone in the density (a box that no longer fits beside another may fit
-    // below it), so each strategy's search steps down from the area bound by 3 % until the charts
-    // fit (below 0.4 of the bound by 30 %), then bisects between that and the step above; it
-    // stops where it could no longer beat the best so far.
-    std::size_t best = 0;
-    std::vector<Placement> trial;
-    for (std::size_t k = 0; k < strategies.size(); ++k) {
-      const PackingStrategy& strategy = strategies[k];
-      double fits = 0.0, failed = high;
-      for (double d = high, step = 0.97; d > 1e-12 * high && d > density; d *= step, step = d < 0.4 * high ? 0.7 : step) {
-        if (pack(size, strategy, d, margin, options.textureSize, false, trial)) {
-          fits = d;
-          break;
-        }
-        failed = d;
+  if (options.chartMap == ChartMap::Plane && !options.texelsPerUnit) {
+    CutCharts cut = cutLongCharts(mesh, edges, chartOf, atlas.charts, boxes, chartDirection, frames, origin,
+                                  areaDensity(boxes.size, binW, binH), std::min(binW, binH) - margin);
+    if (!cut.from.empty()) {
+      std::vector<AtlasChart> cutCharts(cut.from.size());
+      for (std::size_t f = 0; f < faceCount; ++f) ++cutCharts[std::size_t(cut.chartOf[f])].faces;
+      std::vector<int> cutDirection(cut.from.size());
+      for (std::size_t c = 0; c < cut.from.size(); ++c) cutDirection[c] = chartDirection[std::size_t(cut.from[c])];
+      ChartBoxes cutBoxes = chartBoxes(mesh, cut.chartOf, cutCharts, cutDirection, frames, origin, solved);
+      Packing cutPacking = packCharts(cutBoxes.size, cutCharts, options);
+      if (cutPacking.fits && cutPacking.density >= kCutGain * packing.density) {
+        atlas.cutCharts = cut.from.size() - chartCount;
+        chartCount = cut.from.size();
+        chartOf = std::move(cut.chartOf);
+        atlas.charts = std::move(cutCharts);
+        chartDirection = std::move(cutDirection);
+        boxes = std::move(cutBoxes);
+        packing = std::move(cutPacking);
       }
-      if (fits == 0.0) continue;
-      for (int step = 0; step < 12 && fits < failed; ++step) {
-        const double mid = 0.5 * (fits + failed);
-        (pack(size, strategy, mid, margin, options.textureSize, false, trial) ? fits : failed) = mid;
-      }
-      if (fits > density) density = fits, best = k;
     }
-    pack(size, strategies[best], density, margin, options.textureSize, false, placements);
   }
+  if (!packing.fits)
+    throw UsageError(std::to_string(chartCount) + " charts with " + numberText(margin) +
+                     " texels of margin each do not fit a " + std::to_string(options.textureSize[0]) + " x " +
+                     std::to_string(options.textureSize[1]) +
+                     " texture even at no size: give a larger --texture-size or a smaller --margin");
+  const double density = packing.density;
+  const std::vector<Placement>& placements = packing.placements;
+  std::vector<Eigen::Matrix2d>& rotation = boxes.rotation;
+  std::vector<Vec2>&low = boxes.low, &size = boxes.size;
   atlas.texelsPerUnit = density;
 
   // A chart packed turned takes a quarter turn more (a rotation, never a mirror).

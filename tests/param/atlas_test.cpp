@@ -135,6 +135,97 @@ TEST(Atlas, ARampThatCoversItselfIsSplitIntoChartsThatDoNot) {
   EXPECT_EQ(r.clockwiseFaces, 0u);
 }
 
+// Whether each chart's faces are joined across shared edges: a chart is one piece.
+bool everyChartIsOnePiece(const Mesh& mesh, const Atlas& atlas) {
+  std::map<std::pair<int, int>, std::vector<int>> facesOfEdge;
+  for (std::size_t f = 0; f < mesh.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int u = mesh.triangles[f][k], v = mesh.triangles[f][(k + 1) % 3];
+      facesOfEdge[{std::min(u, v), std::max(u, v)}].push_back(int(f));
+    }
+  std::vector<std::vector<int>> neighbours(mesh.faceCount());
+  for (const auto& [edge, faces] : facesOfEdge)
+    for (const int f : faces)
+      for (const int g : faces)
+        if (f != g && atlas.chartOfFace[f] == atlas.chartOfFace[g]) neighbours[f].push_back(g);
+  std::vector<char> reached(mesh.faceCount(), 0), chartSeen(atlas.charts.size(), 0);
+  for (std::size_t seed = 0; seed < mesh.faceCount(); ++seed) {
+    if (reached[seed]) continue;
+    if (chartSeen[atlas.chartOfFace[seed]]) return false;  // a second piece of a chart already met
+    chartSeen[atlas.chartOfFace[seed]] = 1;
+    std::vector<int> queue{int(seed)};
+    reached[seed] = 1;
+    for (std::size_t i = 0; i < queue.size(); ++i)
+      for (const int g : neighbours[queue[i]])
+        if (!reached[g]) reached[g] = 1, queue.push_back(g);
+  }
+  return true;
+}
+
+TEST(Atlas, AStripTooLongForTheTextureIsCutIntoTheFewestPiecesThatFit) {
+  // 5 x 1 in 15 x 3 quads. Whole, 5 D + 4 <= 1020 texels: D = 203.2. The charts' area allows
+  // D0 = 1020 / sqrt(5) = 456.2, at which the strip is 2281 texels long, more than the 1016 a
+  // side holds, and 456 wide, at most half of it: it is cut into ceil(5 / (1016 / 456.2)) = 3 slabs
+  // of five columns. Stacked, three 5/3 x 1 pieces fit at 3 (D + 4) <= 1020: D = 336.
+  const Mesh strip = meshes::planeGrid(15, 3, 5.0, 1.0);
+  const Atlas a = makeAtlas(strip, AtlasOptions{});
+  ASSERT_EQ(a.charts.size(), 3u);
+  EXPECT_EQ(a.cutCharts, 2u);
+  for (const AtlasChart& chart : a.charts) EXPECT_EQ(chart.faces, 30u);
+  EXPECT_GE(a.texelsPerUnit, 336.0 * (1 - 1e-3));
+  EXPECT_LE(a.texelsPerUnit, 1020.0 / std::sqrt(5.0));
+  EXPECT_EQ(a.seamEdges, 6u);  // two cuts across three quads each
+  EXPECT_NEAR(a.seamLength, 2.0, 1e-12);
+  for (std::size_t f = 0; f < strip.faceCount(); ++f) {  // each slab is five whole columns
+    const Triangle& t = strip.triangles[f];
+    const double x = (strip.positions[t[0]].x() + strip.positions[t[1]].x() + strip.positions[t[2]].x()) / 3 + 2.5;
+    for (std::size_t g = 0; g < strip.faceCount(); ++g) {
+      const Triangle& u = strip.triangles[g];
+      const double y = (strip.positions[u[0]].x() + strip.positions[u[1]].x() + strip.positions[u[2]].x()) / 3 + 2.5;
+      EXPECT_EQ(a.chartOfFace[f] == a.chartOfFace[g], int(x / (5.0 / 3)) == int(y / (5.0 / 3)));
+    }
+  }
+  const Recount r = recount(strip, a, {1024, 1024});
+  EXPECT_EQ(r.overlappingPairs, 0u);
+  EXPECT_EQ(r.clockwiseFaces, 0u);
+  EXPECT_GE(r.smallestGutter, 4.0 - 1e-6);
+}
+
+TEST(Atlas, AStripWhosePiecesWouldPackNoDenserStaysWhole) {
+  // 6 x 0.7 on a 32 x 32 texture with 7 texels of margin: 25 texels a side, 18 for a chart. At
+  // the area's D0 = 25 / sqrt(4.2) = 12.2 the strip is 73 texels long and 8.5 wide (at most 9): a
+  // candidate, cut into 5 slabs of 1.2 x 0.7. But five boxes of (1.2 D + 7) x (0.7 D + 7) fit 25 x 25
+  // only below D = 3, and whole it fits at 6 D + 7 <= 25: D = 3 exactly.
+  AtlasOptions o;
+  o.textureSize = {32, 32};
+  o.marginTexels = 7;
+  const Atlas a = makeAtlas(meshes::planeGrid(30, 3, 6.0, 0.7), o);
+  EXPECT_EQ(a.charts.size(), 1u);
+  EXPECT_EQ(a.cutCharts, 0u);
+  EXPECT_NEAR(a.texelsPerUnit, 3.0, 1e-9);
+}
+
+TEST(Atlas, ATubeMuchLongerThanWideIsCutAcrossItsLengthIntoConnectedPieces) {
+  // 80 long, 0.03 in radius, open: whole, each of its strips must span the texture, at most
+  // 1016 / 80 = 12.7 texels a unit.
+  const Mesh tube = meshes::cylinder(8, 200, 0.03, 80.0, false);
+  const Atlas a = makeAtlas(tube, AtlasOptions{});
+  EXPECT_GT(a.cutCharts, 0u);
+  EXPECT_GT(a.texelsPerUnit, 8 * 1016.0 / 80);
+  EXPECT_GT(a.occupancy, 0.3);
+  EXPECT_TRUE(everyChartIsOnePiece(tube, a));
+  for (std::size_t f = 0; f < tube.faceCount(); ++f) {  // the pieces keep their chart's direction
+    const Triangle& t = tube.triangles[f];
+    const Vec3 n = (tube.positions[t[1]] - tube.positions[t[0]]).cross(tube.positions[t[2]] - tube.positions[t[0]]).normalized();
+    EXPECT_GE(n.dot(a.charts[a.chartOfFace[f]].direction), std::cos(66.0 * M_PI / 180) - 1e-12) << f;
+  }
+  const Recount r = recount(tube, a, {1024, 1024});
+  EXPECT_EQ(r.overlappingPairs, 0u);
+  EXPECT_EQ(r.clockwiseFaces, 0u);
+  EXPECT_GE(r.smallestGutter, 4.0 - 1e-6);
+  EXPECT_GE(r.smallestBorder, 4.0 - 1e-6);
+}
+
 TEST(Atlas, OnMeshesOfEveryKindNothingOverlapsNothingMirrorsAndTheGutterIsMet) {
   for (const test::NamedMesh& named : test::atlasMeshes()) {
     if (named.mesh.faceCount() > 12000) continue;  // the recount is quadratic
