@@ -21,8 +21,8 @@ bool FileStream::Buffer::open(const std::string& path, bool truncate) {
     error_ = errno;
     return false;
   }
-  storage_.resize(kBufferBytes);
-  setp(storage_.data(), storage_.data() + storage_.size());
+  storage_.reset(new char[kBufferBytes]);
+  setp(storage_.get(), storage_.get() + kBufferBytes);
   return true;
 }
 
@@ -58,8 +58,8 @@ void FileStream::Buffer::startWriteback() {
 
 bool FileStream::Buffer::flushBuffer() {
   const std::size_t pending = std::size_t(pptr() - pbase());
-  setp(storage_.data(), storage_.data() + storage_.size());
-  return pending == 0 || writeAll(storage_.data(), pending);
+  if (storage_) setp(storage_.get(), storage_.get() + kBufferBytes);  // none: the file did not open
+  return pending == 0 || writeAll(storage_.get(), pending);
 }
 
 FileStream::Buffer::int_type FileStream::Buffer::overflow(int_type c) {

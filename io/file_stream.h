@@ -10,10 +10,10 @@
 
 #include <sys/types.h>
 
+#include <memory>
 #include <ostream>
 #include <streambuf>
 #include <string>
-#include <vector>
 
 namespace uvtk::io {
 
@@ -50,7 +50,7 @@ class FileStream : public std::ostream {
     void startWriteback();
     int fd_ = -1;
     int error_ = 0;
-    std::vector<char> storage_;
+    std::unique_ptr<char[]> storage_;  // not value-initialised: a small file touches one page of it
     off_t written_ = 0;          // bytes the file has received
     off_t writebackStarted_ = 0;  // bytes before which write-back has been started
   };

@@ -69,6 +69,8 @@ def peer_command(peer, args, src, dst):
                "--angle-limit", "66", "--margin-texels", margin, "--texture-size", "1024"]
         if peer in ("blender_fraction", "blender_fraction4"):
             cmd += ["--margin-method", "FRACTION"]
+        if args.position_tolerance is not None:
+            cmd += ["--position-tolerance", repr(args.position_tolerance)]
         return cmd
     cmd = [args.xatlas, src, dst, "--padding", "4", "--resolution", "1024"]
     if peer == "xatlas_nomirror":
@@ -234,6 +236,9 @@ def main():
                     help="with --table-from: one compact table per mesh (of these comma-separated peers)")
     ap.add_argument("--timeout", type=float, default=300.0, help="seconds per peer run")
     ap.add_argument("--blender", default="blender")
+    ap.add_argument("--position-tolerance", type=float, default=None,
+                    help="Blender's check of the positions it wrote back (default 1e-6): a mesh whose "
+                         "coordinates reach 80 loses 4e-6 to float32 and %%.6f")
     ap.add_argument("--xatlas", default=None, help="the xatlas driver binary")
     ap.add_argument("--uvtk", default=os.path.join(REPO, "build", "apps", "uvtk", "uvtk"))
     ap.add_argument("--python", default="/usr/bin/python3", help="a python3 with numpy")
