@@ -632,7 +632,9 @@ struct Packing {
 // many tiles as it takes. Boxes go in by decreasing height, area or longer side, turned where
 // that sits lower or never turned: the strategy that packs the densest wins (the first on a
 // tie). Beyond 2000 charts, only the first: each try then costs tens of milliseconds.
-Packing packCharts(const std::vector<Vec2>& size, const std::vector<AtlasChart>& charts, const AtlasOptions& options) {
+// `scale`: the object units in one unit of the boxes (a power of two; makeAtlas).
+Packing packCharts(const std::vector<Vec2>& size, const std::vector<AtlasChart>& charts, const AtlasOptions& options,
+                   double scale) {
   const std::size_t chartCount = size.size();
   std::vector<PackingStrategy> strategies;
   const int keys = chartCount <= 2000 ? 3 : 1;
@@ -651,10 +653,10 @@ Packing packCharts(const std::vector<Vec2>& size, const std::vector<AtlasChart>&
   const double binW = double(options.textureSize[0]) - margin, binH = double(options.textureSize[1]) - margin;
   Packing result;
   if (options.texelsPerUnit) {
-    result.density = *options.texelsPerUnit;
+    result.density = *options.texelsPerUnit * scale;
     for (std::size_t c = 0; c < chartCount; ++c)
       if (size[c].x() * result.density + margin > binW || size[c].y() * result.density + margin > binH)
-        throw UsageError("--texels-per-unit " + numberText(result.density) + ": a chart of " +
+        throw UsageError("--texels-per-unit " + numberText(*options.texelsPerUnit) + ": a chart of " +
                          std::to_string(charts[c].faces) + " faces needs " +
                          std::to_string(int(std::ceil(size[c].x() * result.density))) + " x " +
                          std::to_string(int(std::ceil(size[c].y() * result.density))) +
@@ -783,21 +785,32 @@ void checkAtlasOptions(const AtlasOptions& o) {
     throw UsageError("--texels-per-unit: expected a finite number above 0");
 }
 
-Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
+Atlas makeAtlas(const Mesh& input, const AtlasOptions& options, int threads) {
   checkAtlasOptions(options);
-  const std::size_t faceCount = mesh.faceCount();
+  const std::size_t faceCount = input.faceCount();
   Atlas atlas;
   atlas.stretchBound = 1.0 / std::cos(options.angleLimitDegrees * kPi / 180.0);
   if (faceCount == 0) return atlas;
+
+  // The charts are made on the mesh moved to its box's centre and scaled by a power of two to a
+  // size between 1 and 2: exactly, so that every decision and number is what the mesh itself
+  // gives, while areas, cross products and box areas stay finite and nonzero for a mesh 1e-300 or
+  // 1e300 across (docs/extremes.md). `scale` turns the atlas's lengths back into object units.
+  Eigen::AlignedBox3d bounds;
+  for (const Vec3& p : input.positions) bounds.extend(p);
+  const Vec3 centre = bounds.center();
+  const double toUnit = unitPowerOfTwo(bounds.sizes().maxCoeff()), scale = 1.0 / toUnit;
+  Mesh mesh;
+  mesh.triangles = input.triangles;
+  mesh.positions.reserve(input.positions.size());
+  for (const Vec3& p : input.positions) mesh.positions.push_back((p - centre) * toUnit);
+  const Vec3 origin = Vec3::Zero();
 
   // The faces' unit normals and areas; degenerate faces have neither.
   std::vector<Vec3> normals(faceCount, Vec3::Zero());
   std::vector<double> areas(faceCount, 0.0);
   std::vector<char> degenerate(faceCount, 0);
   std::vector<int> byArea;
-  Eigen::AlignedBox3d bounds;
-  for (const Vec3& p : mesh.positions) bounds.extend(p);
-  const Vec3 origin = bounds.center();
   for (std::size_t f = 0; f < faceCount; ++f) {
     const Triangle& t = mesh.triangles[f];
     const Vec3 a = mesh.positions[std::size_t(t[0])] - origin, b = mesh.positions[std::size_t(t[1])] - origin,
@@ -1012,9 +1025,14 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
   atlas.charts.assign(chartCount, AtlasChart{});
   for (std::size_t f = 0; f < faceCount; ++f) ++atlas.charts[std::size_t(chartOf[f])].faces;
   std::vector<Point2> solved;  // per corner, for the solved charts
-  if (options.chartMap != ChartMap::Plane) solveCharts(mesh, chartOf, chartCount, options.chartMap, atlas, solved);
+  if (options.chartMap != ChartMap::Plane) {
+    // CGAL solves the mesh as given (its solvers' rounding is not scale-free), then the solution is
+    // scaled as the mesh was.
+    solveCharts(input, chartOf, chartCount, options.chartMap, atlas, solved);
+    for (Point2& p : solved) p *= toUnit;
+  }
   ChartBoxes boxes = chartBoxes(mesh, chartOf, atlas.charts, chartDirection, frames, origin, solved);
-  Packing packing = packCharts(boxes.size, atlas.charts, options);
+  Packing packing = packCharts(boxes.size, atlas.charts, options, scale);
   const double margin = options.marginTexels;
   const double binW = double(options.textureSize[0]) - margin, binH = double(options.textureSize[1]) - margin;
   if (options.chartMap == ChartMap::Plane && !options.texelsPerUnit) {
@@ -1026,7 +1044,7 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
       std::vector<int> cutDirection(cut.from.size());
       for (std::size_t c = 0; c < cut.from.size(); ++c) cutDirection[c] = chartDirection[std::size_t(cut.from[c])];
       ChartBoxes cutBoxes = chartBoxes(mesh, cut.chartOf, cutCharts, cutDirection, frames, origin, solved);
-      Packing cutPacking = packCharts(cutBoxes.size, cutCharts, options);
+      Packing cutPacking = packCharts(cutBoxes.size, cutCharts, options, scale);
       if (cutPacking.fits && cutPacking.density >= kCutGain * packing.density) {
         atlas.cutCharts = cut.from.size() - chartCount;
         chartCount = cut.from.size();
@@ -1043,11 +1061,11 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
                      " texels of margin each do not fit a " + std::to_string(options.textureSize[0]) + " x " +
                      std::to_string(options.textureSize[1]) +
                      " texture even at no size: give a larger --texture-size or a smaller --margin");
-  const double density = packing.density;
+  const double density = packing.density;  // texels per unit of the scaled mesh
   const std::vector<Placement>& placements = packing.placements;
   std::vector<Eigen::Matrix2d>& rotation = boxes.rotation;
   std::vector<Vec2>&low = boxes.low, &size = boxes.size;
-  atlas.texelsPerUnit = density;
+  atlas.texelsPerUnit = density * toUnit;
 
   // A chart packed turned takes a quarter turn more (a rotation, never a mirror).
   for (std::size_t c = 0; c < chartCount; ++c)
@@ -1065,8 +1083,8 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
     AtlasChart& chart = atlas.charts[c];
     const Eigen::Matrix<double, 2, 3>& frame = frames[std::size_t(chartDirection[c])];
     chart.direction = frame.row(0).transpose().cross(frame.row(1).transpose());
-    chart.origin = origin;
-    chart.linear = perTexel.asDiagonal() * (density * rotation[c] * frame);
+    chart.origin = centre;
+    chart.linear = perTexel.asDiagonal() * (atlas.texelsPerUnit * rotation[c] * frame);
     chart.tile = placements[c].tile;
     const Vec2 tileCorner(double(chart.tile % 10), double(chart.tile / 10));
     chart.offset = perTexel.asDiagonal() * (placements[c].at - density * low[c]) + tileCorner;
@@ -1083,7 +1101,7 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
       atlas.uv[corner] = chart.solved ? Vec2(perTexel.cwiseProduct(density * (rotation[c] * solved[corner] - low[c]) +
                                                                     placements[c].at) +
                                              Vec2(double(chart.tile % 10), double(chart.tile / 10)))
-                                      : chart.uvAt(mesh.positions[std::size_t(mesh.triangles[f][k])]);
+                                      : chart.uvAt(input.positions[std::size_t(input.triangles[f][k])]);
     }
     uvArea += 0.5 * std::abs(orient(atlas.uv[3 * f], atlas.uv[3 * f + 1], atlas.uv[3 * f + 2]));
   }
@@ -1108,7 +1126,9 @@ Atlas makeAtlas(const Mesh& mesh, const AtlasOptions& options, int threads) {
     }
     if (!seam) continue;
     ++atlas.seamEdges;
-    atlas.seamLength += (mesh.positions[std::size_t(first.high)] - mesh.positions[std::size_t(first.low)]).norm();
+    const Vec3 edge = input.positions[std::size_t(first.high)] - input.positions[std::size_t(first.low)];
+    // norm() squares an edge of 1e200 to infinity and one of 1e-200 to 0.
+    atlas.seamLength += std::isnormal(edge.squaredNorm()) ? edge.norm() : edge.stableNorm();
   }
   return atlas;
 }

@@ -226,6 +226,27 @@ TEST(Atlas, ATubeMuchLongerThanWideIsCutAcrossItsLengthIntoConnectedPieces) {
   EXPECT_GE(r.smallestBorder, 4.0 - 1e-6);
 }
 
+TEST(Atlas, AMeshScaledByAPowerOfTwoGetsTheSameChartsAndUvsFrom1eMinus298To1e298) {
+  // The atlas works on the mesh scaled to a unit size by a power of two, exactly: the bone (cut
+  // into 10 charts at scale 1) gives the same bits at any scale where its coordinates stay normal
+  // doubles. Before, its areas squared to 0 or infinity beyond about 1e+-150: every face a chart.
+  const Mesh bone = meshes::bone(120, 32);
+  const Atlas one = makeAtlas(bone, AtlasOptions{});
+  ASSERT_GT(one.cutCharts, 0u);
+  for (const int exponent : {-990, -500, -120, 120, 500, 990}) {
+    SCOPED_TRACE(exponent);
+    Mesh scaled = bone;
+    for (Vec3& p : scaled.positions) p *= std::ldexp(1.0, exponent);
+    const Atlas a = makeAtlas(scaled, AtlasOptions{});
+    ASSERT_EQ(a.charts.size(), one.charts.size());
+    EXPECT_EQ(a.chartOfFace, one.chartOfFace);
+    EXPECT_EQ(a.uv, one.uv);
+    EXPECT_EQ(a.texelsPerUnit, std::ldexp(one.texelsPerUnit, -exponent));
+    EXPECT_NEAR(a.seamLength / std::ldexp(one.seamLength, exponent), 1.0, 1e-14);
+    EXPECT_EQ(a.occupancy, one.occupancy);
+  }
+}
+
 TEST(Atlas, OnMeshesOfEveryKindNothingOverlapsNothingMirrorsAndTheGutterIsMet) {
   for (const test::NamedMesh& named : test::atlasMeshes()) {
     if (named.mesh.faceCount() > 12000) continue;  // the recount is quadratic
