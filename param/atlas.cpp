@@ -510,12 +510,12 @@ ChartBoxes chartBoxes(const Mesh& mesh, const std::vector<int>& chartOf, const s
 }
 
 // The charts too long for the texture, cut across their length (docs/conventions.md, "The
-// atlas"): a plane chart whose longer side, at the density the charts' area allows, exceeds
-// `side` texels (the texture's shorter side less its margins) while its shorter side takes at
-// most half of it. Such a chart is cut by its faces' centroids into the fewest slabs of equal
-// length along its box that are at most `side` long, and each slab's pieces joined across shared
-// edges are charts: subsets of a chart, so no new flip or overlap. Charts are numbered by their
-// first face; `from` is empty when no chart is that long.
+// atlas"). The charts are plane projections (not LSCM or ARAP); one whose longer side, at the
+// density the charts' area allows, exceeds `side` texels (what one box may span, chartRoom) while
+// its shorter side takes at most half of it is cut by its faces' centroids into the fewest slabs
+// of equal length along its box that are at most `side` long, and each slab's pieces joined across
+// shared edges are charts: subsets of a chart, so no new flip or overlap. Charts are numbered by
+// their first face; `from` is empty when no chart is that long.
 struct CutCharts {
   std::vector<int> chartOf;
   std::vector<int> from;  // each new chart's chart before the cut
@@ -531,7 +531,7 @@ CutCharts cutLongCharts(const Mesh& mesh, const EdgeTable& edges, const std::vec
   bool any = false;
   for (std::size_t c = 0; c < chartCount; ++c) {
     const Vec2& s = boxes.size[c];  // wider than tall
-    if (charts[c].solved || !(s.x() * density > side) || !(s.y() * density <= 0.5 * side)) continue;
+    if (!(s.x() * density > side) || !(s.y() * density <= 0.5 * side)) continue;
     slabs[c] = int(std::min(std::ceil(s.x() / pieceLength), double(charts[c].faces)));
     any = any || slabs[c] > 1;
   }
@@ -828,9 +828,13 @@ Atlas makeAtlas(const Mesh& input, const AtlasOptions& options, int threads) {
 
   // Each chart turned to its smallest box, then packed; charts too long for the texture are cut
   // where that packs them at least kCutGain times as densely (cutLongCharts).
+  const auto chartsOfFaces = [&](const std::vector<int>& chartOfFace, std::size_t count) {
+    std::vector<AtlasChart> made(count);
+    for (std::size_t f = 0; f < faceCount; ++f) ++made[std::size_t(chartOfFace[f])].faces;
+    return made;
+  };
   std::size_t chartCount = std::size_t(charts);
-  atlas.charts.assign(chartCount, AtlasChart{});
-  for (std::size_t f = 0; f < faceCount; ++f) ++atlas.charts[std::size_t(chartOf[f])].faces;
+  atlas.charts = chartsOfFaces(chartOf, chartCount);
   std::vector<Point2> solved;  // per corner, for the solved charts
   if (options.chartMap != ChartMap::Plane) {
     // CGAL solves the mesh as given (its solvers' rounding is not scale-free), then the solution is
@@ -840,14 +844,11 @@ Atlas makeAtlas(const Mesh& input, const AtlasOptions& options, int threads) {
   }
   ChartBoxes boxes = chartBoxes(mesh, chartOf, atlas.charts, chartDirection, frames, origin, solved);
   Packing packing = packCharts(boxes.size, atlas.charts, options, scale);
-  const double margin = options.marginTexels;
-  const double binW = double(options.textureSize[0]) - margin, binH = double(options.textureSize[1]) - margin;
   if (options.chartMap == ChartMap::Plane && !options.texelsPerUnit) {
     CutCharts cut = cutLongCharts(mesh, edges, chartOf, atlas.charts, boxes, chartDirection, frames, origin,
-                                  areaDensity(boxes.size, binW, binH), std::min(binW, binH) - margin);
+                                  areaDensity(boxes.size, options), chartRoom(options).minCoeff());
     if (!cut.from.empty()) {
-      std::vector<AtlasChart> cutCharts(cut.from.size());
-      for (std::size_t f = 0; f < faceCount; ++f) ++cutCharts[std::size_t(cut.chartOf[f])].faces;
+      std::vector<AtlasChart> cutCharts = chartsOfFaces(cut.chartOf, cut.from.size());
       std::vector<int> cutDirection(cut.from.size());
       for (std::size_t c = 0; c < cut.from.size(); ++c) cutDirection[c] = chartDirection[std::size_t(cut.from[c])];
       ChartBoxes cutBoxes = chartBoxes(mesh, cut.chartOf, cutCharts, cutDirection, frames, origin, solved);

@@ -116,13 +116,18 @@ std::string numberText(double value) {
 
 }  // namespace
 
-// The density at which the boxes' area fills a bin of binW x binH texels: no packing beats it.
-double areaDensity(const std::vector<Vec2>& sizes, double binW, double binH) {
+Vec2 chartRoom(const AtlasOptions& options) {
+  const double margin = options.marginTexels;
+  return Vec2(double(options.textureSize[0]) - margin - margin, double(options.textureSize[1]) - margin - margin);
+}
+
+double areaDensity(const std::vector<Vec2>& sizes, const AtlasOptions& options) {
+  const double binW = double(options.textureSize[0]) - options.marginTexels;
+  const double binH = double(options.textureSize[1]) - options.marginTexels;
   double area = 0.0;
   for (const Vec2& s : sizes) area += s.x() * s.y();
   return area > 0.0 ? std::sqrt(binW * binH / area) : kInfinity;
 }
-
 
 Packing packCharts(const std::vector<Vec2>& size, const std::vector<AtlasChart>& charts, const AtlasOptions& options,
                    double scale) {
@@ -158,11 +163,12 @@ Packing packCharts(const std::vector<Vec2>& size, const std::vector<AtlasChart>&
   result.fits = pack(size, strategies.front(), 0.0, margin, options.textureSize, false, result.placements);
   if (!result.fits) return result;
   double high = kInfinity;
+  const Vec2 room = chartRoom(options);
   for (std::size_t c = 0; c < chartCount; ++c) {
-    if (size[c].x() > 0.0) high = std::min(high, (binW - margin) / size[c].x());
-    if (size[c].y() > 0.0) high = std::min(high, (binH - margin) / size[c].y());
+    if (size[c].x() > 0.0) high = std::min(high, room.x() / size[c].x());
+    if (size[c].y() > 0.0) high = std::min(high, room.y() / size[c].y());
   }
-  high = std::min(high, areaDensity(size, binW, binH));
+  high = std::min(high, areaDensity(size, options));
   if (!std::isfinite(high)) high = 1.0;  // nothing has extent: any density will do
   // Packing is not monotone in the density (a box that no longer fits beside another may fit
   // below it), so each strategy's search steps down from the area bound by 3 % until the charts

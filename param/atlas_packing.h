@@ -25,8 +25,13 @@ struct Packing {
   std::vector<Placement> placements;
 };
 
-// The density at which the boxes' area fills a bin of binW x binH texels: no packing beats it.
-double areaDensity(const std::vector<Vec2>& sizes, double binW, double binH);
+// The texels one chart's box may span along u and v: the texture less the margin along its
+// border and the box's own margin.
+Vec2 chartRoom(const AtlasOptions& options);
+
+// The density at which the boxes' area fills the texture less its border margin: no packing
+// beats it.
+double areaDensity(const std::vector<Vec2>& sizes, const AtlasOptions& options);
 
 // One density for every chart: the largest at which all fit, or the one asked for, over as
 // many tiles as it takes. Boxes go in by decreasing height, area or longer side, turned where

@@ -135,16 +135,21 @@ TEST(Atlas, ARampThatCoversItselfIsSplitIntoChartsThatDoNot) {
   EXPECT_EQ(r.clockwiseFaces, 0u);
 }
 
-// Whether each chart's faces are joined across shared edges: a chart is one piece.
-bool everyChartIsOnePiece(const Mesh& mesh, const Atlas& atlas) {
-  std::map<std::pair<int, int>, std::vector<int>> facesOfEdge;
+// Every edge (its vertices, lower first) with the faces that have it.
+std::map<std::pair<int, int>, std::vector<int>> facesOfEdges(const Mesh& mesh) {
+  std::map<std::pair<int, int>, std::vector<int>> faces;
   for (std::size_t f = 0; f < mesh.faceCount(); ++f)
     for (int k = 0; k < 3; ++k) {
       const int u = mesh.triangles[f][k], v = mesh.triangles[f][(k + 1) % 3];
-      facesOfEdge[{std::min(u, v), std::max(u, v)}].push_back(int(f));
+      faces[{std::min(u, v), std::max(u, v)}].push_back(int(f));
     }
+  return faces;
+}
+
+// Whether each chart's faces are joined across shared edges: a chart is one piece.
+bool everyChartIsOnePiece(const Mesh& mesh, const Atlas& atlas) {
   std::vector<std::vector<int>> neighbours(mesh.faceCount());
-  for (const auto& [edge, faces] : facesOfEdge)
+  for (const auto& [edge, faces] : facesOfEdges(mesh))
     for (const int f : faces)
       for (const int g : faces)
         if (f != g && atlas.chartOfFace[f] == atlas.chartOfFace[g]) neighbours[f].push_back(g);
@@ -176,15 +181,13 @@ TEST(Atlas, AStripTooLongForTheTextureIsCutIntoTheFewestPiecesThatFit) {
   EXPECT_LE(a.texelsPerUnit, 1020.0 / std::sqrt(5.0));
   EXPECT_EQ(a.seamEdges, 6u);  // two cuts across three quads each
   EXPECT_NEAR(a.seamLength, 2.0, 1e-12);
-  for (std::size_t f = 0; f < strip.faceCount(); ++f) {  // each slab is five whole columns
+  const auto slabOf = [&](std::size_t f) {  // five whole columns each: by the centroid's x in [0, 5]
     const Triangle& t = strip.triangles[f];
     const double x = (strip.positions[t[0]].x() + strip.positions[t[1]].x() + strip.positions[t[2]].x()) / 3 + 2.5;
-    for (std::size_t g = 0; g < strip.faceCount(); ++g) {
-      const Triangle& u = strip.triangles[g];
-      const double y = (strip.positions[u[0]].x() + strip.positions[u[1]].x() + strip.positions[u[2]].x()) / 3 + 2.5;
-      EXPECT_EQ(a.chartOfFace[f] == a.chartOfFace[g], int(x / (5.0 / 3)) == int(y / (5.0 / 3)));
-    }
-  }
+    return int(x / (5.0 / 3));
+  };
+  for (std::size_t f = 0; f < strip.faceCount(); ++f)
+    for (std::size_t g = 0; g < strip.faceCount(); ++g) EXPECT_EQ(a.chartOfFace[f] == a.chartOfFace[g], slabOf(f) == slabOf(g));
   const Recount r = recount(strip, a, {1024, 1024});
   EXPECT_EQ(r.overlappingPairs, 0u);
   EXPECT_EQ(r.clockwiseFaces, 0u);
@@ -295,12 +298,7 @@ TEST(Atlas, EveryFaceIsWithinTheAngleLimitOfItsChartsDirection) {
 TEST(Atlas, SeamsAreTheEdgesBetweenCharts) {
   const Mesh torus = meshes::torus(32, 16, 1.0, 0.4);
   const Atlas a = makeAtlas(torus, AtlasOptions{});
-  std::map<std::pair<int, int>, std::vector<int>> faces;
-  for (std::size_t f = 0; f < torus.faceCount(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int u = torus.triangles[f][k], v = torus.triangles[f][(k + 1) % 3];
-      faces[{std::min(u, v), std::max(u, v)}].push_back(int(f));
-    }
+  const std::map<std::pair<int, int>, std::vector<int>> faces = facesOfEdges(torus);
   std::size_t seams = 0;
   double length = 0.0;
   for (const auto& [edge, list] : faces) {
