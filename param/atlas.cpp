@@ -21,9 +21,13 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-// A chart too long for the texture is cut only where its pieces pack at least this much more
-// densely than it did whole: every cut is a seam more.
+// Charts that pack poorly (too long for the texture, or hollow) are cut only where the pieces
+// pack at least this much more densely than the charts did whole: every cut is a seam more.
 constexpr double kCutGain = 1.25;
+// A chart whose faces cover less of its box than this is hollow (a ring, a coil's arc): halved,
+// and its halves again, at most kCutRounds times (64 pieces).
+constexpr double kHollowFill = 0.2;
+constexpr int kCutRounds = 6;
 
 using Point2 = Vec2;
 
@@ -509,30 +513,43 @@ ChartBoxes chartBoxes(const Mesh& mesh, const std::vector<int>& chartOf, const s
   return boxes;
 }
 
-// The charts too long for the texture, cut across their length (docs/conventions.md, "The
-// atlas"). The charts are plane projections (not LSCM or ARAP); one whose longer side, at the
-// density the charts' area allows, exceeds `side` texels (what one box may span, chartRoom) while
-// its shorter side takes at most half of it is cut by its faces' centroids into the fewest slabs
-// of equal length along its box that are at most `side` long, and each slab's pieces joined across
-// shared edges are charts: subsets of a chart, so no new flip or overlap. Charts are numbered by
-// their first face; `from` is empty when no chart is that long.
+// One round of cuts of the charts that pack poorly (docs/conventions.md, "The atlas"); the charts
+// are plane projections (not LSCM or ARAP). With `cutLong`, one whose longer side, at the density
+// the charts' area allows, exceeds `side` texels (what one box may span, chartRoom) while its
+// shorter side takes at most half of it is cut into the fewest slabs of equal length along its box
+// that are at most `side` long; else one whose faces cover less than kHollowFill of its box is
+// cut into two. The slabs go by the faces' centroids, and each slab's pieces joined across shared
+// edges are charts: subsets of a chart, so no new flip or overlap. Charts are numbered by their
+// first face; `from` is empty when no chart was cut.
 struct CutCharts {
   std::vector<int> chartOf;
   std::vector<int> from;  // each new chart's chart before the cut
 };
 
-CutCharts cutLongCharts(const Mesh& mesh, const EdgeTable& edges, const std::vector<int>& chartOf,
+CutCharts cutPoorlyPackedCharts(const Mesh& mesh, const EdgeTable& edges, const std::vector<int>& chartOf,
                         const std::vector<AtlasChart>& charts, const ChartBoxes& boxes,
                         const std::vector<int>& chartDirection, const std::vector<Eigen::Matrix<double, 2, 3>>& frames,
-                        const Vec3& origin, double density, double side) {
+                        const Vec3& origin, double density, double side, bool cutLong) {
   const std::size_t faceCount = chartOf.size(), chartCount = charts.size();
   const double pieceLength = side / density;
+  // Each chart's faces' area in its plane, against its box's.
+  std::vector<double> area(chartCount, 0.0);
+  for (std::size_t f = 0; f < faceCount; ++f) {
+    const std::size_t c = std::size_t(chartOf[f]);
+    const Eigen::Matrix<double, 2, 3>& frame = frames[std::size_t(chartDirection[c])];
+    const Triangle& t = mesh.triangles[f];
+    const Point2 a = frame * (mesh.positions[std::size_t(t[0])] - origin), b = frame * (mesh.positions[std::size_t(t[1])] - origin),
+                 d = frame * (mesh.positions[std::size_t(t[2])] - origin);
+    area[c] += 0.5 * std::abs(orient(a, b, d));
+  }
   std::vector<int> slabs(chartCount, 1);
   bool any = false;
   for (std::size_t c = 0; c < chartCount; ++c) {
     const Vec2& s = boxes.size[c];  // wider than tall
-    if (!(s.x() * density > side) || !(s.y() * density <= 0.5 * side)) continue;
-    slabs[c] = int(std::min(std::ceil(s.x() / pieceLength), double(charts[c].faces)));
+    if (cutLong && s.x() * density > side && s.y() * density <= 0.5 * side)
+      slabs[c] = int(std::min(std::ceil(s.x() / pieceLength), double(charts[c].faces)));
+    else if (charts[c].faces > 1 && area[c] < kHollowFill * s.x() * s.y())
+      slabs[c] = 2;
     any = any || slabs[c] > 1;
   }
   CutCharts cut;
@@ -826,8 +843,9 @@ Atlas makeAtlas(const Mesh& input, const AtlasOptions& options, int threads) {
       }
   }
 
-  // Each chart turned to its smallest box, then packed; charts too long for the texture are cut
-  // where that packs them at least kCutGain times as densely (cutLongCharts).
+  // Each chart turned to its smallest box, then packed. Charts that pack poorly are cut, the long
+  // ones in the first round and the hollow ones in every round (cutPoorlyPackedCharts), and the
+  // cut charts kept where they pack at least kCutGain times as densely.
   const auto chartsOfFaces = [&](const std::vector<int>& chartOfFace, std::size_t count) {
     std::vector<AtlasChart> made(count);
     for (std::size_t f = 0; f < faceCount; ++f) ++made[std::size_t(chartOfFace[f])].faces;
@@ -845,18 +863,29 @@ Atlas makeAtlas(const Mesh& input, const AtlasOptions& options, int threads) {
   ChartBoxes boxes = chartBoxes(mesh, chartOf, atlas.charts, chartDirection, frames, origin, solved);
   Packing packing = packCharts(boxes.size, atlas.charts, options, scale);
   if (options.chartMap == ChartMap::Plane && !options.texelsPerUnit) {
-    CutCharts cut = cutLongCharts(mesh, edges, chartOf, atlas.charts, boxes, chartDirection, frames, origin,
-                                  areaDensity(boxes.size, options), chartRoom(options).minCoeff());
-    if (!cut.from.empty()) {
-      std::vector<AtlasChart> cutCharts = chartsOfFaces(cut.chartOf, cut.from.size());
-      std::vector<int> cutDirection(cut.from.size());
-      for (std::size_t c = 0; c < cut.from.size(); ++c) cutDirection[c] = chartDirection[std::size_t(cut.from[c])];
-      ChartBoxes cutBoxes = chartBoxes(mesh, cut.chartOf, cutCharts, cutDirection, frames, origin, solved);
+    std::vector<int> cutChartOf = chartOf, cutDirection = chartDirection;
+    std::vector<AtlasChart> cutCharts = atlas.charts;
+    ChartBoxes cutBoxes = boxes;
+    bool changed = false;
+    for (int round = 0; round < kCutRounds; ++round) {
+      CutCharts cut = cutPoorlyPackedCharts(mesh, edges, cutChartOf, cutCharts, cutBoxes, cutDirection, frames, origin,
+                                            areaDensity(cutBoxes.size, options), chartRoom(options).minCoeff(),
+                                            round == 0);
+      if (cut.from.empty()) break;
+      std::vector<int> direction(cut.from.size());
+      for (std::size_t c = 0; c < cut.from.size(); ++c) direction[c] = cutDirection[std::size_t(cut.from[c])];
+      cutDirection = std::move(direction);
+      cutChartOf = std::move(cut.chartOf);
+      cutCharts = chartsOfFaces(cutChartOf, cutDirection.size());
+      cutBoxes = chartBoxes(mesh, cutChartOf, cutCharts, cutDirection, frames, origin, solved);
+      changed = true;
+    }
+    if (changed) {
       Packing cutPacking = packCharts(cutBoxes.size, cutCharts, options, scale);
       if (cutPacking.fits && cutPacking.density >= kCutGain * packing.density) {
-        atlas.cutCharts = cut.from.size() - chartCount;
-        chartCount = cut.from.size();
-        chartOf = std::move(cut.chartOf);
+        atlas.cutCharts = cutCharts.size() - chartCount;
+        chartCount = cutCharts.size();
+        chartOf = std::move(cutChartOf);
         atlas.charts = std::move(cutCharts);
         chartDirection = std::move(cutDirection);
         boxes = std::move(cutBoxes);

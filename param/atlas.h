@@ -60,7 +60,7 @@ struct Atlas {
   std::size_t directions = 0;       // projection directions the charts were grouped by
   std::size_t splitCharts = 0;      // charts split because their projection overlapped itself
   std::size_t mergedCharts = 0;     // charts merged into a neighbour (param/atlas.cpp)
-  std::size_t cutCharts = 0;        // charts added by cutting charts too long for the texture
+  std::size_t cutCharts = 0;        // charts added by cutting those that pack poorly (too long, or hollow)
   std::size_t degenerateFaces = 0;  // faces of no area, given to a neighbour's chart (or their own)
   // LSCM or ARAP: the charts that kept their plane projection instead, and why (the first few).
   std::size_t fallbackCharts = 0;

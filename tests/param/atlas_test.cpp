@@ -208,6 +208,43 @@ TEST(Atlas, AStripWhosePiecesWouldPackNoDenserStaysWhole) {
   EXPECT_NEAR(a.texelsPerUnit, 3.0, 1e-9);
 }
 
+// A flat ring in z = 0 between radii r0 and r1, `segments` quads around, facing +z.
+Mesh flatRing(int segments, double r0, double r1) {
+  Mesh ring;
+  for (int i = 0; i < segments; ++i) {
+    const double a = 2 * M_PI * i / segments;
+    ring.positions.push_back({r0 * std::cos(a), r0 * std::sin(a), 0.0});
+    ring.positions.push_back({r1 * std::cos(a), r1 * std::sin(a), 0.0});
+  }
+  for (int i = 0; i < segments; ++i) {
+    const int a = 2 * i, b = 2 * ((i + 1) % segments);
+    ring.triangles.push_back({a, b, b + 1});
+    ring.triangles.push_back({a, b + 1, a + 1});
+  }
+  return ring;
+}
+
+TEST(Atlas, AThinRingIsCutIntoArcsThatPackDenser) {
+  // Radii 1 and 1.05: its faces cover pi (1.05^2 - 1) / 2.1^2 = 0.073 of its box, under a fifth, so
+  // it is halved, and its halves again. Whole, its box is at least 2.1 cos(pi / 256) across: at
+  // most 1016 / that texels a unit.
+  const Mesh ring = flatRing(256, 1.0, 1.05);
+  const Atlas a = makeAtlas(ring, AtlasOptions{});
+  const double whole = 1016.0 / (2.1 * std::cos(M_PI / 256));
+  EXPECT_GT(a.cutCharts, 0u);
+  EXPECT_GE(a.texelsPerUnit, 1.25 * whole);
+  EXPECT_LE(a.charts.size(), 64u);  // six halvings at most
+  EXPECT_TRUE(everyChartIsOnePiece(ring, a));
+  const Recount r = recount(ring, a, {1024, 1024});
+  EXPECT_EQ(r.overlappingPairs, 0u);
+  EXPECT_EQ(r.clockwiseFaces, 0u);
+  EXPECT_GE(r.smallestGutter, 4.0 - 1e-6);
+  // Radii 1 and 1.5 cover pi (1.5^2 - 1) / 9 = 0.44 of the box: not hollow, one chart.
+  const Atlas thick = makeAtlas(flatRing(256, 1.0, 1.5), AtlasOptions{});
+  EXPECT_EQ(thick.charts.size(), 1u);
+  EXPECT_EQ(thick.cutCharts, 0u);
+}
+
 TEST(Atlas, ATubeMuchLongerThanWideIsCutAcrossItsLengthIntoConnectedPieces) {
   // 80 long, 0.03 in radius, open: whole, each of its strips must span the texture, at most
   // 1016 / 80 = 12.7 texels a unit.
