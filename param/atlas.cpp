@@ -866,21 +866,19 @@ Atlas makeAtlas(const Mesh& input, const AtlasOptions& options, int threads) {
     std::vector<int> cutChartOf = chartOf, cutDirection = chartDirection;
     std::vector<AtlasChart> cutCharts = atlas.charts;
     ChartBoxes cutBoxes = boxes;
-    bool changed = false;
     for (int round = 0; round < kCutRounds; ++round) {
       CutCharts cut = cutPoorlyPackedCharts(mesh, edges, cutChartOf, cutCharts, cutBoxes, cutDirection, frames, origin,
                                             areaDensity(cutBoxes.size, options), chartRoom(options).minCoeff(),
                                             round == 0);
-      if (cut.from.empty()) break;
+      if (cut.from.size() <= cutCharts.size()) break;  // no chart was cut, or none came apart
       std::vector<int> direction(cut.from.size());
       for (std::size_t c = 0; c < cut.from.size(); ++c) direction[c] = cutDirection[std::size_t(cut.from[c])];
       cutDirection = std::move(direction);
       cutChartOf = std::move(cut.chartOf);
       cutCharts = chartsOfFaces(cutChartOf, cutDirection.size());
       cutBoxes = chartBoxes(mesh, cutChartOf, cutCharts, cutDirection, frames, origin, solved);
-      changed = true;
     }
-    if (changed) {
+    if (cutCharts.size() > chartCount) {
       Packing cutPacking = packCharts(cutBoxes.size, cutCharts, options, scale);
       if (cutPacking.fits && cutPacking.density >= kCutGain * packing.density) {
         atlas.cutCharts = cutCharts.size() - chartCount;
